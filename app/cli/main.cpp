@@ -1,0 +1,78 @@
+// shadelab's entry point: parse the command line, build the scene, hand it to the headless renderer
+// (or, later, the viewer), report errors as one line. Exit status: 0 ok, 2 bad input, 1 anything else.
+#include "cli/options.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/image.hpp"
+#include "core/scene_geometry.hpp"
+#include "headless/headless.hpp"
+#include "render/program.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#ifndef SHADELAB_VERSION
+#define SHADELAB_VERSION "0"
+#endif
+
+namespace shadelab {
+namespace {
+
+int run(const std::vector<std::string>& args) {
+    const Options options = parseOptions(args);
+    if (options.help) {
+        std::cout << usage();
+        return 0;
+    }
+    if (options.version) {
+        std::cout << "shadelab " << SHADELAB_VERSION << "\n";
+        return 0;
+    }
+    if (options.output) checkOutputPath(*options.output, "--output");
+    Scene scene = sceneFromOptions(options);
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+    frameIfNeeded(scene, *geometry);
+    if (options.verbose) {
+        std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
+                  << scene.objects.size() << " object(s), " << geometry->triangleCount() << " triangles\n";
+        for (const GltfInfo& info : geometry->gltfInfo)
+            for (const std::string& w : info.warnings) std::cerr << "shadelab: warning: " << w << "\n";
+    }
+    const ShaderLibrary shaders(options.shaderDir);
+
+    if (options.benchmarkFrames > 0) {
+        std::vector<ShadingMode> modes;
+        if (scene.layout == Layout::Compare) modes = {scene.shading};
+        else if (options.shading) modes = {*options.shading};
+        else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
+        for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders))
+            std::cout << toJson(r) << std::endl;
+        return 0;
+    }
+    if (options.output) {
+        const Image image = renderHeadless(scene, geometry, shaders);
+        writePng(*options.output, image);
+        if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << "\n";
+        return 0;
+    }
+    throw InputError("the interactive viewer is not built yet: use --output FILE.png to render headless");
+}
+
+}  // namespace
+}  // namespace shadelab
+
+int main(int argc, char** argv) {
+    try {
+        return shadelab::run(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const shadelab::InputError& e) {
+        std::cerr << "shadelab: " << e.what() << "\n";
+        return 2;
+    } catch (const shadelab::ShaderError& e) {
+        std::cerr << "shadelab: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "shadelab: " << e.what() << "\n";
+        return 1;
+    }
+}

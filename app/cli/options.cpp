@@ -1,0 +1,152 @@
+#include "cli/options.hpp"
+
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/scene_json.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+namespace shadelab {
+namespace {
+
+float parseFloat(const std::string& flag, const std::string& v) {
+    char* end = nullptr;
+    const float x = std::strtof(v.c_str(), &end);
+    if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(x))
+        throw InputError(flag + ": \"" + v + "\" is not a number");
+    return x;
+}
+
+int parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
+    char* end = nullptr;
+    const long x = std::strtol(v.c_str(), &end, 10);
+    if (v.empty() || end != v.c_str() + v.size()) throw InputError(flag + ": \"" + v + "\" is not an integer");
+    if (x < lo || x > hi)
+        throw InputError(flag + ": " + v + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+    return int(x);
+}
+
+template <typename E, std::size_t N>
+E parseChoice(const std::string& flag, const std::string& v, const std::pair<const char*, E> (&options)[N]) {
+    std::string allowed;
+    for (const auto& o : options) {
+        if (v == o.first) return o.second;
+        allowed += std::string(allowed.empty() ? "" : ", ") + o.first;
+    }
+    throw InputError(flag + ": unknown value \"" + v + "\" (expected one of " + allowed + ")");
+}
+
+}  // namespace
+
+Options parseOptions(const std::vector<std::string>& args) {
+    Options o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string arg = args[i], value;
+        bool hasInlineValue = false;
+        if (arg.rfind("--", 0) == 0) {
+            const std::size_t eq = arg.find('=');
+            if (eq != std::string::npos) {
+                value = arg.substr(eq + 1);
+                arg = arg.substr(0, eq);
+                hasInlineValue = true;
+            }
+        }
+        auto next = [&]() -> std::string {
+            if (hasInlineValue) return value;
+            if (i + 1 >= args.size()) throw InputError(arg + ": needs a value");
+            return args[++i];
+        };
+        auto noValue = [&]() {
+            if (hasInlineValue) throw InputError(arg + ": takes no value");
+        };
+        static const std::pair<const char*, ShadingMode> kShading[] = {
+            {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
+        static const std::pair<const char*, Layout> kLayout[] = {{"single", Layout::Single}, {"compare", Layout::Compare}};
+        static const std::pair<const char*, ReflectionModel> kRefl[] = {{"phong", ReflectionModel::Phong},
+                                                                         {"blinn-phong", ReflectionModel::BlinnPhong}};
+        if (arg == "--help" || arg == "-h") noValue(), o.help = true;
+        else if (arg == "--version") noValue(), o.version = true;
+        else if (arg == "--verbose" || arg == "-v") noValue(), o.verbose = true;
+        else if (arg == "--output" || arg == "-o") o.output = next();
+        else if (arg == "--shading") o.shading = parseChoice(arg, next(), kShading);
+        else if (arg == "--layout") o.layout = parseChoice(arg, next(), kLayout);
+        else if (arg == "--reflection") o.reflection = parseChoice(arg, next(), kRefl);
+        else if (arg == "--ka") o.ka = parseFloat(arg, next());
+        else if (arg == "--kd") o.kd = parseFloat(arg, next());
+        else if (arg == "--ks") o.ks = parseFloat(arg, next());
+        else if (arg == "--ke") o.ke = parseFloat(arg, next());
+        else if (arg == "--mesh") o.mesh = parseMeshShorthand(next(), arg);
+        else if (arg == "--shader-dir") o.shaderDir = next();
+        else if (arg == "--benchmark") o.benchmarkFrames = parseInt(arg, next(), 1, 1000000);
+        else if (arg == "--size") {
+            const std::string v = next();
+            const std::size_t x = v.find('x');
+            if (x == std::string::npos) throw InputError(arg + ": expected WIDTHxHEIGHT, e.g. 1280x720 (got \"" + v + "\")");
+            const int w = parseInt(arg, v.substr(0, x), -1000000000, 1000000000);
+            const int h = parseInt(arg, v.substr(x + 1), -1000000000, 1000000000);
+            checkImageSize(w, h, arg);
+            o.width = w;
+            o.height = h;
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            throw InputError(arg + ": unknown option (see shadelab --help)");
+        } else {
+            if (!o.input.empty()) throw InputError(arg + ": only one scene or model file can be given");
+            o.input = arg;
+        }
+    }
+    if (o.output && !hasExtension(*o.output, ".png"))
+        throw InputError("--output: " + *o.output + ": only .png output is supported");
+    return o;
+}
+
+Scene sceneFromOptions(const Options& o) {
+    Scene s;
+    if (o.input.empty()) s = defaultScene();
+    else if (hasModelExtension(o.input)) s = sceneForModel(o.input);
+    else s = loadSceneFile(o.input);
+    if (o.shading) s.shading = *o.shading;
+    if (o.layout) s.layout = *o.layout;
+    if (o.reflection) s.reflection = *o.reflection;
+    for (SceneObject& obj : s.objects) {
+        if (o.ka) obj.material.ka = *o.ka;
+        if (o.kd) obj.material.kd = *o.kd;
+        if (o.ks) obj.material.ks = *o.ks;
+        if (o.ke) obj.material.ke = *o.ke;
+        checkCoefficients(obj.material, "--");
+    }
+    if (o.width) s.width = *o.width, s.height = *o.height;
+    if (o.mesh) {
+        if (s.objects.empty()) s.objects.emplace_back();
+        s.objects.front().mesh = *o.mesh;
+    }
+    return s;
+}
+
+std::string usage() {
+    return R"(usage: shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]
+
+Shows flat, Gouraud and Phong shading side by side. With no file, the built-in default scene.
+Without --output (or --benchmark) it opens the interactive viewer.
+
+  -o, --output FILE.png   render one frame offscreen (OSMesa, no display needed) and write it
+  --shading MODE          flat | gouraud | phong
+  --layout LAYOUT         single | compare (three panes: flat | gouraud | phong)
+  --reflection MODEL      phong | blinn-phong
+  --ka X --kd X --ks X    ambient, diffuse, specular weights (>= 0) of every object
+  --ke X                  specular exponent (1..10000) of every object
+  --size WxH              image size in pixels, e.g. 1280x720
+  --mesh SPEC             replace the first object's mesh: uvsphere[:slices[:stacks]], icosphere[:n],
+                          torus[:major[:minor]], cube, plane[:n], or a .gltf/.glb file
+  --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
+  --shader-dir DIR        read GLSL files from DIR when present (default: the built-in copies)
+  -v, --verbose           say what was loaded and written
+  -h, --help              this text
+  --version               print the version
+
+Bad input (a file, a field, a flag) prints one line and exits with status 2.
+)";
+}
+
+}  // namespace shadelab

@@ -1,0 +1,37 @@
+#pragma once
+// The command line: `shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]`. Parsing is GL-free so
+// it is unit-tested (and fuzzed) on its own. Options override what the scene file says.
+#include "core/scene.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+struct Options {
+    std::string input;                      // scene or model file; empty: the built-in default scene
+    std::optional<std::string> output;      // --output FILE.png: render one frame headless
+    std::optional<ShadingMode> shading;
+    std::optional<Layout> layout;
+    std::optional<ReflectionModel> reflection;
+    std::optional<float> ka, kd, ks, ke;
+    std::optional<int> width, height;       // --size WxH
+    std::optional<MeshSpec> mesh;           // --mesh: replaces the first object's mesh
+    int benchmarkFrames = 0;                // --benchmark N
+    std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
+    bool verbose = false;
+    bool help = false;
+    bool version = false;
+};
+
+// Throws InputError "--flag: what is wrong" for unknown flags, missing or malformed values.
+Options parseOptions(const std::vector<std::string>& args);
+
+// Loads the input named by the options (scene file, model, or the default scene) and applies every
+// override. Throws InputError.
+Scene sceneFromOptions(const Options& options);
+
+std::string usage();
+
+}  // namespace shadelab

@@ -1,0 +1,58 @@
+#include "core/camera.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab {
+
+glm::mat4 viewFromWorld(const Camera& c) { return glm::lookAt(c.eye, c.target, c.up); }
+
+glm::mat4 clipFromView(const Camera& c, float aspect) {
+    return glm::perspective(glm::radians(c.fovYDeg), aspect, c.nearPlane, c.farPlane);
+}
+
+glm::mat4 worldFromObject(const Transform& t) {
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), t.translation);
+    m = glm::rotate(m, glm::radians(t.rotationDeg.z), glm::vec3(0, 0, 1));
+    m = glm::rotate(m, glm::radians(t.rotationDeg.y), glm::vec3(0, 1, 0));
+    m = glm::rotate(m, glm::radians(t.rotationDeg.x), glm::vec3(1, 0, 0));
+    return glm::scale(m, t.scale);
+}
+
+glm::mat3 normalWorldFromObject(const glm::mat4& m) { return glm::transpose(glm::inverse(glm::mat3(m))); }
+
+std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height) {
+    if (layout == Layout::Single) return {Pane{0, 0, width, height, mode}};
+    std::vector<Pane> panes;
+    const ShadingMode modes[3] = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
+    for (int i = 0; i < 3; ++i) {
+        // Pane edges at floor(i * W / 3): the three panes cover the image exactly, widths differ by <= 1.
+        const int x0 = i * width / 3, x1 = (i + 1) * width / 3;
+        panes.push_back(Pane{x0, 0, x1 - x0, height, modes[i]});
+    }
+    return panes;
+}
+
+void frameBounds(Scene& scene, const BoundingSphere& b, float paneAspect) {
+    const Camera defaults;
+    const float radius = b.radius > 0.0f ? b.radius : 1.0f;
+    const float halfY = glm::radians(scene.camera.fovYDeg) / 2.0f;
+    const float halfX = std::atan(std::tan(halfY) * paneAspect);
+    // The sphere's silhouette subtends asin(r / d); leave 10% room on the tighter side.
+    const float dist = radius / std::sin(0.9f * std::min(halfX, halfY));
+    const glm::vec3 dir = glm::normalize(defaults.eye - defaults.target);
+    scene.camera.target = b.center;
+    scene.camera.eye = b.center + dist * dir;
+    scene.camera.up = defaults.up;
+    scene.camera.nearPlane = std::max(dist - 2.0f * radius, dist * 1e-3f);
+    scene.camera.farPlane = dist + 4.0f * radius;
+    if (!scene.lightsGiven)
+        for (Light& l : scene.lights)
+            if (l.type == LightType::Point) l.position = b.center + radius * Light{}.position;
+}
+
+}  // namespace shadelab

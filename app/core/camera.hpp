@@ -1,0 +1,33 @@
+#pragma once
+// Camera and transform maths (GLM conventions: right-handed look-at, OpenGL clip space), and the
+// pane layout of a frame. Names say the spaces: clipFromView * viewFromWorld * worldFromObject.
+#include "core/mesh.hpp"
+#include "core/scene.hpp"
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+glm::mat4 viewFromWorld(const Camera& camera);
+glm::mat4 clipFromView(const Camera& camera, float aspect);
+glm::mat4 worldFromObject(const Transform& t);
+// Inverse transpose of the upper 3x3: takes object-space normals to world space.
+glm::mat3 normalWorldFromObject(const glm::mat4& worldFromObject);
+
+// One viewport of a frame. Coordinates are image pixels with (0, 0) at the top-left corner.
+struct Pane {
+    int x = 0, y = 0, width = 0, height = 0;
+    ShadingMode mode = ShadingMode::Phong;
+};
+// single: one pane with the scene's mode; compare: three equal panes flat | gouraud | phong.
+std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height);
+
+// Places the camera so a bounding sphere fills most of a pane of the given aspect, looking from the
+// default camera's direction; when the scene gave no lights, moves the default light with it.
+void frameBounds(Scene& scene, const BoundingSphere& bounds, float paneAspect);
+
+}  // namespace shadelab

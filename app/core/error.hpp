@@ -1,0 +1,16 @@
+#pragma once
+// Errors that cross shadelab's layers.
+//
+// InputError is bad input from the user (a file, a field, a flag): the CLI prints its one-line message
+// and exits with status 2. Anything else that escapes (GL failures, I/O faults) exits with status 1.
+#include <stdexcept>
+#include <string>
+
+namespace shadelab {
+
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace shadelab

@@ -1,0 +1,87 @@
+#include "core/file_io.hpp"
+
+#include "core/error.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace shadelab {
+namespace fs = std::filesystem;
+
+std::string readTextFile(const std::string& path, std::uint64_t maxBytes) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) throw InputError(path + ": cannot read: no such file");
+    if (fs::is_directory(st)) throw InputError(path + ": cannot read: is a directory");
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec && size > maxBytes)
+        throw InputError(path + ": cannot read: larger than " + std::to_string(maxBytes >> 20) + " MiB");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
+    std::ostringstream s;
+    s << in.rdbuf();
+    if (in.bad()) throw InputError(path + ": cannot read: I/O error");
+    return s.str();
+}
+
+bool hasExtension(const std::string& path, const std::string& ext) {
+    if (path.size() < ext.size()) return false;
+    std::string tail = path.substr(path.size() - ext.size());
+    std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return tail == ext;
+}
+
+bool hasModelExtension(const std::string& path) { return hasExtension(path, ".gltf") || hasExtension(path, ".glb"); }
+
+void checkOutputPath(const std::string& path, const std::string& option) {
+    if (path.empty()) throw InputError(option + ": empty path");
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw InputError(option + ": " + path + " is a directory");
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        throw InputError(option + ": " + path + ": the folder " + parent.string() + " does not exist");
+}
+
+void writeFileAtomic(const std::string& path, const std::function<bool(std::FILE*)>& write) {
+    const fs::path target(path);
+    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::string tmpl = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+    const int fd = mkstemp(tmpl.data());
+    if (fd < 0) throw InputError(path + ": cannot write: " + std::strerror(errno));
+    std::FILE* f = fdopen(fd, "wb");
+    if (!f) {
+        ::close(fd);
+        std::remove(tmpl.c_str());
+        throw InputError(path + ": cannot write: " + std::strerror(errno));
+    }
+    bool ok = false;
+    try {
+        ok = write(f);
+    } catch (...) {
+        std::fclose(f);
+        std::remove(tmpl.c_str());
+        throw;
+    }
+    ok = std::fflush(f) == 0 && ok;
+    ok = std::fclose(f) == 0 && ok;
+    // mkstemp creates files 0600; an output file gets the usual permissions (0666 less the umask).
+    const mode_t mask = umask(0);
+    umask(mask);
+    if (ok) ok = ::chmod(tmpl.c_str(), 0666 & ~mask) == 0;
+    if (!ok || std::rename(tmpl.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        std::remove(tmpl.c_str());
+        throw InputError(path + ": cannot write: " + (err ? std::strerror(err) : "write failed"));
+    }
+}
+
+}  // namespace shadelab

@@ -1,0 +1,28 @@
+#pragma once
+// Reading input files with size limits and writing output files atomically (temporary file in the same
+// folder, then rename), so a failed or killed run never leaves a partial file at the output path.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+// Reads a whole file. InputError "<path>: cannot read: <reason>" if it is missing, a directory,
+// unreadable, or larger than maxBytes.
+std::string readTextFile(const std::string& path, std::uint64_t maxBytes);
+
+// True for names ending in .gltf or .glb (any case).
+bool hasModelExtension(const std::string& path);
+// True for names ending in `ext` (with the dot, compared case-insensitively).
+bool hasExtension(const std::string& path, const std::string& ext);
+
+// Checks, before any work is done, that `path` can become an output file: its folder exists and it is
+// not itself a folder. Throws InputError naming `option` and the path.
+void checkOutputPath(const std::string& path, const std::string& option);
+
+// Creates `path` atomically: `write` gets a FILE* to a temporary file beside it; on success the
+// temporary is renamed over `path`, on any failure (write returns false or throws) it is removed.
+void writeFileAtomic(const std::string& path, const std::function<bool(std::FILE*)>& write);
+
+}  // namespace shadelab

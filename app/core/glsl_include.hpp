@@ -1,0 +1,24 @@
+#pragma once
+// The small include step for GLSL files: resolves `#include "file"` (each file once per program, like
+// #pragma once), puts `#version 330 core` first and emits `#line N S` so a driver's log points at the
+// right file and line: source-string number S is the index of the file in `files`.
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+struct ExpandedGlsl {
+    std::string text;                 // ready for glShaderSource
+    std::vector<std::string> files;   // files[S] is the file that #line's source number S means
+};
+
+// `load(name)` returns a file's text or throws. Throws std::runtime_error "<file>:<line>: ..." on a
+// malformed or missing include.
+ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string(const std::string&)>& load);
+
+// Rewrites a driver log so that source numbers become file names: Mesa's "0:12(5): error: ..."
+// becomes "phong.frag:12(5): error: ...".
+std::string locateGlslLog(const std::string& log, const std::vector<std::string>& files);
+
+}  // namespace shadelab

@@ -1,0 +1,430 @@
+#include "core/gltf_import.hpp"
+
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+
+#include <tiny_gltf.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+
+namespace shadelab {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr std::size_t kMaxTriangles = 50'000'000;  // ~1.8 GB of vertex data after baking: refuse beyond
+
+class GltfReader {
+public:
+    GltfReader(const std::string& path, const tinygltf::Model& model, GltfInfo& info)
+        : path_(path), model_(model), info_(info) {}
+
+    Mesh read();
+
+private:
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw InputError(path_ + ": " + where + ": " + what);
+    }
+
+    // A checked view of an accessor: element i, component c, as a float (normalized as the spec says).
+    struct View {
+        const unsigned char* base = nullptr;
+        std::size_t stride = 0;
+        int componentType = 0;
+        int components = 0;
+        bool normalized = false;
+        std::size_t count = 0;
+        std::vector<float> sparseValues;  // filled when the accessor is sparse: count * components floats
+    };
+    View view(int accessorIndex, const std::string& where, const std::vector<int>& allowedTypes,
+              const std::vector<int>& allowedComponentTypes) const;
+    static float component(const View& v, std::size_t i, int c);
+    std::vector<std::uint32_t> indices(int accessorIndex, std::size_t vertexCount, const std::string& where) const;
+    void checkRange(int bufferViewIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
+                    std::size_t count, const std::string& where, std::size_t* strideOut,
+                    const unsigned char** baseOut) const;
+    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& worldFromObject, const std::string& where);
+    void visit(int nodeIndex, const glm::mat4& parent, int depth);
+
+    const std::string& path_;
+    const tinygltf::Model& model_;
+    GltfInfo& info_;
+    Mesh mesh_;
+};
+
+void GltfReader::checkRange(int bvIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
+                            std::size_t count, const std::string& where, std::size_t* strideOut,
+                            const unsigned char** baseOut) const {
+    if (bvIndex < 0 || std::size_t(bvIndex) >= model_.bufferViews.size())
+        fail(where, "bufferView " + std::to_string(bvIndex) + " does not exist");
+    const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(bvIndex)];
+    const std::string bvName = "bufferView " + std::to_string(bvIndex);
+    if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size())
+        fail(bvName, "buffer " + std::to_string(bv.buffer) + " does not exist");
+    const tinygltf::Buffer& buf = model_.buffers[std::size_t(bv.buffer)];
+    if (bv.byteOffset > buf.data.size() || bv.byteLength > buf.data.size() - bv.byteOffset)
+        fail(bvName, "range " + std::to_string(bv.byteOffset) + "+" + std::to_string(bv.byteLength) +
+                         " lies outside buffer " + std::to_string(bv.buffer) + " (" + std::to_string(buf.data.size()) +
+                         " bytes)");
+    const std::size_t s = stride ? stride : (bv.byteStride ? bv.byteStride : elementSize);
+    if (s < elementSize) fail(bvName, "byteStride " + std::to_string(s) + " is smaller than an element");
+    if (count > 0) {
+        // last byte read = byteOffset + s * (count - 1) + elementSize, computed without overflow
+        if (byteOffset > bv.byteLength || (count - 1) > (bv.byteLength - byteOffset) / s ||
+            s * (count - 1) + elementSize > bv.byteLength - byteOffset)
+            fail(where, std::to_string(count) + " elements at offset " + std::to_string(byteOffset) +
+                            " do not fit in " + bvName + " (" + std::to_string(bv.byteLength) + " bytes)");
+    }
+    *strideOut = s;
+    *baseOut = buf.data.data() + bv.byteOffset + byteOffset;
+}
+
+GltfReader::View GltfReader::view(int ai, const std::string& where, const std::vector<int>& types,
+                                  const std::vector<int>& componentTypes) const {
+    const std::string name = where + " (accessor " + std::to_string(ai) + ")";
+    if (ai < 0 || std::size_t(ai) >= model_.accessors.size()) fail(where, "accessor " + std::to_string(ai) + " does not exist");
+    const tinygltf::Accessor& a = model_.accessors[std::size_t(ai)];
+    bool typeOk = false, ctOk = false;
+    for (int t : types) typeOk = typeOk || a.type == t;
+    for (int t : componentTypes) ctOk = ctOk || a.componentType == t;
+    if (!typeOk || !ctOk) fail(name, "unsupported type/componentType for this attribute");
+    View v;
+    v.componentType = a.componentType;
+    v.components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
+    v.normalized = a.normalized;
+    v.count = a.count;
+    const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
+    if (v.components <= 0 || componentSize <= 0) fail(name, "bad type");
+    if (v.count > 3 * kMaxTriangles) fail(name, "count " + std::to_string(v.count) + " is too large");
+    const std::size_t elementSize = std::size_t(v.components) * std::size_t(componentSize);
+    if (a.bufferView >= 0) {
+        checkRange(a.bufferView, a.byteOffset, elementSize, 0, v.count, name, &v.stride, &v.base);
+    } else if (!a.sparse.isSparse) {
+        fail(name, "has neither a bufferView nor sparse values");
+    }
+    if (a.sparse.isSparse) {
+        // Materialise: start from the base values (or zeros) and substitute the sparse ones.
+        v.sparseValues.assign(v.count * std::size_t(v.components), 0.0f);
+        if (v.base)
+            for (std::size_t i = 0; i < v.count; ++i)
+                for (int c = 0; c < v.components; ++c) v.sparseValues[i * std::size_t(v.components) + std::size_t(c)] = component(v, i, c);
+        const std::size_t n = std::size_t(a.sparse.count);
+        if (a.sparse.count < 0 || n > v.count) fail(name, "sparse count out of range");
+        View idx;
+        idx.componentType = a.sparse.indices.componentType;
+        idx.components = 1;
+        const int idxSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(idx.componentType));
+        if (idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(name, "sparse indices must be unsigned integers");
+        checkRange(a.sparse.indices.bufferView, std::size_t(a.sparse.indices.byteOffset), std::size_t(idxSize),
+                   std::size_t(idxSize), n, name + " sparse indices", &idx.stride, &idx.base);
+        View val = v;
+        val.sparseValues.clear();
+        checkRange(a.sparse.values.bufferView, std::size_t(a.sparse.values.byteOffset), elementSize, elementSize, n,
+                   name + " sparse values", &val.stride, &val.base);
+        for (std::size_t k = 0; k < n; ++k) {
+            const auto target = std::size_t(component(idx, k, 0));
+            if (target >= v.count) fail(name, "sparse index " + std::to_string(target) + " out of range");
+            for (int c = 0; c < v.components; ++c)
+                v.sparseValues[target * std::size_t(v.components) + std::size_t(c)] = component(val, k, c);
+        }
+    }
+    return v;
+}
+
+float GltfReader::component(const View& v, std::size_t i, int c) {
+    if (!v.sparseValues.empty()) return v.sparseValues[i * std::size_t(v.components) + std::size_t(c)];
+    const unsigned char* p = v.base + i * v.stride;
+    switch (v.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float f;
+        std::memcpy(&f, p + 4 * c, 4);
+        return f;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+        const float x = float(p[c]);
+        return v.normalized ? x / 255.0f : x;
+    }
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const float x = float(static_cast<signed char>(p[c]));
+        return v.normalized ? std::max(x / 127.0f, -1.0f) : x;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        std::uint16_t u;
+        std::memcpy(&u, p + 2 * c, 2);
+        return v.normalized ? float(u) / 65535.0f : float(u);
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        std::int16_t s;
+        std::memcpy(&s, p + 2 * c, 2);
+        return v.normalized ? std::max(float(s) / 32767.0f, -1.0f) : float(s);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        std::uint32_t u;
+        std::memcpy(&u, p + 4 * c, 4);
+        return float(u);
+    }
+    default: return 0.0f;
+    }
+}
+
+std::vector<std::uint32_t> GltfReader::indices(int ai, std::size_t vertexCount, const std::string& where) const {
+    const View v = view(ai, where + " indices", {TINYGLTF_TYPE_SCALAR},
+                        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+    std::vector<std::uint32_t> out(v.count);
+    const std::uint32_t restart = v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 0xffu
+                                  : v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 0xffffu
+                                                                                              : 0xffffffffu;
+    for (std::size_t i = 0; i < v.count; ++i) {
+        std::uint32_t x;
+        if (!v.sparseValues.empty()) {
+            x = std::uint32_t(v.sparseValues[i]);
+        } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+            x = v.base[i * v.stride];
+        } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+            std::uint16_t s;
+            std::memcpy(&s, v.base + i * v.stride, 2);
+            x = s;
+        } else {
+            std::memcpy(&x, v.base + i * v.stride, 4);
+        }
+        if (x == restart)
+            fail(where + " indices (accessor " + std::to_string(ai) + ")",
+                 "index " + std::to_string(i) + " is the primitive-restart value " + std::to_string(x) +
+                     ", which glTF forbids");
+        if (x >= vertexCount)
+            fail(where + " indices (accessor " + std::to_string(ai) + ")",
+                 "index " + std::to_string(x) + " is out of range (" + std::to_string(vertexCount) + " vertices)");
+        out[i] = x;
+    }
+    return out;
+}
+
+// Smooth vertex normals: the face normals around each vertex weighted by the corner angle, so a
+// vertex's normal does not depend on how the surface around it happens to be split into triangles.
+void angleWeightedNormals(const std::vector<glm::vec3>& pos, const std::vector<std::uint32_t>& idx,
+                          std::vector<glm::vec3>& nrm) {
+    nrm.assign(pos.size(), glm::vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
+        const std::uint32_t v[3] = {idx[t], idx[t + 1], idx[t + 2]};
+        const glm::vec3 n = faceNormal(pos[v[0]], pos[v[1]], pos[v[2]]);
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3 e1 = pos[v[(k + 1) % 3]] - pos[v[k]], e2 = pos[v[(k + 2) % 3]] - pos[v[k]];
+            const float l1 = glm::length(e1), l2 = glm::length(e2);
+            if (l1 <= 0.0f || l2 <= 0.0f) continue;
+            const float angle = std::acos(glm::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0f, 1.0f));
+            nrm[v[k]] += angle * n;
+        }
+    }
+    for (auto& n : nrm) {
+        const float l = glm::length(n);
+        n = l > 0.0f ? n / l : glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+}
+
+void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where) {
+    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        static const char* kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+        info_.warnings.push_back(where + ": " + (mode >= 0 && mode < 4 ? kNames[mode] : "unknown-mode") +
+                                 " primitive skipped (only triangles are shaded)");
+        return;
+    }
+    const auto posIt = p.attributes.find("POSITION");
+    if (posIt == p.attributes.end()) {
+        info_.warnings.push_back(where + ": primitive without POSITION skipped");
+        return;
+    }
+    const View pos = view(posIt->second, where + " POSITION", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    std::vector<glm::vec3> positions(pos.count);
+    for (std::size_t i = 0; i < pos.count; ++i) {
+        positions[i] = {component(pos, i, 0), component(pos, i, 1), component(pos, i, 2)};
+        if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
+            fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
+                 "vertex " + std::to_string(i) + " is not finite");
+    }
+    std::vector<std::uint32_t> order;
+    if (p.indices >= 0) {
+        order = indices(p.indices, positions.size(), where);
+    } else {
+        order.resize(positions.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
+    }
+    std::vector<std::uint32_t> tris;
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        tris.assign(order.begin(), order.begin() + std::ptrdiff_t(order.size() / 3 * 3));
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (std::size_t i = 2; i < order.size(); ++i) {
+            // Every other strip triangle is flipped to keep counter-clockwise winding (glTF spec 3.7.2.1).
+            if (i % 2 == 0) tris.insert(tris.end(), {order[i - 2], order[i - 1], order[i]});
+            else tris.insert(tris.end(), {order[i - 1], order[i - 2], order[i]});
+        }
+    } else {
+        for (std::size_t i = 2; i < order.size(); ++i) tris.insert(tris.end(), {order[i - 1], order[i], order[0]});
+    }
+    if (info_.triangles + tris.size() / 3 > kMaxTriangles)
+        fail(where, "more than " + std::to_string(kMaxTriangles) + " triangles in total");
+
+    std::vector<glm::vec3> normals;
+    const auto nrmIt = p.attributes.find("NORMAL");
+    if (nrmIt != p.attributes.end()) {
+        const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+        if (nv.count != pos.count)
+            fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
+                 "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(pos.count));
+        normals.resize(nv.count);
+        for (std::size_t i = 0; i < nv.count; ++i) {
+            const glm::vec3 n(component(nv, i, 0), component(nv, i, 1), component(nv, i, 2));
+            const float l = glm::length(n);
+            normals[i] = (std::isfinite(l) && l > 0.0f) ? n / l : glm::vec3(0.0f, 1.0f, 0.0f);
+        }
+    } else {
+        angleWeightedNormals(positions, tris, normals);
+        info_.generatedNormals += normals.size();
+    }
+
+    // Bake the node transform. A mirroring transform (negative determinant) turns counter-clockwise
+    // triangles clockwise, so their winding is flipped back.
+    const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
+    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    const auto base = std::uint32_t(mesh_.positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        mesh_.positions.push_back(glm::vec3(world * glm::vec4(positions[i], 1.0f)));
+        const glm::vec3 n = nrmWorld * normals[i];
+        const float l = glm::length(n);
+        mesh_.normals.push_back(l > 0.0f ? n / l : glm::vec3(0.0f, 1.0f, 0.0f));
+    }
+    for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
+        mesh_.indices.push_back(base + tris[t]);
+        mesh_.indices.push_back(base + tris[t + (mirrored ? 2 : 1)]);
+        mesh_.indices.push_back(base + tris[t + (mirrored ? 1 : 2)]);
+    }
+    info_.primitives += 1;
+    info_.triangles += tris.size() / 3;
+}
+
+void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
+    if (ni < 0 || std::size_t(ni) >= model_.nodes.size()) fail("node " + std::to_string(ni), "does not exist");
+    if (depth > 256) fail("node " + std::to_string(ni), "node hierarchy deeper than 256 (a cycle?)");
+    const tinygltf::Node& n = model_.nodes[std::size_t(ni)];
+    glm::mat4 local(1.0f);
+    if (n.matrix.size() == 16) {
+        local = glm::make_mat4(n.matrix.data());
+    } else {
+        if (n.translation.size() == 3)
+            local = glm::translate(local, glm::vec3(float(n.translation[0]), float(n.translation[1]), float(n.translation[2])));
+        if (n.rotation.size() == 4)  // glTF stores x, y, z, w
+            local *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]),
+                                              float(n.rotation[2])));
+        if (n.scale.size() == 3) local = glm::scale(local, glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
+    }
+    const glm::mat4 world = parent * local;
+    info_.nodes += 1;
+    if (n.mesh >= 0) {
+        if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
+        const tinygltf::Mesh& m = model_.meshes[std::size_t(n.mesh)];
+        for (std::size_t k = 0; k < m.primitives.size(); ++k)
+            addPrimitive(m.primitives[k], world, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
+    }
+    for (int child : n.children) visit(child, world, depth + 1);
+}
+
+Mesh GltfReader::read() {
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+        const int si = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+        if (std::size_t(si) >= model_.scenes.size()) fail("scene", std::to_string(si) + " does not exist");
+        roots = model_.scenes[std::size_t(si)].nodes;
+    } else {
+        // No scene: draw every node that is nobody's child.
+        std::vector<bool> isChild(model_.nodes.size(), false);
+        for (const auto& n : model_.nodes)
+            for (int c : n.children)
+                if (c >= 0 && std::size_t(c) < isChild.size()) isChild[std::size_t(c)] = true;
+        for (std::size_t i = 0; i < model_.nodes.size(); ++i)
+            if (!isChild[i]) roots.push_back(int(i));
+    }
+    for (int r : roots) visit(r, glm::mat4(1.0f), 0);
+    info_.meshes = int(model_.meshes.size());
+    info_.vertices = mesh_.positions.size();
+    return std::move(mesh_);
+}
+
+}  // namespace
+
+Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
+    GltfInfo info;
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": cannot read: no such file");
+    const fs::path folder = fs::absolute(fs::path(path), ec).parent_path().lexically_normal();
+
+    tinygltf::TinyGLTF loader;
+    // External files are read only from inside the model's folder: absolute paths, "..", and network
+    // schemes are refused before anything is opened.
+    tinygltf::FsCallbacks fsc{};
+    fsc.FileExists = [](const std::string& p, void*) { return fs::is_regular_file(p); };
+    fsc.ExpandFilePath = [](const std::string& p, void*) { return p; };
+    fsc.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
+        const fs::path& root = *static_cast<const fs::path*>(user);
+        const fs::path full = fs::absolute(fs::path(p)).lexically_normal();
+        const fs::path rel = full.lexically_relative(root);
+        if (p.find("://") != std::string::npos || rel.empty() || *rel.begin() == "..") {
+            if (err) *err += "refused URI outside the model's folder: " + p;
+            return false;
+        }
+        std::error_code e;
+        const auto size = fs::file_size(full, e);
+        if (e || size > (std::uintmax_t(1) << 31)) {
+            if (err) *err += "cannot read " + p;
+            return false;
+        }
+        std::FILE* f = std::fopen(full.c_str(), "rb");
+        if (!f) {
+            if (err) *err += "cannot open " + p;
+            return false;
+        }
+        out->resize(size);
+        const bool ok = std::fread(out->data(), 1, size, f) == size;
+        std::fclose(f);
+        if (!ok && err) *err += "cannot read " + p;
+        return ok;
+    };
+    fsc.WriteWholeFile = nullptr;
+    fsc.user_data = const_cast<fs::path*>(&folder);
+    loader.SetFsCallbacks(fsc);
+    // Textures are not used: skip decoding them (and the warnings about missing ones stay warnings).
+    loader.SetImageLoader(
+        [](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+            return true;
+        },
+        nullptr);
+
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool binary = hasExtension(path, ".glb");
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (!ok || !err.empty()) {
+        std::string msg = err.empty() ? "not a valid glTF file" : err;
+        while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
+        for (char& c : msg)
+            if (c == '\n') c = ';';
+        throw InputError(path + ": " + msg);
+    }
+    Mesh mesh = GltfReader(path, model, info).read();
+    if (infoOut) *infoOut = std::move(info);
+    return mesh;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,27 @@
+#pragma once
+// glTF 2.0 (.gltf with external or data: buffers, and .glb) to one world-space Mesh, through Debian's
+// tinygltf. The default scene is walked with every node's matrix or TRS applied and baked into the
+// vertices; TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN primitives become triangles, POINTS and LINES
+// are skipped with a warning. Everything is validated before it is used: accessor and buffer-view
+// ranges, index values, component types. Failures are InputErrors naming the file and the accessor
+// or primitive.
+#include "core/mesh.hpp"
+
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+struct GltfInfo {
+    int nodes = 0;              // nodes visited in the drawn scene
+    int meshes = 0;             // meshes in the file
+    int primitives = 0;         // primitives drawn (instances counted each time)
+    std::size_t triangles = 0;  // triangles drawn
+    std::size_t vertices = 0;   // vertices after baking
+    std::size_t generatedNormals = 0;  // vertices whose normal shadelab computed (file had none)
+    std::vector<std::string> warnings;
+};
+
+Mesh loadGltf(const std::string& path, GltfInfo* info = nullptr);
+
+}  // namespace shadelab

@@ -1,0 +1,209 @@
+#include "core/mesh.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace shadelab {
+
+glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 n = glm::cross(c - b, a - b);
+    const float len = glm::length(n);
+    return len > 0.0f ? n / len : glm::vec3(0.0f);
+}
+
+namespace {
+
+// Makes every triangle counter-clockwise seen from the side its vertex normals point to. The
+// generators below build their grids in whatever order is simplest and rely on this.
+void orientToNormals(Mesh& m) {
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+        const uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+        const glm::vec3 n = faceNormal(m.positions[a], m.positions[b], m.positions[c]);
+        if (glm::dot(n, m.normals[a] + m.normals[b] + m.normals[c]) < 0.0f) std::swap(m.indices[t + 1], m.indices[t + 2]);
+    }
+}
+
+}  // namespace
+
+Mesh makeUvSphere(int slices, int stacks, float radius) {
+    Mesh m;
+    const int row = slices + 1;
+    m.positions.reserve(size_t(stacks + 1) * size_t(row));
+    m.normals.reserve(m.positions.capacity());
+    for (int i = 0; i <= stacks; ++i) {
+        const double theta = glm::pi<double>() * i / stacks;  // 0 at the north pole (+y)
+        for (int j = 0; j <= slices; ++j) {
+            const double phi = 2.0 * glm::pi<double>() * j / slices;
+            const glm::vec3 n(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                              float(std::sin(theta) * std::sin(phi)));
+            m.normals.push_back(n);
+            m.positions.push_back(radius * n);
+        }
+    }
+    m.indices.reserve(size_t(slices) * size_t(stacks - 1) * 6);
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const uint32_t a = uint32_t(i * row + j), b = a + uint32_t(row);
+            if (i != 0) m.indices.insert(m.indices.end(), {a, a + 1, b});
+            if (i != stacks - 1) m.indices.insert(m.indices.end(), {a + 1, b + 1, b});
+        }
+    return m;
+}
+
+Mesh makeIcoSphere(int subdivisions, float radius) {
+    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+    std::vector<glm::vec3> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    for (auto& v : p) v = glm::normalize(v);
+    std::vector<uint32_t> idx = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,
+                                 11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8,
+                                 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+    for (int s = 0; s < subdivisions; ++s) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
+        auto mid = [&](uint32_t a, uint32_t b) {
+            const auto key = std::minmax(a, b);
+            auto it = midpoints.find(key);
+            if (it != midpoints.end()) return it->second;
+            p.push_back(glm::normalize(p[a] + p[b]));
+            const auto i = uint32_t(p.size() - 1);
+            midpoints.emplace(key, i);
+            return i;
+        };
+        std::vector<uint32_t> next;
+        next.reserve(idx.size() * 4);
+        for (size_t k = 0; k < idx.size(); k += 3) {
+            const uint32_t a = idx[k], b = idx[k + 1], c = idx[k + 2];
+            const uint32_t ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+            next.insert(next.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
+        }
+        idx.swap(next);
+    }
+    Mesh m;
+    m.normals = p;
+    m.positions.reserve(p.size());
+    for (const auto& n : p) m.positions.push_back(radius * n);
+    m.indices = std::move(idx);
+    orientToNormals(m);
+    return m;
+}
+
+Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments) {
+    Mesh m;
+    const int row = minorSegments + 1;
+    for (int i = 0; i <= majorSegments; ++i) {
+        const float u = 2.0f * glm::pi<float>() * float(i) / float(majorSegments);
+        const glm::vec3 ring(std::cos(u), 0.0f, std::sin(u));
+        for (int j = 0; j <= minorSegments; ++j) {
+            const float v = 2.0f * glm::pi<float>() * float(j) / float(minorSegments);
+            const glm::vec3 n = std::cos(v) * ring + std::sin(v) * glm::vec3(0, 1, 0);
+            m.normals.push_back(n);
+            m.positions.push_back(majorRadius * ring + minorRadius * n);
+        }
+    }
+    for (int i = 0; i < majorSegments; ++i)
+        for (int j = 0; j < minorSegments; ++j) {
+            const uint32_t a = uint32_t(i * row + j), b = a + uint32_t(row);
+            m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    orientToNormals(m);
+    return m;
+}
+
+Mesh makeCube(float size) {
+    Mesh m;
+    const float h = size / 2.0f;
+    const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {1.0f, -1.0f}) {
+            const glm::vec3 n = sign * axes[axis];
+            const glm::vec3 u = axes[(axis + 1) % 3], v = axes[(axis + 2) % 3];
+            const auto base = uint32_t(m.positions.size());
+            for (const auto& corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+                m.positions.push_back(h * (n + corner.x * u + corner.y * v));
+                m.normals.push_back(n);
+            }
+            m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        }
+    orientToNormals(m);
+    return m;
+}
+
+Mesh makePlane(float size, int subdivisions) {
+    Mesh m;
+    const int row = subdivisions + 1;
+    for (int i = 0; i <= subdivisions; ++i)
+        for (int j = 0; j <= subdivisions; ++j) {
+            m.positions.push_back({size * (float(j) / float(subdivisions) - 0.5f), 0.0f,
+                                   size * (float(i) / float(subdivisions) - 0.5f)});
+            m.normals.push_back({0.0f, 1.0f, 0.0f});
+        }
+    for (int i = 0; i < subdivisions; ++i)
+        for (int j = 0; j < subdivisions; ++j) {
+            const uint32_t a = uint32_t(i * row + j), b = a + uint32_t(row);
+            m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    orientToNormals(m);
+    return m;
+}
+
+Mesh makeProceduralMesh(const MeshSpec& s) {
+    switch (s.type) {
+    case MeshSpec::Type::UvSphere: return makeUvSphere(s.slices, s.stacks, s.radius);
+    case MeshSpec::Type::IcoSphere: return makeIcoSphere(s.subdivisions, s.radius);
+    case MeshSpec::Type::Torus: return makeTorus(s.majorRadius, s.minorRadius, s.majorSegments, s.minorSegments);
+    case MeshSpec::Type::Cube: return makeCube(s.size);
+    case MeshSpec::Type::Plane: return makePlane(s.size, s.planeSubdivisions);
+    case MeshSpec::Type::Gltf: break;
+    }
+    return Mesh{};
+}
+
+FlatMesh makeFlatMesh(const Mesh& m) {
+    FlatMesh f;
+    const size_t vertexCount = m.positions.size(), triangles = m.triangleCount();
+    f.positions.reserve(vertexCount + triangles);
+    f.normals.reserve(vertexCount + triangles);
+    f.centroids.reserve(vertexCount + triangles);
+    f.positions = m.positions;
+    f.normals = m.normals;
+    f.centroids = m.positions;
+    f.indices.resize(m.indices.size());
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t a = m.indices[3 * t], b = m.indices[3 * t + 1], c = m.indices[3 * t + 2];
+        const glm::vec3 &pa = m.positions[a], &pb = m.positions[b], &pc = m.positions[c];
+        f.positions.push_back(pc);
+        f.normals.push_back(faceNormal(pa, pb, pc));
+        f.centroids.push_back((pa + pb + pc) / 3.0f);
+        f.indices[3 * t] = a;
+        f.indices[3 * t + 1] = b;
+        f.indices[3 * t + 2] = uint32_t(vertexCount + t);
+    }
+    return f;
+}
+
+BoundingSphere worldBounds(const std::vector<const Mesh*>& meshes, const std::vector<glm::mat4>& worldFromObject) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    bool any = false;
+    for (size_t i = 0; i < meshes.size(); ++i)
+        for (const glm::vec3& p : meshes[i]->positions) {
+            const glm::vec3 w = glm::vec3(worldFromObject[i] * glm::vec4(p, 1.0f));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+            any = true;
+        }
+    BoundingSphere b;
+    if (!any) return b;
+    b.center = 0.5f * (lo + hi);
+    for (size_t i = 0; i < meshes.size(); ++i)
+        for (const glm::vec3& p : meshes[i]->positions)
+            b.radius = std::max(b.radius, glm::length(glm::vec3(worldFromObject[i] * glm::vec4(p, 1.0f)) - b.center));
+    return b;
+}
+
+}  // namespace shadelab

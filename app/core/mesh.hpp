@@ -1,0 +1,56 @@
+#pragma once
+// Triangle meshes in object space, and the procedural shapes of the scene format.
+// All meshes are indexed triangle lists, counter-clockwise seen from outside, with unit vertex normals.
+#include "core/scene.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace shadelab {
+
+struct Mesh {
+    std::vector<glm::vec3> positions;   // object space
+    std::vector<glm::vec3> normals;     // object space, unit length, one per position
+    std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise from outside
+
+    std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// The lecture's face normal of a counter-clockwise triangle a, b, c: normalize((c - b) x (a - b)).
+glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
+// UV sphere laid out exactly like ../shared/bench (seam column duplicated, one triangle per pole quad):
+// (stacks + 1) * (slices + 1) vertices, 2 * slices * (stacks - 1) triangles.
+Mesh makeUvSphere(int slices, int stacks, float radius);
+Mesh makeIcoSphere(int subdivisions, float radius);            // 20 * 4^n triangles
+Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments);
+Mesh makeCube(float size);                                     // 24 vertices, one normal per face
+Mesh makePlane(float size, int subdivisions);                  // x-z square at y = 0, facing +y
+
+// Builds a procedural mesh (not glTF: see gltf_import.hpp).
+Mesh makeProceduralMesh(const MeshSpec& spec);
+
+// Vertex data for flat shading. GL takes a `flat` varying from the provoking (last) vertex of each
+// triangle, so every triangle gets a vertex of its own in that slot carrying its face normal and
+// centroid; the other two corners reuse the shared vertices. That is V + T vertices instead of the 3T
+// a de-indexed copy would need, and the colour is evaluated once per triangle, at the centroid.
+struct FlatMesh {
+    std::vector<glm::vec3> positions;   // object space
+    std::vector<glm::vec3> normals;     // face normal at each provoking vertex (vertex normal elsewhere)
+    std::vector<glm::vec3> centroids;   // triangle centroid at each provoking vertex (position elsewhere)
+    std::vector<std::uint32_t> indices; // (a, b, provoking) per triangle
+};
+FlatMesh makeFlatMesh(const Mesh& mesh);
+
+struct BoundingSphere {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+// Bounding sphere of all meshes after their object-to-world transforms (centre of the box, radius
+// to the farthest vertex). Empty input gives radius 0.
+BoundingSphere worldBounds(const std::vector<const Mesh*>& meshes, const std::vector<glm::mat4>& worldFromObject);
+
+}  // namespace shadelab

@@ -1,0 +1,45 @@
+#include "core/scene.hpp"
+
+namespace shadelab {
+
+bool MeshSpec::operator==(const MeshSpec& o) const {
+    if (type != o.type) return false;
+    switch (type) {
+    case Type::UvSphere: return slices == o.slices && stacks == o.stacks && radius == o.radius;
+    case Type::IcoSphere: return subdivisions == o.subdivisions && radius == o.radius;
+    case Type::Torus:
+        return majorRadius == o.majorRadius && minorRadius == o.minorRadius && majorSegments == o.majorSegments &&
+               minorSegments == o.minorSegments;
+    case Type::Cube: return size == o.size;
+    case Type::Plane: return size == o.size && planeSubdivisions == o.planeSubdivisions;
+    case Type::Gltf: return resolvedPath == o.resolvedPath;
+    }
+    return false;
+}
+
+const char* toString(ShadingMode m) {
+    switch (m) {
+    case ShadingMode::Flat: return "flat";
+    case ShadingMode::Gouraud: return "gouraud";
+    case ShadingMode::Phong: return "phong";
+    }
+    return "?";
+}
+const char* toString(Layout l) { return l == Layout::Single ? "single" : "compare"; }
+const char* toString(ReflectionModel r) { return r == ReflectionModel::Phong ? "phong" : "blinn-phong"; }
+const char* toString(MeshSpec::Type t) {
+    switch (t) {
+    case MeshSpec::Type::UvSphere: return "uvsphere";
+    case MeshSpec::Type::IcoSphere: return "icosphere";
+    case MeshSpec::Type::Torus: return "torus";
+    case MeshSpec::Type::Cube: return "cube";
+    case MeshSpec::Type::Plane: return "plane";
+    case MeshSpec::Type::Gltf: return "gltf";
+    }
+    return "?";
+}
+const char* toString(Attenuation a) { return a == Attenuation::None ? "none" : "inverse-square"; }
+const char* toString(LightType t) { return t == LightType::Point ? "point" : "directional"; }
+const char* toString(OutputEncoding e) { return e == OutputEncoding::Linear ? "linear" : "srgb"; }
+
+}  // namespace shadelab

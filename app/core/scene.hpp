@@ -1,0 +1,114 @@
+#pragma once
+// The scene model: the one description of what is drawn. The JSON scene file (scene_json.hpp), the
+// command line and the viewer's panel all edit this plain struct; the renderer only reads it.
+// Defaults here are the documented defaults of the scene-file format (README, "Scene file").
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+enum class ShadingMode { Flat, Gouraud, Phong };
+enum class Layout { Single, Compare };
+enum class ReflectionModel { Phong, BlinnPhong };
+enum class OutputEncoding { Linear, Srgb };
+enum class LightType { Point, Directional };
+enum class Attenuation { None, InverseSquare };
+
+// Limits shared by the parser, the CLI and the renderer.
+inline constexpr int kMaxLights = 16;          // also SL_MAX_LIGHTS in shaders/shared_defs.glsl
+inline constexpr int kMaxImageSide = 16384;    // pixels per side, refused before anything is allocated
+inline constexpr float kMinExponent = 1.0f;    // k_e range: the lecture's slider goes 1..1000
+inline constexpr float kMaxExponent = 10000.0f;
+
+struct Material {
+    glm::vec3 color{0.85f, 0.32f, 0.2f};   // C, the diffuse/ambient colour (linear RGB, 0..1)
+    glm::vec3 specularColor{1.0f};         // S, the colour of the highlight
+    float ka = 0.1f;                       // ambient weight
+    float kd = 0.7f;                       // diffuse weight
+    float ks = 0.5f;                       // specular weight
+    float ke = 32.0f;                      // specular exponent ("size of the highlight")
+};
+
+struct MeshSpec {
+    enum class Type { UvSphere, IcoSphere, Torus, Cube, Plane, Gltf };
+    Type type = Type::UvSphere;
+    // uvsphere: `slices` around the y axis, `stacks` from pole to pole; 2*slices*(stacks-1) triangles
+    int slices = 64;
+    int stacks = 32;
+    float radius = 1.0f;            // uvsphere, icosphere
+    int subdivisions = 3;           // icosphere: 20*4^n triangles
+    float majorRadius = 1.0f;       // torus: centre of the tube, around the y axis
+    float minorRadius = 0.35f;      // torus: tube radius
+    int majorSegments = 48;         // torus: segments around y
+    int minorSegments = 24;         // torus: segments around the tube
+    float size = 2.0f;              // cube: edge length; plane: edge length (square in x-z, facing +y)
+    int planeSubdivisions = 1;      // plane: quads per edge
+    std::string path;               // gltf: as written in the scene (relative to the scene file)
+    std::string resolvedPath;       // gltf: the path that is read (filled in by the parser)
+
+    bool operator==(const MeshSpec& o) const;
+    bool operator!=(const MeshSpec& o) const { return !(*this == o); }
+};
+
+struct Transform {
+    glm::vec3 translation{0.0f};
+    glm::vec3 rotationDeg{0.0f};    // applied about x, then y, then z (R = Rz * Ry * Rx)
+    glm::vec3 scale{1.0f};
+};
+
+struct SceneObject {
+    MeshSpec mesh;
+    Material material;
+    Transform transform;
+};
+
+struct Light {
+    LightType type = LightType::Point;
+    glm::vec3 position{3.0f, 4.0f, 5.0f};     // point lights, world space
+    glm::vec3 direction{-1.0f, -1.0f, -1.0f}; // directional lights: the direction the light travels
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    Attenuation attenuation = Attenuation::None;  // point lights only
+};
+
+struct Camera {
+    glm::vec3 eye{0.0f, 1.5f, 4.8f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovYDeg = 45.0f;          // vertical field of view of each pane
+    float nearPlane = 0.1f;
+    float farPlane = 100.0f;
+};
+
+struct Scene {
+    std::vector<SceneObject> objects{SceneObject{}};
+    ShadingMode shading = ShadingMode::Phong;
+    Layout layout = Layout::Single;
+    ReflectionModel reflection = ReflectionModel::BlinnPhong;
+    glm::vec3 ambient{1.0f};
+    std::vector<Light> lights{Light{}};
+    Camera camera;
+    glm::vec3 background{0.08f, 0.08f, 0.1f};
+    int width = 1280;
+    int height = 720;
+    OutputEncoding outputEncoding = OutputEncoding::Linear;
+
+    // Bookkeeping, not part of the file format:
+    bool cameraGiven = false;     // false: a glTF model may be auto-framed
+    bool lightsGiven = false;     // false: auto-framing may move the default light with the camera
+    bool usesObjectList = false;  // written back as "objects" rather than the one-object shorthand
+    std::string sourcePath;       // the file it came from ("" for the built-in default)
+};
+
+// Names as they appear in scene files and on the command line.
+const char* toString(ShadingMode m);
+const char* toString(Layout l);
+const char* toString(ReflectionModel r);
+const char* toString(MeshSpec::Type t);
+const char* toString(Attenuation a);
+const char* toString(LightType t);
+const char* toString(OutputEncoding e);
+
+}  // namespace shadelab

@@ -1,0 +1,511 @@
+#include "core/scene_json.hpp"
+
+#include "core/embedded.hpp"
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+#include <sstream>
+
+namespace shadelab {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string fmtNumber(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+// Walks a parsed document and turns it into a Scene, naming fields by their path ("lights[0].color").
+class SceneReader {
+public:
+    SceneReader(std::string file, std::string baseDir) : file_(std::move(file)), baseDir_(std::move(baseDir)) {}
+
+    Scene read(const json& root);
+
+private:
+    [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+        throw InputError(file_ + ": " + (path.empty() ? std::string() : path + ": ") + what);
+    }
+    static std::string join(const std::string& path, const std::string& key) {
+        return path.empty() ? key : path + "." + key;
+    }
+    static const char* typeName(const json& j) {
+        if (j.is_boolean()) return "a boolean";
+        if (j.is_number()) return "a number";
+        if (j.is_string()) return "a string";
+        if (j.is_array()) return "an array";
+        if (j.is_object()) return "an object";
+        return "null";
+    }
+
+    void requireObject(const json& j, const std::string& path, std::initializer_list<const char*> allowed) const {
+        if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
+        for (auto it = j.begin(); it != j.end(); ++it) {
+            bool known = false;
+            for (const char* a : allowed) known = known || it.key() == a;
+            if (!known) fail(join(path, it.key()), "unknown field");
+        }
+    }
+
+    double number(const json& j, const std::string& path, double lo, double hi) const {
+        if (!j.is_number()) fail(path, std::string("expected a number, got ") + typeName(j));
+        double v = j.get<double>();
+        if (!std::isfinite(v)) fail(path, "must be a finite number");
+        if (v < lo) fail(path, "must be >= " + fmtNumber(lo) + " (got " + fmtNumber(v) + ")");
+        if (v > hi) fail(path, "must be <= " + fmtNumber(hi) + " (got " + fmtNumber(v) + ")");
+        return v;
+    }
+    void number(const json& o, const char* key, const std::string& path, float& out, double lo, double hi) const {
+        if (o.contains(key)) out = static_cast<float>(number(o[key], join(path, key), lo, hi));
+    }
+    void integer(const json& o, const char* key, const std::string& path, int& out, int lo, int hi) const {
+        if (!o.contains(key)) return;
+        const json& j = o[key];
+        const std::string p = join(path, key);
+        if (!j.is_number_integer()) fail(p, std::string("expected an integer, got ") + typeName(j));
+        if (j.is_number_unsigned() ? j.get<unsigned long long>() > static_cast<unsigned long long>(hi)
+                                   : j.get<long long>() > hi)
+            fail(p, "must be <= " + std::to_string(hi) + " (got " + j.dump() + ")");
+        if (!j.is_number_unsigned() && j.get<long long>() < lo)
+            fail(p, "must be >= " + std::to_string(lo) + " (got " + j.dump() + ")");
+        out = j.get<int>();
+    }
+    glm::vec3 vec3(const json& j, const std::string& path, double lo, double hi) const {
+        if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
+        glm::vec3 v;
+        for (int i = 0; i < 3; ++i)
+            v[i] = static_cast<float>(number(j[static_cast<size_t>(i)], path + "[" + std::to_string(i) + "]", lo, hi));
+        return v;
+    }
+    void vec3(const json& o, const char* key, const std::string& path, glm::vec3& out, double lo, double hi) const {
+        if (o.contains(key)) out = vec3(o[key], join(path, key), lo, hi);
+    }
+    void nonZero(const glm::vec3& v, const std::string& path) const {
+        if (glm::length(v) < 1e-6f) fail(path, "must not be a zero-length vector");
+    }
+    template <typename E, size_t N>
+    void choice(const json& o, const char* key, const std::string& path, E& out,
+                const std::pair<const char*, E> (&options)[N]) const {
+        if (!o.contains(key)) return;
+        const json& j = o[key];
+        const std::string p = join(path, key);
+        std::string allowed;
+        for (const auto& opt : options) allowed += std::string(allowed.empty() ? "" : ", ") + "\"" + opt.first + "\"";
+        if (!j.is_string()) fail(p, "expected one of " + allowed + ", got " + typeName(j));
+        for (const auto& opt : options)
+            if (j.get<std::string>() == opt.first) {
+                out = opt.second;
+                return;
+            }
+        fail(p, "unknown value \"" + j.get<std::string>() + "\" (expected one of " + allowed + ")");
+    }
+
+    MeshSpec mesh(const json& j, const std::string& path) const;
+    Material material(const json& j, const std::string& path) const;
+    Transform transform(const json& j, const std::string& path) const;
+    Light light(const json& j, const std::string& path) const;
+    Camera camera(const json& j, const std::string& path) const;
+
+    std::string file_;
+    std::string baseDir_;
+};
+
+MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
+    MeshSpec m;
+    if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
+    static const std::pair<const char*, MeshSpec::Type> kTypes[] = {
+        {"uvsphere", MeshSpec::Type::UvSphere}, {"icosphere", MeshSpec::Type::IcoSphere},
+        {"torus", MeshSpec::Type::Torus},       {"cube", MeshSpec::Type::Cube},
+        {"plane", MeshSpec::Type::Plane},       {"gltf", MeshSpec::Type::Gltf}};
+    choice(j, "type", path, m.type, kTypes);
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        requireObject(j, path, {"type", "slices", "stacks", "radius"});
+        integer(j, "slices", path, m.slices, 3, 4096);
+        integer(j, "stacks", path, m.stacks, 2, 2048);
+        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        break;
+    case MeshSpec::Type::IcoSphere:
+        requireObject(j, path, {"type", "subdivisions", "radius"});
+        integer(j, "subdivisions", path, m.subdivisions, 0, 8);
+        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        break;
+    case MeshSpec::Type::Torus:
+        requireObject(j, path, {"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
+        number(j, "major_radius", path, m.majorRadius, 1e-4, 1e6);
+        number(j, "minor_radius", path, m.minorRadius, 1e-4, 1e6);
+        integer(j, "major_segments", path, m.majorSegments, 3, 4096);
+        integer(j, "minor_segments", path, m.minorSegments, 3, 4096);
+        break;
+    case MeshSpec::Type::Cube:
+        requireObject(j, path, {"type", "size"});
+        number(j, "size", path, m.size, 1e-4, 1e6);
+        break;
+    case MeshSpec::Type::Plane:
+        requireObject(j, path, {"type", "size", "subdivisions"});
+        number(j, "size", path, m.size, 1e-4, 1e6);
+        integer(j, "subdivisions", path, m.planeSubdivisions, 1, 1024);
+        break;
+    case MeshSpec::Type::Gltf: {
+        requireObject(j, path, {"type", "path"});
+        if (!j.contains("path")) fail(join(path, "path"), "a gltf mesh needs a path");
+        if (!j["path"].is_string() || j["path"].get<std::string>().empty())
+            fail(join(path, "path"), "expected a non-empty string");
+        m.path = j["path"].get<std::string>();
+        fs::path p(m.path);
+        m.resolvedPath = (p.is_absolute() ? p : fs::path(baseDir_) / p).lexically_normal().string();
+        break;
+    }
+    }
+    return m;
+}
+
+Material SceneReader::material(const json& j, const std::string& path) const {
+    Material m;
+    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke"});
+    vec3(j, "color", path, m.color, 0.0, 1.0);
+    vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
+    number(j, "ka", path, m.ka, 0.0, 1000.0);
+    number(j, "kd", path, m.kd, 0.0, 1000.0);
+    number(j, "ks", path, m.ks, 0.0, 1000.0);
+    number(j, "ke", path, m.ke, kMinExponent, kMaxExponent);
+    return m;
+}
+
+Transform SceneReader::transform(const json& j, const std::string& path) const {
+    Transform t;
+    requireObject(j, path, {"translation", "rotation_deg", "scale"});
+    vec3(j, "translation", path, t.translation, -1e6, 1e6);
+    vec3(j, "rotation_deg", path, t.rotationDeg, -1e6, 1e6);
+    vec3(j, "scale", path, t.scale, -1e6, 1e6);
+    for (int i = 0; i < 3; ++i)
+        if (std::fabs(t.scale[i]) < 1e-6f) fail(join(path, "scale"), "components must not be 0");
+    return t;
+}
+
+Light SceneReader::light(const json& j, const std::string& path) const {
+    Light l;
+    if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
+    static const std::pair<const char*, LightType> kTypes[] = {{"point", LightType::Point},
+                                                                {"directional", LightType::Directional}};
+    choice(j, "type", path, l.type, kTypes);
+    if (l.type == LightType::Point) {
+        requireObject(j, path, {"type", "position", "color", "intensity", "attenuation"});
+        vec3(j, "position", path, l.position, -1e6, 1e6);
+        static const std::pair<const char*, Attenuation> kAtt[] = {{"none", Attenuation::None},
+                                                                    {"inverse-square", Attenuation::InverseSquare}};
+        choice(j, "attenuation", path, l.attenuation, kAtt);
+    } else {
+        requireObject(j, path, {"type", "direction", "color", "intensity"});
+        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        nonZero(l.direction, join(path, "direction"));
+    }
+    vec3(j, "color", path, l.color, 0.0, 1.0);
+    number(j, "intensity", path, l.intensity, 0.0, 1e9);
+    return l;
+}
+
+Camera SceneReader::camera(const json& j, const std::string& path) const {
+    Camera c;
+    requireObject(j, path, {"eye", "target", "up", "fov_y_deg", "near", "far"});
+    vec3(j, "eye", path, c.eye, -1e6, 1e6);
+    vec3(j, "target", path, c.target, -1e6, 1e6);
+    vec3(j, "up", path, c.up, -1e6, 1e6);
+    number(j, "fov_y_deg", path, c.fovYDeg, 1.0, 179.0);
+    number(j, "near", path, c.nearPlane, 1e-6, 1e6);
+    number(j, "far", path, c.farPlane, 1e-6, 1e7);
+    if (c.farPlane <= c.nearPlane) fail(join(path, "far"), "must be greater than near");
+    const glm::vec3 forward = c.target - c.eye;
+    if (glm::length(forward) < 1e-6f) fail(join(path, "target"), "must differ from eye");
+    nonZero(c.up, join(path, "up"));
+    if (glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f)
+        fail(join(path, "up"), "must not be parallel to the viewing direction (target - eye)");
+    return c;
+}
+
+Scene SceneReader::read(const json& root) {
+    Scene s;
+    requireObject(root, "",
+                  {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "camera",
+                   "background", "size", "output_encoding"});
+    if (root.contains("objects")) {
+        if (root.contains("mesh") || root.contains("material"))
+            fail("objects", "give either \"objects\" or the one-object shorthand \"mesh\"/\"material\", not both");
+        const json& list = root["objects"];
+        if (!list.is_array()) fail("objects", std::string("expected an array, got ") + typeName(list));
+        if (list.size() > 256) fail("objects", "at most 256 objects (got " + std::to_string(list.size()) + ")");
+        s.objects.clear();
+        s.usesObjectList = true;
+        for (size_t i = 0; i < list.size(); ++i) {
+            const std::string p = "objects[" + std::to_string(i) + "]";
+            requireObject(list[i], p, {"mesh", "material", "transform"});
+            SceneObject o;
+            if (list[i].contains("mesh")) o.mesh = mesh(list[i]["mesh"], p + ".mesh");
+            if (list[i].contains("material")) o.material = material(list[i]["material"], p + ".material");
+            if (list[i].contains("transform")) o.transform = transform(list[i]["transform"], p + ".transform");
+            s.objects.push_back(o);
+        }
+    } else {
+        if (root.contains("mesh")) s.objects[0].mesh = mesh(root["mesh"], "mesh");
+        if (root.contains("material")) s.objects[0].material = material(root["material"], "material");
+    }
+    static const std::pair<const char*, ShadingMode> kShading[] = {
+        {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
+    choice(root, "shading", "", s.shading, kShading);
+    static const std::pair<const char*, Layout> kLayout[] = {{"single", Layout::Single}, {"compare", Layout::Compare}};
+    choice(root, "layout", "", s.layout, kLayout);
+    static const std::pair<const char*, ReflectionModel> kRefl[] = {{"phong", ReflectionModel::Phong},
+                                                                     {"blinn-phong", ReflectionModel::BlinnPhong}};
+    choice(root, "reflection", "", s.reflection, kRefl);
+    static const std::pair<const char*, OutputEncoding> kEnc[] = {{"linear", OutputEncoding::Linear},
+                                                                   {"srgb", OutputEncoding::Srgb}};
+    choice(root, "output_encoding", "", s.outputEncoding, kEnc);
+    vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
+    vec3(root, "background", "", s.background, 0.0, 1.0);
+    if (root.contains("lights")) {
+        const json& list = root["lights"];
+        if (!list.is_array()) fail("lights", std::string("expected an array, got ") + typeName(list));
+        if (list.size() > static_cast<size_t>(kMaxLights))
+            fail("lights", "at most " + std::to_string(kMaxLights) + " lights (got " + std::to_string(list.size()) + ")");
+        s.lights.clear();
+        for (size_t i = 0; i < list.size(); ++i) s.lights.push_back(light(list[i], "lights[" + std::to_string(i) + "]"));
+        s.lightsGiven = true;
+    }
+    if (root.contains("camera")) {
+        s.camera = camera(root["camera"], "camera");
+        s.cameraGiven = true;
+    }
+    if (root.contains("size")) {
+        const json& sz = root["size"];
+        if (!sz.is_array() || sz.size() != 2 || !sz[0].is_number_integer() || !sz[1].is_number_integer())
+            fail("size", "expected [width, height] as two integers");
+        const long long w = sz[0].get<long long>(), h = sz[1].get<long long>();
+        if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+            fail("size", "width and height must be between 1 and " + std::to_string(kMaxImageSide) + " (got " +
+                             std::to_string(w) + "x" + std::to_string(h) + ")");
+        s.width = static_cast<int>(w);
+        s.height = static_cast<int>(h);
+    }
+    return s;
+}
+
+json vecJson(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
+    nlohmann::ordered_json j;
+    j["type"] = toString(m.type);
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        j["slices"] = m.slices;
+        j["stacks"] = m.stacks;
+        j["radius"] = m.radius;
+        break;
+    case MeshSpec::Type::IcoSphere:
+        j["subdivisions"] = m.subdivisions;
+        j["radius"] = m.radius;
+        break;
+    case MeshSpec::Type::Torus:
+        j["major_radius"] = m.majorRadius;
+        j["minor_radius"] = m.minorRadius;
+        j["major_segments"] = m.majorSegments;
+        j["minor_segments"] = m.minorSegments;
+        break;
+    case MeshSpec::Type::Cube: j["size"] = m.size; break;
+    case MeshSpec::Type::Plane:
+        j["size"] = m.size;
+        j["subdivisions"] = m.planeSubdivisions;
+        break;
+    case MeshSpec::Type::Gltf: {
+        std::error_code ec;
+        fs::path abs = fs::absolute(m.resolvedPath, ec);
+        fs::path rel = ec ? fs::path() : abs.lexically_relative(fs::absolute(saveDir.empty() ? "." : saveDir, ec));
+        j["path"] = (ec || rel.empty()) ? m.resolvedPath : rel.generic_string();
+        break;
+    }
+    }
+    return j;
+}
+
+nlohmann::ordered_json materialJson(const Material& m) {
+    nlohmann::ordered_json j;
+    j["color"] = vecJson(m.color);
+    j["specular_color"] = vecJson(m.specularColor);
+    j["ka"] = m.ka;
+    j["kd"] = m.kd;
+    j["ks"] = m.ks;
+    j["ke"] = m.ke;
+    return j;
+}
+
+bool isIdentity(const Transform& t) {
+    return t.translation == glm::vec3(0.0f) && t.rotationDeg == glm::vec3(0.0f) && t.scale == glm::vec3(1.0f);
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& fileLabel, const std::string& baseDir) {
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+        std::string what = e.what();
+        const size_t at = what.find("parse error");
+        throw InputError(fileLabel + ": malformed JSON: " + (at == std::string::npos ? what : what.substr(at)));
+    }
+    Scene s = SceneReader(fileLabel, baseDir).read(root);
+    s.sourcePath = fileLabel;
+    return s;
+}
+
+Scene loadSceneFile(const std::string& path) {
+    const std::string text = readTextFile(path, 64u << 20);
+    const fs::path parent = fs::path(path).parent_path();
+    return parseScene(text, path, parent.empty() ? "." : parent.string());
+}
+
+Scene defaultScene() {
+    const char* text = findEmbedded(kEmbeddedScenes, "default.json");
+    Scene s = parseScene(text ? text : "{}", "(built-in default scene)", ".");
+    s.sourcePath.clear();
+    return s;
+}
+
+Scene sceneForModel(const std::string& modelPath) {
+    Scene s;
+    s.objects[0].mesh.type = MeshSpec::Type::Gltf;
+    s.objects[0].mesh.path = modelPath;
+    s.objects[0].mesh.resolvedPath = fs::path(modelPath).lexically_normal().string();
+    return s;
+}
+
+std::string sceneToJson(const Scene& s, const std::string& saveDir) {
+    nlohmann::ordered_json j;
+    const bool shorthand = !s.usesObjectList && s.objects.size() == 1 && isIdentity(s.objects[0].transform);
+    if (shorthand) {
+        j["mesh"] = meshJson(s.objects[0].mesh, saveDir);
+        j["material"] = materialJson(s.objects[0].material);
+    } else {
+        j["objects"] = nlohmann::ordered_json::array();
+        for (const SceneObject& o : s.objects) {
+            nlohmann::ordered_json oj;
+            oj["mesh"] = meshJson(o.mesh, saveDir);
+            oj["material"] = materialJson(o.material);
+            oj["transform"] = {{"translation", vecJson(o.transform.translation)},
+                               {"rotation_deg", vecJson(o.transform.rotationDeg)},
+                               {"scale", vecJson(o.transform.scale)}};
+            j["objects"].push_back(oj);
+        }
+    }
+    j["shading"] = toString(s.shading);
+    j["layout"] = toString(s.layout);
+    j["reflection"] = toString(s.reflection);
+    j["ambient"] = vecJson(s.ambient);
+    j["lights"] = nlohmann::ordered_json::array();
+    for (const Light& l : s.lights) {
+        nlohmann::ordered_json lj;
+        lj["type"] = toString(l.type);
+        if (l.type == LightType::Point) {
+            lj["position"] = vecJson(l.position);
+        } else {
+            lj["direction"] = vecJson(l.direction);
+        }
+        lj["color"] = vecJson(l.color);
+        lj["intensity"] = l.intensity;
+        if (l.type == LightType::Point) lj["attenuation"] = toString(l.attenuation);
+        j["lights"].push_back(lj);
+    }
+    j["camera"] = {{"eye", vecJson(s.camera.eye)},        {"target", vecJson(s.camera.target)},
+                   {"up", vecJson(s.camera.up)},          {"fov_y_deg", s.camera.fovYDeg},
+                   {"near", s.camera.nearPlane},          {"far", s.camera.farPlane}};
+    j["background"] = vecJson(s.background);
+    j["size"] = {s.width, s.height};
+    j["output_encoding"] = toString(s.outputEncoding);
+    return j.dump(2) + "\n";
+}
+
+MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
+    MeshSpec m;
+    std::vector<std::string> parts;
+    std::stringstream ss(text);
+    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+    if (parts.empty()) throw InputError(opt + ": empty mesh");
+    auto intArg = [&](size_t i, int& out, int lo, int hi) {
+        if (i >= parts.size()) return;
+        const std::string& p = parts[i];
+        size_t used = 0;
+        long v = 0;
+        try {
+            v = std::stol(p, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + p + "\" is not an integer");
+        if (v < lo || v > hi)
+            throw InputError(opt + ": " + p + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+        out = static_cast<int>(v);
+    };
+    const std::string& kind = parts[0];
+    size_t maxParts = 1;
+    if (kind == "uvsphere") {
+        m.type = MeshSpec::Type::UvSphere;
+        intArg(1, m.slices, 3, 4096);
+        intArg(2, m.stacks, 2, 2048);
+        maxParts = 3;
+    } else if (kind == "icosphere") {
+        m.type = MeshSpec::Type::IcoSphere;
+        intArg(1, m.subdivisions, 0, 8);
+        maxParts = 2;
+    } else if (kind == "torus") {
+        m.type = MeshSpec::Type::Torus;
+        intArg(1, m.majorSegments, 3, 4096);
+        intArg(2, m.minorSegments, 3, 4096);
+        maxParts = 3;
+    } else if (kind == "cube") {
+        m.type = MeshSpec::Type::Cube;
+    } else if (kind == "plane") {
+        m.type = MeshSpec::Type::Plane;
+        intArg(1, m.planeSubdivisions, 1, 1024);
+        maxParts = 2;
+    } else if (hasModelExtension(text)) {
+        m.type = MeshSpec::Type::Gltf;
+        m.path = text;
+        m.resolvedPath = fs::path(text).lexically_normal().string();
+        return m;
+    } else {
+        throw InputError(opt + ": unknown mesh \"" + kind +
+                         "\" (expected uvsphere[:slices[:stacks]], icosphere[:n], torus[:major[:minor]], cube, "
+                         "plane[:n], or a .gltf/.glb file)");
+    }
+    if (parts.size() > maxParts) throw InputError(opt + ": too many ':' parameters for " + kind);
+    return m;
+}
+
+void checkCoefficients(const Material& m, const std::string& where) {
+    auto check = [&](const char* name, float v, float lo, float hi) {
+        if (!std::isfinite(v) || v < lo || v > hi)
+            throw InputError(where + name + ": must be between " + fmtNumber(lo) + " and " + fmtNumber(hi) + " (got " +
+                             fmtNumber(v) + ")");
+    };
+    check("ka", m.ka, 0.0f, 1000.0f);
+    check("kd", m.kd, 0.0f, 1000.0f);
+    check("ks", m.ks, 0.0f, 1000.0f);
+    check("ke", m.ke, kMinExponent, kMaxExponent);
+}
+
+void checkImageSize(int width, int height, const std::string& where) {
+    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+        throw InputError(where + ": width and height must be between 1 and " + std::to_string(kMaxImageSide) +
+                         " (got " + std::to_string(width) + "x" + std::to_string(height) + ")");
+}
+
+}  // namespace shadelab

@@ -1,0 +1,77 @@
+#include "headless/headless.hpp"
+
+#include "headless/osmesa_context.hpp"
+#include "render/renderer.hpp"
+
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace shadelab {
+
+Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders) {
+    OsMesaContext context(scene.width, scene.height);
+    Renderer renderer(OsMesaContext::getProcAddress(), shaders);
+    renderer.setGeometry(std::move(geometry));
+    const RenderTarget target{0, scene.width, scene.height};
+    renderer.render(scene, target);
+    return readPixels(target);
+}
+
+std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
+                                               const std::vector<ShadingMode>& modes, int frames, int warmup,
+                                               const ShaderLibrary& shaders) {
+    OsMesaContext context(scene.width, scene.height);
+    Renderer renderer(OsMesaContext::getProcAddress(), shaders);
+    const std::size_t triangles = geometry->triangleCount() * (scene.layout == Layout::Compare ? 3 : 1);
+    renderer.setGeometry(std::move(geometry));
+    const RenderTarget target{0, scene.width, scene.height};
+    std::vector<BenchmarkResult> results;
+    for (ShadingMode mode : modes) {
+        Scene s = scene;
+        s.shading = mode;
+        std::vector<double> ms;
+        for (int f = 0; f < warmup + frames; ++f) {
+            for (SceneObject& o : s.objects)
+                o.transform.rotationDeg.y = scene.objects.front().transform.rotationDeg.y +
+                                            glm::degrees(0.01f) * float(f);
+            const auto t0 = std::chrono::steady_clock::now();
+            renderer.render(s, target);
+            glFinish();
+            const auto t1 = std::chrono::steady_clock::now();
+            if (f >= warmup) ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+        }
+        std::sort(ms.begin(), ms.end());
+        BenchmarkResult r;
+        r.mode = mode;
+        r.layout = s.layout;
+        r.frames = frames;
+        r.triangles = triangles;
+        r.width = s.width;
+        r.height = s.height;
+        const std::size_t n = ms.size();
+        r.medianMs = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+        r.p95Ms = ms[std::min(n - 1, std::size_t(std::ceil(0.95 * double(n))) - 1)];
+        r.minMs = ms.front();
+        r.maxMs = ms.back();
+        r.glRenderer = renderer.glRenderer();
+        results.push_back(r);
+    }
+    return results;
+}
+
+std::string toJson(const BenchmarkResult& r) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "{\"frames\": %d, \"triangles\": %zu, \"size\": [%d, %d], \"shading\": \"%s\", \"layout\": \"%s\", "
+                  "\"median_ms\": %.3f, \"p95_ms\": %.3f, \"min_ms\": %.3f, \"max_ms\": %.3f, \"gl_renderer\": \"%s\"}",
+                  r.frames, r.triangles, r.width, r.height,
+                  r.layout == Layout::Compare ? "compare" : toString(r.mode), toString(r.layout), r.medianMs, r.p95Ms,
+                  r.minMs, r.maxMs, r.glRenderer.c_str());
+    return buf;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,33 @@
+#pragma once
+// Headless rendering: one frame to an image, or a timed run of frames, on an OSMesa context.
+#include "core/image.hpp"
+#include "core/scene.hpp"
+#include "core/scene_geometry.hpp"
+#include "render/shader_library.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace shadelab {
+
+Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
+                     const ShaderLibrary& shaders = ShaderLibrary());
+
+struct BenchmarkResult {
+    ShadingMode mode = ShadingMode::Phong;
+    Layout layout = Layout::Single;
+    int frames = 0;
+    std::size_t triangles = 0;  // per frame, all panes
+    int width = 0, height = 0;
+    double medianMs = 0, p95Ms = 0, minMs = 0, maxMs = 0;
+    std::string glRenderer;
+};
+// Renders `warmup + frames` frames of each mode (glFinish after each, as ../shared/bench/probe.cpp
+// does) and reports per-frame times of the last `frames`. The objects turn by 0.01 rad about y per
+// frame, like the probe's sphere, so no frame repeats the previous one.
+std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
+                                               const std::vector<ShadingMode>& modes, int frames, int warmup,
+                                               const ShaderLibrary& shaders = ShaderLibrary());
+std::string toJson(const BenchmarkResult& r);
+
+}  // namespace shadelab

@@ -1,0 +1,63 @@
+#include "render/program.hpp"
+
+#include "core/glsl_include.hpp"
+#include "render/gpu_blocks.hpp"
+
+#include <vector>
+
+namespace shadelab {
+namespace {
+
+gl::Shader compileStage(GLenum stage, const std::string& programName, const std::string& file,
+                        const ShaderLibrary& library) {
+    ExpandedGlsl src;
+    try {
+        src = expandGlsl(file, [&](const std::string& n) { return library.load(n); });
+    } catch (const std::exception& e) {
+        throw ShaderError("program " + programName + ": " + e.what());
+    }
+    gl::Shader shader(glCreateShader(stage));
+    const char* text = src.text.c_str();
+    glShaderSource(shader.get(), 1, &text, nullptr);
+    glCompileShader(shader.get());
+    GLint ok = GL_FALSE, logLength = 0;
+    glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+    glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, &logLength);
+    if (!ok) {
+        std::vector<char> log(size_t(logLength > 1 ? logLength : 1), '\0');
+        glGetShaderInfoLog(shader.get(), GLsizei(log.size()), nullptr, log.data());
+        throw ShaderError("program " + programName + ", " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                          " stage (" + file + ", GLSL 330 core) failed to compile:\n" +
+                          locateGlslLog(log.data(), src.files));
+    }
+    return shader;
+}
+
+}  // namespace
+
+gl::Program buildProgram(const std::string& name, const ShaderLibrary& library) {
+    gl::Shader vs = compileStage(GL_VERTEX_SHADER, name, name + ".vert", library);
+    gl::Shader fs = compileStage(GL_FRAGMENT_SHADER, name, name + ".frag", library);
+    gl::Program program(glCreateProgram());
+    glAttachShader(program.get(), vs.get());
+    glAttachShader(program.get(), fs.get());
+    glLinkProgram(program.get());
+    GLint ok = GL_FALSE, logLength = 0;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        glGetProgramiv(program.get(), GL_INFO_LOG_LENGTH, &logLength);
+        std::vector<char> log(size_t(logLength > 1 ? logLength : 1), '\0');
+        glGetProgramInfoLog(program.get(), GLsizei(log.size()), nullptr, log.data());
+        throw ShaderError("program " + name + " failed to link:\n" + std::string(log.data()));
+    }
+    glDetachShader(program.get(), vs.get());
+    glDetachShader(program.get(), fs.get());
+    // GL 3.3 has no layout(binding = N) for blocks: bind them here, from the shared definitions.
+    const GLuint frame = glGetUniformBlockIndex(program.get(), "FrameBlock");
+    const GLuint object = glGetUniformBlockIndex(program.get(), "ObjectBlock");
+    if (frame != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), frame, SL_BINDING_FRAME);
+    if (object != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), object, SL_BINDING_OBJECT);
+    return program;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,20 @@
+#pragma once
+// Compiling and linking one GLSL program from files in a ShaderLibrary. Errors are ShaderErrors whose
+// message names the program, the stage, and the file and line of each driver message.
+#include "render/gl_handles.hpp"
+#include "render/shader_library.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace shadelab {
+
+class ShaderError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Builds `<name>.vert` + `<name>.frag`, binds the uniform blocks to their SL_BINDING_* points.
+gl::Program buildProgram(const std::string& name, const ShaderLibrary& library);
+
+}  // namespace shadelab

@@ -1,0 +1,226 @@
+#include "render/renderer.hpp"
+
+#include "core/camera.hpp"
+#include "render/gpu_blocks.hpp"
+#include "render/program.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+#include <stdexcept>
+
+namespace shadelab {
+namespace {
+
+const char* kProgramNames[3] = {"flat", "gouraud", "phong"};  // by ShadingMode
+
+void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
+    dst[0] = v.x, dst[1] = v.y, dst[2] = v.z, dst[3] = w;
+}
+
+gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
+    gpu::FrameBlock b{};
+    const glm::mat4 clipFromWorld = clipFromView(s.camera, aspect) * viewFromWorld(s.camera);
+    std::memcpy(b.clipFromWorld, glm::value_ptr(clipFromWorld), sizeof b.clipFromWorld);
+    copyVec(b.eyeWorld, s.camera.eye, 1.0f);
+    copyVec(b.ambient, s.ambient);
+    const int count = int(std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS));
+    b.settings[0] = count;
+    b.settings[1] = s.reflection == ReflectionModel::Phong ? SL_REFLECTION_PHONG : SL_REFLECTION_BLINN_PHONG;
+    b.settings[2] = s.outputEncoding == OutputEncoding::Srgb ? SL_ENCODING_SRGB : SL_ENCODING_LINEAR;
+    for (int i = 0; i < count; ++i) {
+        const Light& l = s.lights[std::size_t(i)];
+        gpu::LightGpu& g = b.lights[i];
+        const bool point = l.type == LightType::Point;
+        copyVec(g.positionOrDirection, point ? l.position : l.direction);
+        copyVec(g.radiance, l.color * l.intensity);
+        g.kind[0] = point ? SL_LIGHT_POINT : SL_LIGHT_DIRECTIONAL;
+        g.kind[1] = (point && l.attenuation == Attenuation::InverseSquare) ? SL_ATTENUATION_INVERSE_SQUARE
+                                                                           : SL_ATTENUATION_NONE;
+    }
+    return b;
+}
+
+gpu::ObjectBlock objectBlock(const SceneObject& o) {
+    gpu::ObjectBlock b{};
+    const glm::mat4 world = worldFromObject(o.transform);
+    const glm::mat4 normal = glm::mat4(normalWorldFromObject(world));
+    std::memcpy(b.worldFromObject, glm::value_ptr(world), sizeof b.worldFromObject);
+    std::memcpy(b.normalWorldFromObject, glm::value_ptr(normal), sizeof b.normalWorldFromObject);
+    copyVec(b.color, o.material.color);
+    copyVec(b.specularColor, o.material.specularColor);
+    b.coefficients[0] = o.material.ka;
+    b.coefficients[1] = o.material.kd;
+    b.coefficients[2] = o.material.ks;
+    b.coefficients[3] = o.material.ke;
+    return b;
+}
+
+std::size_t alignUp(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
+
+void checkGl(const char* where) {
+    const GLenum e = glGetError();
+    if (e != GL_NO_ERROR) {
+        char code[16];
+        std::snprintf(code, sizeof code, "0x%04x", e);
+        throw std::runtime_error(std::string("GL error ") + code + " in " + where);
+    }
+}
+
+}  // namespace
+
+Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders) : shaders_(std::move(shaders)) {
+    const int version = gladLoadGL(getProcAddress);
+    if (version == 0) throw std::runtime_error("could not load OpenGL entry points");
+    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
+        throw std::runtime_error("OpenGL 3.3 core is needed; the context offers " +
+                                 std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
+                                 std::to_string(GLAD_VERSION_MINOR(version)));
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniformAlignment_);
+    if (uniformAlignment_ <= 0) uniformAlignment_ = 256;
+    uniforms_ = gl::makeBuffer();
+    checkGl("renderer set-up");
+}
+
+Renderer::~Renderer() = default;
+
+std::string Renderer::glRenderer() const { return reinterpret_cast<const char*>(glGetString(GL_RENDERER)); }
+std::string Renderer::glVersion() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
+
+void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
+    geometry_ = std::move(geometry);
+    gpuMeshes_.clear();
+    gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
+}
+
+void Renderer::prepareProgram(ShadingMode mode) { program(mode); }
+
+GLuint Renderer::program(ShadingMode mode) {
+    gl::Program& p = programs_[std::size_t(mode)];
+    if (!p) p = buildProgram(kProgramNames[std::size_t(mode)], shaders_);
+    return p.get();
+}
+
+const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode) {
+    const bool flat = mode == ShadingMode::Flat;
+    GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
+    if (g.vao) return g;
+    const Mesh& mesh = geometry_->meshes[object];
+    g.vao = gl::makeVertexArray();
+    g.vertices = gl::makeBuffer();
+    g.indices = gl::makeBuffer();
+    glBindVertexArray(g.vao.get());
+    glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.get());
+    // Interleaved vertices: position, normal (and for flat, centroid), 3 floats each.
+    std::vector<float> interleaved;
+    const std::vector<std::uint32_t>* indices = &mesh.indices;
+    FlatMesh flatMesh;
+    const int floatsPerVertex = flat ? 9 : 6;
+    if (flat) {
+        flatMesh = makeFlatMesh(mesh);
+        indices = &flatMesh.indices;
+        interleaved.reserve(flatMesh.positions.size() * 9);
+        for (std::size_t i = 0; i < flatMesh.positions.size(); ++i)
+            for (const glm::vec3* v : {&flatMesh.positions[i], &flatMesh.normals[i], &flatMesh.centroids[i]})
+                interleaved.insert(interleaved.end(), {v->x, v->y, v->z});
+    } else {
+        interleaved.reserve(mesh.positions.size() * 6);
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+            for (const glm::vec3* v : {&mesh.positions[i], &mesh.normals[i]})
+                interleaved.insert(interleaved.end(), {v->x, v->y, v->z});
+    }
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices->size() * sizeof(std::uint32_t)), indices->data(),
+                 GL_STATIC_DRAW);
+    const auto stride = GLsizei(floatsPerVertex * sizeof(float));
+    glVertexAttribPointer(SL_ATTRIB_POSITION, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(0));
+    glEnableVertexAttribArray(SL_ATTRIB_POSITION);
+    glVertexAttribPointer(SL_ATTRIB_NORMAL, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+    glEnableVertexAttribArray(SL_ATTRIB_NORMAL);
+    if (flat) {
+        glVertexAttribPointer(SL_ATTRIB_CENTROID, 3, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<void*>(6 * sizeof(float)));
+        glEnableVertexAttribArray(SL_ATTRIB_CENTROID);
+    }
+    glBindVertexArray(0);
+    g.indexCount = GLsizei(indices->size());
+    checkGl("mesh upload");
+    return g;
+}
+
+void Renderer::render(const Scene& scene, const RenderTarget& target) {
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height);
+    const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
+
+    // All uniforms of the frame in one upload: a FrameBlock per pane, then an ObjectBlock per object,
+    // each at an offset glBindBufferRange accepts.
+    const auto align = std::size_t(uniformAlignment_);
+    const std::size_t frameStride = alignUp(sizeof(gpu::FrameBlock), align);
+    const std::size_t objectStride = alignUp(sizeof(gpu::ObjectBlock), align);
+    const std::size_t objectsOffset = frameStride * panes.size();
+    std::vector<unsigned char> staging(objectsOffset + objectStride * objects);
+    for (std::size_t p = 0; p < panes.size(); ++p) {
+        const gpu::FrameBlock b = frameBlock(scene, float(panes[p].width) / float(std::max(panes[p].height, 1)));
+        std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
+    }
+    for (std::size_t o = 0; o < objects; ++o) {
+        const gpu::ObjectBlock b = objectBlock(scene.objects[o]);
+        std::memcpy(staging.data() + objectsOffset + o * objectStride, &b, sizeof b);
+    }
+    glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.get());
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(staging.size()), staging.data(), GL_STREAM_DRAW);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glViewport(0, 0, target.width, target.height);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glProvokingVertex(GL_LAST_VERTEX_CONVENTION);  // FlatMesh puts each triangle's own vertex last
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+
+    for (std::size_t p = 0; p < panes.size(); ++p) {
+        const Pane& pane = panes[p];
+        glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
+        glUseProgram(program(pane.mode));
+        glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
+                          sizeof(gpu::FrameBlock));
+        for (std::size_t o = 0; o < objects; ++o) {
+            const GpuMesh& mesh = gpuMesh(o, pane.mode);
+            if (mesh.indexCount == 0) continue;
+            glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
+                              GLintptr(objectsOffset + o * objectStride), sizeof(gpu::ObjectBlock));
+            // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
+            const bool mirrored = glm::determinant(glm::mat3(worldFromObject(scene.objects[o].transform))) < 0.0f;
+            glFrontFace(mirrored ? GL_CW : GL_CCW);
+            glBindVertexArray(mesh.vao.get());
+            glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+        }
+    }
+    glBindVertexArray(0);
+    glFrontFace(GL_CCW);
+    checkGl("render");
+}
+
+Image readPixels(const RenderTarget& target) {
+    Image img(target.width, target.height);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    std::vector<std::uint8_t> bottomUp(img.rgba.size());
+    glReadPixels(0, 0, target.width, target.height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    const std::size_t row = std::size_t(target.width) * 4;
+    for (int y = 0; y < target.height; ++y)
+        std::memcpy(img.pixel(0, y), bottomUp.data() + std::size_t(target.height - 1 - y) * row, row);
+    checkGl("readPixels");
+    return img;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,64 @@
+#pragma once
+// The GL renderer: draws a Scene into a framebuffer it is handed. It never creates a context; the
+// front end (the GLFW viewer, the OSMesa or any other headless context) makes one current and passes
+// its get-proc-address function. All GL state the renderer relies on is set in render().
+#include "core/image.hpp"
+#include "core/scene.hpp"
+#include "core/scene_geometry.hpp"
+#include "render/gl_handles.hpp"
+#include "render/shader_library.hpp"
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+struct RenderTarget {
+    GLuint framebuffer = 0;  // 0: the context's default framebuffer
+    int width = 0;
+    int height = 0;
+};
+
+class Renderer {
+public:
+    // Loads GL 3.3 core entry points through `getProcAddress` (the context must be current) and
+    // checks the version. Programs are compiled on first use. Throws std::runtime_error.
+    Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders = ShaderLibrary());
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Replaces the meshes; uploads happen lazily, per shading mode, on the next render().
+    void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
+    // Draws all panes of the scene's layout. Throws ShaderError or std::runtime_error on a GL error.
+    void render(const Scene& scene, const RenderTarget& target);
+    // Compiles the program of `mode` now (render() does it on first use).
+    void prepareProgram(ShadingMode mode);
+
+    std::string glRenderer() const;
+    std::string glVersion() const;
+
+private:
+    struct GpuMesh {
+        gl::VertexArray vao;
+        gl::Buffer vertices;
+        gl::Buffer indices;
+        GLsizei indexCount = 0;
+    };
+    const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
+    GLuint program(ShadingMode mode);
+
+    ShaderLibrary shaders_;
+    std::array<gl::Program, 3> programs_;                 // by ShadingMode
+    std::shared_ptr<const SceneGeometry> geometry_;
+    std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
+    gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
+    GLint uniformAlignment_ = 256;
+};
+
+// Reads the colour buffer of `target` (bottom-up in GL) into a top-down RGBA image.
+Image readPixels(const RenderTarget& target);
+
+}  // namespace shadelab

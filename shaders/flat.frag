@@ -1,0 +1,8 @@
+#include "lighting.glsl"
+
+flat in vec3 v_color;
+out vec4 o_color;
+
+void main() {
+    o_color = vec4(encodeOutput(v_color), 1.0);
+}

@@ -1,0 +1,15 @@
+// Phong shading: position and normal are interpolated; the fragment shader evaluates the colour.
+#include "uniforms.glsl"
+
+layout(location = SL_ATTRIB_POSITION) in vec3 a_posObject;
+layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
+
+out vec3 v_posWorld;
+out vec3 v_nrmWorld;
+
+void main() {
+    vec4 posWorld = u_worldFromObject * vec4(a_posObject, 1.0);
+    v_posWorld = posWorld.xyz;
+    v_nrmWorld = mat3(u_normalWorldFromObject) * a_nrmObject;
+    gl_Position = u_clipFromWorld * posWorld;
+}

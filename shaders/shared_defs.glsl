@@ -1,0 +1,24 @@
+// Shared by the GLSL programs and by C++ (app/render/gpu_blocks.hpp includes this file): attribute
+// locations, uniform-block bindings and limits have one definition. Only #define lines belong here.
+#ifndef SL_SHARED_DEFS_GLSL
+#define SL_SHARED_DEFS_GLSL
+
+#define SL_ATTRIB_POSITION 0       // a_posObject
+#define SL_ATTRIB_NORMAL 1         // a_nrmObject (flat: the face normal at the provoking vertex)
+#define SL_ATTRIB_CENTROID 2       // a_centroidObject (flat only)
+
+#define SL_BINDING_FRAME 0         // FrameBlock: camera and lights, one per pane
+#define SL_BINDING_OBJECT 1        // ObjectBlock: transform and material, one per object
+
+#define SL_MAX_LIGHTS 16
+
+#define SL_LIGHT_POINT 0
+#define SL_LIGHT_DIRECTIONAL 1
+#define SL_ATTENUATION_NONE 0
+#define SL_ATTENUATION_INVERSE_SQUARE 1
+#define SL_REFLECTION_PHONG 0
+#define SL_REFLECTION_BLINN_PHONG 1
+#define SL_ENCODING_LINEAR 0
+#define SL_ENCODING_SRGB 1
+
+#endif
