@@ -72,11 +72,13 @@ private:
         const json& j = o[key];
         const std::string p = join(path, key);
         if (!j.is_number_integer()) fail(p, std::string("expected an integer, got ") + typeName(j));
-        if (j.is_number_unsigned() ? j.get<unsigned long long>() > static_cast<unsigned long long>(hi)
-                                   : j.get<long long>() > hi)
-            fail(p, "must be <= " + std::to_string(hi) + " (got " + j.dump() + ")");
-        if (!j.is_number_unsigned() && j.get<long long>() < lo)
-            fail(p, "must be >= " + std::to_string(lo) + " (got " + j.dump() + ")");
+        // nlohmann stores non-negative integers as unsigned: compare in the type it holds.
+        const bool tooBig = j.is_number_unsigned() ? j.get<unsigned long long>() > static_cast<unsigned long long>(hi)
+                                                   : j.get<long long>() > hi;
+        const bool tooSmall = j.is_number_unsigned() ? j.get<unsigned long long>() < static_cast<unsigned long long>(lo)
+                                                     : j.get<long long>() < lo;
+        if (tooBig) fail(p, "must be <= " + std::to_string(hi) + " (got " + j.dump() + ")");
+        if (tooSmall) fail(p, "must be >= " + std::to_string(lo) + " (got " + j.dump() + ")");
         out = j.get<int>();
     }
     glm::vec3 vec3(const json& j, const std::string& path, double lo, double hi) const {

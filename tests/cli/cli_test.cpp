@@ -1,0 +1,183 @@
+// The shadelab executable as a user (or CI) runs it: headless output with no display, one-line errors
+// with exit status 2 and no output file for every kind of bad input, the benchmark's JSON lines.
+#include "core/image.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::path(SHADELAB_TEST_OUTPUT_DIR) / "cli" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    // Runs shadelab with no display (DISPLAY and WAYLAND_DISPLAY unset), as CI does.
+    RunResult run(const std::vector<std::string>& args) const {
+        std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + quote(SHADELAB_EXE);
+        for (const auto& a : args) cmd += " " + quote(a);
+        cmd += " >" + quote((dir_ / "stdout").string()) + " 2>" + quote((dir_ / "stderr").string());
+        const int status = std::system(cmd.c_str());
+        RunResult r;
+        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+        r.out = slurp(dir_ / "stdout");
+        r.err = slurp(dir_ / "stderr");
+        return r;
+    }
+    std::string file(const std::string& name, const std::string& contents) const {
+        std::ofstream(dir_ / name) << contents;
+        return (dir_ / name).string();
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(Cli, RendersTheDefaultCompareLayoutWithoutADisplay) {
+    const RunResult r = run({"--layout", "compare", "--size", "240x80", "--output", path("x.png")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image img = readPng(path("x.png"));
+    EXPECT_EQ(img.width, 240);
+    EXPECT_EQ(img.height, 80);
+    // Not a blank frame: each pane has lit sphere pixels well above the dark background.
+    for (int pane = 0; pane < 3; ++pane) {
+        int lit = 0;
+        for (int y = 0; y < 80; ++y)
+            for (int x = pane * 80; x < pane * 80 + 80; ++x) lit += img.pixel(x, y)[0] > 100;
+        EXPECT_GT(lit, 200) << "pane " << pane;
+    }
+    // Only the image is written (the temporary file was renamed, none left behind).
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3);  // x.png, stdout, stderr
+}
+
+TEST_F(Cli, ScenePlusOverrides) {
+    const std::string scene = file("s.json", R"({"mesh": {"type": "cube"}, "shading": "flat", "size": [50, 40]})");
+    const RunResult r = run({scene, "--shading", "gouraud", "--ke", "8", "--size", "64x48", "--output", path("o.png")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(readPng(path("o.png")).width, 64);
+}
+
+TEST_F(Cli, BadInputGivesOneLineExitTwoAndNoOutput) {
+    const std::string malformed = file("malformed.json", "{\"mesh\": ");
+    const std::string unknown = file("unknown.json", R"({"material": {"shininess": 4}})");
+    const std::string negative = file("negative.json", R"({"material": {"kd": -0.5}})");
+    const std::string badSize = file("size.json", R"({"size": [0, 10]})");
+    const std::string badModel = file("model.json", R"({"mesh": {"type": "gltf", "path": "nowhere.glb"}})");
+    const std::string junk = file("junk.gltf", "\x01\x02 not gltf");
+    fs::create_directories(dir_ / "adir.png");
+    struct Case {
+        std::vector<std::string> args;
+        std::vector<std::string> fragments;
+        std::string output;
+    };
+    const std::string out = path("out.png");
+    const std::vector<Case> cases = {
+        {{path("missing.json")}, {"missing.json", "cannot read"}, out},
+        {{malformed}, {"malformed.json", "malformed JSON"}, out},
+        {{unknown}, {"unknown.json", "material.shininess", "unknown field"}, out},
+        {{negative}, {"negative.json", "material.kd", ">= 0"}, out},
+        {{badSize}, {"size.json", "size"}, out},
+        {{badModel}, {"nowhere.glb"}, out},
+        {{junk}, {"junk.gltf"}, out},
+        {{"--size", "0x10"}, {"--size"}, out},
+        {{"--size", "100000x100000"}, {"--size", "16384"}, out},
+        {{"--ka", "-1"}, {"--ka"}, out},
+        {{"--ke", "0"}, {"--ke"}, out},
+        {{"--shading", "toon"}, {"--shading", "toon"}, out},
+        {{"--mesh", "uvsphere:10000000"}, {"--mesh"}, out},
+        {{"--no-such-flag"}, {"--no-such-flag"}, out},
+        {{}, {"does not exist"}, path("no/such/dir/out.png")},
+        {{}, {"is a directory"}, path("adir.png")},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args = c.args;
+        args.push_back("--output");
+        args.push_back(c.output);
+        const RunResult r = run(args);
+        const std::string what = args.front();
+        EXPECT_EQ(r.exitCode, 2) << what << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << what << ": not one line: " << r.err;
+        EXPECT_EQ(r.err.rfind("shadelab: ", 0), 0u) << r.err;
+        for (const auto& f : c.fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
+        EXPECT_FALSE(fs::is_regular_file(c.output)) << what << " wrote " << c.output;
+    }
+}
+
+TEST_F(Cli, FailedRunLeavesAnExistingImageUntouched) {
+    ASSERT_EQ(run({"--size", "32x32", "--output", path("keep.png")}).exitCode, 0);
+    const auto before = slurp(path("keep.png"));
+    const std::string bad = file("bad.json", R"({"lights": [{"type": "directional", "direction": [0, 0, 0]}]})");
+    const RunResult r = run({bad, "--output", path("keep.png")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("lights[0].direction"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(path("keep.png")), before);
+}
+
+TEST_F(Cli, BenchmarkReportsEachShadingMode) {
+    const RunResult r = run({"--benchmark", "3", "--size", "64x48", "--mesh", "uvsphere:16:8"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::vector<std::string> modes;
+    for (std::string line; std::getline(lines, line);) {
+        const auto j = nlohmann::json::parse(line);
+        EXPECT_EQ(j.at("frames").get<int>(), 3);
+        EXPECT_EQ(j.at("triangles").get<int>(), 2 * 16 * 7);
+        EXPECT_EQ(j.at("size"), nlohmann::json::array({64, 48}));
+        EXPECT_GT(j.at("median_ms").get<double>(), 0.0);
+        EXPECT_GE(j.at("p95_ms").get<double>(), j.at("median_ms").get<double>());
+        modes.push_back(j.at("shading").get<std::string>());
+    }
+    EXPECT_EQ(modes, (std::vector<std::string>{"flat", "gouraud", "phong"}));
+}
+
+TEST_F(Cli, HelpAndVersion) {
+    const RunResult help = run({"--help"});
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_NE(help.out.find("--output FILE.png"), std::string::npos);
+    const RunResult version = run({"--version"});
+    EXPECT_EQ(version.exitCode, 0);
+    EXPECT_EQ(version.out.rfind("shadelab ", 0), 0u);
+}
+
+// A real model made by others, from ../shared (skipped where the folder is absent).
+TEST_F(Cli, RendersASharedGltfModel) {
+    const fs::path box = fs::path(SHADELAB_SHARED_DIR) / "assets/gltf/sample-assets/Box/glTF-Binary/Box.glb";
+    if (!fs::exists(box)) GTEST_SKIP() << box << " not found: ../shared is absent";
+    const RunResult r = run({box.string(), "--size", "96x96", "--output", path("box.png")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image img = readPng(path("box.png"));
+    int lit = 0;
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) lit += img.pixel(x, y)[0] > 60;
+    EXPECT_GT(lit, 500) << "auto-framed model should fill a good part of the image";
+}

@@ -1,0 +1,58 @@
+#include "gl/gl_test_support.hpp"
+
+#include "headless/headless.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+namespace shadelab::test {
+
+Rendered renderScene(const Scene& scene) {
+    Rendered r;
+    r.scene = scene;
+    r.geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+    r.image = renderHeadless(scene, r.geometry);
+    return r;
+}
+
+glm::vec3 color(const Image& image, int x, int y) {
+    const std::uint8_t* p = image.pixel(x, y);
+    return glm::vec3(p[0], p[1], p[2]) / 255.0f;
+}
+
+glm::ivec3 quantize(const glm::vec3& c) {
+    return glm::ivec3(int(std::lround(c.x * 255.0f)), int(std::lround(c.y * 255.0f)), int(std::lround(c.z * 255.0f)));
+}
+
+Ray pixelRay(const Scene& s, const Pane& pane, float px, float py) {
+    const glm::mat4 clipFromWorld = clipFromView(s.camera, float(pane.width) / float(pane.height)) * viewFromWorld(s.camera);
+    const glm::mat4 worldFromClip = glm::inverse(clipFromWorld);
+    const float ndcX = 2.0f * (px - float(pane.x)) / float(pane.width) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (py - float(pane.y)) / float(pane.height);
+    glm::vec4 nearPt = worldFromClip * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+    glm::vec4 farPt = worldFromClip * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    nearPt /= nearPt.w;
+    farPt /= farPt.w;
+    return Ray{s.camera.eye, glm::normalize(glm::vec3(farPt) - glm::vec3(nearPt))};
+}
+
+glm::vec2 projectToImage(const Scene& s, const Pane& pane, const glm::vec3& world) {
+    const glm::mat4 clipFromWorld = clipFromView(s.camera, float(pane.width) / float(pane.height)) * viewFromWorld(s.camera);
+    const glm::vec4 clip = clipFromWorld * glm::vec4(world, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {float(pane.x) + (ndc.x + 1.0f) * 0.5f * float(pane.width),
+            float(pane.y) + (1.0f - ndc.y) * 0.5f * float(pane.height)};
+}
+
+std::string saveForInspection(const std::string& name, const Image& image) {
+    std::filesystem::create_directories(SHADELAB_TEST_OUTPUT_DIR);
+    const std::string path = std::string(SHADELAB_TEST_OUTPUT_DIR) + "/" + name + ".png";
+    writePng(path, image);
+    return path;
+}
+
+}  // namespace shadelab::test

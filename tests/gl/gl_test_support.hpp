@@ -1,0 +1,41 @@
+#pragma once
+// Helpers for the GL tests: headless renders and the pixel <-> world mapping that lets a test
+// compare a pixel with the CPU reference at the surface point that pixel sees.
+#include "core/camera.hpp"
+#include "core/image.hpp"
+#include "core/scene.hpp"
+#include "core/scene_geometry.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <string>
+
+namespace shadelab::test {
+
+struct Rendered {
+    Scene scene;
+    std::shared_ptr<SceneGeometry> geometry;
+    Image image;
+};
+Rendered renderScene(const Scene& scene);
+
+// A pixel's colour as floats in [0, 1].
+glm::vec3 color(const Image& image, int x, int y);
+// The 8-bit value GL stores for a float colour (round to nearest).
+glm::ivec3 quantize(const glm::vec3& c);
+
+struct Ray {
+    glm::vec3 origin;
+    glm::vec3 direction;  // unit
+};
+// The ray through image point (px, py) (pixel centres at +0.5) of a pane.
+Ray pixelRay(const Scene& scene, const Pane& pane, float px, float py);
+// Where a world point lands in the image (continuous pixel coordinates, y down).
+glm::vec2 projectToImage(const Scene& scene, const Pane& pane, const glm::vec3& world);
+
+// Writes an image under the test output folder so a person can look at it; returns the path.
+std::string saveForInspection(const std::string& name, const Image& image);
+
+}  // namespace shadelab::test

@@ -1,0 +1,64 @@
+// Golden-image tests: small renders of the scenes in tests/scenes/ against tests/golden/*.png, images
+// a person looked at. They are defined as what OSMesa/llvmpipe on Debian 12 renders.
+//
+// Metric (core/image.hpp): per pixel, the largest channel difference. The test fails when more than
+// 0.2% of the pixels differ by more than 4/255, or the mean difference exceeds 0.25/255. llvmpipe is
+// deterministic for a given Mesa build and CPU, but its vector width follows the CPU (AVX2 vs
+// AVX-512), which moves some values by 1-2/255 and may flip a few silhouette pixels: the thresholds
+// absorb that and nothing a person would see as a change of shading.
+//
+// A failing test writes NAME.actual.png and NAME.diff.png (red: over the threshold) to
+// build/tests/output/ and prints their paths. `./dev goldens` re-renders every baseline into
+// tests/golden/; look at each image before committing it.
+#include "core/scene_json.hpp"
+#include "gl/gl_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+using namespace shadelab;
+using namespace shadelab::test;
+
+namespace {
+
+const CompareTolerance kGoldenTolerance{4, 0.002, 0.25};
+
+class Golden : public ::testing::TestWithParam<const char*> {};
+
+}  // namespace
+
+TEST_P(Golden, MatchesBaseline) {
+    const std::string name = GetParam();
+    const std::string root = SHADELAB_SOURCE_DIR;
+    Scene scene = loadSceneFile(root + "/tests/scenes/" + name + ".json");
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+    frameIfNeeded(scene, *geometry);
+    Rendered r = renderScene(scene);
+    const std::string golden = root + "/tests/golden/" + name + ".png";
+    if (std::getenv("SHADELAB_UPDATE_GOLDENS")) {
+        writePng(golden, r.image, 9);
+        std::printf("wrote %s - look at it before committing\n", golden.c_str());
+        return;
+    }
+    ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run ./dev goldens";
+    const Image expected = readPng(golden);
+    const CompareResult result = compareImages(r.image, expected, kGoldenTolerance.pixelThreshold);
+    // A black or empty frame must never pass: the baseline has content, so it would differ, but say
+    // it plainly if the render itself is blank.
+    EXPECT_GT(compareImages(r.image, Image(r.image.width, r.image.height), 0).failingPixels,
+              std::size_t(r.image.width * r.image.height / 20))
+        << "the render is (almost) black";
+    if (!result.matches(kGoldenTolerance)) {
+        const std::string actual = saveForInspection(name + ".actual", r.image);
+        const std::string diff = saveForInspection(name + ".diff", differenceImage(r.image, expected, kGoldenTolerance.pixelThreshold));
+        ADD_FAILURE() << name << ": " << describe(result, kGoldenTolerance) << "\n  actual: " << actual
+                      << "\n  diff:   " << diff << "\n  golden: " << golden;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
+                         ::testing::Values("flat_uvsphere", "gouraud_uvsphere", "phong_uvsphere", "phong_reflection",
+                                           "compare_torus", "compare_icosphere_srgb", "objects_lights"),
+                         [](const auto& p) { return std::string(p.param); });

@@ -1,0 +1,127 @@
+// GL tier: every program compiles and links on an OpenGL 3.3 core context, agrees with the C++ side
+// on locations, bindings and std140 layout, reports errors with file and line, and draws without
+// GL errors into any framebuffer it is handed.
+#include "gl/gl_test_support.hpp"
+#include "headless/osmesa_context.hpp"
+#include "render/gpu_blocks.hpp"
+#include "render/program.hpp"
+#include "render/renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace shadelab;
+
+namespace {
+
+class GlContext : public ::testing::Test {
+protected:
+    void SetUp() override {
+        context_ = std::make_unique<OsMesaContext>(64, 64);
+        ASSERT_NE(gladLoadGL(OsMesaContext::getProcAddress()), 0);
+    }
+    std::unique_ptr<OsMesaContext> context_;
+};
+
+GLint uniformOffset(GLuint program, const char* name) {
+    const GLuint index = [&] {
+        GLuint i = GL_INVALID_INDEX;
+        glGetUniformIndices(program, 1, &name, &i);
+        return i;
+    }();
+    EXPECT_NE(index, GL_INVALID_INDEX) << name;
+    GLint offset = -1;
+    glGetActiveUniformsiv(program, 1, &index, GL_UNIFORM_OFFSET, &offset);
+    return offset;
+}
+
+}  // namespace
+
+TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
+    const ShaderLibrary library;  // the built-in copies
+    for (const char* name : {"flat", "gouraud", "phong"}) {
+        SCOPED_TRACE(name);
+        const gl::Program p = buildProgram(name, library);
+        ASSERT_TRUE(p);
+        EXPECT_EQ(glGetAttribLocation(p.get(), "a_posObject"), SL_ATTRIB_POSITION);
+        EXPECT_EQ(glGetAttribLocation(p.get(), "a_nrmObject"), SL_ATTRIB_NORMAL);
+        if (std::string(name) == "flat") {
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_centroidObject"), SL_ATTRIB_CENTROID);
+        }
+        const GLuint frame = glGetUniformBlockIndex(p.get(), "FrameBlock");
+        const GLuint object = glGetUniformBlockIndex(p.get(), "ObjectBlock");
+        ASSERT_NE(frame, GL_INVALID_INDEX);
+        ASSERT_NE(object, GL_INVALID_INDEX);
+        GLint size = 0, binding = -1;
+        glGetActiveUniformBlockiv(p.get(), frame, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+        glGetActiveUniformBlockiv(p.get(), frame, GL_UNIFORM_BLOCK_BINDING, &binding);
+        EXPECT_EQ(size_t(size), sizeof(gpu::FrameBlock));
+        EXPECT_EQ(binding, SL_BINDING_FRAME);
+        glGetActiveUniformBlockiv(p.get(), object, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+        glGetActiveUniformBlockiv(p.get(), object, GL_UNIFORM_BLOCK_BINDING, &binding);
+        EXPECT_EQ(size_t(size), sizeof(gpu::ObjectBlock));
+        EXPECT_EQ(binding, SL_BINDING_OBJECT);
+        // The driver's std140 offsets are the ones the C++ mirror assumes.
+        EXPECT_EQ(uniformOffset(p.get(), "u_eyeWorld"), GLint(offsetof(gpu::FrameBlock, eyeWorld)));
+        EXPECT_EQ(uniformOffset(p.get(), "u_settings"), GLint(offsetof(gpu::FrameBlock, settings)));
+        EXPECT_EQ(uniformOffset(p.get(), "u_lights[1].radiance"),
+                  GLint(offsetof(gpu::FrameBlock, lights) + sizeof(gpu::LightGpu) + offsetof(gpu::LightGpu, radiance)));
+        EXPECT_EQ(uniformOffset(p.get(), "u_coefficients"), GLint(offsetof(gpu::ObjectBlock, coefficients)));
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    }
+}
+
+TEST_F(GlContext, CompileErrorsNameProgramStageFileAndLine) {
+    const auto dir = std::filesystem::temp_directory_path() / "shadelab-broken-shaders";
+    std::filesystem::create_directories(dir);
+    // Line 3 of phong.frag is broken; everything else comes from the built-in copies.
+    std::ofstream(dir / "phong.frag") << "#include \"lighting.glsl\"\nout vec4 o_color;\nvoid main() { o_color = 1.0 +; }\n";
+    try {
+        buildProgram("phong", ShaderLibrary(dir.string()));
+        ADD_FAILURE() << "broken shader compiled";
+    } catch (const ShaderError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("program phong, fragment stage"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("phong.frag:3"), std::string::npos) << msg;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+// The renderer draws into whatever framebuffer it is handed: an FBO gives the same pixels as the
+// context's default framebuffer.
+TEST_F(GlContext, RendersIntoAnyFramebufferWithoutGlErrors) {
+    Scene scene;
+    scene.width = 64;
+    scene.height = 64;
+    scene.layout = Layout::Compare;
+    scene.objects[0].mesh = MeshSpec{};
+    scene.objects[0].mesh.slices = 16;
+    scene.objects[0].mesh.stacks = 8;
+    Renderer renderer(OsMesaContext::getProcAddress());
+    renderer.setGeometry(std::make_shared<SceneGeometry>(buildSceneGeometry(scene)));
+    renderer.render(scene, RenderTarget{0, 64, 64});
+    const Image viaDefault = readPixels(RenderTarget{0, 64, 64});
+
+    GLuint fbo = 0, color = 0, depth = 0;
+    glGenFramebuffers(1, &fbo);
+    glGenRenderbuffers(1, &color);
+    glGenRenderbuffers(1, &depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 64, 64);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, 64, 64);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    renderer.render(scene, RenderTarget{fbo, 64, 64});
+    const Image viaFbo = readPixels(RenderTarget{fbo, 64, 64});
+    EXPECT_EQ(compareImages(viaFbo, viaDefault, 0).maxDifference, 0);
+    EXPECT_GT(compareImages(viaFbo, Image(64, 64), 0).failingPixels, 1000u) << "rendered nothing";
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteRenderbuffers(1, &color);
+    glDeleteRenderbuffers(1, &depth);
+}

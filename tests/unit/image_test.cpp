@@ -1,0 +1,92 @@
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/image.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+Image gradient(int w, int h) {
+    Image img(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t* p = img.pixel(x, y);
+            p[0] = std::uint8_t(x * 4), p[1] = std::uint8_t(y * 4), p[2] = 128, p[3] = 255;
+        }
+    return img;
+}
+struct TempDir {
+    fs::path path = fs::temp_directory_path() / ("shadelab-image-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    TempDir() { fs::create_directories(path); }
+    ~TempDir() { fs::remove_all(path); }
+};
+}  // namespace
+
+TEST(Image, PngRoundTrip) {
+    TempDir dir;
+    const Image img = gradient(40, 30);
+    const std::string file = (dir.path / "g.png").string();
+    writePng(file, img);
+    const Image back = readPng(file);
+    EXPECT_EQ(back.width, 40);
+    EXPECT_EQ(back.height, 30);
+    EXPECT_EQ(back.rgba, img.rgba);
+    // Nothing but the image is left in the folder: the temporary was renamed.
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 1);
+}
+
+TEST(Image, FailedWriteLeavesNoFileAndKeepsTheOldOne) {
+    TempDir dir;
+    const std::string file = (dir.path / "keep.png").string();
+    writePng(file, gradient(4, 4));
+    EXPECT_THROW(writeFileAtomic(file, [](std::FILE* f) { std::fputs("partial", f); return false; }), InputError);
+    EXPECT_THROW(writeFileAtomic(file, [](std::FILE*) -> bool { throw std::runtime_error("killed"); }),
+                 std::runtime_error);
+    EXPECT_EQ(readPng(file).width, 4);  // the previous image is intact
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 1);
+    EXPECT_THROW(writePng((dir.path / "missing" / "x.png").string(), gradient(2, 2)), InputError);
+}
+
+TEST(Image, ReadingANonPngNamesTheFile) {
+    TempDir dir;
+    const std::string file = (dir.path / "not.png").string();
+    writeFileAtomic(file, [](std::FILE* f) { return std::fputs("hello", f) >= 0; });
+    try {
+        readPng(file);
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("not.png"), std::string::npos);
+    }
+}
+
+TEST(Image, CompareCountsPixelsOverTheThreshold) {
+    const Image a = gradient(10, 10);
+    Image b = a;
+    b.pixel(3, 3)[0] = std::uint8_t(b.pixel(3, 3)[0] + 20);  // one pixel far off
+    b.pixel(4, 4)[1] = std::uint8_t(b.pixel(4, 4)[1] + 2);   // one pixel slightly off
+    const CompareResult r = compareImages(b, a, 8);
+    EXPECT_TRUE(r.sizeMatches);
+    EXPECT_EQ(r.maxDifference, 20);
+    EXPECT_EQ(r.failingPixels, 1u);
+    EXPECT_NEAR(r.meanDifference, 22.0 / 100.0, 1e-9);
+    EXPECT_FALSE(r.matches(CompareTolerance{8, 0.001, 0.5}));
+    EXPECT_TRUE(r.matches(CompareTolerance{8, 0.02, 0.5}));
+    EXPECT_FALSE(compareImages(gradient(10, 9), a, 8).sizeMatches);
+    const Image diff = differenceImage(b, a, 8);
+    EXPECT_EQ(diff.pixel(3, 3)[0], 255);
+    EXPECT_EQ(diff.pixel(3, 3)[1], 0);
+}
+
+TEST(FileIo, OutputPathChecks) {
+    TempDir dir;
+    EXPECT_THROW(checkOutputPath(dir.path.string(), "--output"), InputError);
+    EXPECT_THROW(checkOutputPath((dir.path / "no" / "x.png").string(), "--output"), InputError);
+    EXPECT_NO_THROW(checkOutputPath((dir.path / "x.png").string(), "--output"));
+    EXPECT_TRUE(hasExtension("A.PNG", ".png"));
+    EXPECT_TRUE(hasModelExtension("m.GlB"));
+    EXPECT_FALSE(hasModelExtension("m.json"));
+}

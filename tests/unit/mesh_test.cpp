@@ -1,0 +1,118 @@
+#include "core/camera.hpp"
+#include "core/mesh.hpp"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+using namespace shadelab;
+
+namespace {
+
+// Every triangle's lecture face normal agrees with its vertex normals (the right-hand rule gives the
+// outside), and every normal is unit length.
+void expectConsistent(const Mesh& m) {
+    ASSERT_EQ(m.positions.size(), m.normals.size());
+    ASSERT_EQ(m.indices.size() % 3, 0u);
+    for (const auto& n : m.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
+    for (auto i : m.indices) ASSERT_LT(i, m.positions.size());
+    for (size_t t = 0; t < m.indices.size(); t += 3) {
+        const auto a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+        const glm::vec3 n = faceNormal(m.positions[a], m.positions[b], m.positions[c]);
+        ASSERT_GT(glm::dot(n, m.normals[a] + m.normals[b] + m.normals[c]), 0.0f) << "triangle " << t / 3;
+    }
+}
+
+}  // namespace
+
+TEST(Mesh, FaceNormalFollowsTheLectureFormula) {
+    // counter-clockwise seen from +z
+    EXPECT_EQ(faceNormal({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), glm::vec3(0, 0, 1));
+    EXPECT_EQ(faceNormal({0, 0, 0}, {0, 1, 0}, {1, 0, 0}), glm::vec3(0, 0, -1));
+}
+
+TEST(Mesh, UvSphereMatchesTheBenchmarkLayout) {
+    const Mesh m = makeUvSphere(46, 23, 1.0f);  // ../shared/bench: s = 23 gives 2,024 triangles
+    EXPECT_EQ(m.triangleCount(), 2024u);
+    EXPECT_EQ(m.positions.size(), size_t(24 * 47));
+    expectConsistent(m);
+    for (const auto& p : m.positions) EXPECT_NEAR(glm::length(p), 1.0f, 1e-5f);
+    // Outward: the face normal points away from the centre.
+    for (size_t t = 0; t < m.indices.size(); t += 3) {
+        const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+        ASSERT_GT(glm::dot(faceNormal(a, b, c), a + b + c), 0.0f);
+    }
+}
+
+TEST(Mesh, ProceduralShapesAreConsistentAndCountsAreRight) {
+    const Mesh ico = makeIcoSphere(2, 2.0f);
+    EXPECT_EQ(ico.triangleCount(), 20u * 16u);
+    expectConsistent(ico);
+    for (const auto& p : ico.positions) EXPECT_NEAR(glm::length(p), 2.0f, 1e-5f);
+    const Mesh torus = makeTorus(1.0f, 0.25f, 12, 8);
+    EXPECT_EQ(torus.triangleCount(), 2u * 12u * 8u);
+    expectConsistent(torus);
+    const Mesh cube = makeCube(2.0f);
+    EXPECT_EQ(cube.triangleCount(), 12u);
+    expectConsistent(cube);
+    for (const auto& p : cube.positions) EXPECT_NEAR(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}), 1.0f, 1e-6f);
+    const Mesh plane = makePlane(4.0f, 3);
+    EXPECT_EQ(plane.triangleCount(), 18u);
+    expectConsistent(plane);
+}
+
+TEST(Mesh, FlatMeshGivesEachTriangleItsOwnProvokingVertex) {
+    const Mesh m = makeIcoSphere(1, 1.0f);
+    const FlatMesh f = makeFlatMesh(m);
+    ASSERT_EQ(f.positions.size(), m.positions.size() + m.triangleCount());
+    ASSERT_EQ(f.indices.size(), m.indices.size());
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        // The same triangle, corners in the same order, ...
+        EXPECT_EQ(f.positions[f.indices[3 * t]], a);
+        EXPECT_EQ(f.positions[f.indices[3 * t + 1]], b);
+        EXPECT_EQ(f.positions[f.indices[3 * t + 2]], c);
+        // ... whose last (provoking) vertex is its own and carries the face normal and centroid.
+        const uint32_t p = f.indices[3 * t + 2];
+        EXPECT_EQ(p, m.positions.size() + t);
+        EXPECT_EQ(f.normals[p], faceNormal(a, b, c));
+        EXPECT_EQ(f.centroids[p], (a + b + c) / 3.0f);
+    }
+}
+
+TEST(Mesh, WorldBoundsFollowTransforms) {
+    const Mesh m = makeCube(2.0f);
+    Transform t;
+    t.translation = {10, 0, 0};
+    t.scale = {2, 2, 2};
+    const BoundingSphere b = worldBounds({&m}, {worldFromObject(t)});
+    EXPECT_NEAR(b.center.x, 10.0f, 1e-5f);
+    EXPECT_NEAR(b.radius, 2.0f * std::sqrt(3.0f), 1e-4f);
+}
+
+TEST(Camera, ComparePanesCoverTheImageExactly) {
+    const auto panes = layoutPanes(Layout::Compare, ShadingMode::Phong, 100, 40);
+    ASSERT_EQ(panes.size(), 3u);
+    EXPECT_EQ(panes[0].mode, ShadingMode::Flat);
+    EXPECT_EQ(panes[1].mode, ShadingMode::Gouraud);
+    EXPECT_EQ(panes[2].mode, ShadingMode::Phong);
+    EXPECT_EQ(panes[0].x, 0);
+    EXPECT_EQ(panes[0].x + panes[0].width, panes[1].x);
+    EXPECT_EQ(panes[1].x + panes[1].width, panes[2].x);
+    EXPECT_EQ(panes[2].x + panes[2].width, 100);
+    const auto single = layoutPanes(Layout::Single, ShadingMode::Gouraud, 100, 40);
+    ASSERT_EQ(single.size(), 1u);
+    EXPECT_EQ(single[0].mode, ShadingMode::Gouraud);
+    EXPECT_EQ(single[0].width, 100);
+}
+
+TEST(Camera, TransformAppliesScaleThenRotationXYZThenTranslation) {
+    Transform t;
+    t.translation = {1, 2, 3};
+    t.rotationDeg = {0, 90, 0};
+    t.scale = {2, 1, 1};
+    const glm::vec4 p = worldFromObject(t) * glm::vec4(1, 0, 0, 1);  // scaled to (2,0,0), turned to (0,0,-2)
+    EXPECT_NEAR(p.x, 1.0f, 1e-5f);
+    EXPECT_NEAR(p.y, 2.0f, 1e-5f);
+    EXPECT_NEAR(p.z, 1.0f, 1e-5f);
+}

@@ -1,0 +1,215 @@
+// The scene-file format: defaults, every field, every error (which must name the file and the field),
+// and the round trip through sceneToJson that the viewer's "save scene" relies on.
+#include "core/error.hpp"
+#include "core/scene_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+
+Scene parse(const std::string& json) { return parseScene(json, "test.json", "/scenes"); }
+
+// Expects an InputError whose message starts with "test.json: " and contains every fragment.
+void expectError(const std::string& json, std::initializer_list<const char*> fragments) {
+    try {
+        parse(json);
+        ADD_FAILURE() << "no error for " << json;
+    } catch (const InputError& e) {
+        const std::string msg = e.what();
+        EXPECT_EQ(msg.rfind("test.json: ", 0), 0u) << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << "error must be one line: " << msg;
+        for (const char* f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
+    }
+}
+
+}  // namespace
+
+TEST(SceneJson, EmptyObjectGivesDocumentedDefaults) {
+    const Scene s = parse("{}");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].mesh.type, MeshSpec::Type::UvSphere);
+    EXPECT_EQ(s.objects[0].mesh.slices, 64);
+    EXPECT_EQ(s.objects[0].mesh.stacks, 32);
+    EXPECT_EQ(s.shading, ShadingMode::Phong);
+    EXPECT_EQ(s.layout, Layout::Single);
+    EXPECT_EQ(s.reflection, ReflectionModel::BlinnPhong);
+    EXPECT_FLOAT_EQ(s.objects[0].material.ka, 0.1f);
+    EXPECT_FLOAT_EQ(s.objects[0].material.kd, 0.7f);
+    EXPECT_FLOAT_EQ(s.objects[0].material.ks, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[0].material.ke, 32.0f);
+    EXPECT_EQ(s.objects[0].material.specularColor, glm::vec3(1.0f));
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Point);
+    EXPECT_FLOAT_EQ(s.camera.fovYDeg, 45.0f);
+    EXPECT_FALSE(s.cameraGiven);
+    EXPECT_EQ(s.outputEncoding, OutputEncoding::Linear);
+}
+
+TEST(SceneJson, EveryFieldIsRead) {
+    const Scene s = parse(R"({
+      "objects": [
+        {"mesh": {"type": "icosphere", "subdivisions": 2, "radius": 0.5},
+         "material": {"color": [0.1, 0.2, 0.3], "specular_color": [0.9, 0.8, 0.7], "ka": 0.2, "kd": 0.3, "ks": 0.4, "ke": 64},
+         "transform": {"translation": [1, 2, 3], "rotation_deg": [10, 20, 30], "scale": [1, -1, 2]}},
+        {"mesh": {"type": "torus", "major_radius": 2, "minor_radius": 0.5, "major_segments": 10, "minor_segments": 6}},
+        {"mesh": {"type": "cube", "size": 3}},
+        {"mesh": {"type": "plane", "size": 5, "subdivisions": 4}},
+        {"mesh": {"type": "uvsphere", "slices": 8, "stacks": 4, "radius": 2}},
+        {"mesh": {"type": "gltf", "path": "models/box.glb"}}
+      ],
+      "shading": "gouraud", "layout": "compare", "reflection": "phong",
+      "ambient": [0.5, 0.5, 0.5],
+      "lights": [{"type": "point", "position": [1, 2, 3], "color": [1, 0, 0], "intensity": 2, "attenuation": "inverse-square"},
+                 {"type": "directional", "direction": [0, -1, 0], "color": [0, 1, 0], "intensity": 0.5}],
+      "camera": {"eye": [0, 0, 9], "target": [0, 1, 0], "up": [0, 1, 0], "fov_y_deg": 30, "near": 0.5, "far": 50},
+      "background": [0.2, 0.3, 0.4],
+      "size": [320, 200],
+      "output_encoding": "srgb"
+    })");
+    ASSERT_EQ(s.objects.size(), 6u);
+    EXPECT_EQ(s.objects[0].mesh.subdivisions, 2);
+    EXPECT_EQ(s.objects[0].material.color, glm::vec3(0.1f, 0.2f, 0.3f));
+    EXPECT_FLOAT_EQ(s.objects[0].material.ke, 64.0f);
+    EXPECT_EQ(s.objects[0].transform.scale, glm::vec3(1, -1, 2));
+    EXPECT_EQ(s.objects[1].mesh.majorSegments, 10);
+    EXPECT_FLOAT_EQ(s.objects[2].mesh.size, 3.0f);
+    EXPECT_EQ(s.objects[3].mesh.planeSubdivisions, 4);
+    EXPECT_EQ(s.objects[4].mesh.slices, 8);
+    EXPECT_EQ(s.objects[5].mesh.resolvedPath, "/scenes/models/box.glb");  // relative to the scene file
+    EXPECT_EQ(s.shading, ShadingMode::Gouraud);
+    EXPECT_EQ(s.layout, Layout::Compare);
+    EXPECT_EQ(s.reflection, ReflectionModel::Phong);
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_EQ(s.lights[0].attenuation, Attenuation::InverseSquare);
+    EXPECT_EQ(s.lights[1].type, LightType::Directional);
+    EXPECT_TRUE(s.cameraGiven);
+    EXPECT_FLOAT_EQ(s.camera.farPlane, 50.0f);
+    EXPECT_EQ(s.width, 320);
+    EXPECT_EQ(s.height, 200);
+    EXPECT_EQ(s.outputEncoding, OutputEncoding::Srgb);
+}
+
+TEST(SceneJson, ErrorsNameTheFileAndTheField) {
+    expectError("{\"mesh\": {\"type\": \"uvsphere\"", {"malformed JSON", "line 1"});
+    expectError("[]", {"expected an object"});
+    expectError(R"({"colour": [1, 0, 0]})", {"colour", "unknown field"});
+    expectError(R"({"material": {"kd": 0.5, "shininess": 3}})", {"material.shininess", "unknown field"});
+    expectError(R"({"material": {"ka": -0.1}})", {"material.ka", ">= 0"});
+    expectError(R"({"material": {"ka": "0.1"}})", {"material.ka", "expected a number"});
+    expectError(R"({"material": {"ke": 0}})", {"material.ke", ">= 1"});
+    expectError(R"({"material": {"ke": 1000000}})", {"material.ke", "<= 10000"});
+    expectError(R"({"material": {"color": [1, 0]}})", {"material.color", "3 numbers"});
+    expectError(R"({"material": {"color": [1, 0, 2]}})", {"material.color[2]", "<= 1"});
+    expectError(R"({"shading": "toon"})", {"shading", "\"toon\"", "flat"});
+    expectError(R"({"layout": 3})", {"layout", "got a number"});
+    expectError(R"({"size": [0, 100]})", {"size", "between 1 and"});
+    expectError(R"({"size": [-5, 100]})", {"size"});
+    expectError(R"({"size": [100000, 100000]})", {"size", "16384"});
+    expectError(R"({"size": [1.5, 100]})", {"size", "integers"});
+    expectError(R"({"mesh": {"type": "uvsphere", "slices": 2}})", {"mesh.slices", ">= 3"});
+    expectError(R"({"mesh": {"type": "uvsphere", "slices": 10000000}})", {"mesh.slices", "<= 4096"});
+    expectError(R"({"mesh": {"type": "uvsphere", "subdivisions": 2}})", {"mesh.subdivisions", "unknown field"});
+    expectError(R"({"mesh": {"type": "teapot"}})", {"mesh.type", "teapot"});
+    expectError(R"({"mesh": {"type": "gltf"}})", {"mesh.path"});
+    expectError(R"({"lights": [{"type": "point", "intensity": -1}]})", {"lights[0].intensity", ">= 0"});
+    expectError(R"({"lights": [{}, {"type": "directional", "direction": [0, 0, 0]}]})", {"lights[1].direction", "zero-length"});
+    expectError(R"({"lights": [{"type": "directional", "attenuation": "none"}]})", {"lights[0].attenuation", "unknown field"});
+    expectError(R"({"camera": {"eye": [1, 2, 3], "target": [1, 2, 3]}})", {"camera.target", "differ from eye"});
+    expectError(R"({"camera": {"fov_y_deg": 0}})", {"camera.fov_y_deg"});
+    expectError(R"({"camera": {"fov_y_deg": 180}})", {"camera.fov_y_deg"});
+    expectError(R"({"camera": {"near": 5, "far": 5}})", {"camera.far", "greater than near"});
+    expectError(R"({"camera": {"up": [0, 0, 0]}})", {"camera.up", "zero-length"});
+    expectError(R"({"camera": {"eye": [0, 5, 0], "up": [0, 1, 0]}})", {"camera.up", "parallel"});
+    expectError(R"({"objects": [{"transform": {"scale": [1, 0, 1]}}]})", {"objects[0].transform.scale"});
+    expectError(R"({"objects": [], "mesh": {"type": "cube"}})", {"objects", "not both"});
+    std::string many = R"({"lights": [)";
+    for (int i = 0; i < 17; ++i) many += std::string(i ? "," : "") + "{}";
+    expectError(many + "]}", {"lights", "at most 16"});
+}
+
+TEST(SceneJson, FileErrorsNameTheFile) {
+    const fs::path dir = fs::temp_directory_path() / "shadelab-scene-json-test";
+    fs::create_directories(dir);
+    try {
+        loadSceneFile((dir / "missing.json").string());
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("missing.json: cannot read"), std::string::npos) << e.what();
+    }
+    try {
+        loadSceneFile(dir.string());
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+    }
+    std::ofstream(dir / "bad.json") << "{\"ka\": }";
+    try {
+        loadSceneFile((dir / "bad.json").string());
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind((dir / "bad.json").string() + ": malformed JSON", 0), 0u) << e.what();
+    }
+    fs::remove_all(dir);
+}
+
+TEST(SceneJson, SavedSceneLoadsBackTheSame) {
+    Scene s = parse(R"({
+      "objects": [{"mesh": {"type": "torus", "major_segments": 10}, "material": {"ke": 77, "color": [0.1, 0.5, 0.9]},
+                   "transform": {"translation": [1, 0, 0], "rotation_deg": [0, 45, 0], "scale": [2, 2, 2]}},
+                  {"mesh": {"type": "gltf", "path": "m/box.gltf"}}],
+      "shading": "flat", "layout": "compare", "reflection": "phong", "ambient": [0.3, 0.2, 0.1],
+      "lights": [{"type": "directional", "direction": [1, -1, 0], "intensity": 0.7}],
+      "camera": {"eye": [3, 3, 3], "fov_y_deg": 60}, "size": [64, 48], "output_encoding": "srgb"})");
+    const std::string saved = sceneToJson(s, "/scenes");
+    const Scene r = parseScene(saved, "saved.json", "/scenes");
+    ASSERT_EQ(r.objects.size(), 2u);
+    EXPECT_EQ(r.objects[0].mesh, s.objects[0].mesh);
+    EXPECT_EQ(r.objects[1].mesh.resolvedPath, "/scenes/m/box.gltf");
+    EXPECT_EQ(r.objects[0].material.color, s.objects[0].material.color);
+    EXPECT_FLOAT_EQ(r.objects[0].material.ke, 77.0f);
+    EXPECT_EQ(r.objects[0].transform.rotationDeg, s.objects[0].transform.rotationDeg);
+    EXPECT_EQ(r.shading, s.shading);
+    EXPECT_EQ(r.layout, s.layout);
+    EXPECT_EQ(r.reflection, s.reflection);
+    EXPECT_EQ(r.ambient, s.ambient);
+    ASSERT_EQ(r.lights.size(), 1u);
+    EXPECT_EQ(r.lights[0].direction, s.lights[0].direction);
+    EXPECT_EQ(r.camera.eye, s.camera.eye);
+    EXPECT_FLOAT_EQ(r.camera.fovYDeg, 60.0f);
+    EXPECT_EQ(r.width, 64);
+    EXPECT_EQ(r.outputEncoding, OutputEncoding::Srgb);
+    // Saved from another folder, the model path is rewritten so it still points at the same file.
+    const Scene moved = parseScene(sceneToJson(s, "/elsewhere/deeper"), "moved.json", "/elsewhere/deeper");
+    EXPECT_EQ(moved.objects[1].mesh.resolvedPath, "/scenes/m/box.gltf");
+    // Saving is stable: a second round trip gives identical text.
+    EXPECT_EQ(sceneToJson(r, "/scenes"), saved);
+}
+
+TEST(SceneJson, DefaultSceneIsBuiltInAndValid) {
+    const Scene s = defaultScene();
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].mesh.type, MeshSpec::Type::UvSphere);
+    EXPECT_EQ(s.reflection, ReflectionModel::BlinnPhong);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Point);
+}
+
+TEST(SceneJson, MeshShorthand) {
+    const MeshSpec uv = parseMeshShorthand("uvsphere:16:8", "--mesh");
+    EXPECT_EQ(uv.type, MeshSpec::Type::UvSphere);
+    EXPECT_EQ(uv.slices, 16);
+    EXPECT_EQ(uv.stacks, 8);
+    EXPECT_EQ(parseMeshShorthand("icosphere:2", "--mesh").subdivisions, 2);
+    EXPECT_EQ(parseMeshShorthand("cube", "--mesh").type, MeshSpec::Type::Cube);
+    EXPECT_EQ(parseMeshShorthand("a/b.GLB", "--mesh").type, MeshSpec::Type::Gltf);
+    EXPECT_THROW(parseMeshShorthand("uvsphere:x", "--mesh"), InputError);
+    EXPECT_THROW(parseMeshShorthand("uvsphere:16:8:4", "--mesh"), InputError);
+    EXPECT_THROW(parseMeshShorthand("icosphere:99", "--mesh"), InputError);
+    EXPECT_THROW(parseMeshShorthand("teapot", "--mesh"), InputError);
+}
