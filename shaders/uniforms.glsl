@@ -12,7 +12,8 @@ layout(std140) uniform FrameBlock {
     mat4 u_clipFromWorld;
     vec4 u_eyeWorld;           // xyz
     vec4 u_ambient;            // rgb: A
-    ivec4 u_settings;          // x: light count, y: SL_REFLECTION_*, z: SL_ENCODING_*
+    ivec4 u_settings;          // x: light count, y: SL_REFLECTION_*, z: SL_ENCODING_* (the programs'
+                               // specialisation, as data: for tools that read the block)
     LightGpu u_lights[SL_MAX_LIGHTS];
 };
 

@@ -38,10 +38,12 @@ void expandInto(const std::string& name, const std::function<std::string(const s
 
 }  // namespace
 
-ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string(const std::string&)>& load) {
+ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string(const std::string&)>& load,
+                        const std::vector<std::string>& defines) {
     ExpandedGlsl out;
     // Target GLSL 330 so the programs run on OpenGL 3.3 core (and macOS's 4.1).
     out.text = "#version 330 core\n";
+    for (const std::string& d : defines) out.text += "#define " + d + "\n";
     expandInto(name, load, out, 0);
     return out;
 }

@@ -13,9 +13,10 @@ struct ExpandedGlsl {
     std::vector<std::string> files;   // files[S] is the file that #line's source number S means
 };
 
-// `load(name)` returns a file's text or throws. Throws std::runtime_error "<file>:<line>: ..." on a
-// malformed or missing include.
-ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string(const std::string&)>& load);
+// `load(name)` returns a file's text or throws. `defines` ("NAME VALUE" each) become #define lines
+// right after #version. Throws std::runtime_error "<file>:<line>: ..." on a malformed or missing include.
+ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string(const std::string&)>& load,
+                        const std::vector<std::string>& defines = {});
 
 // Rewrites a driver log so that source numbers become file names: Mesa's "0:12(5): error: ..."
 // becomes "phong.frag:12(5): error: ...".

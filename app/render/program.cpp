@@ -9,10 +9,10 @@ namespace shadelab {
 namespace {
 
 gl::Shader compileStage(GLenum stage, const std::string& programName, const std::string& file,
-                        const ShaderLibrary& library) {
+                        const ShaderLibrary& library, const std::vector<std::string>& defines) {
     ExpandedGlsl src;
     try {
-        src = expandGlsl(file, [&](const std::string& n) { return library.load(n); });
+        src = expandGlsl(file, [&](const std::string& n) { return library.load(n); }, defines);
     } catch (const std::exception& e) {
         throw ShaderError("program " + programName + ": " + e.what());
     }
@@ -35,9 +35,10 @@ gl::Shader compileStage(GLenum stage, const std::string& programName, const std:
 
 }  // namespace
 
-gl::Program buildProgram(const std::string& name, const ShaderLibrary& library) {
-    gl::Shader vs = compileStage(GL_VERTEX_SHADER, name, name + ".vert", library);
-    gl::Shader fs = compileStage(GL_FRAGMENT_SHADER, name, name + ".frag", library);
+gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
+                         const std::vector<std::string>& defines) {
+    gl::Shader vs = compileStage(GL_VERTEX_SHADER, name, name + ".vert", library, defines);
+    gl::Shader fs = compileStage(GL_FRAGMENT_SHADER, name, name + ".frag", library, defines);
     gl::Program program(glCreateProgram());
     glAttachShader(program.get(), vs.get());
     glAttachShader(program.get(), fs.get());

@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -14,7 +15,9 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Builds `<name>.vert` + `<name>.frag`, binds the uniform blocks to their SL_BINDING_* points.
-gl::Program buildProgram(const std::string& name, const ShaderLibrary& library);
+// Builds `<name>.vert` + `<name>.frag` with `defines` ("NAME VALUE") after #version, and binds the
+// uniform blocks to their SL_BINDING_* points.
+gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
+                         const std::vector<std::string>& defines = {});
 
 }  // namespace shadelab

@@ -69,6 +69,25 @@ void checkGl(const char* where) {
 
 }  // namespace
 
+std::vector<std::string> programDefines(const Scene& s) {
+    const std::size_t count = std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS);
+    std::vector<std::string> d;
+    d.push_back("SL_LIGHT_COUNT " + std::to_string(count));
+    for (std::size_t l = 0; l < count; ++l) {
+        const Light& light = s.lights[l];
+        const bool point = light.type == LightType::Point;
+        d.push_back("SL_LIGHT_KIND_" + std::to_string(l) + (point ? " SL_LIGHT_POINT" : " SL_LIGHT_DIRECTIONAL"));
+        d.push_back("SL_LIGHT_ATTENUATION_" + std::to_string(l) +
+                    (point && light.attenuation == Attenuation::InverseSquare ? " SL_ATTENUATION_INVERSE_SQUARE"
+                                                                              : " SL_ATTENUATION_NONE"));
+    }
+    d.push_back(std::string("SL_REFLECTION ") +
+                (s.reflection == ReflectionModel::Phong ? "SL_REFLECTION_PHONG" : "SL_REFLECTION_BLINN_PHONG"));
+    d.push_back(std::string("SL_ENCODING ") +
+                (s.outputEncoding == OutputEncoding::Srgb ? "SL_ENCODING_SRGB" : "SL_ENCODING_LINEAR"));
+    return d;
+}
+
 Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders) : shaders_(std::move(shaders)) {
     const int version = gladLoadGL(getProcAddress);
     if (version == 0) throw std::runtime_error("could not load OpenGL entry points");
@@ -93,11 +112,16 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
 }
 
-void Renderer::prepareProgram(ShadingMode mode) { program(mode); }
+void Renderer::preparePrograms(const Scene& scene) {
+    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 3, 1)) program(pane.mode, scene);
+}
 
-GLuint Renderer::program(ShadingMode mode) {
-    gl::Program& p = programs_[std::size_t(mode)];
-    if (!p) p = buildProgram(kProgramNames[std::size_t(mode)], shaders_);
+GLuint Renderer::program(ShadingMode mode, const Scene& scene) {
+    const std::vector<std::string> defines = programDefines(scene);
+    std::string key = kProgramNames[std::size_t(mode)];
+    for (const std::string& d : defines) key += ";" + d;
+    gl::Program& p = programs_[key];
+    if (!p) p = buildProgram(kProgramNames[std::size_t(mode)], shaders_, defines);
     return p.get();
 }
 
@@ -190,7 +214,7 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const Pane& pane = panes[p];
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
-        glUseProgram(program(pane.mode));
+        glUseProgram(program(pane.mode, scene));
         glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
                           sizeof(gpu::FrameBlock));
         for (std::size_t o = 0; o < objects; ++o) {

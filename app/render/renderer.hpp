@@ -9,6 +9,7 @@
 #include "render/shader_library.hpp"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,8 +35,8 @@ public:
     void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
     // Draws all panes of the scene's layout. Throws ShaderError or std::runtime_error on a GL error.
     void render(const Scene& scene, const RenderTarget& target);
-    // Compiles the program of `mode` now (render() does it on first use).
-    void prepareProgram(ShadingMode mode);
+    // Compiles the programs `scene` needs now (render() does it on first use).
+    void preparePrograms(const Scene& scene);
 
     std::string glRenderer() const;
     std::string glVersion() const;
@@ -48,15 +49,20 @@ private:
         GLsizei indexCount = 0;
     };
     const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
-    GLuint program(ShadingMode mode);
+    GLuint program(ShadingMode mode, const Scene& scene);
 
     ShaderLibrary shaders_;
-    std::array<gl::Program, 3> programs_;                 // by ShadingMode
+    std::map<std::string, gl::Program> programs_;         // by name + specialisation defines
     std::shared_ptr<const SceneGeometry> geometry_;
     std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
     gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
     GLint uniformAlignment_ = 256;
 };
+
+// What the shading programs are specialised for (shaders/lighting.glsl): the number of lights, each
+// light's kind and attenuation, the reflection model and the output encoding, as "NAME VALUE" defines.
+// Everything else is a uniform, so editing values never recompiles.
+std::vector<std::string> programDefines(const Scene& scene);
 
 // Reads the colour buffer of `target` (bottom-up in GL) into a top-down RGBA image.
 Image readPixels(const RenderTarget& target);

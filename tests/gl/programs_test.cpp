@@ -39,11 +39,36 @@ GLint uniformOffset(GLuint program, const char* name) {
 
 }  // namespace
 
+// Every specialisation the renderer can ask for compiles: no lights, the maximum of 16, and each kind.
+TEST_F(GlContext, EverySpecialisationCompiles) {
+    const ShaderLibrary library;
+    Scene scene;
+    std::vector<Scene> variants;
+    scene.lights.clear();
+    variants.push_back(scene);
+    scene.lights.assign(SL_MAX_LIGHTS, Light{});
+    scene.reflection = ReflectionModel::Phong;
+    variants.push_back(scene);
+    for (const Scene& v : variants)
+        for (const char* name : {"flat", "gouraud", "phong"}) {
+            SCOPED_TRACE(name);
+            EXPECT_TRUE(buildProgram(name, library, programDefines(v)));
+        }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
     const ShaderLibrary library;  // the built-in copies
+    // Three lights of all kinds, Phong's lobe and sRGB output: every input and block member is used.
+    Scene scene;
+    scene.lights.assign(3, Light{});
+    scene.lights[1].attenuation = Attenuation::InverseSquare;
+    scene.lights[2].type = LightType::Directional;
+    scene.reflection = ReflectionModel::Phong;
+    scene.outputEncoding = OutputEncoding::Srgb;
     for (const char* name : {"flat", "gouraud", "phong"}) {
         SCOPED_TRACE(name);
-        const gl::Program p = buildProgram(name, library);
+        const gl::Program p = buildProgram(name, library, programDefines(scene));
         ASSERT_TRUE(p);
         EXPECT_EQ(glGetAttribLocation(p.get(), "a_posObject"), SL_ATTRIB_POSITION);
         EXPECT_EQ(glGetAttribLocation(p.get(), "a_nrmObject"), SL_ATTRIB_NORMAL);
