@@ -3,6 +3,7 @@
 #include "cli/options.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/gltf_import.hpp"
 #include "core/image.hpp"
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
@@ -33,12 +34,32 @@ int run(const std::vector<std::string>& args) {
     Scene scene = sceneFromOptions(options);
     auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
     frameIfNeeded(scene, *geometry);
-    if (options.verbose) {
+    if (options.info) {
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            const MeshSpec& spec = scene.objects[i].mesh;
+            if (spec.type == MeshSpec::Type::Gltf) {
+                std::cout << describe(spec.resolvedPath, geometry->gltfInfo[i]);
+            } else {
+                std::cout << "object " << i << ": " << toString(spec.type) << ", " << geometry->meshes[i].triangleCount()
+                          << " triangles, " << geometry->meshes[i].positions.size() << " vertices\n";
+            }
+        }
+        return 0;
+    }
+    for (std::size_t i = 0; i < geometry->gltfInfo.size(); ++i) {
+        const GltfInfo& info = geometry->gltfInfo[i];
+        for (const std::string& w : info.warnings)
+            std::cerr << "shadelab: warning: " << scene.objects[i].mesh.resolvedPath << ": " << w << "\n";
+        if (options.verbose && scene.objects[i].mesh.type == MeshSpec::Type::Gltf) {
+            std::cerr << "shadelab: " << scene.objects[i].mesh.resolvedPath << ": " << info.triangles << " triangles, "
+                      << info.generatedNormals << " generated normals";
+            if (info.texturesIgnored) std::cerr << ", textures ignored (shadelab shades with material colours only)";
+            std::cerr << "\n";
+        }
+    }
+    if (options.verbose)
         std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
                   << scene.objects.size() << " object(s), " << geometry->triangleCount() << " triangles\n";
-        for (const GltfInfo& info : geometry->gltfInfo)
-            for (const std::string& w : info.warnings) std::cerr << "shadelab: warning: " << w << "\n";
-    }
     const ShaderLibrary shaders(options.shaderDir);
 
     if (options.benchmarkFrames > 0) {

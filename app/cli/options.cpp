@@ -69,6 +69,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (arg == "--help" || arg == "-h") noValue(), o.help = true;
         else if (arg == "--version") noValue(), o.version = true;
         else if (arg == "--verbose" || arg == "-v") noValue(), o.verbose = true;
+        else if (arg == "--info") noValue(), o.info = true;
         else if (arg == "--output" || arg == "-o") o.output = next();
         else if (arg == "--shading") o.shading = parseChoice(arg, next(), kShading);
         else if (arg == "--layout") o.layout = parseChoice(arg, next(), kLayout);
@@ -141,6 +142,7 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           torus[:major[:minor]], cube, plane[:n], or a .gltf/.glb file
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --shader-dir DIR        read GLSL files from DIR when present (default: the built-in copies)
+  --info                  print what was loaded (meshes, triangles, bounds, normals) and exit
   -v, --verbose           say what was loaded and written
   -h, --help              this text
   --version               print the version

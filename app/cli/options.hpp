@@ -20,6 +20,7 @@ struct Options {
     std::optional<MeshSpec> mesh;           // --mesh: replaces the first object's mesh
     int benchmarkFrames = 0;                // --benchmark N
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
+    bool info = false;                      // --info: print what was loaded, render nothing
     bool verbose = false;
     bool help = false;
     bool version = false;

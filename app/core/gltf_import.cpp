@@ -5,6 +5,7 @@
 
 #include <tiny_gltf.h>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -12,6 +13,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -20,7 +22,18 @@ namespace shadelab {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr std::size_t kMaxTriangles = 50'000'000;  // ~1.8 GB of vertex data after baking: refuse beyond
+constexpr std::size_t kMaxTriangles = 50'000'000;
+
+// External files are read only from inside the model's folder: a URI with a scheme (http:, file:),
+// an absolute path elsewhere, or one that climbs out with ".." is refused before anything is opened.
+bool insideFolder(const std::string& p, const fs::path& root) {
+    if (p.find("://") != std::string::npos) return false;
+    std::error_code ec;
+    const fs::path full = fs::absolute(fs::path(p), ec).lexically_normal();
+    if (ec) return false;
+    const fs::path rel = full.lexically_relative(root);
+    return !rel.empty() && *rel.begin() != "..";
+}  // ~1.8 GB of vertex data after baking: refuse beyond
 
 class GltfReader {
 public:
@@ -112,10 +125,11 @@ GltfReader::View GltfReader::view(int ai, const std::string& where, const std::v
     }
     if (a.sparse.isSparse) {
         // Materialise: start from the base values (or zeros) and substitute the sparse ones.
-        v.sparseValues.assign(v.count * std::size_t(v.components), 0.0f);
-        if (v.base)
+        std::vector<float> values(v.count * std::size_t(v.components), 0.0f);
+        if (v.base)  // read through `v` while its sparseValues is still empty, i.e. from the buffer
             for (std::size_t i = 0; i < v.count; ++i)
-                for (int c = 0; c < v.components; ++c) v.sparseValues[i * std::size_t(v.components) + std::size_t(c)] = component(v, i, c);
+                for (int c = 0; c < v.components; ++c) values[i * std::size_t(v.components) + std::size_t(c)] = component(v, i, c);
+        v.sparseValues = std::move(values);
         const std::size_t n = std::size_t(a.sparse.count);
         if (a.sparse.count < 0 || n > v.count) fail(name, "sparse count out of range");
         View idx;
@@ -242,10 +256,9 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         return;
     }
     const auto posIt = p.attributes.find("POSITION");
-    if (posIt == p.attributes.end()) {
-        info_.warnings.push_back(where + ": primitive without POSITION skipped");
-        return;
-    }
+    // The validator only warns about this, but a triangle primitive without positions cannot be drawn,
+    // and its indices (if any) point at nothing: refuse the file rather than guess.
+    if (posIt == p.attributes.end()) fail(where, "has no POSITION attribute");
     const View pos = view(posIt->second, where + " POSITION", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
     std::vector<glm::vec3> positions(pos.count);
     for (std::size_t i = 0; i < pos.count; ++i) {
@@ -305,11 +318,28 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         const float l = glm::length(n);
         mesh_.normals.push_back(l > 0.0f ? n / l : glm::vec3(0.0f, 1.0f, 0.0f));
     }
+    const auto firstIndex = std::uint32_t(mesh_.indices.size());
     for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
         mesh_.indices.push_back(base + tris[t]);
         mesh_.indices.push_back(base + tris[t + (mirrored ? 2 : 1)]);
         mesh_.indices.push_back(base + tris[t + (mirrored ? 1 : 2)]);
     }
+    // The primitive's base colour (glTF's default is white); consecutive primitives of one colour
+    // share a part, so a many-primitive model does not cost a draw call per primitive.
+    MeshPart part;
+    part.firstIndex = firstIndex;
+    part.indexCount = std::uint32_t(mesh_.indices.size()) - firstIndex;
+    part.hasBaseColor = true;
+    if (p.material >= 0 && std::size_t(p.material) < model_.materials.size()) {
+        const auto& f = model_.materials[std::size_t(p.material)].pbrMetallicRoughness.baseColorFactor;
+        if (f.size() >= 3)
+            part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
+    }
+    if (!mesh_.parts.empty() && mesh_.parts.back().baseColor == part.baseColor &&
+        mesh_.parts.back().firstIndex + mesh_.parts.back().indexCount == part.firstIndex)
+        mesh_.parts.back().indexCount += part.indexCount;
+    else if (part.indexCount > 0)
+        mesh_.parts.push_back(part);
     info_.primitives += 1;
     info_.triangles += tris.size() / 3;
 }
@@ -357,7 +387,25 @@ Mesh GltfReader::read() {
     }
     for (int r : roots) visit(r, glm::mat4(1.0f), 0);
     info_.meshes = int(model_.meshes.size());
+    info_.materials = int(model_.materials.size());
     info_.vertices = mesh_.positions.size();
+    info_.texturesIgnored = !model_.textures.empty();
+    // TRIANGLES primitives of every mesh, each counted once (what the file holds, drawn or not).
+    for (const tinygltf::Mesh& m : model_.meshes)
+        for (const tinygltf::Primitive& p : m.primitives) {
+            if (p.mode >= 0 && p.mode != TINYGLTF_MODE_TRIANGLES) continue;
+            const int counted = p.indices >= 0 ? p.indices : (p.attributes.count("POSITION") ? p.attributes.at("POSITION") : -1);
+            if (counted >= 0 && std::size_t(counted) < model_.accessors.size())
+                info_.fileTriangles += model_.accessors[std::size_t(counted)].count / 3;
+        }
+    if (!mesh_.positions.empty()) {
+        info_.boundsMin = info_.boundsMax = mesh_.positions.front();
+        for (const glm::vec3& p : mesh_.positions) {
+            info_.boundsMin = glm::min(info_.boundsMin, p);
+            info_.boundsMax = glm::max(info_.boundsMax, p);
+        }
+    }
+    if (mesh_.indices.empty()) info_.warnings.push_back("nothing to draw: the default scene has no triangles");
     return std::move(mesh_);
 }
 
@@ -370,20 +418,20 @@ Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
     const fs::path folder = fs::absolute(fs::path(path), ec).parent_path().lexically_normal();
 
     tinygltf::TinyGLTF loader;
-    // External files are read only from inside the model's folder: absolute paths, "..", and network
-    // schemes are refused before anything is opened.
     tinygltf::FsCallbacks fsc{};
-    fsc.FileExists = [](const std::string& p, void*) { return fs::is_regular_file(p); };
+    // FileExists answers "yes" for a path outside the folder so that tinygltf goes on to read it and
+    // ReadWholeFile can refuse it with a message that says why (rather than "file not found").
+    fsc.FileExists = [](const std::string& p, void* user) {
+        return !insideFolder(p, *static_cast<const fs::path*>(user)) || fs::is_regular_file(fs::path(p));
+    };
     fsc.ExpandFilePath = [](const std::string& p, void*) { return p; };
     fsc.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
-        const fs::path& root = *static_cast<const fs::path*>(user);
-        const fs::path full = fs::absolute(fs::path(p)).lexically_normal();
-        const fs::path rel = full.lexically_relative(root);
-        if (p.find("://") != std::string::npos || rel.empty() || *rel.begin() == "..") {
+        if (!insideFolder(p, *static_cast<const fs::path*>(user))) {
             if (err) *err += "refused URI outside the model's folder: " + p;
             return false;
         }
         std::error_code e;
+        const fs::path full(p);
         const auto size = fs::file_size(full, e);
         if (e || size > (std::uintmax_t(1) << 31)) {
             if (err) *err += "cannot read " + p;
@@ -425,6 +473,28 @@ Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
     Mesh mesh = GltfReader(path, model, info).read();
     if (infoOut) *infoOut = std::move(info);
     return mesh;
+}
+
+std::string describe(const std::string& path, const GltfInfo& i) {
+    auto vec = [](const glm::vec3& v) {
+        char b[96];
+        std::snprintf(b, sizeof b, "[%g, %g, %g]", double(v.x), double(v.y), double(v.z));
+        return std::string(b);
+    };
+    std::string s;
+    s += "model: " + path + "\n";
+    s += "nodes: " + std::to_string(i.nodes) + " (in the drawn scene)\n";
+    s += "meshes: " + std::to_string(i.meshes) + "\n";
+    s += "materials: " + std::to_string(i.materials) + (i.texturesIgnored ? " (textures ignored)" : "") + "\n";
+    s += "primitives: " + std::to_string(i.primitives) + " drawn\n";
+    s += "triangles: " + std::to_string(i.fileTriangles) + " in the file's TRIANGLES primitives, " +
+         std::to_string(i.triangles) + " drawn\n";
+    s += "vertices: " + std::to_string(i.vertices) + "\n";
+    s += "bounds: min " + vec(i.boundsMin) + " max " + vec(i.boundsMax) + "\n";
+    s += "normals: " + (i.generatedNormals ? "generated for " + std::to_string(i.generatedNormals) + " vertices"
+                                             : std::string("from the file")) + "\n";
+    for (const std::string& w : i.warnings) s += "warning: " + w + "\n";
+    return s;
 }
 
 }  // namespace shadelab

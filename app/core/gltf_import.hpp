@@ -15,13 +15,20 @@ namespace shadelab {
 struct GltfInfo {
     int nodes = 0;              // nodes visited in the drawn scene
     int meshes = 0;             // meshes in the file
+    int materials = 0;          // materials in the file
     int primitives = 0;         // primitives drawn (instances counted each time)
-    std::size_t triangles = 0;  // triangles drawn
+    std::size_t fileTriangles = 0;  // TRIANGLES primitives of all meshes, each counted once
+    std::size_t triangles = 0;  // triangles drawn: every instance, strips and fans included
     std::size_t vertices = 0;   // vertices after baking
     std::size_t generatedNormals = 0;  // vertices whose normal shadelab computed (file had none)
+    bool texturesIgnored = false;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // of the drawn vertices, world space
     std::vector<std::string> warnings;
 };
 
 Mesh loadGltf(const std::string& path, GltfInfo* info = nullptr);
+
+// The lines `shadelab --info` prints for a model.
+std::string describe(const std::string& path, const GltfInfo& info);
 
 }  // namespace shadelab

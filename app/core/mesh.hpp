@@ -11,10 +11,20 @@
 
 namespace shadelab {
 
+// A run of triangles with a colour of its own (a glTF primitive's base colour factor). The scene's
+// material colour overrides it when the scene sets one.
+struct MeshPart {
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
+    bool hasBaseColor = false;
+    glm::vec3 baseColor{1.0f};
+};
+
 struct Mesh {
     std::vector<glm::vec3> positions;   // object space
     std::vector<glm::vec3> normals;     // object space, unit length, one per position
     std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise from outside
+    std::vector<MeshPart> parts;        // empty: the whole mesh is one part with the scene's colour
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 };

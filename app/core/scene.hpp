@@ -29,6 +29,9 @@ struct Material {
     float kd = 0.7f;                       // diffuse weight
     float ks = 0.5f;                       // specular weight
     float ke = 32.0f;                      // specular exponent ("size of the highlight")
+    // True when the scene (or the viewer's panel) set `color`: it then also overrides a glTF model's
+    // own base colours. A model given without a colour keeps the colours its file gives.
+    bool colorSet = false;
 };
 
 struct MeshSpec {

@@ -175,6 +175,7 @@ Material SceneReader::material(const json& j, const std::string& path) const {
     Material m;
     requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke"});
     vec3(j, "color", path, m.color, 0.0, 1.0);
+    m.colorSet = j.contains("color");
     vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
     number(j, "ka", path, m.ka, 0.0, 1000.0);
     number(j, "kd", path, m.kd, 0.0, 1000.0);
@@ -337,9 +338,10 @@ nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
     return j;
 }
 
-nlohmann::ordered_json materialJson(const Material& m) {
+nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh) {
     nlohmann::ordered_json j;
-    j["color"] = vecJson(m.color);
+    // A glTF model's own colours stay unless a colour was chosen: write it only then.
+    if (m.colorSet || mesh.type != MeshSpec::Type::Gltf) j["color"] = vecJson(m.color);
     j["specular_color"] = vecJson(m.specularColor);
     j["ka"] = m.ka;
     j["kd"] = m.kd;
@@ -395,13 +397,13 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     const bool shorthand = !s.usesObjectList && s.objects.size() == 1 && isIdentity(s.objects[0].transform);
     if (shorthand) {
         j["mesh"] = meshJson(s.objects[0].mesh, saveDir);
-        j["material"] = materialJson(s.objects[0].material);
+        j["material"] = materialJson(s.objects[0].material, s.objects[0].mesh);
     } else {
         j["objects"] = nlohmann::ordered_json::array();
         for (const SceneObject& o : s.objects) {
             nlohmann::ordered_json oj;
             oj["mesh"] = meshJson(o.mesh, saveDir);
-            oj["material"] = materialJson(o.material);
+            oj["material"] = materialJson(o.material, o.mesh);
             oj["transform"] = {{"translation", vecJson(o.transform.translation)},
                                {"rotation_deg", vecJson(o.transform.rotationDeg)},
                                {"scale", vecJson(o.transform.scale)}};

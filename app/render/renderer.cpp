@@ -177,20 +177,37 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height);
     const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
 
-    // All uniforms of the frame in one upload: a FrameBlock per pane, then an ObjectBlock per object,
+    // One draw per object part (a glTF primitive's base colour, or the whole mesh).
+    struct Draw {
+        std::size_t object;
+        GLsizei first, count;
+        glm::vec3 color;
+    };
+    std::vector<Draw> draws;
+    for (std::size_t o = 0; o < objects; ++o) {
+        const Mesh& mesh = geometry_->meshes[o];
+        const Material& m = scene.objects[o].material;
+        if (mesh.parts.empty()) draws.push_back({o, 0, GLsizei(mesh.indices.size()), m.color});
+        for (const MeshPart& part : mesh.parts)
+            draws.push_back({o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
+                             (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor});
+    }
+
+    // All uniforms of the frame in one upload: a FrameBlock per pane, then an ObjectBlock per draw,
     // each at an offset glBindBufferRange accepts.
     const auto align = std::size_t(uniformAlignment_);
     const std::size_t frameStride = alignUp(sizeof(gpu::FrameBlock), align);
     const std::size_t objectStride = alignUp(sizeof(gpu::ObjectBlock), align);
     const std::size_t objectsOffset = frameStride * panes.size();
-    std::vector<unsigned char> staging(objectsOffset + objectStride * objects);
+    std::vector<unsigned char> staging(objectsOffset + objectStride * draws.size());
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const gpu::FrameBlock b = frameBlock(scene, float(panes[p].width) / float(std::max(panes[p].height, 1)));
         std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
     }
-    for (std::size_t o = 0; o < objects; ++o) {
-        const gpu::ObjectBlock b = objectBlock(scene.objects[o]);
-        std::memcpy(staging.data() + objectsOffset + o * objectStride, &b, sizeof b);
+    for (std::size_t d = 0; d < draws.size(); ++d) {
+        gpu::ObjectBlock b = objectBlock(scene.objects[draws[d].object]);
+        copyVec(b.color, draws[d].color);
+        std::memcpy(staging.data() + objectsOffset + d * objectStride, &b, sizeof b);
     }
     glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.get());
     glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(staging.size()), staging.data(), GL_STREAM_DRAW);
@@ -217,16 +234,18 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
         glUseProgram(program(pane.mode, scene));
         glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
                           sizeof(gpu::FrameBlock));
-        for (std::size_t o = 0; o < objects; ++o) {
-            const GpuMesh& mesh = gpuMesh(o, pane.mode);
-            if (mesh.indexCount == 0) continue;
+        for (std::size_t d = 0; d < draws.size(); ++d) {
+            const Draw& draw = draws[d];
+            if (draw.count == 0) continue;
+            const GpuMesh& mesh = gpuMesh(draw.object, pane.mode);
             glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
-                              GLintptr(objectsOffset + o * objectStride), sizeof(gpu::ObjectBlock));
+                              GLintptr(objectsOffset + d * objectStride), sizeof(gpu::ObjectBlock));
             // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
-            const bool mirrored = glm::determinant(glm::mat3(worldFromObject(scene.objects[o].transform))) < 0.0f;
-            glFrontFace(mirrored ? GL_CW : GL_CCW);
+            const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);
+            glFrontFace(glm::determinant(glm::mat3(world)) < 0.0f ? GL_CW : GL_CCW);
             glBindVertexArray(mesh.vao.get());
-            glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+            glDrawElements(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
+                           reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)));
         }
     }
     glBindVertexArray(0);

@@ -49,8 +49,8 @@ glm::vec2 projectToImage(const Scene& s, const Pane& pane, const glm::vec3& worl
 }
 
 std::string saveForInspection(const std::string& name, const Image& image) {
-    std::filesystem::create_directories(SHADELAB_TEST_OUTPUT_DIR);
     const std::string path = std::string(SHADELAB_TEST_OUTPUT_DIR) + "/" + name + ".png";
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
     writePng(path, image);
     return path;
 }

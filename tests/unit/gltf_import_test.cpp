@@ -1,0 +1,348 @@
+// glTF import: the real models in ../shared/assets/gltf (counts from its README), and small broken or
+// hostile files this test writes itself. Every broken file must give an InputError that names the
+// file and the offending accessor/primitive; none may crash (CI also runs this under ASan + UBSan).
+#include "core/error.hpp"
+#include "core/gltf_import.hpp"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kShared = fs::path(SHADELAB_SOURCE_DIR) / ".." / "shared" / "assets" / "gltf";
+
+std::string base64(const std::vector<unsigned char>& in) {
+    static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < in.size(); i += 3) {
+        const unsigned v = unsigned(in[i]) << 16 | (i + 1 < in.size() ? unsigned(in[i + 1]) << 8 : 0u) |
+                           (i + 2 < in.size() ? unsigned(in[i + 2]) : 0u);
+        out += t[v >> 18 & 63];
+        out += t[v >> 12 & 63];
+        out += i + 1 < in.size() ? t[v >> 6 & 63] : '=';
+        out += i + 2 < in.size() ? t[v & 63] : '=';
+    }
+    return out;
+}
+
+template <typename T>
+void append(std::vector<unsigned char>& b, std::initializer_list<T> values) {
+    for (T v : values) {
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &v, sizeof(T));
+        b.insert(b.end(), bytes, bytes + sizeof(T));
+    }
+}
+
+// A valid file: one quad (4 vertices, 2 triangles, u16 indices), positions only, in one buffer:
+// bytes 0..47 positions, 48..59 indices. Tests break one thing at a time.
+struct Doc {
+    json j;
+    std::vector<unsigned char> bin;
+    Doc() {
+        append<float>(bin, {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+        append<std::uint16_t>(bin, {0, 1, 2, 0, 2, 3});
+        j = json::parse(R"({
+          "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+          "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],
+          "buffers": [{"byteLength": 60}],
+          "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                          {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+          "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                         "min": [0, 0, 0], "max": [1, 1, 0]},
+                        {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]})");
+    }
+};
+
+class Gltf : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("shadelab-gltf-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_ / "model");
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // Writes the document as model/NAME.gltf with its buffer embedded as a data: URI (unless the
+    // document already names a uri).
+    std::string writeGltf(const std::string& name, Doc d) const {
+        if (!d.j["buffers"][0].contains("uri"))
+            d.j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(d.bin);
+        const fs::path p = dir_ / "model" / (name + ".gltf");
+        std::ofstream(p) << d.j.dump();
+        return p.string();
+    }
+    std::string writeGlb(const std::string& name, const Doc& d) const {
+        std::string js = d.j.dump();
+        while (js.size() % 4) js += ' ';
+        std::vector<unsigned char> bin = d.bin;
+        while (bin.size() % 4) bin.push_back(0);
+        std::vector<unsigned char> out;
+        append<std::uint32_t>(out, {0x46546C67u, 2u, std::uint32_t(12 + 8 + js.size() + 8 + bin.size())});
+        append<std::uint32_t>(out, {std::uint32_t(js.size()), 0x4E4F534Au});
+        out.insert(out.end(), js.begin(), js.end());
+        append<std::uint32_t>(out, {std::uint32_t(bin.size()), 0x004E4942u});
+        out.insert(out.end(), bin.begin(), bin.end());
+        const fs::path p = dir_ / "model" / (name + ".glb");
+        std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(out.data()), std::streamsize(out.size()));
+        return p.string();
+    }
+    // Loading must fail with one line that starts with the file and contains every fragment.
+    static void expectRefused(const std::string& file, std::initializer_list<const char*> fragments) {
+        try {
+            loadGltf(file);
+            ADD_FAILURE() << file << " loaded";
+        } catch (const InputError& e) {
+            const std::string msg = e.what();
+            EXPECT_EQ(msg.rfind(file, 0), 0u) << msg;
+            EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+            for (const char* f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
+        }
+    }
+    fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(Gltf, ValidQuadLoadsFromGltfAndGlb) {
+    for (const std::string& file : {writeGltf("quad", Doc()), writeGlb("quad", Doc())}) {
+        GltfInfo info;
+        const Mesh m = loadGltf(file, &info);
+        EXPECT_EQ(m.triangleCount(), 2u) << file;
+        EXPECT_EQ(info.fileTriangles, 2u);
+        EXPECT_EQ(info.generatedNormals, 4u);  // the file has none
+        for (const auto& n : m.normals) EXPECT_NEAR(glm::distance(n, glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+    }
+}
+
+TEST_F(Gltf, BrokenFilesAreRefusedWithTheirCulprit) {
+    {
+        Doc d;
+        d.bin[48] = 9;  // first index 9 of 4 vertices
+        expectRefused(writeGltf("index_range", d), {"mesh 0 primitive 0 indices", "accessor 1", "out of range"});
+    }
+    {
+        Doc d;
+        d.j["bufferViews"][1]["byteLength"] = 200;  // the view runs past its 60-byte buffer
+        expectRefused(writeGltf("view_past_buffer", d), {"bufferView 1"});
+    }
+    {
+        Doc d;  // an external buffer file shorter than the views that read it
+        d.j["buffers"][0]["uri"] = "short.bin";
+        std::ofstream(dir_ / "model" / "short.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), 20);
+        expectRefused(writeGltf("short_buffer", d), {});
+    }
+    {
+        Doc d;
+        d.j["accessors"][0]["count"] = 2147483648LL;  // a 2 GB element count
+        expectRefused(writeGltf("huge_count", d), {"accessor 0"});
+    }
+    {
+        Doc d;
+        d.j["accessors"][0]["count"] = 5;  // 5 positions do not fit in a 48-byte view
+        expectRefused(writeGltf("accessor_past_view", d), {"POSITION", "accessor 0", "do not fit"});
+    }
+    {
+        Doc d;
+        d.j["meshes"][0]["primitives"][0]["attributes"] = json::parse(R"({"NORMAL": 0})");
+        expectRefused(writeGltf("no_position", d), {"mesh 0 primitive 0", "POSITION"});
+    }
+    {
+        Doc d;
+        d.j["accessors"][0]["componentType"] = 5121;  // POSITION as unsigned bytes
+        expectRefused(writeGltf("position_type", d), {"POSITION", "accessor 0"});
+    }
+    {
+        Doc d;
+        d.j["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 7;
+        expectRefused(writeGltf("no_accessor", d), {"accessor"});
+    }
+    {
+        Doc d;
+        d.bin[50] = 0xff, d.bin[51] = 0xff;  // 65535 in u16 indices: the primitive-restart value
+        expectRefused(writeGltf("restart", d), {"primitive-restart"});
+    }
+    {
+        Doc d;
+        d.j["nodes"][0]["children"] = json::array({0});  // a node that is its own child
+        expectRefused(writeGltf("cycle", d), {"node 0"});
+    }
+    {
+        Doc d;
+        d.j["buffers"][0]["uri"] = "data:application/octet-stream;base64,@@@not base64@@@";
+        expectRefused(writeGltf("bad_data_uri", d), {});
+    }
+    {
+        std::string glb = writeGlb("truncated", Doc());
+        fs::resize_file(glb, fs::file_size(glb) / 2);
+        expectRefused(glb, {});
+    }
+    {
+        std::string glb = writeGlb("chunk_lies", Doc());
+        std::fstream f(glb, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(12);
+        const std::uint32_t huge = 0x7ffffff0u;  // the JSON chunk claims 2 GB
+        f.write(reinterpret_cast<const char*>(&huge), 4);
+        f.close();
+        expectRefused(glb, {});
+    }
+    std::ofstream(dir_ / "model" / "junk.gltf") << "\x01\x02\x03 junk";
+    expectRefused((dir_ / "model" / "junk.gltf").string(), {});
+}
+
+// A URI may only name files inside the model's folder: "..", absolute paths and network schemes are
+// refused before anything is opened.
+TEST_F(Gltf, UrisThatLeaveTheModelFolderAreRefused) {
+    Doc d;
+    std::ofstream(dir_ / "outside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
+    for (const std::string& uri : {std::string("../outside.bin"), (dir_ / "outside.bin").string(),
+                                   std::string("http://example.invalid/x.bin"), std::string("file:///etc/passwd")}) {
+        Doc bad;
+        bad.j["buffers"][0]["uri"] = uri;
+        expectRefused(writeGltf("escape", bad), {});
+    }
+    // The same buffer inside the folder is fine.
+    std::ofstream(dir_ / "model" / "inside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
+    Doc ok;
+    ok.j["buffers"][0]["uri"] = "inside.bin";
+    EXPECT_EQ(loadGltf(writeGltf("inside", ok)).triangleCount(), 2u);
+}
+
+TEST_F(Gltf, MirroredNodesKeepOutwardWindingAndTransformedNormals) {
+    Doc d;
+    append<float>(d.bin, {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});  // normals +z at bytes 60..107
+    d.j["buffers"][0]["byteLength"] = 108;
+    d.j["bufferViews"].push_back(json::parse(R"({"buffer": 0, "byteOffset": 60, "byteLength": 48})"));
+    d.j["accessors"].push_back(json::parse(R"({"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC3"})"));
+    d.j["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
+    d.j["nodes"][0]["scale"] = json::array({1, 1, -1});  // mirror in z: the quad now faces -z
+    const Mesh m = loadGltf(writeGltf("mirror", d));
+    ASSERT_EQ(m.triangleCount(), 2u);
+    for (const auto& n : m.normals) EXPECT_NEAR(glm::distance(n, glm::vec3(0, 0, -1)), 0.0f, 1e-6f);
+    for (size_t t = 0; t < m.indices.size(); t += 3)
+        EXPECT_GT(glm::dot(faceNormal(m.positions[m.indices[t]], m.positions[m.indices[t + 1]], m.positions[m.indices[t + 2]]),
+                           glm::vec3(0, 0, -1)), 0.99f);
+}
+
+TEST_F(Gltf, StripsAndFansAreTriangulatedCounterClockwise) {
+    for (int mode : {5, 6}) {  // TRIANGLE_STRIP over 0 1 3 2, TRIANGLE_FAN over 0 1 2 3
+        Doc d;
+        const std::uint16_t order[2][4] = {{0, 1, 3, 2}, {0, 1, 2, 3}};
+        std::memcpy(&d.bin[48], order[mode - 5], 8);
+        d.j["accessors"][1]["count"] = 4;
+        d.j["meshes"][0]["primitives"][0]["mode"] = mode;
+        const Mesh m = loadGltf(writeGltf("mode" + std::to_string(mode), d));
+        ASSERT_EQ(m.triangleCount(), 2u) << mode;
+        for (size_t t = 0; t < m.indices.size(); t += 3)
+            EXPECT_GT(faceNormal(m.positions[m.indices[t]], m.positions[m.indices[t + 1]], m.positions[m.indices[t + 2]]).z, 0.99f)
+                << "mode " << mode << " triangle " << t / 3;
+    }
+}
+
+TEST_F(Gltf, BaseColourOfEachPrimitiveBecomesAPart) {
+    Doc d;
+    d.j["materials"] = json::parse(R"([{"pbrMetallicRoughness": {"baseColorFactor": [0.25, 0.5, 0.75, 1.0]}}])");
+    d.j["meshes"][0]["primitives"][0]["material"] = 0;
+    const Mesh m = loadGltf(writeGltf("material", d));
+    ASSERT_EQ(m.parts.size(), 1u);
+    EXPECT_EQ(m.parts[0].indexCount, 6u);
+    EXPECT_EQ(m.parts[0].baseColor, glm::vec3(0.25f, 0.5f, 0.75f));
+}
+
+// Every model of ../shared/assets/gltf loads, with the triangle counts of that folder's README:
+// "Triangles" (TRIANGLES primitives, each counted once) and "drawn" (each mesh instance, plus the
+// triangles of strips and fans, which the README lists separately).
+TEST(SharedModels, LoadWithTheReadmeTriangleCounts) {
+    if (!fs::exists(kShared / "README.md")) GTEST_SKIP() << kShared << " not found: ../shared is absent";
+    struct Expect {
+        const char* file;
+        std::size_t fileTriangles, drawn;
+    };
+    const std::string sa = "sample-assets/", ag = "asset-generator/Positive/Mesh_PrimitiveMode/Mesh_PrimitiveMode_";
+    const std::vector<std::pair<std::string, std::pair<std::size_t, std::size_t>>> models = {
+        {sa + "Triangle/glTF/Triangle.gltf", {1, 1}},
+        {sa + "Triangle/glTF-Embedded/Triangle.gltf", {1, 1}},
+        {sa + "TriangleWithoutIndices/glTF/TriangleWithoutIndices.gltf", {1, 1}},
+        {sa + "TriangleWithoutIndices/glTF-Embedded/TriangleWithoutIndices.gltf", {1, 1}},
+        {sa + "Box/glTF/Box.gltf", {12, 12}},
+        {sa + "Box/glTF-Binary/Box.glb", {12, 12}},
+        {sa + "Box/glTF-Embedded/Box.gltf", {12, 12}},
+        {sa + "BoxInterleaved/glTF/BoxInterleaved.gltf", {12, 12}},
+        {sa + "BoxInterleaved/glTF-Binary/BoxInterleaved.glb", {12, 12}},
+        {sa + "BoxVertexColors/glTF/BoxVertexColors.gltf", {12, 12}},
+        {sa + "BoxVertexColors/glTF-Binary/BoxVertexColors.glb", {12, 12}},
+        {sa + "Cube/glTF/Cube.gltf", {12, 12}},
+        {sa + "SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf", {12, 12}},
+        {sa + "SimpleSparseAccessor/glTF-Embedded/SimpleSparseAccessor.gltf", {12, 12}},
+        {sa + "SimpleMeshes/glTF/SimpleMeshes.gltf", {1, 2}},
+        {sa + "SimpleMeshes/glTF-Embedded/SimpleMeshes.gltf", {1, 2}},
+        {sa + "MultiUVTest/glTF/MultiUVTest.gltf", {12, 12}},
+        {sa + "MultiUVTest/glTF-Binary/MultiUVTest.glb", {12, 12}},
+        {sa + "MeshPrimitiveModes/glTF/MeshPrimitiveModes.gltf", {6, 16}},
+        {sa + "MeshPrimitiveModes/glTF-Embedded/MeshPrimitiveModes.gltf", {6, 16}},
+        {sa + "Suzanne/glTF/Suzanne.gltf", {3936, 3936}},
+        {sa + "Avocado/glTF/Avocado.gltf", {682, 682}},
+        {sa + "SheenCloth/glTF/SheenCloth.gltf", {115200, 115200}},
+        {sa + "ToyCar/glTF/ToyCar.gltf", {108936, 108936}},
+        {sa + "TransmissionTest/glTF-Binary/TransmissionTest.glb", {128775, 128775}},
+        {sa + "NegativeScaleTest/glTF/NegativeScaleTest.gltf", {3884, 7724}},
+        {sa + "OrientationTest/glTF/OrientationTest.gltf", {524, 524}},
+        {sa + "MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf", {1040409, 1040409}},
+        {sa + "Unicode❤♻Test/glTF/Unicode❤♻Test.gltf", {2, 2}},
+        {sa + "Unicode❤♻Test/glTF-Binary/Unicode❤♻Test.glb", {2, 2}},
+        {sa + "Box With Spaces/glTF/Box With Spaces.gltf", {12, 12}},
+        {sa + "MultipleScenes/glTF/MultipleScenes.gltf", {3, 2}},
+        {ag + "00.gltf", {0, 0}}, {ag + "01.gltf", {0, 0}}, {ag + "02.gltf", {0, 0}}, {ag + "03.gltf", {0, 0}},
+        {ag + "04.gltf", {0, 2}}, {ag + "05.gltf", {0, 2}}, {ag + "06.gltf", {2, 2}},
+        {ag + "07.gltf", {0, 0}}, {ag + "08.gltf", {0, 0}}, {ag + "09.gltf", {0, 0}}, {ag + "10.gltf", {0, 0}},
+        {ag + "11.gltf", {0, 2}}, {ag + "12.gltf", {0, 2}}, {ag + "13.gltf", {2, 2}},
+        {ag + "14.gltf", {2, 2}}, {ag + "15.gltf", {2, 2}},
+    };
+    for (const auto& [file, counts] : models) {
+        SCOPED_TRACE(file);
+        GltfInfo info;
+        Mesh m;
+        ASSERT_NO_THROW(m = loadGltf((kShared / file).string(), &info));
+        EXPECT_EQ(info.fileTriangles, counts.first);
+        EXPECT_EQ(info.triangles, counts.second);
+        EXPECT_EQ(m.triangleCount(), counts.second);
+        for (auto i : m.indices) ASSERT_LT(i, m.positions.size());
+        for (const auto& n : m.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-4f);
+    }
+}
+
+// The four negative Asset-Generator files are refused (no POSITION; primitive-restart indices).
+TEST(SharedModels, NegativeAssetGeneratorFilesAreRefused) {
+    const fs::path neg = kShared / "asset-generator" / "Negative";
+    if (!fs::exists(neg)) GTEST_SKIP() << neg << " not found: ../shared is absent";
+    for (const char* f : {"Mesh_NoPosition/Mesh_NoPosition_00.gltf", "Mesh_NoPosition/Mesh_NoPosition_01.gltf",
+                          "Mesh_PrimitiveRestart/Mesh_PrimitiveRestart_08.gltf",
+                          "Mesh_PrimitiveRestart/Mesh_PrimitiveRestart_09.gltf"}) {
+        EXPECT_THROW(loadGltf((neg / f).string()), InputError) << f;
+    }
+}
+
+// The sparse accessor substitutes three positions: the loaded vertices are the substituted ones.
+TEST(SharedModels, SparseAccessorValuesAreApplied) {
+    const fs::path file = kShared / "sample-assets/SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf";
+    if (!fs::exists(file)) GTEST_SKIP() << file << " not found: ../shared is absent";
+    const Mesh m = loadGltf(file.string());
+    ASSERT_EQ(m.positions.size(), 14u);
+    // The base is a 7 x 2 grid (x = 0..6, y = 0..1); the sparse values move vertices 8, 10 and 12 of
+    // the top row to (1, 2), (3, 3) and (5, 4). The others keep their base positions.
+    EXPECT_EQ(m.positions[6], glm::vec3(6, 0, 0));
+    EXPECT_EQ(m.positions[7], glm::vec3(0, 1, 0));
+    EXPECT_EQ(m.positions[8], glm::vec3(1, 2, 0));
+    EXPECT_EQ(m.positions[9], glm::vec3(2, 1, 0));
+    EXPECT_EQ(m.positions[10], glm::vec3(3, 3, 0));
+    EXPECT_EQ(m.positions[12], glm::vec3(5, 4, 0));
+}
