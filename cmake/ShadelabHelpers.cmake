@@ -11,11 +11,17 @@ macro(shadelab_require name)
   endif()
 endmacro()
 
-# Warnings for shadelab's own targets only (Debian's headers are included as SYSTEM by their targets).
+# Warnings (and, with SHADELAB_SANITIZE, AddressSanitizer + UndefinedBehaviorSanitizer) for shadelab's
+# own targets only; Debian's headers are system headers and stay quiet.
 function(shadelab_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion)
   if(SHADELAB_WERROR)
     target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(SHADELAB_SANITIZE)
+    set(_san -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
+    target_compile_options(${target} PRIVATE ${_san})
+    target_link_options(${target} PRIVATE ${_san})
   endif()
 endfunction()
 
