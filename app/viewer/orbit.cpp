@@ -60,4 +60,21 @@ void frameCamera(Camera& c, const BoundingSphere& b, float paneAspect) {
     c.farPlane = dist + 4.0f * radius;
 }
 
+bool sphereInView(const Camera& c, const BoundingSphere& b, float paneAspect) {
+    const glm::vec3 forward = c.target - c.eye;
+    if (glm::length(forward) <= 0.0f) return false;
+    const glm::vec3 f = glm::normalize(forward);
+    const glm::vec3 r = glm::normalize(glm::cross(f, c.up));
+    const glm::vec3 u = glm::cross(r, f);
+    const glm::vec3 d = b.center - c.eye;
+    const float x = glm::dot(d, r), y = glm::dot(d, u), z = glm::dot(d, f);  // view space, z forward
+    if (z - b.radius < c.nearPlane || z + b.radius > c.farPlane) return false;
+    // Distance from the centre to each side plane of the frustum must be at least the radius.
+    const float tanY = std::tan(glm::radians(c.fovYDeg) / 2.0f), tanX = tanY * paneAspect;
+    const auto inside = [&](float offAxis, float tanHalf) {
+        return (tanHalf * z - std::fabs(offAxis)) / std::sqrt(1.0f + tanHalf * tanHalf) >= b.radius;
+    };
+    return inside(x, tanX) && inside(y, tanY);
+}
+
 }  // namespace shadelab

@@ -24,4 +24,7 @@ void zoomCamera(Camera& camera, float wheelSteps);
 // 90% of the tighter side of a pane with this aspect (width / height); near and far follow.
 void frameCamera(Camera& camera, const BoundingSphere& bounds, float paneAspect);
 
+// True when the whole bounding sphere is inside the view frustum of a pane with this aspect.
+bool sphereInView(const Camera& camera, const BoundingSphere& bounds, float paneAspect);
+
 }  // namespace shadelab

@@ -63,6 +63,7 @@ bool cameraValid(const Camera& c) {
 }
 
 void sectionShading(Scene& scene) {
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Shading");
     ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
     radio("flat (1)", scene.shading, ShadingMode::Flat);
@@ -73,6 +74,7 @@ void sectionShading(Scene& scene) {
     bool compare = scene.layout == Layout::Compare;
     if (ImGui::Checkbox("compare: flat | gouraud | phong  (C)", &compare))
         scene.layout = compare ? Layout::Compare : Layout::Single;
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Reflection");
     ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
     radio("Phong", scene.reflection, ReflectionModel::Phong);
@@ -207,8 +209,7 @@ void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requ
     requests.screenshot |= ImGui::Button("screenshot (F12)");
     if (!status.lastScreenshot.empty()) ImGui::TextWrapped("screenshot: %s", status.lastScreenshot.c_str());
     requests.reloadShaders |= ImGui::Button("reload shaders");
-    ImGui::SameLine();
-    ImGui::TextDisabled("(drop a .json/.gltf/.glb on the window to open it)");
+    ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
 }
 
 void sectionKeys() {

@@ -40,6 +40,7 @@ bool SceneDocument::syncGeometry() {
 
 void SceneDocument::load(const std::string& path) {
     Scene next = hasModelExtension(path) ? sceneForModel(path) : loadSceneFile(path);
+    const int fileWidth = next.width, fileHeight = next.height;
     next.width = scene_.width;
     next.height = scene_.height;
     auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(next));
@@ -48,6 +49,7 @@ void SceneDocument::load(const std::string& path) {
     scene_ = std::move(next);
     geometry_ = std::move(geometry);
     home_ = scene_.camera;
+    fitToView(fileWidth, fileHeight);
 }
 
 void SceneDocument::save(const std::string& path) const {
@@ -58,16 +60,35 @@ void SceneDocument::save(const std::string& path) const {
     writeFileAtomic(path, [&](std::FILE* f) { return std::fwrite(text.data(), 1, text.size(), f) == text.size(); });
 }
 
-void SceneDocument::frameModel() {
-    if (!geometry_) return;
+BoundingSphere SceneDocument::bounds() const {
     std::vector<const Mesh*> meshes;
     std::vector<glm::mat4> transforms;
-    for (std::size_t i = 0; i < geometry_->meshes.size() && i < scene_.objects.size(); ++i) {
+    for (std::size_t i = 0; geometry_ && i < geometry_->meshes.size() && i < scene_.objects.size(); ++i) {
         meshes.push_back(&geometry_->meshes[i]);
         transforms.push_back(worldFromObject(scene_.objects[i].transform));
     }
-    const Pane pane = layoutPanes(scene_.layout, scene_.shading, scene_.width, scene_.height).front();
-    frameCamera(scene_.camera, worldBounds(meshes, transforms), float(pane.width) / float(std::max(pane.height, 1)));
+    return worldBounds(meshes, transforms);
+}
+
+float SceneDocument::paneAspect(int width, int height) const {
+    const Pane pane = layoutPanes(scene_.layout, scene_.shading, width, height).front();
+    return float(std::max(pane.width, 1)) / float(std::max(pane.height, 1));
+}
+
+void SceneDocument::frameModel() {
+    if (!geometry_) return;
+    frameCamera(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
+}
+
+bool SceneDocument::fitToView(int width, int height) {
+    if (!geometry_ || (scene_.width >= width && scene_.height >= height)) return false;
+    const BoundingSphere b = bounds();
+    if (b.radius <= 0.0f || !sphereInView(scene_.camera, b, paneAspect(width, height)) ||
+        sphereInView(scene_.camera, b, paneAspect(scene_.width, scene_.height)))
+        return false;
+    frameModel();
+    home_ = scene_.camera;
+    return true;
 }
 
 }  // namespace shadelab

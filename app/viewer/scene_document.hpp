@@ -39,7 +39,16 @@ public:
     // Places the camera to fit every object in the first pane, keeping the viewing direction.
     void frameModel();
 
+    // For a view smaller than the scene was made for (a 1280x720 projector, the panel beside the
+    // view): when the model fits its pane at the scene's own `width` x `height` but the view's panes
+    // crop it, frames it (as F) and makes that the home camera. Returns true when it did. A view that
+    // gives the scene its size never moves the camera, so it shows what --output renders.
+    bool fitToView(int width, int height);
+
 private:
+    BoundingSphere bounds() const;
+    float paneAspect(int width, int height) const;
+
     Scene scene_;
     std::shared_ptr<const SceneGeometry> geometry_;
     Camera home_;

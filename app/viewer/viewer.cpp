@@ -66,12 +66,17 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     // window actually has (narrower when the panel is shown). Its home camera is that framing.
     const FrameLayout l = layout();
     Scene& s = document_.scene();
-    s.width = l.viewWidth;
-    s.height = l.framebufferHeight;
+    const int sceneWidth = s.width, sceneHeight = s.height;
+    s.width = std::max(l.viewWidth, 1);
+    s.height = std::max(l.framebufferHeight, 1);
     if (!s.cameraGiven && document_.geometry()) {
         frameIfNeeded(s, *document_.geometry());
         document_.setHomeCamera(s.camera);
     }
+    if (document_.fitToView(sceneWidth, sceneHeight))
+        setStatus("The screen has no room for the scene's " + std::to_string(sceneWidth) + "x" +
+                      std::to_string(sceneHeight) + " beside the panel: framed the model to fit (F; Tab hides the panel).",
+                  false);
     if (options_.verbose) std::cerr << "shadelab: viewer on " << status_.glRenderer << "\n";
 }
 

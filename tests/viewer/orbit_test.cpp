@@ -93,5 +93,18 @@ TEST(Frame, FitsTheSphereAndKeepsTheDirection) {
     EXPECT_GT(c.farPlane, dist + 2.0f);
 }
 
+TEST(SphereInView, FollowsThePaneAspect) {
+    Camera c;
+    c.eye = {0, 0, 5};
+    const BoundingSphere unit{{0, 0, 0}, 1.0f};
+    EXPECT_TRUE(sphereInView(c, unit, 16.0f / 9.0f));
+    // At d = 5 and a 45 degree vertical field, a pane narrower than ~0.52 of its height crops x.
+    EXPECT_FALSE(sphereInView(c, unit, 0.4f));
+    EXPECT_FALSE(sphereInView(c, BoundingSphere{{3, 0, 0}, 1.0f}, 16.0f / 9.0f));
+    EXPECT_FALSE(sphereInView(c, BoundingSphere{{0, 0, 6}, 0.5f}, 1.0f));  // behind the eye
+    frameCamera(c, unit, 0.4f);
+    EXPECT_TRUE(sphereInView(c, unit, 0.4f));
+}
+
 }  // namespace
 }  // namespace shadelab

@@ -90,6 +90,20 @@ TEST(SceneDocument, FailedRebuildPutsTheOldSpecBack) {
     EXPECT_FALSE(doc.syncGeometry());
 }
 
+TEST(SceneDocument, FitToViewOnlyWhenTheSmallerViewCropsTheModel) {
+    SceneDocument doc = defaultDocument();  // 1280x720, the sphere fits
+    doc.scene().layout = Layout::Compare;
+    const Camera scene = doc.scene().camera;
+    EXPECT_FALSE(doc.fitToView(1280, 720));  // the view has the scene's size
+    doc.scene().width = 1540;                // a bigger view: never moved
+    EXPECT_FALSE(doc.fitToView(1280, 720));
+    EXPECT_EQ(doc.scene().camera.eye, scene.eye);
+    doc.scene().width = 900;  // 300-pixel compare panes crop the sphere
+    EXPECT_TRUE(doc.fitToView(1280, 720));
+    EXPECT_NE(doc.scene().camera.eye, scene.eye);
+    EXPECT_EQ(doc.homeCamera().eye, doc.scene().camera.eye);
+}
+
 TEST(SceneDocument, SaveWritesALoadableSceneOrNothing) {
     const std::string dir = outDir("save");
     SceneDocument doc = defaultDocument();
