@@ -172,7 +172,7 @@ Without --output (or --benchmark) it opens the interactive viewer.
 
 Viewer (the window; keys and mouse are listed in its panel under "Keys"):
   --frames N              quit after N frames
-  --screenshot FILE.png   on the last frame, save the whole window, panel included
+  --screenshot FILE.png   on the last frame (N-th, or when you quit), save the whole window, panel included
   --screenshot-view FILE.png  on the last frame, save the 3D view alone (what F12 saves)
   --save-scene FILE.json  on the last frame, save the scene as the panel's "save scene" does
   --hide-panel            start with the panel hidden (Tab shows it)

@@ -83,15 +83,14 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
 Viewer::~Viewer() = default;
 
 void Viewer::run() {
-    for (int n = 0; !window_.shouldClose(); ++n) {
-        const bool last = options_.frames > 0 && n + 1 >= options_.frames;
-        frame(last);
-        if (last) break;
-    }
+    for (int n = 1;; ++n)
+        if (frame(options_.frames > 0 && n >= options_.frames)) return;
 }
 
-// One frame, in the order the panel's edits need: they land in the scene before it is drawn.
-void Viewer::frame(bool last) {
+// One frame, in the order the panel's edits need: they land in the scene before it is drawn. Returns
+// true when it was the last: the frame count is reached, or the window was closed or Esc/Q pressed
+// (so the scripted files are also written when a person ends the session).
+bool Viewer::frame(bool last) {
     window_.pollEvents();
     imgui_.newFrame();
     const FrameLayout l = layout();
@@ -101,6 +100,7 @@ void Viewer::frame(bool last) {
     const PanelRequests requests = settings_.showPanel ? drawPanel(document_.scene(), settings_, status_, l.panel)
                                                        : PanelRequests{};
     apply(requests);
+    last = last || window_.shouldClose();
     uploadGeometryIfChanged();
     if (settings_.paneLabels) drawPaneLabels(document_.scene(), l.view, l.scale);
     if (settings_.showHud && settings_.showPanel) drawHud(status_, l.view);
@@ -110,6 +110,7 @@ void Viewer::frame(bool last) {
     if (screenshotRequested_) saveScreenshot(view);
     if (last) writeLastFrameFiles(l, view);
     window_.swapBuffers();
+    return last;
 }
 
 Viewer::FrameLayout Viewer::layout() const {

@@ -22,9 +22,10 @@ namespace shadelab {
 struct ViewerOptions {
     std::string shaderDir;            // --shader-dir: GLSL read from here when present ("reload shaders")
     int frames = 0;                   // --frames N: quit after N frames; 0 runs until closed
-    std::string screenshotPath;       // --screenshot: the whole window, panel included, on the last frame
-    std::string viewScreenshotPath;   // --screenshot-view: the 3D view alone (what F12 saves), last frame
-    std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes), last frame
+    // Written on the last frame: the N-th with --frames, else the one in which the session ends.
+    std::string screenshotPath;       // --screenshot: the whole window, panel included
+    std::string viewScreenshotPath;   // --screenshot-view: the 3D view alone (what F12 saves)
+    std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes)
     bool hidePanel = false;           // --hide-panel: start as if Tab had been pressed
     OverlayOptions overlays;          // --overlays: which overlays start switched on
     bool verbose = false;
@@ -52,7 +53,7 @@ private:
         UiRect view, panel;    // ImGui units
     };
 
-    void frame(bool last);
+    bool frame(bool last);
     FrameLayout layout() const;
     void handleInput(const FrameLayout& layout);
     void handleKeys();
