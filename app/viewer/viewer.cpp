@@ -274,13 +274,18 @@ void Viewer::writeLastFrameFiles(const FrameLayout& l, const Image& view) {
 void Viewer::reloadShaders() {
     // Build the new programs first; on any error the running ones stay (the lecture goes on).
     try {
+        // A trial frame builds every program the scene needs (render() compiles on first use and
+        // throws ShaderError); the frame's own render draws over it.
         const ShaderLibrary shaders(options_.shaderDir);
         auto renderer = std::make_unique<Renderer>(glfwGetProcAddress, shaders);
-        for (ShadingMode m : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) renderer->prepareProgram(m);
         auto overlays = std::make_unique<OverlayRenderer>(shaders);
+        renderer->setGeometry(document_.geometry());
+        overlays->setGeometry(document_.geometry());
+        const Scene& scene = document_.scene();
+        renderer->render(scene, RenderTarget{0, scene.width, scene.height});
         renderer_ = std::move(renderer);
         overlays_ = std::move(overlays);
-        uploaded_ = nullptr;  // the new renderers get the geometry next frame
+        uploaded_ = document_.geometry().get();
         setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (start with --shader-dir DIR to edit them)"
                                              : "reloaded shaders from " + options_.shaderDir,
                   false);
