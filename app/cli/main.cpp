@@ -1,5 +1,5 @@
 // shadelab's entry point: parse the command line, build the scene, hand it to the headless renderer
-// (or, later, the viewer), report errors as one line. Exit status: 0 ok, 2 bad input, 1 anything else.
+// or the viewer, report errors as one line. Exit status: 0 ok, 2 bad input, 1 anything else.
 #include "cli/options.hpp"
 #include "core/error.hpp"
 #include "core/file_io.hpp"
@@ -8,6 +8,7 @@
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
 #include "render/program.hpp"
+#include "viewer/viewer.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -31,6 +32,9 @@ int run(const std::vector<std::string>& args) {
         return 0;
     }
     if (options.output) checkOutputPath(*options.output, "--output");
+    if (options.screenshot) checkOutputPath(*options.screenshot, "--screenshot");
+    if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
+    if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
     Scene scene = sceneFromOptions(options);
     auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
     frameIfNeeded(scene, *geometry);
@@ -77,7 +81,22 @@ int run(const std::vector<std::string>& args) {
         if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << "\n";
         return 0;
     }
-    throw InputError("the interactive viewer is not built yet: use --output FILE.png to render headless");
+    ViewerOptions viewer;
+    viewer.shaderDir = options.shaderDir;
+    viewer.frames = options.frames;
+    viewer.screenshotPath = options.screenshot.value_or("");
+    viewer.viewScreenshotPath = options.screenshotView.value_or("");
+    viewer.saveScenePath = options.saveScene.value_or("");
+    viewer.hidePanel = options.hidePanel;
+    for (const std::string& o : options.overlays) {
+        viewer.overlays.wireframe |= o == "wireframe";
+        viewer.overlays.vertexNormals |= o == "vertex-normals";
+        viewer.overlays.faceNormals |= o == "face-normals";
+        viewer.overlays.lightMarkers |= o == "lights";
+    }
+    viewer.verbose = options.verbose;
+    Viewer(std::move(scene), std::move(geometry), viewer).run();
+    return 0;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 namespace shadelab {
 namespace {
@@ -81,6 +82,20 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--mesh") o.mesh = parseMeshShorthand(next(), arg);
         else if (arg == "--shader-dir") o.shaderDir = next();
         else if (arg == "--benchmark") o.benchmarkFrames = parseInt(arg, next(), 1, 1000000);
+        else if (arg == "--frames") o.frames = parseInt(arg, next(), 1, 100000000);
+        else if (arg == "--screenshot") o.screenshot = next();
+        else if (arg == "--screenshot-view") o.screenshotView = next();
+        else if (arg == "--save-scene") o.saveScene = next();
+        else if (arg == "--hide-panel") noValue(), o.hidePanel = true;
+        else if (arg == "--overlays") {
+            static const std::pair<const char*, int> kOverlays[] = {
+                {"wireframe", 0}, {"vertex-normals", 1}, {"face-normals", 2}, {"lights", 3}};
+            std::stringstream list(next());
+            for (std::string name; std::getline(list, name, ',');) {
+                parseChoice(arg, name, kOverlays);
+                o.overlays.push_back(name);
+            }
+        }
         else if (arg == "--size") {
             const std::string v = next();
             const std::size_t x = v.find('x');
@@ -99,6 +114,19 @@ Options parseOptions(const std::vector<std::string>& args) {
     }
     if (o.output && !hasExtension(*o.output, ".png"))
         throw InputError("--output: " + *o.output + ": only .png output is supported");
+    if (o.screenshot && !hasExtension(*o.screenshot, ".png"))
+        throw InputError("--screenshot: " + *o.screenshot + ": only .png is supported");
+    if (o.screenshotView && !hasExtension(*o.screenshotView, ".png"))
+        throw InputError("--screenshot-view: " + *o.screenshotView + ": only .png is supported");
+    if (o.saveScene && !hasExtension(*o.saveScene, ".json"))
+        throw InputError("--save-scene: " + *o.saveScene + ": scene files end in .json");
+    // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
+    const bool viewerFlags =
+        o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel || !o.overlays.empty();
+    if (viewerFlags && (o.output || o.benchmarkFrames))
+        throw InputError(std::string(o.output ? "--output" : "--benchmark") +
+                         ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel and --overlays are "
+                         "for the viewer, which --output/--benchmark do not open");
     return o;
 }
 
@@ -143,6 +171,14 @@ Without --output (or --benchmark) it opens the interactive viewer.
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --shader-dir DIR        read GLSL files from DIR when present (default: the built-in copies)
   --info                  print what was loaded (meshes, triangles, bounds, normals) and exit
+
+Viewer (the window; keys and mouse are listed in its panel under "Keys"):
+  --frames N              quit after N frames
+  --screenshot FILE.png   on the last frame (N-th, or when you quit), save the whole window, panel included
+  --screenshot-view FILE.png  on the last frame, save the 3D view alone (what F12 saves)
+  --save-scene FILE.json  on the last frame, save the scene as the panel's "save scene" does
+  --hide-panel            start with the panel hidden (Tab shows it)
+  --overlays LIST         start with overlays on: wireframe,vertex-normals,face-normals,lights
   -v, --verbose           say what was loaded and written
   -h, --help              this text
   --version               print the version

@@ -21,6 +21,13 @@ struct Options {
     int benchmarkFrames = 0;                // --benchmark N
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     bool info = false;                      // --info: print what was loaded, render nothing
+    // Viewer only (not with --output/--benchmark); these make the window scriptable:
+    int frames = 0;                         // --frames N: quit after N frames (0: when the window closes)
+    std::optional<std::string> screenshot;  // --screenshot FILE.png: whole window, panel included, last frame
+    std::optional<std::string> screenshotView;  // --screenshot-view FILE.png: the 3D view alone (as F12)
+    std::optional<std::string> saveScene;   // --save-scene FILE.json: the scene as "save scene" writes it
+    bool hidePanel = false;                 // --hide-panel: start with the panel hidden (as Tab)
+    std::vector<std::string> overlays;      // --overlays a,b: wireframe, vertex-normals, face-normals, lights
     bool verbose = false;
     bool help = false;
     bool version = false;

@@ -1,0 +1,247 @@
+#include "render/overlay_renderer.hpp"
+
+#include "core/camera.hpp"
+#include "core/mesh.hpp"
+#include "render/gpu_blocks.hpp"
+#include "render/program.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <utility>
+
+namespace shadelab {
+namespace {
+
+// Line vertices: object-space position, then the normal that marks a normal line's tip (zero elsewhere).
+constexpr int kFloatsPerVertex = 6;
+
+void pushVertex(std::vector<float>& out, const glm::vec3& pos, const glm::vec3& tipNormal = glm::vec3(0.0f)) {
+    out.insert(out.end(), {pos.x, pos.y, pos.z, tipNormal.x, tipNormal.y, tipNormal.z});
+}
+
+std::vector<float> edgeLines(const Mesh& mesh) {
+    // Each edge once, though two triangles share it: sort the (low, high) index pairs and drop repeats.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    edges.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = mesh.indices[t + std::size_t(e)], b = mesh.indices[t + std::size_t((e + 1) % 3)];
+            edges.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::vector<float> out;
+    out.reserve(edges.size() * 2 * kFloatsPerVertex);
+    for (const auto& [a, b] : edges) {
+        pushVertex(out, mesh.positions[a]);
+        pushVertex(out, mesh.positions[b]);
+    }
+    return out;
+}
+
+std::vector<float> vertexNormalLines(const Mesh& mesh) {
+    std::vector<float> out;
+    out.reserve(mesh.positions.size() * 2 * kFloatsPerVertex);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        pushVertex(out, mesh.positions[i]);
+        pushVertex(out, mesh.positions[i], mesh.normals[i]);
+    }
+    return out;
+}
+
+// From each triangle's centroid along the lecture's face normal (the one flat shading uses).
+std::vector<float> faceNormalLines(const Mesh& mesh) {
+    std::vector<float> out;
+    out.reserve(mesh.indices.size() / 3 * 2 * kFloatsPerVertex);
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::vec3& a = mesh.positions[mesh.indices[t]];
+        const glm::vec3& b = mesh.positions[mesh.indices[t + 1]];
+        const glm::vec3& c = mesh.positions[mesh.indices[t + 2]];
+        const glm::vec3 centroid = (a + b + c) / 3.0f;
+        const glm::vec3 n = faceNormal(a, b, c);
+        if (!(glm::dot(n, n) > 0.25f)) continue;  // degenerate triangle: no normal to show
+        pushVertex(out, centroid);
+        pushVertex(out, centroid, n);
+    }
+    return out;
+}
+
+void upload(gl::VertexArray& vao, gl::Buffer& vbo, const std::vector<float>& data, GLenum usage) {
+    if (!vao) vao = gl::makeVertexArray();
+    if (!vbo) vbo = gl::makeBuffer();
+    glBindVertexArray(vao.get());
+    glBindBuffer(GL_ARRAY_BUFFER, vbo.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), usage);
+    const auto stride = GLsizei(kFloatsPerVertex * sizeof(float));
+    glVertexAttribPointer(SL_ATTRIB_POSITION, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(0));
+    glEnableVertexAttribArray(SL_ATTRIB_POSITION);
+    glVertexAttribPointer(SL_ATTRIB_NORMAL, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+    glEnableVertexAttribArray(SL_ATTRIB_NORMAL);
+    glBindVertexArray(0);
+}
+
+void copyMat(float (&dst)[16], const glm::mat4& m) { std::memcpy(dst, glm::value_ptr(m), sizeof dst); }
+
+std::size_t alignUp(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
+
+}  // namespace
+
+OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders) : program_(buildProgram("overlay", shaders)) {
+    normalLengthLoc_ = glGetUniformLocation(program_.get(), "u_normalLength");
+    depthBiasLoc_ = glGetUniformLocation(program_.get(), "u_depthBias");
+    colorLoc_ = glGetUniformLocation(program_.get(), "u_overlayColor");
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniformAlignment_);
+    if (uniformAlignment_ <= 0) uniformAlignment_ = 256;
+    uniforms_ = gl::makeBuffer();
+}
+
+void OverlayRenderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
+    geometry_ = std::move(geometry);
+    const std::size_t n = geometry_ ? geometry_->meshes.size() : 0;
+    lines_.clear();
+    lines_.resize(n);
+    objectRadius_.assign(n, 1.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+        float r2 = 0.0f;
+        for (const glm::vec3& p : geometry_->meshes[i].positions) r2 = std::max(r2, glm::dot(p, p));
+        if (r2 > 0.0f) objectRadius_[i] = std::sqrt(r2);
+    }
+}
+
+const OverlayRenderer::Lines& OverlayRenderer::lines(std::size_t object, LineKind kind) {
+    Lines& l = lines_[object][kind];
+    if (l.vao) return l;
+    const Mesh& mesh = geometry_->meshes[object];
+    const std::vector<float> data = kind == Edges           ? edgeLines(mesh)
+                                    : kind == VertexNormals ? vertexNormalLines(mesh)
+                                                            : faceNormalLines(mesh);
+    upload(l.vao, l.vertices, data, GL_STATIC_DRAW);
+    l.vertexCount = GLsizei(data.size() / kFloatsPerVertex);
+    return l;
+}
+
+void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options) {
+    if (!options.any()) return;
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height);
+    const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
+
+    // One upload per frame: a FrameBlock per pane, an ObjectBlock per object, then an identity
+    // ObjectBlock for the light markers (which are given in world space). Only the matrices are read.
+    const auto align = std::size_t(uniformAlignment_);
+    const std::size_t frameStride = alignUp(sizeof(gpu::FrameBlock), align);
+    const std::size_t objectStride = alignUp(sizeof(gpu::ObjectBlock), align);
+    const std::size_t objectsOffset = frameStride * panes.size();
+    std::vector<unsigned char> staging(objectsOffset + objectStride * (objects + 1));
+    for (std::size_t p = 0; p < panes.size(); ++p) {
+        gpu::FrameBlock b{};
+        const float aspect = float(panes[p].width) / float(std::max(panes[p].height, 1));
+        copyMat(b.clipFromWorld, clipFromView(scene.camera, aspect) * viewFromWorld(scene.camera));
+        std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
+    }
+    for (std::size_t o = 0; o <= objects; ++o) {
+        gpu::ObjectBlock b{};
+        const glm::mat4 world = o < objects ? worldFromObject(scene.objects[o].transform) : glm::mat4(1.0f);
+        copyMat(b.worldFromObject, world);
+        copyMat(b.normalWorldFromObject, glm::mat4(normalWorldFromObject(world)));
+        std::memcpy(staging.data() + objectsOffset + o * objectStride, &b, sizeof b);
+    }
+    glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.get());
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(staging.size()), staging.data(), GL_STREAM_DRAW);
+
+    // Lines are tested against the surface's depth but do not write it, and blend so the shading shows
+    // through the wireframe of a dense mesh.
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(program_.get());
+    // 3e-4 of NDC depth keeps edges in front of the triangles they bound with a 24-bit depth buffer at
+    // the scene's usual near/far ratio (llvmpipe rasterises lines and triangles with different depth
+    // rounding, so a bias of 0 leaves dashed lines).
+    glUniform1f(depthBiasLoc_, 3e-4f);
+
+    const std::size_t identityOffset = objectsOffset + objects * objectStride;
+    for (std::size_t p = 0; p < panes.size(); ++p) {
+        const Pane& pane = panes[p];
+        glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
+        glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
+                          sizeof(gpu::FrameBlock));
+        for (std::size_t o = 0; o < objects; ++o) {
+            glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
+                              GLintptr(objectsOffset + o * objectStride), sizeof(gpu::ObjectBlock));
+            const glm::vec3 s = glm::abs(scene.objects[o].transform.scale);
+            glUniform1f(normalLengthLoc_, options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z}));
+            const std::pair<bool, LineKind> kinds[] = {
+                {options.wireframe, Edges}, {options.vertexNormals, VertexNormals}, {options.faceNormals, FaceNormals}};
+            for (const auto& [enabled, kind] : kinds) {
+                if (!enabled) continue;
+                // Wireframe: light grey, half covering; vertex normals cyan; face normals yellow (the
+                // colours of the lecture's normal slides).
+                static const float kColors[kLineKinds][4] = {
+                    {0.92f, 0.92f, 0.92f, 0.55f}, {0.25f, 0.85f, 1.0f, 1.0f}, {1.0f, 0.85f, 0.2f, 1.0f}};
+                const Lines& l = lines(o, kind);
+                if (l.vertexCount == 0) continue;
+                glUniform4fv(colorLoc_, 1, kColors[kind]);
+                glBindVertexArray(l.vao.get());
+                glDrawArrays(GL_LINES, 0, l.vertexCount);
+            }
+        }
+        if (options.lightMarkers) drawLights(scene, GLintptr(identityOffset));
+    }
+    glBindVertexArray(0);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+}
+
+void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffset) {
+    // A three-axis cross at each point light; for a directional light a cross up-light of the target
+    // and a line along the direction the light travels. Sizes follow the distance to the eye, so a
+    // marker stays the same size on screen wherever the light is.
+    std::vector<float> data;
+    std::vector<std::pair<GLint, glm::vec4>> draws;  // first vertex, colour
+    const Camera& cam = scene.camera;
+    for (std::size_t i = 0; i < scene.lights.size() && i < std::size_t(kMaxLights); ++i) {
+        const Light& light = scene.lights[i];
+        const GLint first = GLint(data.size() / kFloatsPerVertex);
+        glm::vec3 at = light.position;
+        if (light.type == LightType::Directional) {
+            const glm::vec3 dir = glm::normalize(light.direction);
+            const float reach = 0.6f * glm::length(cam.eye - cam.target);
+            at = cam.target - dir * reach;
+            pushVertex(data, at);
+            pushVertex(data, at + dir * (0.4f * reach));
+        }
+        const float half = 0.03f * std::max(glm::length(cam.eye - at), 1e-3f);
+        for (int axis = 0; axis < 3; ++axis) {
+            glm::vec3 d(0.0f);
+            d[axis] = half;
+            pushVertex(data, at - d);
+            pushVertex(data, at + d);
+        }
+        // The light's colour brought to full brightness, so a dim or dark-coloured light still shows.
+        const float peak = std::max({light.color.r, light.color.g, light.color.b});
+        const glm::vec3 c = peak > 1e-3f ? light.color / peak : glm::vec3(1.0f);
+        draws.emplace_back(first, glm::vec4(c, 1.0f));
+    }
+    if (draws.empty()) return;
+    upload(lightLines_.vao, lightLines_.vertices, data, GL_STREAM_DRAW);
+    glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(), identityObjectOffset,
+                      sizeof(gpu::ObjectBlock));
+    glUniform1f(normalLengthLoc_, 0.0f);
+    glBindVertexArray(lightLines_.vao.get());
+    for (std::size_t d = 0; d < draws.size(); ++d) {
+        const GLint end = d + 1 < draws.size() ? draws[d + 1].first : GLint(data.size() / kFloatsPerVertex);
+        glUniform4fv(colorLoc_, 1, glm::value_ptr(draws[d].second));
+        glDrawArrays(GL_LINES, draws[d].first, end - draws[d].first);
+    }
+}
+
+}  // namespace shadelab

@@ -1,0 +1,60 @@
+#pragma once
+// Teaching overlays drawn on top of what Renderer drew: wireframe edges, vertex and face normals as
+// short lines, and markers at the lights. Kept out of Renderer so the shading programs and their images
+// (which the golden tests pin) are untouched; it draws with its own program (shaders/overlay.*) and its
+// own uniform buffer, into the same target and pane layout, testing against the depth Renderer left.
+#include "core/scene.hpp"
+#include "core/scene_geometry.hpp"
+#include "render/gl_handles.hpp"
+#include "render/renderer.hpp"
+#include "render/shader_library.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace shadelab {
+
+// Which overlays to draw; all off draws nothing.
+struct OverlayOptions {
+    bool wireframe = false;
+    bool vertexNormals = false;
+    bool faceNormals = false;
+    bool lightMarkers = false;
+    float normalScale = 0.12f;  // normal line length as a share of each object's bounding radius
+    bool any() const { return wireframe || vertexNormals || faceNormals || lightMarkers; }
+};
+
+class OverlayRenderer {
+public:
+    // Needs a current GL 3.3 context whose entry points are loaded (construct it after a Renderer).
+    // Throws ShaderError if the overlay program does not build.
+    explicit OverlayRenderer(const ShaderLibrary& shaders);
+
+    // Line buffers are built lazily, per object and kind, the first time an overlay needs them.
+    void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
+    // Draws the enabled overlays into every pane of the scene's layout. Call right after
+    // Renderer::render() on the same target, before anything clears its depth buffer.
+    void render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options);
+
+private:
+    enum LineKind { Edges, VertexNormals, FaceNormals, kLineKinds };
+    struct Lines {
+        gl::VertexArray vao;
+        gl::Buffer vertices;
+        GLsizei vertexCount = 0;
+    };
+    const Lines& lines(std::size_t object, LineKind kind);
+    void drawLights(const Scene& scene, GLintptr identityObjectOffset);
+
+    gl::Program program_;
+    GLint normalLengthLoc_ = -1, depthBiasLoc_ = -1, colorLoc_ = -1;
+    std::shared_ptr<const SceneGeometry> geometry_;
+    std::vector<std::array<Lines, kLineKinds>> lines_;  // per object
+    std::vector<float> objectRadius_;                   // per object, object space
+    Lines lightLines_;                                  // rebuilt every frame (a few dozen vertices)
+    gl::Buffer uniforms_;
+    GLint uniformAlignment_ = 256;
+};
+
+}  // namespace shadelab

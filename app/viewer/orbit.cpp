@@ -1,0 +1,80 @@
+#include "viewer/orbit.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab {
+
+void orbitCamera(Camera& c, float yawRad, float pitchRad) {
+    const glm::vec3 up = glm::normalize(c.up);
+    glm::vec3 offset = c.eye - c.target;  // target -> eye
+    const float dist = glm::length(offset);
+    if (dist <= 0.0f) return;
+    offset = glm::angleAxis(yawRad, up) * offset;
+    // Pitch about the right vector, clamped so the eye never reaches the pole of `up`.
+    const float polar = std::acos(std::clamp(glm::dot(offset / dist, up), -1.0f, 1.0f));  // 0: straight above
+    const float minPolar = glm::radians(1.0f), maxPolar = glm::radians(179.0f);
+    const float newPolar = std::clamp(polar - pitchRad, minPolar, maxPolar);
+    const glm::vec3 right = glm::normalize(glm::cross(up, offset));
+    offset = glm::angleAxis(newPolar - polar, right) * offset;
+    c.eye = c.target + offset;
+}
+
+void panCamera(Camera& c, float dx, float dy, float viewHeight) {
+    const glm::vec3 forward = c.target - c.eye;
+    const float dist = glm::length(forward);
+    if (dist <= 0.0f || viewHeight <= 0.0f) return;
+    const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
+    const glm::vec3 up = glm::cross(right, forward / dist);
+    // World units per pixel at the target's depth.
+    const float perPixel = 2.0f * dist * std::tan(glm::radians(c.fovYDeg) / 2.0f) / viewHeight;
+    const glm::vec3 move = (-dx * right + dy * up) * perPixel;
+    c.eye += move;
+    c.target += move;
+}
+
+void zoomCamera(Camera& c, float wheelSteps) {
+    const glm::vec3 offset = c.eye - c.target;
+    const float dist = glm::length(offset);
+    if (dist <= 0.0f) return;
+    const float lo = 2.0f * c.nearPlane, hi = std::max(lo, 0.5f * c.farPlane);
+    const float newDist = std::clamp(dist * std::pow(0.9f, wheelSteps), lo, hi);
+    c.eye = c.target + offset * (newDist / dist);
+}
+
+void frameCamera(Camera& c, const BoundingSphere& b, float paneAspect) {
+    const float radius = b.radius > 0.0f ? b.radius : 1.0f;
+    const float halfY = glm::radians(c.fovYDeg) / 2.0f;
+    const float halfX = std::atan(std::tan(halfY) * std::max(paneAspect, 1e-3f));
+    // Same rule as frameBounds() in core/camera.cpp: the silhouette subtends asin(r / d).
+    const float dist = radius / std::sin(0.9f * std::min(halfX, halfY));
+    glm::vec3 dir = c.eye - c.target;
+    dir = glm::length(dir) > 0.0f ? glm::normalize(dir) : glm::vec3(0.0f, 0.0f, 1.0f);
+    c.target = b.center;
+    c.eye = b.center + dist * dir;
+    c.nearPlane = std::max(dist - 2.0f * radius, dist * 1e-3f);
+    c.farPlane = dist + 4.0f * radius;
+}
+
+bool sphereInView(const Camera& c, const BoundingSphere& b, float paneAspect) {
+    const glm::vec3 forward = c.target - c.eye;
+    if (glm::length(forward) <= 0.0f) return false;
+    const glm::vec3 f = glm::normalize(forward);
+    const glm::vec3 r = glm::normalize(glm::cross(f, c.up));
+    const glm::vec3 u = glm::cross(r, f);
+    const glm::vec3 d = b.center - c.eye;
+    const float x = glm::dot(d, r), y = glm::dot(d, u), z = glm::dot(d, f);  // view space, z forward
+    if (z - b.radius < c.nearPlane || z + b.radius > c.farPlane) return false;
+    // Distance from the centre to each side plane of the frustum must be at least the radius.
+    const float tanY = std::tan(glm::radians(c.fovYDeg) / 2.0f), tanX = tanY * paneAspect;
+    const auto inside = [&](float offAxis, float tanHalf) {
+        return (tanHalf * z - std::fabs(offAxis)) / std::sqrt(1.0f + tanHalf * tanHalf) >= b.radius;
+    };
+    return inside(x, tanX) && inside(y, tanY);
+}
+
+}  // namespace shadelab

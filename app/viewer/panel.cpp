@@ -1,0 +1,303 @@
+#include "viewer/panel.hpp"
+
+#include "core/camera.hpp"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace shadelab {
+namespace {
+
+// Widgets keep every value inside the ranges the scene-file parser accepts (scene_json.cpp), so a scene
+// saved from the panel always loads again. Sliders show the range a lecture sweeps; Ctrl+click types
+// a value, which the clamps below bring back into the parser's range.
+
+bool colorEdit(const char* label, glm::vec3& color) {
+    if (!ImGui::ColorEdit3(label, &color.x, ImGuiColorEditFlags_Float)) return false;
+    color = glm::clamp(color, glm::vec3(0.0f), glm::vec3(1.0f));
+    return true;
+}
+
+bool coefficient(const char* label, float& value, float sliderMax) {
+    if (!ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f")) return false;
+    value = std::clamp(value, 0.0f, 1000.0f);
+    return true;
+}
+
+template <typename E>
+bool radio(const char* label, E& value, E choice) {
+    if (!ImGui::RadioButton(label, value == choice)) return false;
+    value = choice;
+    return true;
+}
+
+template <typename E, std::size_t N>
+bool combo(const char* label, E& value, const char* const (&names)[N]) {
+    int index = int(value);
+    if (!ImGui::Combo(label, &index, names, int(N))) return false;
+    value = E(index);
+    return true;
+}
+
+// A vector edit that must not become (nearly) zero: light directions, scales.
+bool dragNonZero(const char* label, glm::vec3& v, float speed, bool perComponent) {
+    glm::vec3 edited = v;
+    if (!ImGui::DragFloat3(label, &edited.x, speed, -1e6f, 1e6f, "%.3f")) return false;
+    const bool zero = perComponent ? glm::any(glm::lessThan(glm::abs(edited), glm::vec3(1e-3f)))
+                                   : glm::length(edited) < 1e-3f;
+    if (zero) return false;
+    v = edited;
+    return true;
+}
+
+bool cameraValid(const Camera& c) {
+    const glm::vec3 forward = c.target - c.eye;
+    if (glm::length(forward) < 1e-4f || glm::length(c.up) < 1e-4f || c.farPlane <= c.nearPlane) return false;
+    return glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) >= 1e-3f;
+}
+
+void sectionShading(Scene& scene) {
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Shading");
+    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
+    radio("flat (1)", scene.shading, ShadingMode::Flat);
+    ImGui::SameLine();
+    radio("gouraud (2)", scene.shading, ShadingMode::Gouraud);
+    ImGui::SameLine();
+    radio("phong (3)", scene.shading, ShadingMode::Phong);
+    bool compare = scene.layout == Layout::Compare;
+    if (ImGui::Checkbox("compare: flat | gouraud | phong  (C)", &compare))
+        scene.layout = compare ? Layout::Compare : Layout::Single;
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Reflection");
+    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
+    radio("Phong", scene.reflection, ReflectionModel::Phong);
+    ImGui::SameLine();
+    radio("Blinn-Phong", scene.reflection, ReflectionModel::BlinnPhong);
+    static const char* const kEncodings[] = {"linear", "sRGB"};
+    combo("output encoding", scene.outputEncoding, kEncodings);
+}
+
+void sectionMaterial(Material& m) {
+    colorEdit("colour C", m.color);
+    colorEdit("specular S", m.specularColor);
+    coefficient("k_a ambient", m.ka, 1.0f);
+    coefficient("k_d diffuse", m.kd, 1.0f);
+    coefficient("k_s specular", m.ks, 1.0f);
+    // The exponent is what the lecture sweeps: a logarithmic slider gives 1..10 as much travel as 100..1000.
+    if (ImGui::SliderFloat("k_e exponent", &m.ke, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
+        m.ke = std::clamp(m.ke, kMinExponent, kMaxExponent);
+}
+
+void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles) {
+    // Procedural shapes, plus the glTF model the object was loaded with (its path is kept when the
+    // lecturer switches to a sphere, so they can switch back).
+    const char* names[] = {"uvsphere", "icosphere", "torus", "cube", "plane", "glTF model"};
+    const int count = m.path.empty() ? 5 : 6;
+    int type = int(m.type);
+    if (ImGui::Combo("mesh", &type, names, count)) m.type = MeshSpec::Type(type);
+    const float r = 1e-3f, big = 1e3f;
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        ImGui::SliderInt("slices", &m.slices, 3, 256);
+        ImGui::SliderInt("stacks", &m.stacks, 2, 128);
+        ImGui::DragFloat("radius", &m.radius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        break;
+    case MeshSpec::Type::IcoSphere:
+        // 20 * 4^7 = 327,680 triangles is still interactive on llvmpipe; the file format allows 8.
+        ImGui::SliderInt("subdivisions", &m.subdivisions, 0, 7);
+        ImGui::DragFloat("radius", &m.radius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        break;
+    case MeshSpec::Type::Torus:
+        ImGui::SliderInt("major segments", &m.majorSegments, 3, 256);
+        ImGui::SliderInt("minor segments", &m.minorSegments, 3, 128);
+        ImGui::DragFloat("major radius", &m.majorRadius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::DragFloat("minor radius", &m.minorRadius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        break;
+    case MeshSpec::Type::Cube:
+        ImGui::DragFloat("size", &m.size, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        break;
+    case MeshSpec::Type::Plane:
+        ImGui::DragFloat("size", &m.size, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::SliderInt("subdivisions", &m.planeSubdivisions, 1, 128);
+        break;
+    case MeshSpec::Type::Gltf:
+        ImGui::TextWrapped("file: %s", m.path.c_str());
+        break;
+    }
+    ImGui::Text("%zu triangles", triangles);
+    if (ImGui::TreeNode("transform")) {
+        ImGui::DragFloat3("translation", &t.translation.x, 0.01f, -1e6f, 1e6f, "%.3f");
+        ImGui::DragFloat3("rotation (deg)", &t.rotationDeg.x, 0.5f, -1e6f, 1e6f, "%.1f");
+        dragNonZero("scale", t.scale, 0.01f, true);
+        ImGui::TreePop();
+    }
+}
+
+void sectionLights(Scene& scene) {
+    colorEdit("ambient A", scene.ambient);
+    int remove = -1;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        Light& l = scene.lights[i];
+        ImGui::PushID(int(i));
+        const bool open = ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %zu (%s)", i,
+                                            toString(l.type));
+        if (open) {
+            static const char* const kTypes[] = {"point", "directional"};
+            combo("type", l.type, kTypes);
+            if (l.type == LightType::Point)
+                ImGui::DragFloat3("position", &l.position.x, 0.05f, -1e6f, 1e6f, "%.2f");
+            else
+                dragNonZero("direction", l.direction, 0.02f, false);
+            colorEdit("colour", l.color);
+            ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+            if (l.type == LightType::Point) {
+                static const char* const kAttenuation[] = {"none", "inverse-square"};
+                combo("attenuation", l.attenuation, kAttenuation);
+            }
+            if (ImGui::Button("remove light")) remove = int(i);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (remove >= 0) scene.lights.erase(scene.lights.begin() + remove);
+    ImGui::BeginDisabled(scene.lights.size() >= std::size_t(kMaxLights));
+    if (ImGui::Button("add light")) scene.lights.emplace_back();
+    ImGui::EndDisabled();
+}
+
+void sectionOverlays(ViewSettings& s) {
+    ImGui::Checkbox("wireframe (W)", &s.overlays.wireframe);
+    ImGui::Checkbox("vertex normals (N)", &s.overlays.vertexNormals);
+    ImGui::SameLine();
+    ImGui::Checkbox("face normals (Shift+N)", &s.overlays.faceNormals);
+    ImGui::SliderFloat("normal length", &s.overlays.normalScale, 0.02f, 0.5f, "%.2f x radius");
+    ImGui::Checkbox("light markers (L)", &s.overlays.lightMarkers);
+    ImGui::Checkbox("pane labels", &s.paneLabels);
+    ImGui::SameLine();
+    ImGui::Checkbox("HUD", &s.showHud);
+}
+
+void sectionCamera(Camera& c, PanelRequests& requests) {
+    requests.resetCamera |= ImGui::Button("reset (R)");
+    ImGui::SameLine();
+    requests.frameModel |= ImGui::Button("frame model (F)");
+    Camera edited = c;
+    bool changed = ImGui::DragFloat3("eye", &edited.eye.x, 0.02f, -1e6f, 1e6f, "%.2f");
+    changed |= ImGui::DragFloat3("target", &edited.target.x, 0.02f, -1e6f, 1e6f, "%.2f");
+    changed |= ImGui::SliderFloat("fov y (deg)", &edited.fovYDeg, 5.0f, 120.0f, "%.1f");
+    changed |= ImGui::DragFloat("near", &edited.nearPlane, 0.001f, 1e-4f, 1e5f, "%.4f", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::DragFloat("far", &edited.farPlane, 0.5f, 1e-3f, 1e6f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    edited.fovYDeg = std::clamp(edited.fovYDeg, 1.0f, 179.0f);
+    if (changed && cameraValid(edited)) c = edited;
+    ImGui::TextDisabled("left drag: orbit   right/middle drag: pan   wheel: zoom");
+}
+
+void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requests) {
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputTextWithHint("##path", "scene.json, model.gltf or model.glb", &s.scenePath);
+    requests.save |= ImGui::Button("save scene");
+    ImGui::SameLine();
+    requests.load |= ImGui::Button("load");
+    ImGui::SameLine();
+    requests.screenshot |= ImGui::Button("screenshot (F12)");
+    if (!status.lastScreenshot.empty()) ImGui::TextWrapped("screenshot: %s", status.lastScreenshot.c_str());
+    requests.reloadShaders |= ImGui::Button("reload shaders");
+    ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
+}
+
+void sectionKeys() {
+    ImGui::TextUnformatted(
+        "1 2 3    flat / gouraud / phong (single pane)\n"
+        "C        compare flat | gouraud | phong\n"
+        "W        wireframe\n"
+        "N        vertex normals   Shift+N face normals\n"
+        "L        light markers\n"
+        "R        reset camera     F  frame model\n"
+        "F12      screenshot of the 3D view\n"
+        "Tab      hide / show the panel\n"
+        "Esc, Q   quit");
+}
+
+}  // namespace
+
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area) {
+    PanelRequests requests;
+    ImGui::SetNextWindowPos(ImVec2(area.x, area.y));
+    ImGui::SetNextWindowSize(ImVec2(area.width, area.height));
+    // NoNavInputs: Tab belongs to the viewer (hide the panel), not to ImGui's widget tabbing.
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNavInputs;
+    if (!ImGui::Begin("shadelab  (Tab hides this panel)", nullptr, flags)) {
+        ImGui::End();
+        return requests;
+    }
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);  // room for the labels on the right
+    if (!status.message.empty()) {
+        if (status.isError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", status.message.c_str());
+        if (status.isError) ImGui::PopStyleColor();
+        ImGui::Separator();
+    }
+    if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) sectionShading(scene);
+    if (!scene.objects.empty()) {
+        settings.selectedObject = std::clamp(settings.selectedObject, 0, int(scene.objects.size()) - 1);
+        SceneObject& object = scene.objects[std::size_t(settings.selectedObject)];
+        if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+            if (scene.objects.size() > 1)
+                ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
+            sectionMaterial(object.material);
+        }
+        if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen))
+            sectionMesh(object.mesh, object.transform, status.objectTriangles);
+    }
+    if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) sectionLights(scene);
+    if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) sectionOverlays(settings);
+    if (ImGui::CollapsingHeader("Camera")) sectionCamera(scene.camera, requests);
+    if (ImGui::CollapsingHeader("Background")) colorEdit("background", scene.background);
+    if (ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) sectionFile(settings, status, requests);
+    if (ImGui::CollapsingHeader("Keys")) sectionKeys();
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return requests;
+}
+
+void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const float fontSize = ImGui::GetFontSize() * 2.0f;  // read from the back of a lecture hall
+    const float pad = fontSize * 0.3f;
+    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height)) {
+        const char* text = toString(pane.mode);
+        const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, text);
+        const float cx = view.x + (float(pane.x) + float(pane.width) * 0.5f) / framebufferScale;
+        const ImVec2 pos(std::round(cx - size.x * 0.5f), std::round(view.y + float(pane.y) / framebufferScale + pad * 2));
+        draw->AddRectFilled(ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad),
+                            IM_COL32(0, 0, 0, 150), pad);
+        draw->AddText(ImGui::GetFont(), fontSize, pos, IM_COL32(255, 255, 255, 235), text);
+    }
+}
+
+void drawHud(const PanelStatus& status, const UiRect& view) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float margin = ImGui::GetFontSize() * 0.6f;
+    ImGui::SetNextWindowPos(ImVec2(view.x + margin, view.y + view.height - margin), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.55f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+    if (ImGui::Begin("##hud", nullptr, flags)) {
+        // ImGui's Framerate is a running average over the last 120 frames.
+        const float fps = io.Framerate > 0.0f ? io.Framerate : 0.0f;
+        ImGui::Text("%.2f ms  %.1f FPS  %zu triangles", fps > 0.0f ? 1000.0f / fps : 0.0f, fps, status.frameTriangles);
+        ImGui::TextUnformatted(status.glRenderer.c_str());
+    }
+    ImGui::End();
+}
+
+}  // namespace shadelab

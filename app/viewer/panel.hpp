@@ -1,0 +1,54 @@
+#pragma once
+// The viewer's Dear ImGui user interface: the side panel that edits the Scene struct in place (every
+// change shows on the next frame), the compare-pane labels and the HUD. Immediate mode: these functions
+// are called every frame, hold no state of their own, and report button presses as requests that the
+// viewer carries out, so file and GL work never happens inside a widget.
+#include "core/scene.hpp"
+#include "core/scene_geometry.hpp"
+#include "render/overlay_renderer.hpp"
+
+#include <string>
+
+namespace shadelab {
+
+// View state that is not part of the scene (and so is not saved with it).
+struct ViewSettings {
+    OverlayOptions overlays;
+    bool showPanel = true;         // Tab
+    bool paneLabels = true;        // "flat" / "gouraud" / "phong" over each pane
+    bool showHud = true;           // frame time, FPS, triangles, GL renderer
+    std::string scenePath;         // the Save / Load field
+    int selectedObject = 0;        // whose material, mesh and transform the panel shows
+};
+
+// What the panel shows besides the scene.
+struct PanelStatus {
+    std::string message;           // last action's result or error
+    bool isError = false;
+    std::string lastScreenshot;    // path of the last 3D-view screenshot
+    std::string glRenderer;
+    std::size_t frameTriangles = 0;   // drawn per frame, all panes
+    std::size_t objectTriangles = 0;  // of the selected object's mesh
+};
+
+// Buttons pressed this frame.
+struct PanelRequests {
+    bool save = false, load = false, screenshot = false;
+    bool resetCamera = false, frameModel = false, reloadShaders = false, quit = false;
+};
+
+// A rectangle in ImGui's coordinates (window screen units, origin top-left).
+struct UiRect {
+    float x = 0, y = 0, width = 0, height = 0;
+};
+
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area);
+
+// Labels each pane of the 3D view with its shading mode. `view` is the 3D view; `framebufferScale`
+// converts the renderer's pixel panes to ImGui units.
+void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
+
+// Frame time, FPS, triangle count and GL renderer in the 3D view's bottom-left corner.
+void drawHud(const PanelStatus& status, const UiRect& view);
+
+}  // namespace shadelab

@@ -1,0 +1,304 @@
+#include "viewer/viewer.hpp"
+
+#include "core/camera.hpp"
+#include "core/file_io.hpp"
+#include "core/image.hpp"
+#include "viewer/orbit.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+#include <stdexcept>
+
+namespace shadelab {
+namespace {
+
+// Panel width in screen units at content scale 1: wide enough for the slider labels, narrow enough to
+// leave 3 compare panes of ~300 px in a 1280-wide window.
+constexpr float kPanelWidth = 380.0f;
+// Orbit speed: dragging across ~400 screen units turns the model half way round.
+constexpr float kOrbitRadPerUnit = 0.008f;
+
+// "shadelab-20250131-142512-034.png": sortable, and distinct for two F12 presses in one second.
+std::string timestampedName() {
+    const auto now = std::chrono::system_clock::now();
+    const std::time_t t = std::chrono::system_clock::to_time_t(now);
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+    std::tm local{};
+    localtime_r(&t, &local);
+    char name[64];
+    std::strftime(name, sizeof name, "shadelab-%Y%m%d-%H%M%S", &local);
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, "-%03d.png", int(ms));
+    return std::string(name) + suffix;
+}
+
+// The default framebuffer's alpha is whatever blending left there; a screenshot is opaque.
+Image opaque(Image image) {
+    for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
+    return image;
+}
+
+}  // namespace
+
+Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, ViewerOptions options)
+    : options_(std::move(options)),
+      // Room for the scene's size beside the panel: the 3D view starts as the image --output writes.
+      window_(scene.width, scene.height, options_.hidePanel ? 0.0f : kPanelWidth, "shadelab"),
+      imgui_(window_.handle(), window_.contentScale()),
+      renderer_(std::make_unique<Renderer>(glfwGetProcAddress, ShaderLibrary(options_.shaderDir))),
+      overlays_(std::make_unique<OverlayRenderer>(ShaderLibrary(options_.shaderDir))),
+      document_(std::move(scene), std::move(geometry)) {
+    settings_.showPanel = !options_.hidePanel;
+    settings_.overlays = options_.overlays;
+    settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
+    status_.glRenderer = renderer_->glRenderer();
+    // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
+    window_.setSwapInterval(options_.frames > 0 ? 0 : 1);
+    // A model with no camera was framed by the CLI for the scene's size; frame it for the 3D view the
+    // window actually has (narrower when the panel is shown). Its home camera is that framing.
+    const FrameLayout l = layout();
+    Scene& s = document_.scene();
+    const int sceneWidth = s.width, sceneHeight = s.height;
+    s.width = std::max(l.viewWidth, 1);
+    s.height = std::max(l.framebufferHeight, 1);
+    if (!s.cameraGiven && document_.geometry()) {
+        frameIfNeeded(s, *document_.geometry());
+        document_.setHomeCamera(s.camera);
+    }
+    if (document_.fitToView(sceneWidth, sceneHeight))
+        setStatus("The screen has no room for the scene's " + std::to_string(sceneWidth) + "x" +
+                      std::to_string(sceneHeight) + " beside the panel: framed the model to fit (F; Tab hides the panel).",
+                  false);
+    if (options_.verbose) std::cerr << "shadelab: viewer on " << status_.glRenderer << "\n";
+}
+
+Viewer::~Viewer() = default;
+
+void Viewer::run() {
+    for (int n = 1;; ++n)
+        if (frame(options_.frames > 0 && n >= options_.frames)) return;
+}
+
+// One frame, in the order the panel's edits need: they land in the scene before it is drawn. Returns
+// true when it was the last: the frame count is reached, or the window was closed or Esc/Q pressed
+// (so the scripted files are also written when a person ends the session).
+bool Viewer::frame(bool last) {
+    window_.pollEvents();
+    imgui_.newFrame();
+    const FrameLayout l = layout();
+    document_.scene().width = std::max(l.viewWidth, 1);   // the scene's size is the 3D view's, so a
+    document_.scene().height = std::max(l.framebufferHeight, 1);  // saved scene renders this image
+    handleInput(l);
+    const PanelRequests requests = settings_.showPanel ? drawPanel(document_.scene(), settings_, status_, l.panel)
+                                                       : PanelRequests{};
+    apply(requests);
+    last = last || window_.shouldClose();
+    uploadGeometryIfChanged();
+    if (settings_.paneLabels) drawPaneLabels(document_.scene(), l.view, l.scale);
+    if (settings_.showHud && settings_.showPanel) drawHud(status_, l.view);
+    const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
+    const Image view = renderView(l, captureView);
+    imgui_.render();
+    if (screenshotRequested_) saveScreenshot(view);
+    if (last) writeLastFrameFiles(l, view);
+    window_.swapBuffers();
+    return last;
+}
+
+Viewer::FrameLayout Viewer::layout() const {
+    FrameLayout l;
+    window_.framebufferSize(l.framebufferWidth, l.framebufferHeight);
+    int windowWidth = 0, windowHeight = 0;
+    window_.windowSize(windowWidth, windowHeight);
+    l.scale = windowWidth > 0 ? float(l.framebufferWidth) / float(windowWidth) : 1.0f;
+    const int panelPixels =
+        settings_.showPanel
+            ? std::min(int(std::lround(kPanelWidth * window_.contentScale() * l.scale)), l.framebufferWidth / 2)
+            : 0;
+    l.viewWidth = l.framebufferWidth - panelPixels;
+    l.view = UiRect{0.0f, 0.0f, float(l.viewWidth) / l.scale, float(windowHeight)};
+    l.panel = UiRect{l.view.width, 0.0f, float(panelPixels) / l.scale, float(windowHeight)};
+    return l;
+}
+
+void Viewer::handleInput(const FrameLayout& l) {
+    for (const std::string& path : window_.takeDroppedPaths()) loadFile(path);
+    handleKeys();
+    // Mouse: ImGui's view of it, so a drag that starts on the panel moves a slider, not the camera.
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse) return;
+    Camera& camera = document_.scene().camera;
+    if (io.MouseDown[0]) orbitCamera(camera, -io.MouseDelta.x * kOrbitRadPerUnit, io.MouseDelta.y * kOrbitRadPerUnit);
+    if (io.MouseDown[1] || io.MouseDown[2]) panCamera(camera, io.MouseDelta.x, io.MouseDelta.y, l.view.height);
+    if (io.MouseWheel != 0.0f) zoomCamera(camera, io.MouseWheel);
+}
+
+void Viewer::handleKeys() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureKeyboard) return;  // typing in a field or dragging a slider
+    Scene& scene = document_.scene();
+    OverlayOptions& overlays = settings_.overlays;
+    // Letters come as characters, so they follow the keyboard layout (Q is Q on an AZERTY keyboard).
+    for (int i = 0; i < io.InputQueueCharacters.Size; ++i) {
+        switch (io.InputQueueCharacters[i]) {
+        case '1': scene.shading = ShadingMode::Flat, scene.layout = Layout::Single; break;
+        case '2': scene.shading = ShadingMode::Gouraud, scene.layout = Layout::Single; break;
+        case '3': scene.shading = ShadingMode::Phong, scene.layout = Layout::Single; break;
+        case 'c': case 'C':
+            scene.layout = scene.layout == Layout::Compare ? Layout::Single : Layout::Compare;
+            break;
+        case 'w': case 'W': overlays.wireframe = !overlays.wireframe; break;
+        case 'n': overlays.vertexNormals = !overlays.vertexNormals; break;
+        case 'N': overlays.faceNormals = !overlays.faceNormals; break;
+        case 'l': case 'L': overlays.lightMarkers = !overlays.lightMarkers; break;
+        case 'r': case 'R': scene.camera = document_.homeCamera(); break;
+        case 'f': case 'F': document_.frameModel(); break;
+        case 'q': case 'Q': window_.requestClose(); break;
+        default: break;
+        }
+    }
+    // ImGui 1.86 indexes keys by the backend's key codes (GLFW's).
+    if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) settings_.showPanel = !settings_.showPanel;
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) window_.requestClose();
+    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) screenshotRequested_ = true;
+}
+
+void Viewer::apply(const PanelRequests& r) {
+    if (r.resetCamera) document_.scene().camera = document_.homeCamera();
+    if (r.frameModel) document_.frameModel();
+    if (r.screenshot) screenshotRequested_ = true;  // taken after this frame's render
+    if (r.load) loadFile(settings_.scenePath);
+    if (r.reloadShaders) reloadShaders();
+    if (r.quit) window_.requestClose();
+    if (r.save) {
+        try {
+            document_.save(settings_.scenePath);
+            setStatus("saved " + settings_.scenePath, false);
+        } catch (const std::exception& e) {
+            setStatus(std::string("save failed: ") + e.what(), true);
+        }
+    }
+}
+
+void Viewer::loadFile(const std::string& path) {
+    if (!hasExtension(path, ".json") && !hasModelExtension(path)) {
+        setStatus(path + ": not a scene (.json) or model (.gltf, .glb); kept the current scene", true);
+        return;
+    }
+    try {
+        document_.load(path);
+        settings_.scenePath = hasExtension(path, ".json") ? path : "scene.json";
+        settings_.selectedObject = 0;
+        setStatus("loaded " + path, false);
+    } catch (const std::exception& e) {
+        setStatus(std::string(e.what()) + " (kept the current scene)", true);
+    }
+}
+
+// Mesh edits in the panel rebuild geometry here, once per change; every other frame only compares specs.
+void Viewer::uploadGeometryIfChanged() {
+    try {
+        document_.syncGeometry();
+    } catch (const std::exception& e) {
+        setStatus(std::string("mesh not changed: ") + e.what(), true);
+    }
+    const auto& geometry = document_.geometry();
+    if (geometry.get() != uploaded_) {
+        renderer_->setGeometry(geometry);
+        overlays_->setGeometry(geometry);
+        uploaded_ = geometry.get();
+    }
+    const std::size_t panes = document_.scene().layout == Layout::Compare ? 3 : 1;
+    status_.frameTriangles = geometry ? geometry->triangleCount() * panes : 0;
+    const auto selected = std::size_t(settings_.selectedObject);
+    status_.objectTriangles = geometry && selected < geometry->meshes.size() ? geometry->meshes[selected].triangleCount() : 0;
+}
+
+// Draws the scene and the overlays into the 3D view. With `capture`, returns the view as drawn, read
+// before ImGui adds labels or panel (what F12 and --screenshot-view save); otherwise an empty image.
+Image Viewer::renderView(const FrameLayout& l, bool capture) {
+    if (l.viewWidth <= 0 || l.framebufferHeight <= 0) return {};  // minimised
+    const RenderTarget view{0, l.viewWidth, l.framebufferHeight};
+    try {
+        renderer_->render(document_.scene(), view);
+        overlays_->render(document_.scene(), view, settings_.overlays);
+        if (capture) return opaque(readPixels(view));
+    } catch (const std::exception& e) {
+        setStatus(e.what(), true);
+    }
+    return {};
+}
+
+void Viewer::saveScreenshot(const Image& view) {
+    screenshotRequested_ = false;
+    if (view.width == 0) return;  // nothing was drawn; renderView said why
+    const std::string path = timestampedName();
+    try {
+        writePng(path, view);
+        status_.lastScreenshot = path;
+        setStatus("saved screenshot " + path, false);
+    } catch (const std::exception& e) {
+        setStatus(std::string("screenshot failed: ") + e.what(), true);
+    }
+}
+
+// The scripted run's results. Unlike the panel's buttons these throw: a file that was asked for on the
+// command line and not written is the run's failure.
+void Viewer::writeLastFrameFiles(const FrameLayout& l, const Image& view) {
+    auto wrote = [&](const std::string& path) {
+        if (options_.verbose) std::cerr << "shadelab: wrote " << path << "\n";
+    };
+    if (!options_.viewScreenshotPath.empty()) {
+        if (view.width == 0) throw std::runtime_error("the 3D view was not drawn: " + status_.message);
+        writePng(options_.viewScreenshotPath, view);
+        wrote(options_.viewScreenshotPath);
+    }
+    if (!options_.screenshotPath.empty()) {
+        writePng(options_.screenshotPath, opaque(readPixels(RenderTarget{0, l.framebufferWidth, l.framebufferHeight})));
+        wrote(options_.screenshotPath);
+    }
+    if (!options_.saveScenePath.empty()) {
+        document_.save(options_.saveScenePath);
+        wrote(options_.saveScenePath);
+    }
+}
+
+void Viewer::reloadShaders() {
+    // Build the new programs first; on any error the running ones stay (the lecture goes on).
+    try {
+        // A trial frame builds every program the scene needs (render() compiles on first use and
+        // throws ShaderError); the frame's own render draws over it.
+        const ShaderLibrary shaders(options_.shaderDir);
+        auto renderer = std::make_unique<Renderer>(glfwGetProcAddress, shaders);
+        auto overlays = std::make_unique<OverlayRenderer>(shaders);
+        renderer->setGeometry(document_.geometry());
+        overlays->setGeometry(document_.geometry());
+        const Scene& scene = document_.scene();
+        renderer->render(scene, RenderTarget{0, scene.width, scene.height});
+        renderer_ = std::move(renderer);
+        overlays_ = std::move(overlays);
+        uploaded_ = document_.geometry().get();
+        setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (start with --shader-dir DIR to edit them)"
+                                             : "reloaded shaders from " + options_.shaderDir,
+                  false);
+    } catch (const std::exception& e) {
+        setStatus(std::string("shaders not reloaded, the previous ones stay:\n") + e.what(), true);
+    }
+}
+
+void Viewer::setStatus(std::string message, bool isError) {
+    if (isError && message != status_.message) std::cerr << "shadelab: " << message << "\n";
+    status_.message = std::move(message);
+    status_.isError = isError;
+    if (isError) settings_.showPanel = true;  // an error is never hidden behind Tab
+}
+
+}  // namespace shadelab

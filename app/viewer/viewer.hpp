@@ -1,0 +1,81 @@
+#pragma once
+// The interactive viewer: a GLFW window, the shared Renderer drawing the scene into its default
+// framebuffer, the teaching overlays, and a Dear ImGui panel that edits the scene live. One object owns
+// all of it; run() loops over frame(), which is the whole per-frame story:
+//   poll -> ImGui frame -> keys/mouse/drops -> panel -> apply requests -> renderer -> ImGui -> swap.
+#include "core/image.hpp"
+#include "core/scene.hpp"
+#include "core/scene_geometry.hpp"
+#include "render/overlay_renderer.hpp"
+#include "render/renderer.hpp"
+#include "viewer/glfw_window.hpp"
+#include "viewer/imgui_layer.hpp"
+#include "viewer/panel.hpp"
+#include "viewer/scene_document.hpp"
+
+#include <memory>
+#include <string>
+
+namespace shadelab {
+
+// How the viewer is started; the last four make it scriptable (tests, README screenshot).
+struct ViewerOptions {
+    std::string shaderDir;            // --shader-dir: GLSL read from here when present ("reload shaders")
+    int frames = 0;                   // --frames N: quit after N frames; 0 runs until closed
+    // Written on the last frame: the N-th with --frames, else the one in which the session ends.
+    std::string screenshotPath;       // --screenshot: the whole window, panel included
+    std::string viewScreenshotPath;   // --screenshot-view: the 3D view alone (what F12 saves)
+    std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes)
+    bool hidePanel = false;           // --hide-panel: start as if Tab had been pressed
+    OverlayOptions overlays;          // --overlays: which overlays start switched on
+    bool verbose = false;
+};
+
+class Viewer {
+public:
+    // Opens the window (sized scene.width x scene.height) and makes everything ready to draw.
+    // Throws InputError when there is no display, std::runtime_error when GL 3.3 is not available.
+    Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, ViewerOptions options);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    // Runs until the window closes, Esc/Q, or options.frames frames. Errors during the session are
+    // shown in the panel; only the scripted last-frame writes throw (their failure is the run's result).
+    void run();
+
+private:
+    // Pixel layout of this frame: the 3D view on the left, the panel on the right.
+    struct FrameLayout {
+        int framebufferWidth = 0, framebufferHeight = 0;
+        int viewWidth = 0;     // pixels; the 3D view is x in [0, viewWidth)
+        float scale = 1.0f;    // framebuffer pixels per ImGui unit
+        UiRect view, panel;    // ImGui units
+    };
+
+    bool frame(bool last);
+    FrameLayout layout() const;
+    void handleInput(const FrameLayout& layout);
+    void handleKeys();
+    void apply(const PanelRequests& requests);
+    void uploadGeometryIfChanged();
+    Image renderView(const FrameLayout& layout, bool capture);
+    void saveScreenshot(const Image& view);
+    void writeLastFrameFiles(const FrameLayout& layout, const Image& view);
+    void loadFile(const std::string& path);
+    void reloadShaders();
+    void setStatus(std::string message, bool isError);
+
+    ViewerOptions options_;
+    GlfwWindow window_;   // before every GL user: the context outlives them
+    ImGuiLayer imgui_;
+    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<OverlayRenderer> overlays_;
+    const SceneGeometry* uploaded_ = nullptr;  // what the renderers were last given
+    SceneDocument document_;
+    ViewSettings settings_;
+    PanelStatus status_;
+    bool screenshotRequested_ = false;
+};
+
+}  // namespace shadelab

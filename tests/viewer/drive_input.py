@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Drives the viewer with real X input events (the XTEST extension, through libXtst) and checks what the
+keys and the mouse did, from the scene the viewer saves when it is quit with Q.
+
+usage: drive_input.py SHADELAB OUTDIR     (run inside an X server: see xvfb_run.sh)
+Exits 77 (skipped) when libX11/libXtst cannot be loaded (Debian: libx11-6, libxtst6).
+
+ImGui 1.86 sees a key only if it is still down at the start of a frame, so keys are held for 0.4 s,
+several frames even on a loaded 2-core CI machine. Mouse deltas and wheel steps are summed by ImGui
+over frames, so the camera's end position does not depend on the frame rate.
+"""
+import ctypes, glob, json, math, os, subprocess, sys, time
+
+try:
+    x11 = ctypes.CDLL("libX11.so.6")
+    xtst = ctypes.CDLL("libXtst.so.6")
+except OSError as e:
+    print(f"{e}: skipping the input test")
+    sys.exit(77)
+x11.XOpenDisplay.restype = ctypes.c_void_p
+x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+x11.XStringToKeysym.restype = ctypes.c_ulong
+x11.XStringToKeysym.argtypes = [ctypes.c_char_p]
+x11.XKeysymToKeycode.argtypes = [ctypes.c_void_p, ctypes.c_ulong]
+x11.XFlush.argtypes = [ctypes.c_void_p]
+for name in ("XTestFakeKeyEvent", "XTestFakeButtonEvent"):
+    getattr(xtst, name).argtypes = [ctypes.c_void_p, ctypes.c_uint, ctypes.c_int, ctypes.c_ulong]
+xtst.XTestFakeMotionEvent.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_ulong]
+
+shadelab, out = sys.argv[1], sys.argv[2]
+os.makedirs(out, exist_ok=True)
+for f in glob.glob(os.path.join(out, "*")):
+    os.remove(f)
+saved = os.path.join(out, "quit.json")
+# 800x600 view + panel on the right; the view's centre is (400, 300) in window and screen coordinates
+# (no window manager under Xvfb: the window sits at the origin).
+proc = subprocess.Popen([shadelab, "--size", "800x600", "--save-scene", saved, "-v"], cwd=out,
+                        stderr=subprocess.PIPE, text=True)
+for line in proc.stderr:  # the window is mapped once the viewer reports its renderer
+    if "viewer on" in line:
+        break
+display = x11.XOpenDisplay(None)
+
+def flush(pause):
+    x11.XFlush(display)
+    time.sleep(pause)
+
+def key(name, shift=False):
+    code = x11.XKeysymToKeycode(display, x11.XStringToKeysym(name.encode()))
+    shift_code = x11.XKeysymToKeycode(display, x11.XStringToKeysym(b"Shift_L"))
+    if shift:
+        xtst.XTestFakeKeyEvent(display, shift_code, 1, 0)
+    xtst.XTestFakeKeyEvent(display, code, 1, 0)
+    flush(0.4)
+    xtst.XTestFakeKeyEvent(display, code, 0, 0)
+    if shift:
+        xtst.XTestFakeKeyEvent(display, shift_code, 0, 0)
+    flush(0.3)
+
+def move(x, y, pause=0.05):
+    xtst.XTestFakeMotionEvent(display, -1, x, y, 0)
+    flush(pause)
+
+def button(b, down):
+    xtst.XTestFakeButtonEvent(display, b, 1 if down else 0, 0)
+    flush(0.3)
+
+move(400, 300, 0.5)
+key("2")                  # gouraud, single pane
+key("c")                  # compare on ...
+key("c")                  # ... and off again
+key("w")                  # wireframe (not saved: view state)
+key("N", shift=True)      # face normals
+key("F12")                # screenshot of the 3D view into the working folder
+button(1, True)           # orbit: 100 units right = eye 0.8 rad to its left
+for i in range(1, 11):
+    move(400 + 10 * i, 300)
+button(1, False)
+for _ in range(2):        # zoom in two steps: distance * 0.81
+    button(4, True)
+    button(4, False)
+move(1000, 590, 0.3)
+button(1, True)           # a drag that starts on the panel moves no camera
+for i in range(1, 11):
+    move(1000 - 30 * i, 590)
+button(1, False)
+key("q")
+try:
+    proc.communicate(timeout=60)
+except subprocess.TimeoutExpired:
+    proc.kill()
+    sys.exit("the viewer did not quit on Q")
+
+failures = []
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+
+check(proc.returncode == 0, f"exit status {proc.returncode}")
+check(os.path.exists(saved), "no scene saved on quit")
+if os.path.exists(saved):
+    scene = json.load(open(saved))
+    check(scene["shading"] == "gouraud", f"key 2: shading is {scene['shading']}")
+    check(scene["layout"] == "single", f"key c twice: layout is {scene['layout']}")
+    eye = scene["camera"]["eye"]
+    start_dist = math.hypot(1.5, 4.8)  # the default scene's eye (0, 1.5, 4.8), target at the origin
+    check(abs(math.dist(eye, [0, 0, 0]) - 0.81 * start_dist) < 0.01, f"wheel: eye distance {math.dist(eye, [0, 0, 0])}")
+    yaw = math.atan2(eye[0], eye[2])
+    check(abs(yaw + 0.8) < 0.05, f"orbit: yaw {yaw:.3f} rad, expected -0.8 (the panel drag must not orbit)")
+    check(abs(eye[1] - 0.81 * 1.5) < 0.01, f"orbit: height {eye[1]:.3f} changed by a horizontal drag")
+shots = glob.glob(os.path.join(out, "shadelab-*.png"))
+check(len(shots) == 1, f"F12: {len(shots)} screenshots in the working folder")
+if failures:
+    sys.exit("; ".join(failures))
+print("keys, orbit, zoom, panel capture and F12 work")

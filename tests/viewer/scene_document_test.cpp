@@ -1,0 +1,123 @@
+// SceneDocument (app/viewer/scene_document.hpp): the viewer's load, save and rebuild, which must leave
+// the scene untouched whenever they fail.
+#include "core/error.hpp"
+#include "core/scene_json.hpp"
+#include "viewer/scene_document.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace shadelab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string outDir(const std::string& name) {
+    const fs::path dir = fs::path(VIEWER_TEST_OUT) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir.string();
+}
+
+void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+SceneDocument defaultDocument() {
+    Scene s = defaultScene();
+    auto g = std::make_shared<const SceneGeometry>(buildSceneGeometry(s));
+    return SceneDocument(std::move(s), std::move(g));
+}
+
+TEST(SceneDocument, BadFilesLeaveTheSceneAsItWas) {
+    const std::string dir = outDir("bad_files");
+    SceneDocument doc = defaultDocument();
+    doc.scene().objects[0].material.ke = 123.0f;  // an edit that must survive
+    const std::string before = sceneToJson(doc.scene(), dir);
+    const SceneGeometry* geometry = doc.geometry().get();
+
+    writeText(dir + "/malformed.json", "{\"mesh\": ");
+    writeText(dir + "/wrong.json", "{\"material\": {\"ke\": -4}}");
+    writeText(dir + "/missing-model.json", "{\"mesh\": {\"type\": \"gltf\", \"path\": \"nowhere.glb\"}}");
+    for (const char* name : {"malformed.json", "wrong.json", "missing-model.json", "absent.json", "absent.glb"}) {
+        EXPECT_THROW(doc.load(dir + "/" + name), std::exception) << name;
+        EXPECT_EQ(sceneToJson(doc.scene(), dir), before) << name;
+        EXPECT_EQ(doc.geometry().get(), geometry) << name;
+    }
+    try {
+        doc.load(dir + "/wrong.json");
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("ke"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SceneDocument, LoadReplacesSceneGeometryAndHomeCamera) {
+    const std::string dir = outDir("load");
+    writeText(dir + "/cube.json",
+              "{\"mesh\": {\"type\": \"cube\"}, \"camera\": {\"eye\": [4, 4, 4]}, \"size\": [64, 64]}");
+    SceneDocument doc = defaultDocument();
+    doc.scene().width = 800;  // the view's size
+    doc.scene().height = 600;
+    doc.load(dir + "/cube.json");
+    EXPECT_EQ(doc.scene().objects[0].mesh.type, MeshSpec::Type::Cube);
+    EXPECT_EQ(doc.geometry()->meshes[0].triangleCount(), 12u);
+    EXPECT_EQ(doc.homeCamera().eye, glm::vec3(4, 4, 4));
+    EXPECT_EQ(doc.scene().width, 800);  // the window keeps its size
+}
+
+TEST(SceneDocument, SyncRebuildsOnlyWhenAMeshSpecChanges) {
+    SceneDocument doc = defaultDocument();
+    const auto first = doc.geometry();
+    EXPECT_FALSE(doc.syncGeometry());
+    doc.scene().objects[0].material.kd = 0.2f;  // not a mesh edit
+    EXPECT_FALSE(doc.syncGeometry());
+    EXPECT_EQ(doc.geometry(), first);
+
+    doc.scene().objects[0].mesh.slices = 8;
+    doc.scene().objects[0].mesh.stacks = 4;
+    EXPECT_TRUE(doc.syncGeometry());
+    EXPECT_EQ(doc.geometry()->triangleCount(), 2u * 8u * 3u);
+    EXPECT_FALSE(doc.syncGeometry());
+}
+
+TEST(SceneDocument, FailedRebuildPutsTheOldSpecBack) {
+    SceneDocument doc = defaultDocument();
+    const MeshSpec good = doc.scene().objects[0].mesh;
+    doc.scene().objects[0].mesh.type = MeshSpec::Type::Gltf;
+    doc.scene().objects[0].mesh.path = doc.scene().objects[0].mesh.resolvedPath = "/nonexistent/model.glb";
+    EXPECT_THROW(doc.syncGeometry(), std::exception);
+    EXPECT_EQ(doc.scene().objects[0].mesh, good);
+    EXPECT_FALSE(doc.syncGeometry());
+}
+
+TEST(SceneDocument, FitToViewOnlyWhenTheSmallerViewCropsTheModel) {
+    SceneDocument doc = defaultDocument();  // 1280x720, the sphere fits
+    doc.scene().layout = Layout::Compare;
+    const Camera scene = doc.scene().camera;
+    EXPECT_FALSE(doc.fitToView(1280, 720));  // the view has the scene's size
+    doc.scene().width = 1540;                // a bigger view: never moved
+    EXPECT_FALSE(doc.fitToView(1280, 720));
+    EXPECT_EQ(doc.scene().camera.eye, scene.eye);
+    doc.scene().width = 900;  // 300-pixel compare panes crop the sphere
+    EXPECT_TRUE(doc.fitToView(1280, 720));
+    EXPECT_NE(doc.scene().camera.eye, scene.eye);
+    EXPECT_EQ(doc.homeCamera().eye, doc.scene().camera.eye);
+}
+
+TEST(SceneDocument, SaveWritesALoadableSceneOrNothing) {
+    const std::string dir = outDir("save");
+    SceneDocument doc = defaultDocument();
+    doc.scene().objects[0].material.ke = 250.0f;
+    doc.save(dir + "/ok.json");
+    EXPECT_FLOAT_EQ(loadSceneFile(dir + "/ok.json").objects[0].material.ke, 250.0f);
+
+    EXPECT_THROW(doc.save(dir + "/no/such/folder/x.json"), InputError);
+    doc.scene().camera.target = doc.scene().camera.eye;  // a camera the parser refuses
+    EXPECT_THROW(doc.save(dir + "/bad.json"), InputError);
+    EXPECT_FALSE(fs::exists(dir + "/bad.json"));
+    for (const auto& entry : fs::directory_iterator(dir))  // no temporary left behind
+        EXPECT_EQ(entry.path().filename(), "ok.json");
+}
+
+}  // namespace
+}  // namespace shadelab

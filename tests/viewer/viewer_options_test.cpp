@@ -1,0 +1,38 @@
+// The viewer's command-line flags (app/cli/options.*).
+#include "cli/options.hpp"
+#include "core/error.hpp"
+
+#include <gtest/gtest.h>
+
+namespace shadelab {
+namespace {
+
+TEST(ViewerOptions, ParseWithEveryOtherOption) {
+    const Options o = parseOptions({"scene.json", "--layout", "compare", "--frames", "30", "--screenshot", "w.png",
+                                    "--screenshot-view=v.png", "--save-scene", "s.json", "--hide-panel", "--overlays",
+                                    "wireframe,lights", "--ke", "100", "--size", "640x360"});
+    EXPECT_EQ(o.frames, 30);
+    EXPECT_EQ(o.screenshot.value_or(""), "w.png");
+    EXPECT_EQ(o.screenshotView.value_or(""), "v.png");
+    EXPECT_EQ(o.saveScene.value_or(""), "s.json");
+    EXPECT_TRUE(o.hidePanel);
+    EXPECT_EQ(o.overlays, (std::vector<std::string>{"wireframe", "lights"}));
+    EXPECT_EQ(o.layout, Layout::Compare);
+    EXPECT_EQ(o.width, 640);
+}
+
+TEST(ViewerOptions, RefusesWhatCannotWork) {
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"--frames", "0"},
+             {"--frames", "x"},
+             {"--screenshot", "w.jpg"},
+             {"--save-scene", "s.txt"},
+             {"--overlays", "wireframe,glow"},
+             {"--hide-panel=yes"},
+             {"--output", "x.png", "--frames", "3"},
+             {"--benchmark", "5", "--screenshot", "w.png"}})
+        EXPECT_THROW(parseOptions(args), InputError) << args[0] << " " << args.back();
+}
+
+}  // namespace
+}  // namespace shadelab

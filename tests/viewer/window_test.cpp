@@ -1,0 +1,201 @@
+// The viewer in a real X server: these tests run the shadelab executable under Xvfb (see xvfb_run.sh)
+// with --frames/--screenshot*/--save-scene, and check the files it writes. The "3D view" images
+// (--screenshot-view) are read from the window's own default framebuffer, after the renderer and
+// before ImGui draws, so they are the pixels the lecturer sees under the panel's labels.
+#include "core/image.hpp"
+#include "core/scene.hpp"
+#include "core/scene_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace shadelab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of its own per test, emptied first, so a stale file never passes a test.
+std::string outDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const fs::path dir = fs::path(VIEWER_TEST_OUT) / (std::string(info->test_suite_name()) + "." + info->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir.string();
+}
+
+struct RunResult {
+    int status = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// Runs shadelab with `args` (already shell-quoted where needed); `env` prefixes the command.
+RunResult shadelab(const std::string& args, const std::string& dir, const std::string& env = "") {
+    const std::string log = dir + "/shadelab.log";
+    const std::string cmd = env + " '" SHADELAB_EXE "' " + args + " > '" + log + "' 2>&1";
+    const int raw = std::system(cmd.c_str());
+    RunResult r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(log);
+    std::stringstream s;
+    s << in.rdbuf();
+    r.output = s.str();
+    return r;
+}
+
+std::string scene(const std::string& name) { return std::string("'") + VIEWER_TEST_SCENES + "/" + name + "'"; }
+
+Image crop(const Image& img, int x0, int y0, int w, int h) {
+    Image out(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) std::copy_n(img.pixel(x0 + x, y0 + y), 4, out.pixel(x, y));
+    return out;
+}
+
+std::size_t distinctColours(const Image& img) {
+    std::set<std::uint32_t> colours;
+    for (std::size_t i = 0; i + 3 < img.rgba.size(); i += 4)
+        colours.insert(std::uint32_t(img.rgba[i]) << 16 | std::uint32_t(img.rgba[i + 1]) << 8 | img.rgba[i + 2]);
+    return colours.size();
+}
+
+// The golden-image tolerance (CompareTolerance's defaults). Window and headless renders both come from
+// Mesa's llvmpipe, so they are expected to agree exactly; the tolerance only absorbs a driver that
+// rounds differently between its GLX and OSMesa paths.
+void expectSameImage(const Image& actual, const Image& expected, const std::string& what) {
+    const CompareTolerance tolerance;
+    const CompareResult r = compareImages(actual, expected, tolerance.pixelThreshold);
+    EXPECT_TRUE(r.matches(tolerance)) << what << ": " << describe(r, tolerance);
+}
+
+TEST(NoDisplay, SaysSoInOneLineAndExits2) {
+    const std::string dir = outDir();
+    const RunResult r = shadelab("--frames 1", dir, "env -u DISPLAY -u WAYLAND_DISPLAY");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--output"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+// The window opens on the default scene, the panel is in the whole-window screenshot beside a 3D view
+// of the requested size, and the 3D view shows a lit sphere in each compare pane.
+TEST(Window, Opens) {
+    const std::string dir = outDir();
+    const RunResult r = shadelab("--layout compare --size 960x540 --frames 5 --screenshot " + dir + "/window.png" +
+                               " --screenshot-view " + dir + "/view.png",
+                           dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image window = readPng(dir + "/window.png");
+    const Image view = readPng(dir + "/view.png");
+    // --size is the 3D view's size; the panel gets its own room to the right.
+    EXPECT_EQ(view.width, 960);
+    EXPECT_EQ(view.height, 540);
+    ASSERT_EQ(window.height, 540);
+    ASSERT_GT(window.width, view.width + 200) << "no room for the panel";
+
+    // The panel: text and widgets give many colours, where an empty strip of background would give one.
+    const Image panel = crop(window, view.width, 0, window.width - view.width, window.height);
+    EXPECT_GT(distinctColours(panel), 40u) << "the panel is not in the screenshot";
+    // Its top-left corner is not the scene's background colour (0.08, 0.08, 0.1) -> (20, 20, 26).
+    const std::uint8_t* corner = panel.pixel(4, 4);
+    EXPECT_FALSE(corner[0] == 20 && corner[1] == 20 && corner[2] == 26);
+
+    // Each compare pane's centre is on the sphere: lit, reddish, not background.
+    for (int pane = 0; pane < 3; ++pane) {
+        const std::uint8_t* p = view.pixel(pane * 320 + 160, 270);
+        EXPECT_GT(p[0], 60) << "pane " << pane;
+        EXPECT_GT(p[0], p[2]) << "pane " << pane;
+    }
+    // Outside the labels and the HUD, the window shows exactly the 3D view.
+    expectSameImage(crop(window, 0, 100, view.width, 300), crop(view, 0, 100, view.width, 300), "window vs 3D view");
+}
+
+// A scene loaded in the window gives the same 3D pixels as the headless --output render of that scene,
+// with the panel shown (the view keeps the scene's size) and with it hidden.
+TEST(Window, MatchesHeadless) {
+    const std::string dir = outDir();
+    const RunResult headless = shadelab(scene("compare_torus.json") + " --output " + dir + "/headless.png", dir);
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    const Image expected = readPng(dir + "/headless.png");
+
+    const RunResult shown = shadelab(scene("compare_torus.json") + " --frames 3 --screenshot-view " + dir + "/view.png", dir);
+    ASSERT_EQ(shown.status, 0) << shown.output;
+    expectSameImage(readPng(dir + "/view.png"), expected, "panel shown");
+
+    const RunResult hidden = shadelab(scene("compare_torus.json") + " --hide-panel --frames 3 --screenshot-view " + dir +
+                                    "/view-hidden.png --screenshot " + dir + "/window-hidden.png",
+                                dir);
+    ASSERT_EQ(hidden.status, 0) << hidden.output;
+    expectSameImage(readPng(dir + "/view-hidden.png"), expected, "panel hidden");
+    // With the panel hidden the window is the 3D view; below the pane labels it is pixel for pixel the
+    // headless image.
+    const Image window = readPng(dir + "/window-hidden.png");
+    ASSERT_EQ(window.width, expected.width);
+    ASSERT_EQ(window.height, expected.height);
+    const int top = 60, rows = expected.height - top;
+    expectSameImage(crop(window, 0, top, window.width, rows), crop(expected, 0, top, expected.width, rows),
+                    "whole window, panel hidden");
+}
+
+// A scene saved from the viewer holds what was on screen: loaded headless it renders the same image,
+// and saved again from the viewer it is the same file.
+TEST(Window, SaveRoundTrip) {
+    const std::string dir = outDir();
+    const std::string edits = " --shading gouraud --layout single --reflection blinn-phong --ke 300 --ks 0.8 "
+                              "--mesh icosphere:2 --size 500x300";
+    const RunResult viewer = shadelab(scene("compare_torus.json") + edits + " --frames 3 --save-scene " + dir +
+                                    "/saved.json --screenshot-view " + dir + "/view.png",
+                                dir);
+    ASSERT_EQ(viewer.status, 0) << viewer.output;
+
+    const Scene saved = loadSceneFile(dir + "/saved.json");
+    EXPECT_EQ(saved.shading, ShadingMode::Gouraud);
+    EXPECT_EQ(saved.layout, Layout::Single);
+    EXPECT_EQ(saved.reflection, ReflectionModel::BlinnPhong);
+    ASSERT_EQ(saved.objects.size(), 1u);
+    EXPECT_EQ(saved.objects[0].mesh.type, MeshSpec::Type::IcoSphere);
+    EXPECT_EQ(saved.objects[0].mesh.subdivisions, 2);
+    EXPECT_FLOAT_EQ(saved.objects[0].material.ke, 300.0f);
+    EXPECT_FLOAT_EQ(saved.objects[0].material.ks, 0.8f);
+    EXPECT_EQ(saved.lights.size(), 2u);
+    EXPECT_EQ(saved.width, 500);
+    EXPECT_EQ(saved.height, 300);
+
+    const RunResult headless = shadelab("'" + dir + "/saved.json' --output " + dir + "/headless.png", dir);
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    expectSameImage(readPng(dir + "/view.png"), readPng(dir + "/headless.png"), "saved scene, headless");
+
+    const RunResult again = shadelab("'" + dir + "/saved.json' --frames 2 --save-scene " + dir + "/saved-again.json", dir);
+    ASSERT_EQ(again.status, 0) << again.output;
+    std::ifstream a(dir + "/saved.json"), b(dir + "/saved-again.json");
+    std::stringstream sa, sb;
+    sa << a.rdbuf();
+    sb << b.rdbuf();
+    EXPECT_EQ(sa.str(), sb.str());
+}
+
+// Overlays draw (their program builds, no GL error stops the view) over the surface, and only there.
+TEST(Window, Overlays) {
+    const std::string dir = outDir();
+    const std::string base = "--hide-panel --size 400x300 --frames 3 --screenshot-view ";
+    const RunResult plain = shadelab(base + dir + "/plain.png", dir);
+    ASSERT_EQ(plain.status, 0) << plain.output;
+    const RunResult lines =
+        shadelab(base + dir + "/overlays.png --overlays wireframe,vertex-normals,face-normals,lights", dir);
+    ASSERT_EQ(lines.status, 0) << lines.output;
+    const Image a = readPng(dir + "/plain.png"), b = readPng(dir + "/overlays.png");
+    const CompareResult r = compareImages(b, a, 8);
+    EXPECT_GT(r.failingShare, 0.02) << "overlays barely changed the image: " << r.failingPixels << " pixels";
+    // The corners are far from the sphere and its normals: untouched background.
+    for (const auto& [x, y] : {std::pair{2, 2}, std::pair{397, 2}, std::pair{2, 297}, std::pair{397, 297}})
+        EXPECT_TRUE(std::equal(a.pixel(x, y), a.pixel(x, y) + 4, b.pixel(x, y))) << x << "," << y;
+}
+
+}  // namespace
+}  // namespace shadelab
