@@ -64,7 +64,9 @@ int run(const std::vector<std::string>& args) {
     if (options.verbose)
         std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
                   << scene.objects.size() << " object(s), " << geometry->triangleCount() << " triangles\n";
-    const ShaderLibrary shaders(options.shaderDir);
+    // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
+    const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
+    const ShaderLibrary shaders(shaderDir);
 
     if (options.benchmarkFrames > 0) {
         std::vector<ShadingMode> modes;
@@ -82,7 +84,7 @@ int run(const std::vector<std::string>& args) {
         return 0;
     }
     ViewerOptions viewer;
-    viewer.shaderDir = options.shaderDir;
+    viewer.shaderDir = shaderDir;
     viewer.frames = options.frames;
     viewer.screenshotPath = options.screenshot.value_or("");
     viewer.viewScreenshotPath = options.screenshotView.value_or("");

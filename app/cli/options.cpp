@@ -169,7 +169,8 @@ Without --output (or --benchmark) it opens the interactive viewer.
   --mesh SPEC             replace the first object's mesh: uvsphere[:slices[:stacks]], icosphere[:n],
                           torus[:major[:minor]], cube, plane[:n], or a .gltf/.glb file
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
-  --shader-dir DIR        read GLSL files from DIR when present (default: the built-in copies)
+  --shader-dir DIR        read GLSL files from DIR when present (default: the checkout's shaders/
+                          when it exists, else the built-in copies)
   --info                  print what was loaded (meshes, triangles, bounds, normals) and exit
 
 Viewer (the window; keys and mouse are listed in its panel under "Keys"):

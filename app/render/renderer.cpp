@@ -113,7 +113,7 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
 }
 
 void Renderer::preparePrograms(const Scene& scene) {
-    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 3, 1)) program(pane.mode, scene);
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene);
 }
 
 GLuint Renderer::program(ShadingMode mode, const Scene& scene) {

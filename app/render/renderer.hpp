@@ -35,7 +35,8 @@ public:
     void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
     // Draws all panes of the scene's layout. Throws ShaderError or std::runtime_error on a GL error.
     void render(const Scene& scene, const RenderTarget& target);
-    // Compiles the programs `scene` needs now (render() does it on first use).
+    // Compiles the flat, gouraud and phong programs for `scene`'s specialisation now (render()
+    // otherwise compiles each on first use). Throws ShaderError.
     void preparePrograms(const Scene& scene);
 
     std::string glRenderer() const;

@@ -1,19 +1,29 @@
 #pragma once
 // Where GLSL files come from: a folder on disk when one is given and holds the file (so a lecturer
-// can edit the shaders), otherwise the copies built into the binary.
+// can edit the shaders and reload them), otherwise the copies built into the binary.
+//
+// The folder is read once, when the library is made: a renderer compiles its programs lazily (on
+// first use of a mode), and it must compile them from the sources it was validated with, not from a
+// file someone broke a minute later.
+#include <map>
 #include <string>
 
 namespace shadelab {
 
 class ShaderLibrary {
 public:
-    explicit ShaderLibrary(std::string diskFolder = {}) : diskFolder_(std::move(diskFolder)) {}
+    explicit ShaderLibrary(std::string diskFolder = {});
     // The file's text; throws std::runtime_error if it is neither on disk nor embedded.
     std::string load(const std::string& name) const;
     const std::string& diskFolder() const { return diskFolder_; }
 
 private:
     std::string diskFolder_;
+    std::map<std::string, std::string> diskFiles_;  // name -> contents, read at construction
 };
+
+// The shaders/ folder of the checkout shadelab was built from, when it still exists (so edits there
+// take effect without a rebuild); empty otherwise (an installed binary uses its built-in copies).
+std::string defaultShaderFolder();
 
 }  // namespace shadelab

@@ -208,7 +208,7 @@ void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requ
     ImGui::SameLine();
     requests.screenshot |= ImGui::Button("screenshot (F12)");
     if (!status.lastScreenshot.empty()) ImGui::TextWrapped("screenshot: %s", status.lastScreenshot.c_str());
-    requests.reloadShaders |= ImGui::Button("reload shaders");
+    requests.reloadShaders |= ImGui::Button("reload shaders (F5)");
     ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
 }
 

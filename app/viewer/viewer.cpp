@@ -169,6 +169,7 @@ void Viewer::handleKeys() {
     if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) settings_.showPanel = !settings_.showPanel;
     if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) window_.requestClose();
     if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) screenshotRequested_ = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) reloadShaders();
 }
 
 void Viewer::apply(const PanelRequests& r) {
@@ -282,11 +283,12 @@ void Viewer::reloadShaders() {
         renderer->setGeometry(document_.geometry());
         overlays->setGeometry(document_.geometry());
         const Scene& scene = document_.scene();
+        renderer->preparePrograms(scene);  // all three modes, so switching mode later cannot fail
         renderer->render(scene, RenderTarget{0, scene.width, scene.height});
         renderer_ = std::move(renderer);
         overlays_ = std::move(overlays);
         uploaded_ = document_.geometry().get();
-        setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (start with --shader-dir DIR to edit them)"
+        setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (no shaders/ folder: start with --shader-dir DIR to edit them)"
                                              : "reloaded shaders from " + options_.shaderDir,
                   false);
     } catch (const std::exception& e) {

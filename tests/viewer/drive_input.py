@@ -3,29 +3,14 @@
 keys and the mouse did, from the scene the viewer saves when it is quit with Q.
 
 usage: drive_input.py SHADELAB OUTDIR     (run inside an X server: see xvfb_run.sh)
-Exits 77 (skipped) when libX11/libXtst cannot be loaded (Debian: libx11-6, libxtst6).
+Exits 77 (skipped) when libX11/libXtst cannot be loaded (Debian: libx11-6, libxtst6); see xinput.py.
 
-ImGui 1.86 sees a key only if it is still down at the start of a frame, so keys are held for 0.4 s,
-several frames even on a loaded 2-core CI machine. Mouse deltas and wheel steps are summed by ImGui
+Mouse deltas and wheel steps are summed by ImGui
 over frames, so the camera's end position does not depend on the frame rate.
 """
-import ctypes, glob, json, math, os, subprocess, sys, time
+import glob, json, math, os, subprocess, sys
 
-try:
-    x11 = ctypes.CDLL("libX11.so.6")
-    xtst = ctypes.CDLL("libXtst.so.6")
-except OSError as e:
-    print(f"{e}: skipping the input test")
-    sys.exit(77)
-x11.XOpenDisplay.restype = ctypes.c_void_p
-x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
-x11.XStringToKeysym.restype = ctypes.c_ulong
-x11.XStringToKeysym.argtypes = [ctypes.c_char_p]
-x11.XKeysymToKeycode.argtypes = [ctypes.c_void_p, ctypes.c_ulong]
-x11.XFlush.argtypes = [ctypes.c_void_p]
-for name in ("XTestFakeKeyEvent", "XTestFakeButtonEvent"):
-    getattr(xtst, name).argtypes = [ctypes.c_void_p, ctypes.c_uint, ctypes.c_int, ctypes.c_ulong]
-xtst.XTestFakeMotionEvent.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_ulong]
+from xinput import start_viewer
 
 shadelab, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
@@ -34,36 +19,8 @@ for f in glob.glob(os.path.join(out, "*")):
 saved = os.path.join(out, "quit.json")
 # 800x600 view + panel on the right; the view's centre is (400, 300) in window and screen coordinates
 # (no window manager under Xvfb: the window sits at the origin).
-proc = subprocess.Popen([shadelab, "--size", "800x600", "--save-scene", saved, "-v"], cwd=out,
-                        stderr=subprocess.PIPE, text=True)
-for line in proc.stderr:  # the window is mapped once the viewer reports its renderer
-    if "viewer on" in line:
-        break
-display = x11.XOpenDisplay(None)
-
-def flush(pause):
-    x11.XFlush(display)
-    time.sleep(pause)
-
-def key(name, shift=False):
-    code = x11.XKeysymToKeycode(display, x11.XStringToKeysym(name.encode()))
-    shift_code = x11.XKeysymToKeycode(display, x11.XStringToKeysym(b"Shift_L"))
-    if shift:
-        xtst.XTestFakeKeyEvent(display, shift_code, 1, 0)
-    xtst.XTestFakeKeyEvent(display, code, 1, 0)
-    flush(0.4)
-    xtst.XTestFakeKeyEvent(display, code, 0, 0)
-    if shift:
-        xtst.XTestFakeKeyEvent(display, shift_code, 0, 0)
-    flush(0.3)
-
-def move(x, y, pause=0.05):
-    xtst.XTestFakeMotionEvent(display, -1, x, y, 0)
-    flush(pause)
-
-def button(b, down):
-    xtst.XTestFakeButtonEvent(display, b, 1 if down else 0, 0)
-    flush(0.3)
+proc, display = start_viewer([shadelab, "--size", "800x600", "--save-scene", saved], out)
+key, move, button = display.key, display.move, display.button
 
 move(400, 300, 0.5)
 key("2")                  # gouraud, single pane

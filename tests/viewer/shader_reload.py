@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""A shader broken on purpose while the viewer runs: F5 shows the driver's error (file and line) and
+the picture stays; once the file is fixed, F5 reloads it.
+
+usage: shader_reload.py SHADELAB SHADER_SOURCE_DIR OUTDIR     (inside an X server: see xvfb_run.sh)
+"""
+import glob, os, shutil, subprocess, sys, time
+
+from xinput import start_viewer
+
+shadelab, shader_src, out = sys.argv[1], sys.argv[2], sys.argv[3]
+shutil.rmtree(out, ignore_errors=True)
+shaders = os.path.join(out, "shaders")
+shutil.copytree(shader_src, shaders)
+proc, display = start_viewer([shadelab, "--shader-dir", shaders, "--size", "400x300", "--layout", "compare"], out)
+
+def screenshot():
+    before = set(glob.glob(os.path.join(out, "shadelab-*.png")))
+    display.key("F12")
+    time.sleep(0.3)
+    new = set(glob.glob(os.path.join(out, "shadelab-*.png"))) - before
+    return open(new.pop(), "rb").read() if new else None
+
+first = screenshot()
+phong = os.path.join(shaders, "phong.frag")
+good = open(phong).read()
+with open(phong, "a") as f:
+    f.write("this is not GLSL;\n")
+broken_line = good.count("\n") + 1
+display.key("F5")                       # reload: must fail and keep the running programs
+after_broken = screenshot()
+display.key("2")                        # switching mode must not pick up the broken file either
+display.key("c")
+after_switch = screenshot()
+open(phong, "w").write(good)
+display.key("F5")                       # fixed: reloads
+display.key("q")
+try:
+    _, err = proc.communicate(timeout=60)
+except subprocess.TimeoutExpired:
+    proc.kill()
+    sys.exit("the viewer did not quit on Q")
+
+failures = []
+if proc.returncode != 0:
+    failures.append(f"exit status {proc.returncode}")
+if first is None or after_broken is None or after_switch is None:
+    failures.append("F12 wrote no screenshot")
+elif not (first == after_broken == after_switch):
+    failures.append("the picture changed after a broken shader was reloaded")
+if "shaders not reloaded" not in err:
+    failures.append("no error shown for the broken shader")
+if f"phong.frag:{broken_line}" not in err:
+    failures.append(f"the error does not point at phong.frag:{broken_line}:\n{err}")
+if failures:
+    sys.exit("; ".join(failures))
+print("a broken shader shows its error with file and line, and the picture stays")

@@ -1,0 +1,64 @@
+"""Real X input events for the viewer tests (the XTEST extension, through libXtst and ctypes).
+
+ImGui 1.86 sees a key only if it is still down at the start of a frame, so keys are held for 0.4 s,
+several frames even on a loaded 2-core CI machine. Importing this module exits 77 (CTest: skipped)
+when libX11/libXtst cannot be loaded (Debian: libx11-6, libxtst6).
+"""
+import ctypes
+import subprocess
+import sys
+import time
+
+try:
+    _x11 = ctypes.CDLL("libX11.so.6")
+    _xtst = ctypes.CDLL("libXtst.so.6")
+except OSError as e:
+    print(f"{e}: skipping the input test")
+    sys.exit(77)
+_x11.XOpenDisplay.restype = ctypes.c_void_p
+_x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+_x11.XStringToKeysym.restype = ctypes.c_ulong
+_x11.XStringToKeysym.argtypes = [ctypes.c_char_p]
+_x11.XKeysymToKeycode.argtypes = [ctypes.c_void_p, ctypes.c_ulong]
+_x11.XFlush.argtypes = [ctypes.c_void_p]
+for _name in ("XTestFakeKeyEvent", "XTestFakeButtonEvent"):
+    getattr(_xtst, _name).argtypes = [ctypes.c_void_p, ctypes.c_uint, ctypes.c_int, ctypes.c_ulong]
+_xtst.XTestFakeMotionEvent.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_ulong]
+
+
+def start_viewer(args, cwd):
+    """Starts shadelab (args[0]) with -v and returns (process, display) once its window is mapped."""
+    proc = subprocess.Popen(list(args) + ["-v"], cwd=cwd, stderr=subprocess.PIPE, text=True)
+    for line in proc.stderr:  # the window is mapped once the viewer reports its renderer
+        if "viewer on" in line:
+            break
+    return proc, Display()
+
+
+class Display:
+    def __init__(self):
+        self.handle = _x11.XOpenDisplay(None)
+
+    def flush(self, pause):
+        _x11.XFlush(self.handle)
+        time.sleep(pause)
+
+    def key(self, name, shift=False):
+        code = _x11.XKeysymToKeycode(self.handle, _x11.XStringToKeysym(name.encode()))
+        shift_code = _x11.XKeysymToKeycode(self.handle, _x11.XStringToKeysym(b"Shift_L"))
+        if shift:
+            _xtst.XTestFakeKeyEvent(self.handle, shift_code, 1, 0)
+        _xtst.XTestFakeKeyEvent(self.handle, code, 1, 0)
+        self.flush(0.4)
+        _xtst.XTestFakeKeyEvent(self.handle, code, 0, 0)
+        if shift:
+            _xtst.XTestFakeKeyEvent(self.handle, shift_code, 0, 0)
+        self.flush(0.3)
+
+    def move(self, x, y, pause=0.05):
+        _xtst.XTestFakeMotionEvent(self.handle, -1, x, y, 0)
+        self.flush(pause)
+
+    def button(self, b, down):
+        _xtst.XTestFakeButtonEvent(self.handle, b, 1 if down else 0, 0)
+        self.flush(0.3)
