@@ -360,11 +360,15 @@ Scene parseScene(const std::string& text, const std::string& fileLabel, const st
     json root;
     try {
         root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    } catch (const json::exception& e) {
+        // parse_error ("[json.exception.parse_error.101] parse error at line 3, column 5: ...") and
+        // out_of_range for numbers too large for a double ("... number overflow parsing '1e999'").
         std::string what = e.what();
-        const size_t at = what.find("parse error");
-        throw InputError(fileLabel + ": malformed JSON: " + (at == std::string::npos ? what : what.substr(at)));
+        const size_t bracket = what.find("] ");
+        if (what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) what = what.substr(bracket + 2);
+        for (char& c : what)
+            if (c == '\n') c = ' ';
+        throw InputError(fileLabel + ": malformed JSON: " + what);
     }
     Scene s = SceneReader(fileLabel, baseDir).read(root);
     s.sourcePath = fileLabel;

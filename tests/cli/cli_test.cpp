@@ -1,5 +1,6 @@
 // The shadelab executable as a user (or CI) runs it: headless output with no display, one-line errors
 // with exit status 2 and no output file for every kind of bad input, the benchmark's JSON lines.
+#include "cli/run_shadelab.hpp"
 #include "core/image.hpp"
 
 #include <gtest/gtest.h>
@@ -9,30 +10,14 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 using namespace shadelab;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::RunResult;
+using test::slurp;
 
 class Cli : public ::testing::Test {
 protected:
@@ -42,17 +27,7 @@ protected:
         fs::create_directories(dir_);
     }
     // Runs shadelab with no display (DISPLAY and WAYLAND_DISPLAY unset), as CI does.
-    RunResult run(const std::vector<std::string>& args) const {
-        std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + quote(SHADELAB_EXE);
-        for (const auto& a : args) cmd += " " + quote(a);
-        cmd += " >" + quote((dir_ / "stdout").string()) + " 2>" + quote((dir_ / "stderr").string());
-        const int status = std::system(cmd.c_str());
-        RunResult r;
-        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-        r.out = slurp(dir_ / "stdout");
-        r.err = slurp(dir_ / "stderr");
-        return r;
-    }
+    RunResult run(const std::vector<std::string>& args) const { return test::runShadelab(args, fs::current_path(), dir_); }
     std::string file(const std::string& name, const std::string& contents) const {
         std::ofstream(dir_ / name) << contents;
         return (dir_ / name).string();
