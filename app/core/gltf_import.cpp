@@ -28,6 +28,9 @@ constexpr std::size_t kMaxTriangles = 50'000'000;
 // an absolute path elsewhere, or one that climbs out with ".." is refused before anything is opened.
 bool insideFolder(const std::string& p, const fs::path& root) {
     if (p.find("://") != std::string::npos) return false;
+    // tinygltf joins every URI onto the folder: an absolute URI arrives as "<folder>//etc/passwd".
+    const std::string prefix = root.string() + "/";
+    if (p.size() > prefix.size() && p.compare(0, prefix.size(), prefix) == 0 && p[prefix.size()] == '/') return false;
     std::error_code ec;
     const fs::path full = fs::absolute(fs::path(p), ec).lexically_normal();
     if (ec) return false;
@@ -412,10 +415,18 @@ Mesh GltfReader::read() {
 }  // namespace
 
 Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
-    GltfInfo info;
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) throw InputError(path + ": cannot read: no such file");
+    const std::string bytes = readTextFile(path, std::uint64_t(1) << 31);
     const fs::path folder = fs::absolute(fs::path(path), ec).parent_path().lexically_normal();
+    return loadGltfFromMemory(bytes, path, folder.string(), infoOut);
+}
+
+Mesh loadGltfFromMemory(const std::string& bytes, const std::string& label, const std::string& folderName,
+                        GltfInfo* infoOut) {
+    const std::string& path = label;
+    GltfInfo info;
+    const fs::path folder(folderName);
 
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks fsc{};
@@ -460,9 +471,13 @@ Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
 
     tinygltf::Model model;
     std::string err, warn;
-    const bool binary = hasExtension(path, ".glb");
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    // A .glb starts with the magic "glTF"; anything else is read as JSON.
+    const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    const auto length = static_cast<unsigned int>(bytes.size());
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                                         reinterpret_cast<const unsigned char*>(bytes.data()), length,
+                                                         folder.string())
+                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), length, folder.string());
     if (!ok || !err.empty()) {
         std::string msg = err.empty() ? "not a valid glTF file" : err;
         while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
