@@ -67,18 +67,21 @@ int run(const std::vector<std::string>& args) {
     // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
     const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
     const ShaderLibrary shaders(shaderDir);
+    const HeadlessBackend backend = options.backend == "egl"      ? HeadlessBackend::Egl
+                                    : options.backend == "osmesa" ? HeadlessBackend::OsMesa
+                                                                  : HeadlessBackend::Auto;
 
     if (options.benchmarkFrames > 0) {
         std::vector<ShadingMode> modes;
         if (scene.layout == Layout::Compare) modes = {scene.shading};
         else if (options.shading) modes = {*options.shading};
         else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
-        for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders))
+        for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders, backend))
             std::cout << toJson(r) << std::endl;
         return 0;
     }
     if (options.output) {
-        const Image image = renderHeadless(scene, geometry, shaders);
+        const Image image = renderHeadless(scene, geometry, shaders, backend);
         writePng(*options.output, image);
         if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << "\n";
         return 0;

@@ -81,6 +81,11 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--ke") o.ke = parseFloat(arg, next());
         else if (arg == "--mesh") o.mesh = parseMeshShorthand(next(), arg);
         else if (arg == "--shader-dir") o.shaderDir = next();
+        else if (arg == "--backend") {
+            o.backend = next();
+            if (o.backend != "auto" && o.backend != "osmesa" && o.backend != "egl")
+                throw InputError(arg + ": unknown value \"" + o.backend + "\" (expected one of auto, osmesa, egl)");
+        }
         else if (arg == "--benchmark") o.benchmarkFrames = parseInt(arg, next(), 1, 1000000);
         else if (arg == "--frames") o.frames = parseInt(arg, next(), 1, 100000000);
         else if (arg == "--screenshot") o.screenshot = next();
@@ -169,6 +174,8 @@ Without --output (or --benchmark) it opens the interactive viewer.
   --mesh SPEC             replace the first object's mesh: uvsphere[:slices[:stacks]], icosphere[:n],
                           torus[:major[:minor]], cube, plane[:n], or a .gltf/.glb file
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
+  --backend NAME          headless OpenGL for --output/--benchmark: osmesa, egl, or auto (OSMesa,
+                          else EGL)
   --shader-dir DIR        read GLSL files from DIR when present (default: the checkout's shaders/
                           when it exists, else the built-in copies)
   --info                  print what was loaded (meshes, triangles, bounds, normals) and exit

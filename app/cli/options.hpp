@@ -20,6 +20,7 @@ struct Options {
     std::optional<MeshSpec> mesh;           // --mesh: replaces the first object's mesh
     int benchmarkFrames = 0;                // --benchmark N
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
+    std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context
     bool info = false;                      // --info: print what was loaded, render nothing
     // Viewer only (not with --output/--benchmark); these make the window scriptable:
     int frames = 0;                         // --frames N: quit after N frames (0: when the window closes)

@@ -1,6 +1,5 @@
 #include "headless/headless.hpp"
 
-#include "headless/osmesa_context.hpp"
 #include "render/renderer.hpp"
 
 #include <glm/trigonometric.hpp>
@@ -12,23 +11,24 @@
 
 namespace shadelab {
 
-Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders) {
-    OsMesaContext context(scene.width, scene.height);
-    Renderer renderer(OsMesaContext::getProcAddress(), shaders);
+Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders,
+                     HeadlessBackend backend) {
+    const auto context = makeHeadlessContext(backend, scene.width, scene.height);
+    Renderer renderer(context->getProcAddress(), shaders);
     renderer.setGeometry(std::move(geometry));
-    const RenderTarget target{0, scene.width, scene.height};
+    const RenderTarget target = context->target();
     renderer.render(scene, target);
     return readPixels(target);
 }
 
 std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
-                                               const ShaderLibrary& shaders) {
-    OsMesaContext context(scene.width, scene.height);
-    Renderer renderer(OsMesaContext::getProcAddress(), shaders);
+                                               const ShaderLibrary& shaders, HeadlessBackend backend) {
+    const auto context = makeHeadlessContext(backend, scene.width, scene.height);
+    Renderer renderer(context->getProcAddress(), shaders);
     const std::size_t triangles = geometry->triangleCount() * (scene.layout == Layout::Compare ? 3 : 1);
     renderer.setGeometry(std::move(geometry));
-    const RenderTarget target{0, scene.width, scene.height};
+    const RenderTarget target = context->target();
     std::vector<BenchmarkResult> results;
     for (ShadingMode mode : modes) {
         Scene s = scene;
@@ -58,6 +58,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
         r.minMs = ms.front();
         r.maxMs = ms.back();
         r.glRenderer = renderer.glRenderer();
+        r.backend = context->backendName();
         results.push_back(r);
     }
     return results;
@@ -67,10 +68,11 @@ std::string toJson(const BenchmarkResult& r) {
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "{\"frames\": %d, \"triangles\": %zu, \"size\": [%d, %d], \"shading\": \"%s\", \"layout\": \"%s\", "
-                  "\"median_ms\": %.3f, \"p95_ms\": %.3f, \"min_ms\": %.3f, \"max_ms\": %.3f, \"gl_renderer\": \"%s\"}",
+                  "\"median_ms\": %.3f, \"p95_ms\": %.3f, \"min_ms\": %.3f, \"max_ms\": %.3f, \"backend\": \"%s\", "
+                  "\"gl_renderer\": \"%s\"}",
                   r.frames, r.triangles, r.width, r.height,
                   r.layout == Layout::Compare ? "compare" : toString(r.mode), toString(r.layout), r.medianMs, r.p95Ms,
-                  r.minMs, r.maxMs, r.glRenderer.c_str());
+                  r.minMs, r.maxMs, r.backend.c_str(), r.glRenderer.c_str());
     return buf;
 }
 

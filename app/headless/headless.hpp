@@ -3,6 +3,7 @@
 #include "core/image.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
+#include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
 
 #include <memory>
@@ -11,7 +12,7 @@
 namespace shadelab {
 
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
-                     const ShaderLibrary& shaders = ShaderLibrary());
+                     const ShaderLibrary& shaders = ShaderLibrary(), HeadlessBackend backend = HeadlessBackend::Auto);
 
 struct BenchmarkResult {
     ShadingMode mode = ShadingMode::Phong;
@@ -21,13 +22,15 @@ struct BenchmarkResult {
     int width = 0, height = 0;
     double medianMs = 0, p95Ms = 0, minMs = 0, maxMs = 0;
     std::string glRenderer;
+    std::string backend;
 };
 // Renders `warmup + frames` frames of each mode (glFinish after each, as ../shared/bench/probe.cpp
 // does) and reports per-frame times of the last `frames`. The objects turn by 0.01 rad about y per
 // frame, like the probe's sphere, so no frame repeats the previous one.
 std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
-                                               const ShaderLibrary& shaders = ShaderLibrary());
+                                               const ShaderLibrary& shaders = ShaderLibrary(),
+                                               HeadlessBackend backend = HeadlessBackend::Auto);
 std::string toJson(const BenchmarkResult& r);
 
 }  // namespace shadelab

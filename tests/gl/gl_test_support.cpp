@@ -7,15 +7,21 @@
 #include <glm/matrix.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 namespace shadelab::test {
+
+HeadlessBackend backendUnderTest() {
+    const char* b = std::getenv("SHADELAB_TEST_BACKEND");
+    return (b && std::string(b) == "egl") ? HeadlessBackend::Egl : HeadlessBackend::OsMesa;
+}
 
 Rendered renderScene(const Scene& scene) {
     Rendered r;
     r.scene = scene;
     r.geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
-    r.image = renderHeadless(scene, r.geometry);
+    r.image = renderHeadless(scene, r.geometry, ShaderLibrary(), backendUnderTest());
     return r;
 }
 

@@ -5,6 +5,7 @@
 #include "core/image.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
+#include "headless/headless_context.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -13,6 +14,10 @@
 #include <string>
 
 namespace shadelab::test {
+
+// The headless backend the GL tests run on: SHADELAB_TEST_BACKEND=osmesa|egl (CTest registers the GL
+// tests once for each), OSMesa when unset.
+HeadlessBackend backendUnderTest();
 
 struct Rendered {
     Scene scene;

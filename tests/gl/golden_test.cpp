@@ -42,7 +42,7 @@ TEST_P(Golden, MatchesBaseline) {
     Rendered r;
     r.scene = scene;
     r.geometry = geometry;
-    r.image = renderHeadless(scene, geometry);
+    r.image = renderHeadless(scene, geometry, ShaderLibrary(), backendUnderTest());
     const std::string golden = root + "/tests/golden/" + name + ".png";
     if (std::getenv("SHADELAB_UPDATE_GOLDENS")) {
         writePng(golden, r.image, 9);

@@ -3,7 +3,6 @@
 // for a person to look at.
 #include "core/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
-#include "headless/osmesa_context.hpp"
 #include "render/renderer.hpp"
 
 #include <gtest/gtest.h>
@@ -35,8 +34,9 @@ TEST(SharedModels, RenderInEveryMode) {
             files.push_back(e.path());
     std::sort(files.begin(), files.end());
     ASSERT_GE(files.size(), 44u);
-    OsMesaContext context(96, 96);
-    Renderer renderer(OsMesaContext::getProcAddress());
+    const auto context = makeHeadlessContext(test::backendUnderTest(), 96, 96);
+    Renderer renderer(context->getProcAddress());
+    const RenderTarget target = context->target();
     int drawn = 0;
     for (const fs::path& file : files) {
         SCOPED_TRACE(file.string());
@@ -47,8 +47,8 @@ TEST(SharedModels, RenderInEveryMode) {
         renderer.setGeometry(geometry);
         for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
             scene.shading = mode;
-            ASSERT_NO_THROW(renderer.render(scene, RenderTarget{0, 96, 96}));
-            const Image image = readPixels(RenderTarget{0, 96, 96});
+            ASSERT_NO_THROW(renderer.render(scene, target));
+            const Image image = readPixels(target);
             const std::size_t covered = compareImages(image, filled(96, 96, test::quantize(scene.background)), 0).failingPixels;
             if (geometry->triangleCount() > 0) {
                 EXPECT_GT(covered, 30u) << toString(mode) << ": the model is not visible";

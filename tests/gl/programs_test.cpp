@@ -2,7 +2,7 @@
 // on locations, bindings and std140 layout, reports errors with file and line, and draws without
 // GL errors into any framebuffer it is handed.
 #include "gl/gl_test_support.hpp"
-#include "headless/osmesa_context.hpp"
+#include "headless/headless_context.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 #include "render/renderer.hpp"
@@ -19,10 +19,10 @@ namespace {
 class GlContext : public ::testing::Test {
 protected:
     void SetUp() override {
-        context_ = std::make_unique<OsMesaContext>(64, 64);
-        ASSERT_NE(gladLoadGL(OsMesaContext::getProcAddress()), 0);
+        context_ = makeHeadlessContext(test::backendUnderTest(), 64, 64);
+        ASSERT_NE(gladLoadGL(context_->getProcAddress()), 0);
     }
-    std::unique_ptr<OsMesaContext> context_;
+    std::unique_ptr<HeadlessContext> context_;
 };
 
 GLint uniformOffset(GLuint program, const char* name) {
@@ -114,8 +114,8 @@ TEST_F(GlContext, CompileErrorsNameProgramStageFileAndLine) {
     std::filesystem::remove_all(dir);
 }
 
-// The renderer draws into whatever framebuffer it is handed: an FBO gives the same pixels as the
-// context's default framebuffer.
+// The renderer draws into whatever framebuffer it is handed: a second FBO gives the same pixels as the
+// context's own target (OSMesa's default framebuffer, or EGL's FBO).
 TEST_F(GlContext, RendersIntoAnyFramebufferWithoutGlErrors) {
     Scene scene;
     scene.width = 64;
@@ -124,10 +124,10 @@ TEST_F(GlContext, RendersIntoAnyFramebufferWithoutGlErrors) {
     scene.objects[0].mesh = MeshSpec{};
     scene.objects[0].mesh.slices = 16;
     scene.objects[0].mesh.stacks = 8;
-    Renderer renderer(OsMesaContext::getProcAddress());
+    Renderer renderer(context_->getProcAddress());
     renderer.setGeometry(std::make_shared<SceneGeometry>(buildSceneGeometry(scene)));
-    renderer.render(scene, RenderTarget{0, 64, 64});
-    const Image viaDefault = readPixels(RenderTarget{0, 64, 64});
+    renderer.render(scene, context_->target());
+    const Image viaDefault = readPixels(context_->target());
 
     GLuint fbo = 0, color = 0, depth = 0;
     glGenFramebuffers(1, &fbo);

@@ -1,0 +1,140 @@
+#include "headless/egl_context.hpp"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <dlfcn.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace shadelab {
+namespace {
+
+struct EglApi {
+    PFNEGLGETPROCADDRESSPROC getProcAddress = nullptr;
+    PFNEGLQUERYSTRINGPROC queryString = nullptr;
+    PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay = nullptr;
+    PFNEGLQUERYDEVICESEXTPROC queryDevices = nullptr;
+    PFNEGLINITIALIZEPROC initialize = nullptr;
+    PFNEGLTERMINATEPROC terminate = nullptr;
+    PFNEGLBINDAPIPROC bindApi = nullptr;
+    PFNEGLCREATECONTEXTPROC createContext = nullptr;
+    PFNEGLDESTROYCONTEXTPROC destroyContext = nullptr;
+    PFNEGLMAKECURRENTPROC makeCurrent = nullptr;
+    PFNEGLGETERRORPROC getError = nullptr;
+};
+
+const EglApi& api() {
+    static const EglApi loaded = [] {
+        EglApi a;
+        // Never dlclose'd: drivers keep global state.
+        void* lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+        if (!lib) return a;
+        a.getProcAddress = reinterpret_cast<PFNEGLGETPROCADDRESSPROC>(dlsym(lib, "eglGetProcAddress"));
+        if (!a.getProcAddress) return a;
+        auto get = [&](const char* name) { return a.getProcAddress(name); };
+        a.queryString = reinterpret_cast<PFNEGLQUERYSTRINGPROC>(get("eglQueryString"));
+        a.getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(get("eglGetPlatformDisplayEXT"));
+        a.queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(get("eglQueryDevicesEXT"));
+        a.initialize = reinterpret_cast<PFNEGLINITIALIZEPROC>(get("eglInitialize"));
+        a.terminate = reinterpret_cast<PFNEGLTERMINATEPROC>(get("eglTerminate"));
+        a.bindApi = reinterpret_cast<PFNEGLBINDAPIPROC>(get("eglBindAPI"));
+        a.createContext = reinterpret_cast<PFNEGLCREATECONTEXTPROC>(get("eglCreateContext"));
+        a.destroyContext = reinterpret_cast<PFNEGLDESTROYCONTEXTPROC>(get("eglDestroyContext"));
+        a.makeCurrent = reinterpret_cast<PFNEGLMAKECURRENTPROC>(get("eglMakeCurrent"));
+        a.getError = reinterpret_cast<PFNEGLGETERRORPROC>(get("eglGetError"));
+        return a;
+    }();
+    if (!loaded.getProcAddress || !loaded.getPlatformDisplay || !loaded.initialize || !loaded.createContext ||
+        !loaded.makeCurrent)
+        throw std::runtime_error("EGL headless rendering needs libEGL.so.1 with EGL_EXT_platform_base "
+                                 "(Debian packages libegl1 and libegl-mesa0)");
+    return loaded;
+}
+
+bool hasExtension(const char* list, const char* name) {
+    if (!list) return false;
+    const size_t n = std::strlen(name);
+    for (const char* p = std::strstr(list, name); p; p = std::strstr(p + 1, name))
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+    return false;
+}
+
+GLADapiproc loadGlFunction(const char* name) { return reinterpret_cast<GLADapiproc>(api().getProcAddress(name)); }
+
+std::string eglError(const char* what) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", api().getError ? unsigned(api().getError()) : 0u);
+    return std::string("EGL: ") + what + " failed (error " + code + ")";
+}
+
+}  // namespace
+
+EglContext::EglContext(int width, int height) {
+    const EglApi& egl = api();
+    const char* clientExtensions = egl.queryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    EGLDisplay display = EGL_NO_DISPLAY;
+    // Mesa's surfaceless platform needs no window system and no GPU (llvmpipe when there is none).
+    if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
+        display = egl.getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    // Other drivers (NVIDIA's) offer their GPUs as EGL devices.
+    if (display == EGL_NO_DISPLAY && hasExtension(clientExtensions, "EGL_EXT_platform_device") && egl.queryDevices) {
+        EGLDeviceEXT devices[8];
+        EGLint count = 0;
+        if (egl.queryDevices(8, devices, &count) && count > 0)
+            display = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[0], nullptr);
+    }
+    if (display == EGL_NO_DISPLAY) throw std::runtime_error("EGL: no surfaceless platform and no EGL device");
+    EGLint major = 0, minor = 0;
+    if (!egl.initialize(display, &major, &minor)) throw std::runtime_error(eglError("eglInitialize"));
+    display_ = display;
+    if (!egl.bindApi(EGL_OPENGL_API)) throw std::runtime_error(eglError("eglBindAPI(OpenGL)"));
+    // No config and no surface (EGL_KHR_no_config_context, EGL_KHR_surfaceless_context): the
+    // renderer draws into the FBO made below.
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    context_ = egl.createContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
+    if (!context_) throw std::runtime_error(eglError("eglCreateContext (OpenGL 3.3 core)"));
+    if (!egl.makeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+        throw std::runtime_error(eglError("eglMakeCurrent (surfaceless)"));
+    if (!gladLoadGL(&loadGlFunction)) throw std::runtime_error("EGL: could not load OpenGL entry points");
+    resize(width, height);
+}
+
+EglContext::~EglContext() {
+    framebuffer_.reset();
+    color_.reset();
+    depth_.reset();
+    const EglApi& egl = api();
+    if (context_) {
+        egl.makeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        egl.destroyContext(display_, context_);
+    }
+    if (display_) egl.terminate(display_);
+}
+
+GLADloadfunc EglContext::getProcAddress() const { return &loadGlFunction; }
+
+void EglContext::resize(int width, int height) {
+    GLuint ids[3] = {0, 0, 0};
+    glGenFramebuffers(1, &ids[0]);
+    glGenRenderbuffers(2, &ids[1]);
+    framebuffer_ = gl::Framebuffer(ids[0]);
+    color_ = gl::Renderbuffer(ids[1]);
+    depth_ = gl::Renderbuffer(ids[2]);
+    glBindRenderbuffer(GL_RENDERBUFFER, color_.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("EGL: the " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " framebuffer is incomplete");
+    width_ = width;
+    height_ = height;
+}
+
+}  // namespace shadelab

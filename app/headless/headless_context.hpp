@@ -1,0 +1,29 @@
+#pragma once
+// An offscreen OpenGL context for rendering with no display: OSMesa (Mesa's software renderer, Debian
+// 12's default) or EGL (surfaceless, or a GPU through EGL_EXT_platform_device; Mesa 25.1 removed
+// OSMesa). The renderer sees only getProcAddress() and target().
+#include "render/renderer.hpp"
+
+#include <memory>
+#include <string>
+
+namespace shadelab {
+
+enum class HeadlessBackend { Auto, OsMesa, Egl };
+
+class HeadlessContext {
+public:
+    virtual ~HeadlessContext() = default;
+    virtual GLADloadfunc getProcAddress() const = 0;
+    // Where to draw: OSMesa's own framebuffer (0), or an FBO for EGL.
+    virtual RenderTarget target() const = 0;
+    virtual void resize(int width, int height) = 0;
+    virtual const char* backendName() const = 0;
+};
+
+// Auto tries OSMesa, then EGL. Throws std::runtime_error saying what is missing for each.
+std::unique_ptr<HeadlessContext> makeHeadlessContext(HeadlessBackend backend, int width, int height);
+
+const char* toString(HeadlessBackend b);
+
+}  // namespace shadelab
