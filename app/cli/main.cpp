@@ -10,6 +10,7 @@
 #include "render/program.hpp"
 #include "viewer/viewer.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -20,6 +21,11 @@
 
 namespace shadelab {
 namespace {
+
+struct Stopwatch {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
+};
 
 int run(const std::vector<std::string>& args) {
     const Options options = parseOptions(args);
@@ -36,8 +42,10 @@ int run(const std::vector<std::string>& args) {
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
     Scene scene = sceneFromOptions(options);
+    const Stopwatch clock;
     auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
     frameIfNeeded(scene, *geometry);
+    const double loadedMs = clock.ms();
     if (options.info) {
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             const MeshSpec& spec = scene.objects[i].mesh;
@@ -82,8 +90,11 @@ int run(const std::vector<std::string>& args) {
     }
     if (options.output) {
         const Image image = renderHeadless(scene, geometry, shaders, backend);
+        const double renderedMs = clock.ms();
         writePng(*options.output, image);
-        if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << "\n";
+        if (options.verbose)
+            std::cerr << "shadelab: wrote " << *options.output << " (geometry " << loadedMs << " ms, context + render + "
+                      << "read-back " << renderedMs - loadedMs << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
         return 0;
     }
     ViewerOptions viewer;

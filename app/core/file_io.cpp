@@ -27,10 +27,16 @@ std::string readTextFile(const std::string& path, std::uint64_t maxBytes) {
         throw InputError(path + ": cannot read: larger than " + std::to_string(maxBytes >> 20) + " MiB");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
-    std::ostringstream s;
-    s << in.rdbuf();
-    if (in.bad()) throw InputError(path + ": cannot read: I/O error");
-    return s.str();
+    // One read into a buffer of the file's size: models can be hundreds of MB.
+    std::string data(ec ? 0 : std::size_t(size), '\0');
+    in.read(data.data(), std::streamsize(data.size()));
+    if (std::size_t(in.gcount()) != data.size()) throw InputError(path + ": cannot read: I/O error");
+    if (ec) {  // size unknown (a pipe): read to the end
+        std::ostringstream s;
+        s << in.rdbuf();
+        data = s.str();
+    }
+    return data;
 }
 
 bool hasExtension(const std::string& path, const std::string& ext) {

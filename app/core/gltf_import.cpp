@@ -63,6 +63,8 @@ private:
     View view(int accessorIndex, const std::string& where, const std::vector<int>& allowedTypes,
               const std::vector<int>& allowedComponentTypes) const;
     static float component(const View& v, std::size_t i, int c);
+    // All elements of a float VEC3 accessor (POSITION, NORMAL): memcpy per element, not per component.
+    static std::vector<glm::vec3> readVec3(const View& v);
     std::vector<std::uint32_t> indices(int accessorIndex, std::size_t vertexCount, const std::string& where) const;
     void checkRange(int bufferViewIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
                     std::size_t count, const std::string& where, std::size_t* strideOut,
@@ -159,6 +161,18 @@ GltfReader::View GltfReader::view(int ai, const std::string& where, const std::v
     return v;
 }
 
+std::vector<glm::vec3> GltfReader::readVec3(const View& v) {
+    std::vector<glm::vec3> out(v.count);
+    if (!v.sparseValues.empty()) {
+        std::memcpy(out.data(), v.sparseValues.data(), v.count * sizeof(glm::vec3));
+    } else if (v.stride == sizeof(glm::vec3)) {
+        if (v.count) std::memcpy(out.data(), v.base, v.count * sizeof(glm::vec3));
+    } else {
+        for (std::size_t i = 0; i < v.count; ++i) std::memcpy(&out[i], v.base + i * v.stride, sizeof(glm::vec3));
+    }
+    return out;
+}
+
 float GltfReader::component(const View& v, std::size_t i, int c) {
     if (!v.sparseValues.empty()) return v.sparseValues[i * std::size_t(v.components) + std::size_t(c)];
     const unsigned char* p = v.base + i * v.stride;
@@ -203,19 +217,31 @@ std::vector<std::uint32_t> GltfReader::indices(int ai, std::size_t vertexCount, 
     const std::uint32_t restart = v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 0xffu
                                   : v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 0xffffu
                                                                                               : 0xffffffffu;
-    for (std::size_t i = 0; i < v.count; ++i) {
-        std::uint32_t x;
-        if (!v.sparseValues.empty()) {
-            x = std::uint32_t(v.sparseValues[i]);
-        } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
-            x = v.base[i * v.stride];
-        } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
-            std::uint16_t s;
-            std::memcpy(&s, v.base + i * v.stride, 2);
-            x = s;
-        } else {
-            std::memcpy(&x, v.base + i * v.stride, 4);
+    // Widen to 32 bits first (a loop per type, so the compiler vectorises it), then check.
+    if (!v.sparseValues.empty()) {
+        for (std::size_t i = 0; i < v.count; ++i) out[i] = std::uint32_t(v.sparseValues[i]);
+    } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+        for (std::size_t i = 0; i < v.count; ++i) out[i] = v.base[i * v.stride];
+    } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+        for (std::size_t i = 0; i < v.count; ++i) {
+            std::uint16_t x;
+            std::memcpy(&x, v.base + i * v.stride, 2);
+            out[i] = x;
         }
+    } else if (v.stride == 4) {
+        if (v.count) std::memcpy(out.data(), v.base, v.count * 4);
+    } else {
+        for (std::size_t i = 0; i < v.count; ++i) std::memcpy(&out[i], v.base + i * v.stride, 4);
+    }
+    std::uint32_t largest = 0;
+    bool restartSeen = false;
+    for (std::uint32_t x : out) {
+        largest = std::max(largest, x);
+        restartSeen = restartSeen || x == restart;
+    }
+    if (!restartSeen && largest < vertexCount) return out;
+    for (std::size_t i = 0; i < v.count; ++i) {  // name the first offending index
+        const std::uint32_t x = out[i];
         if (x == restart)
             fail(where + " indices (accessor " + std::to_string(ai) + ")",
                  "index " + std::to_string(i) + " is the primitive-restart value " + std::to_string(x) +
@@ -223,7 +249,6 @@ std::vector<std::uint32_t> GltfReader::indices(int ai, std::size_t vertexCount, 
         if (x >= vertexCount)
             fail(where + " indices (accessor " + std::to_string(ai) + ")",
                  "index " + std::to_string(x) + " is out of range (" + std::to_string(vertexCount) + " vertices)");
-        out[i] = x;
     }
     return out;
 }
@@ -263,9 +288,8 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     // and its indices (if any) point at nothing: refuse the file rather than guess.
     if (posIt == p.attributes.end()) fail(where, "has no POSITION attribute");
     const View pos = view(posIt->second, where + " POSITION", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
-    std::vector<glm::vec3> positions(pos.count);
+    std::vector<glm::vec3> positions = readVec3(pos);
     for (std::size_t i = 0; i < pos.count; ++i) {
-        positions[i] = {component(pos, i, 0), component(pos, i, 1), component(pos, i, 2)};
         if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
             fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
                  "vertex " + std::to_string(i) + " is not finite");
@@ -279,7 +303,8 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     }
     std::vector<std::uint32_t> tris;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
-        tris.assign(order.begin(), order.begin() + std::ptrdiff_t(order.size() / 3 * 3));
+        order.resize(order.size() / 3 * 3);
+        tris = std::move(order);
     } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
         for (std::size_t i = 2; i < order.size(); ++i) {
             // Every other strip triangle is flipped to keep counter-clockwise winding (glTF spec 3.7.2.1).
@@ -299,11 +324,10 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         if (nv.count != pos.count)
             fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
                  "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(pos.count));
-        normals.resize(nv.count);
-        for (std::size_t i = 0; i < nv.count; ++i) {
-            const glm::vec3 n(component(nv, i, 0), component(nv, i, 1), component(nv, i, 2));
+        normals = readVec3(nv);
+        for (glm::vec3& n : normals) {
             const float l = glm::length(n);
-            normals[i] = (std::isfinite(l) && l > 0.0f) ? n / l : glm::vec3(0.0f, 1.0f, 0.0f);
+            n = (std::isfinite(l) && l > 0.0f) ? n / l : glm::vec3(0.0f, 1.0f, 0.0f);
         }
     } else {
         angleWeightedNormals(positions, tris, normals);
@@ -315,17 +339,27 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
     const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
     const auto base = std::uint32_t(mesh_.positions.size());
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        mesh_.positions.push_back(glm::vec3(world * glm::vec4(positions[i], 1.0f)));
-        const glm::vec3 n = nrmWorld * normals[i];
-        const float l = glm::length(n);
-        mesh_.normals.push_back(l > 0.0f ? n / l : glm::vec3(0.0f, 1.0f, 0.0f));
+    if (world == glm::mat4(1.0f) && mesh_.positions.empty()) {
+        // One untransformed primitive (most models): take the arrays as they are.
+        mesh_.positions = std::move(positions);
+        mesh_.normals = std::move(normals);
+    } else {
+        mesh_.positions.reserve(mesh_.positions.size() + positions.size());
+        mesh_.normals.reserve(mesh_.normals.size() + positions.size());
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            mesh_.positions.push_back(glm::vec3(world * glm::vec4(positions[i], 1.0f)));
+            const glm::vec3 n = nrmWorld * normals[i];
+            const float l = glm::length(n);
+            mesh_.normals.push_back(l > 0.0f ? n / l : glm::vec3(0.0f, 1.0f, 0.0f));
+        }
     }
     const auto firstIndex = std::uint32_t(mesh_.indices.size());
-    for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
-        mesh_.indices.push_back(base + tris[t]);
-        mesh_.indices.push_back(base + tris[t + (mirrored ? 2 : 1)]);
-        mesh_.indices.push_back(base + tris[t + (mirrored ? 1 : 2)]);
+    mesh_.indices.resize(firstIndex + tris.size() / 3 * 3);
+    std::uint32_t* out = mesh_.indices.data() + firstIndex;
+    for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
+        out[0] = base + tris[t];
+        out[1] = base + tris[t + (mirrored ? 2 : 1)];
+        out[2] = base + tris[t + (mirrored ? 1 : 2)];
     }
     // The primitive's base colour (glTF's default is white); consecutive primitives of one colour
     // share a part, so a many-primitive model does not cost a draw call per primitive.
@@ -417,12 +451,11 @@ Mesh GltfReader::read() {
 Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) throw InputError(path + ": cannot read: no such file");
-    const std::string bytes = readTextFile(path, std::uint64_t(1) << 31);
     const fs::path folder = fs::absolute(fs::path(path), ec).parent_path().lexically_normal();
-    return loadGltfFromMemory(bytes, path, folder.string(), infoOut);
+    return loadGltfFromMemory(readTextFile(path, std::uint64_t(1) << 31), path, folder.string(), infoOut);
 }
 
-Mesh loadGltfFromMemory(const std::string& bytes, const std::string& label, const std::string& folderName,
+Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::string& folderName,
                         GltfInfo* infoOut) {
     const std::string& path = label;
     GltfInfo info;
@@ -478,6 +511,7 @@ Mesh loadGltfFromMemory(const std::string& bytes, const std::string& label, cons
                                                          reinterpret_cast<const unsigned char*>(bytes.data()), length,
                                                          folder.string())
                            : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), length, folder.string());
+    std::string().swap(bytes);  // tinygltf copied what it needs: a large file's bytes need not stay
     if (!ok || !err.empty()) {
         std::string msg = err.empty() ? "not a valid glTF file" : err;
         while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();

@@ -30,7 +30,7 @@ Mesh loadGltf(const std::string& path, GltfInfo* info = nullptr);
 
 // The same from bytes already in memory (a .glb if they start with "glTF", else JSON): `label` names
 // the input in errors, and external URIs resolve against (and are confined to) `folder`.
-Mesh loadGltfFromMemory(const std::string& bytes, const std::string& label, const std::string& folder,
+Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::string& folder,
                         GltfInfo* info = nullptr);
 
 // The lines `shadelab --info` prints for a model.

@@ -188,21 +188,30 @@ FlatMesh makeFlatMesh(const Mesh& m) {
 }
 
 BoundingSphere worldBounds(const std::vector<const Mesh*>& meshes, const std::vector<glm::mat4>& worldFromObject) {
+    // World positions of every mesh (no copy for the common untransformed mesh).
+    auto forEachWorldPosition = [&](auto&& visit) {
+        for (size_t i = 0; i < meshes.size(); ++i) {
+            const glm::mat4& m = worldFromObject[i];
+            if (m == glm::mat4(1.0f)) {
+                for (const glm::vec3& p : meshes[i]->positions) visit(p);
+            } else {
+                for (const glm::vec3& p : meshes[i]->positions) visit(glm::vec3(m * glm::vec4(p, 1.0f)));
+            }
+        }
+    };
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     bool any = false;
-    for (size_t i = 0; i < meshes.size(); ++i)
-        for (const glm::vec3& p : meshes[i]->positions) {
-            const glm::vec3 w = glm::vec3(worldFromObject[i] * glm::vec4(p, 1.0f));
-            lo = glm::min(lo, w);
-            hi = glm::max(hi, w);
-            any = true;
-        }
+    forEachWorldPosition([&](const glm::vec3& w) {
+        lo = glm::min(lo, w);
+        hi = glm::max(hi, w);
+        any = true;
+    });
     BoundingSphere b;
     if (!any) return b;
     b.center = 0.5f * (lo + hi);
-    for (size_t i = 0; i < meshes.size(); ++i)
-        for (const glm::vec3& p : meshes[i]->positions)
-            b.radius = std::max(b.radius, glm::length(glm::vec3(worldFromObject[i] * glm::vec4(p, 1.0f)) - b.center));
+    float radius2 = 0.0f;
+    forEachWorldPosition([&](const glm::vec3& w) { radius2 = std::max(radius2, glm::dot(w - b.center, w - b.center)); });
+    b.radius = std::sqrt(radius2);
     return b;
 }
 

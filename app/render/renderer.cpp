@@ -141,18 +141,23 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     const std::vector<std::uint32_t>* indices = &mesh.indices;
     FlatMesh flatMesh;
     const int floatsPerVertex = flat ? 9 : 6;
+    // Position, normal (and centroid) of a vertex side by side: one buffer, one stride.
+    auto interleave = [&interleaved](std::initializer_list<const std::vector<glm::vec3>*> attributes) {
+        const std::size_t count = (*attributes.begin())->size();
+        interleaved.resize(count * 3 * attributes.size());
+        float* out = interleaved.data();
+        for (std::size_t i = 0; i < count; ++i)
+            for (const std::vector<glm::vec3>* a : attributes) {
+                std::memcpy(out, &(*a)[i], sizeof(glm::vec3));
+                out += 3;
+            }
+    };
     if (flat) {
         flatMesh = makeFlatMesh(mesh);
         indices = &flatMesh.indices;
-        interleaved.reserve(flatMesh.positions.size() * 9);
-        for (std::size_t i = 0; i < flatMesh.positions.size(); ++i)
-            for (const glm::vec3* v : {&flatMesh.positions[i], &flatMesh.normals[i], &flatMesh.centroids[i]})
-                interleaved.insert(interleaved.end(), {v->x, v->y, v->z});
+        interleave({&flatMesh.positions, &flatMesh.normals, &flatMesh.centroids});
     } else {
-        interleaved.reserve(mesh.positions.size() * 6);
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-            for (const glm::vec3* v : {&mesh.positions[i], &mesh.normals[i]})
-                interleaved.insert(interleaved.end(), {v->x, v->y, v->z});
+        interleave({&mesh.positions, &mesh.normals});
     }
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices->size() * sizeof(std::uint32_t)), indices->data(),
