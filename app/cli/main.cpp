@@ -42,10 +42,43 @@ int run(const std::vector<std::string>& args) {
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
     Scene scene = sceneFromOptions(options);
+    // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
+    const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
+    const ShaderLibrary shaders(shaderDir);
+    const HeadlessBackend backend = options.backend == "egl"      ? HeadlessBackend::Egl
+                                    : options.backend == "osmesa" ? HeadlessBackend::OsMesa
+                                                                  : HeadlessBackend::Auto;
+    auto report = [&](const Scene& drawn, const std::vector<GltfInfo>& gltfInfo, std::size_t triangles) {
+        for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
+            const GltfInfo& info = gltfInfo[i];
+            const std::string& path = drawn.objects[i].mesh.resolvedPath;
+            for (const std::string& w : info.warnings) std::cerr << "shadelab: warning: " << path << ": " << w << "\n";
+            if (options.verbose && drawn.objects[i].mesh.type == MeshSpec::Type::Gltf) {
+                std::cerr << "shadelab: " << path << ": " << info.triangles << " triangles, " << info.generatedNormals
+                          << " generated normals";
+                if (info.texturesIgnored) std::cerr << ", textures ignored (shadelab shades with material colours only)";
+                std::cerr << "\n";
+            }
+        }
+        if (options.verbose)
+            std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
+                      << drawn.objects.size() << " object(s), " << triangles << " triangles\n";
+    };
     const Stopwatch clock;
+
+    if (options.output && !options.info && options.benchmarkFrames == 0) {
+        const HeadlessFrame frame = renderSceneHeadless(std::move(scene), shaders, backend);
+        report(frame.scene, frame.gltfInfo, frame.triangles);
+        const double renderedMs = clock.ms();
+        writePng(*options.output, frame.image);
+        if (options.verbose)
+            std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
+                      << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
+        return 0;
+    }
+
     auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
     frameIfNeeded(scene, *geometry);
-    const double loadedMs = clock.ms();
     if (options.info) {
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             const MeshSpec& spec = scene.objects[i].mesh;
@@ -58,26 +91,7 @@ int run(const std::vector<std::string>& args) {
         }
         return 0;
     }
-    for (std::size_t i = 0; i < geometry->gltfInfo.size(); ++i) {
-        const GltfInfo& info = geometry->gltfInfo[i];
-        for (const std::string& w : info.warnings)
-            std::cerr << "shadelab: warning: " << scene.objects[i].mesh.resolvedPath << ": " << w << "\n";
-        if (options.verbose && scene.objects[i].mesh.type == MeshSpec::Type::Gltf) {
-            std::cerr << "shadelab: " << scene.objects[i].mesh.resolvedPath << ": " << info.triangles << " triangles, "
-                      << info.generatedNormals << " generated normals";
-            if (info.texturesIgnored) std::cerr << ", textures ignored (shadelab shades with material colours only)";
-            std::cerr << "\n";
-        }
-    }
-    if (options.verbose)
-        std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
-                  << scene.objects.size() << " object(s), " << geometry->triangleCount() << " triangles\n";
-    // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
-    const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
-    const ShaderLibrary shaders(shaderDir);
-    const HeadlessBackend backend = options.backend == "egl"      ? HeadlessBackend::Egl
-                                    : options.backend == "osmesa" ? HeadlessBackend::OsMesa
-                                                                  : HeadlessBackend::Auto;
+    report(scene, geometry->gltfInfo, geometry->triangleCount());
 
     if (options.benchmarkFrames > 0) {
         std::vector<ShadingMode> modes;
@@ -86,15 +100,6 @@ int run(const std::vector<std::string>& args) {
         else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
         for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders, backend))
             std::cout << toJson(r) << std::endl;
-        return 0;
-    }
-    if (options.output) {
-        const Image image = renderHeadless(scene, geometry, shaders, backend);
-        const double renderedMs = clock.ms();
-        writePng(*options.output, image);
-        if (options.verbose)
-            std::cerr << "shadelab: wrote " << *options.output << " (geometry " << loadedMs << " ms, context + render + "
-                      << "read-back " << renderedMs - loadedMs << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
         return 0;
     }
     ViewerOptions viewer;

@@ -354,12 +354,16 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         }
     }
     const auto firstIndex = std::uint32_t(mesh_.indices.size());
-    mesh_.indices.resize(firstIndex + tris.size() / 3 * 3);
-    std::uint32_t* out = mesh_.indices.data() + firstIndex;
-    for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
-        out[0] = base + tris[t];
-        out[1] = base + tris[t + (mirrored ? 2 : 1)];
-        out[2] = base + tris[t + (mirrored ? 1 : 2)];
+    if (firstIndex == 0 && base == 0 && !mirrored) {
+        mesh_.indices = std::move(tris);  // the first primitive, winding kept: its indices as they are
+    } else {
+        mesh_.indices.resize(firstIndex + tris.size());  // tris holds whole triangles
+        std::uint32_t* out = mesh_.indices.data() + firstIndex;
+        for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
+            out[0] = base + tris[t];
+            out[1] = base + tris[t + (mirrored ? 2 : 1)];
+            out[2] = base + tris[t + (mirrored ? 1 : 2)];
+        }
     }
     // The primitive's base colour (glTF's default is white); consecutive primitives of one colour
     // share a part, so a many-primitive model does not cost a draw call per primitive.
@@ -378,7 +382,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     else if (part.indexCount > 0)
         mesh_.parts.push_back(part);
     info_.primitives += 1;
-    info_.triangles += tris.size() / 3;
+    info_.triangles += (mesh_.indices.size() - firstIndex) / 3;
 }
 
 void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {

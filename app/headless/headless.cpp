@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
 
 namespace shadelab {
 
@@ -19,6 +20,44 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
     const RenderTarget target = context->target();
     renderer.render(scene, target);
     return readPixels(target);
+}
+
+HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend) {
+    // buildSceneGeometry only reads `scene`; nothing here writes it until the thread is joined.
+    auto loading = std::async(std::launch::async, [&scene] { return buildSceneGeometry(scene); });
+    std::unique_ptr<HeadlessContext> context;
+    std::unique_ptr<Renderer> renderer;
+    try {
+        context = makeHeadlessContext(backend, scene.width, scene.height);
+        renderer = std::make_unique<Renderer>(context->getProcAddress(), shaders);
+        // Same programs, vertex layout and GL state as the real frame, on one small triangle per object.
+        auto placeholder = std::make_shared<SceneGeometry>();
+        for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+            Mesh m;
+            m.positions = {{0.0f, 0.0f, 0.0f}, {1e-3f, 0.0f, 0.0f}, {0.0f, 1e-3f, 0.0f}};
+            m.normals.assign(3, glm::vec3(0.0f, 0.0f, 1.0f));
+            m.indices = {0, 1, 2};
+            placeholder->meshes.push_back(std::move(m));
+        }
+        renderer->setGeometry(placeholder);
+        renderer->render(scene, context->target());
+        glFinish();
+    } catch (...) {
+        // A broken input file is the more useful error: report it first if there is one.
+        loading.get();
+        throw;
+    }
+    auto geometry = std::make_shared<SceneGeometry>(loading.get());
+    frameIfNeeded(scene, *geometry);
+    HeadlessFrame frame;
+    frame.gltfInfo = geometry->gltfInfo;
+    frame.triangles = geometry->triangleCount();
+    renderer->setGeometry(std::move(geometry));
+    renderer->uploadAndReleaseCpuGeometry(scene);
+    renderer->render(scene, context->target());
+    frame.image = readPixels(context->target());
+    frame.scene = std::move(scene);
+    return frame;
 }
 
 std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,

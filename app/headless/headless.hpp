@@ -14,6 +14,19 @@ namespace shadelab {
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
                      const ShaderLibrary& shaders = ShaderLibrary(), HeadlessBackend backend = HeadlessBackend::Auto);
 
+// One frame of a scene whose geometry is not built yet, as `shadelab --output` needs it. The geometry
+// is built (and the camera framed, frameIfNeeded) on a second thread while this one creates the
+// context, compiles the programs and draws a placeholder triangle per object, so llvmpipe compiles
+// its draw code for the scene's state meanwhile: for a large model that overlap is most of the
+// start-up time. The CPU copy of the geometry is released once uploaded.
+struct HeadlessFrame {
+    Image image;
+    Scene scene;                      // as drawn (with the framed camera)
+    std::vector<GltfInfo> gltfInfo;   // per object, as buildSceneGeometry() reported it
+    std::size_t triangles = 0;
+};
+HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend);
+
 struct BenchmarkResult {
     ShadingMode mode = ShadingMode::Phong;
     Layout layout = Layout::Single;

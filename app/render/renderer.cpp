@@ -110,6 +110,18 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     geometry_ = std::move(geometry);
     gpuMeshes_.clear();
     gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
+    objectParts_.clear();
+    if (!geometry_) return;
+    for (const Mesh& mesh : geometry_->meshes) {
+        objectParts_.push_back(mesh.parts);
+        if (mesh.parts.empty()) objectParts_.back().push_back(MeshPart{0, std::uint32_t(mesh.indices.size()), false, {}});
+    }
+}
+
+void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
+    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1))
+        for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) gpuMesh(o, pane.mode);
+    geometry_.reset();
 }
 
 void Renderer::preparePrograms(const Scene& scene) {
@@ -129,58 +141,41 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     const bool flat = mode == ShadingMode::Flat;
     GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
     if (g.vao) return g;
+    if (!geometry_) throw std::logic_error("renderer: a shading mode that was not uploaded before the CPU geometry was released");
     const Mesh& mesh = geometry_->meshes[object];
     g.vao = gl::makeVertexArray();
-    g.vertices = gl::makeBuffer();
     g.indices = gl::makeBuffer();
     glBindVertexArray(g.vao.get());
-    glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.get());
-    // Interleaved vertices: position, normal (and for flat, centroid), 3 floats each.
-    std::vector<float> interleaved;
-    const std::vector<std::uint32_t>* indices = &mesh.indices;
+    // One buffer per attribute, each at offset 0, uploaded straight from the mesh: no interleaved copy
+    // of a large model, and a vertex layout that does not depend on the mesh's size (so llvmpipe's
+    // draw code compiled for one mesh serves the next; see renderSceneHeadless()).
     FlatMesh flatMesh;
-    const int floatsPerVertex = flat ? 9 : 6;
-    // Position, normal (and centroid) of a vertex side by side: one buffer, one stride.
-    auto interleave = [&interleaved](std::initializer_list<const std::vector<glm::vec3>*> attributes) {
-        const std::size_t count = (*attributes.begin())->size();
-        interleaved.resize(count * 3 * attributes.size());
-        float* out = interleaved.data();
-        for (std::size_t i = 0; i < count; ++i)
-            for (const std::vector<glm::vec3>* a : attributes) {
-                std::memcpy(out, &(*a)[i], sizeof(glm::vec3));
-                out += 3;
-            }
-    };
-    if (flat) {
-        flatMesh = makeFlatMesh(mesh);
-        indices = &flatMesh.indices;
-        interleave({&flatMesh.positions, &flatMesh.normals, &flatMesh.centroids});
-    } else {
-        interleave({&mesh.positions, &mesh.normals});
+    if (flat) flatMesh = makeFlatMesh(mesh);
+    const std::vector<std::uint32_t>& indices = flat ? flatMesh.indices : mesh.indices;
+    const std::vector<glm::vec3>* arrays[3] = {flat ? &flatMesh.positions : &mesh.positions,
+                                               flat ? &flatMesh.normals : &mesh.normals,
+                                               flat ? &flatMesh.centroids : nullptr};
+    const GLuint locations[3] = {SL_ATTRIB_POSITION, SL_ATTRIB_NORMAL, SL_ATTRIB_CENTROID};
+    for (std::size_t a = 0; a < 3 && arrays[a]; ++a) {
+        g.attributes[a] = gl::makeBuffer();
+        glBindBuffer(GL_ARRAY_BUFFER, g.attributes[a].get());
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(arrays[a]->size() * sizeof(glm::vec3)), arrays[a]->data(),
+                     GL_STATIC_DRAW);
+        glVertexAttribPointer(locations[a], 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        glEnableVertexAttribArray(locations[a]);
     }
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices->size() * sizeof(std::uint32_t)), indices->data(),
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
                  GL_STATIC_DRAW);
-    const auto stride = GLsizei(floatsPerVertex * sizeof(float));
-    glVertexAttribPointer(SL_ATTRIB_POSITION, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(0));
-    glEnableVertexAttribArray(SL_ATTRIB_POSITION);
-    glVertexAttribPointer(SL_ATTRIB_NORMAL, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
-    glEnableVertexAttribArray(SL_ATTRIB_NORMAL);
-    if (flat) {
-        glVertexAttribPointer(SL_ATTRIB_CENTROID, 3, GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<void*>(6 * sizeof(float)));
-        glEnableVertexAttribArray(SL_ATTRIB_CENTROID);
-    }
     glBindVertexArray(0);
-    g.indexCount = GLsizei(indices->size());
+    g.indexCount = GLsizei(indices.size());
     checkGl("mesh upload");
     return g;
 }
 
 void Renderer::render(const Scene& scene, const RenderTarget& target) {
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height);
-    const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
+    const std::size_t objects = std::min(objectParts_.size(), scene.objects.size());
 
     // One draw per object part (a glTF primitive's base colour, or the whole mesh).
     struct Draw {
@@ -190,10 +185,8 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     };
     std::vector<Draw> draws;
     for (std::size_t o = 0; o < objects; ++o) {
-        const Mesh& mesh = geometry_->meshes[o];
         const Material& m = scene.objects[o].material;
-        if (mesh.parts.empty()) draws.push_back({o, 0, GLsizei(mesh.indices.size()), m.color});
-        for (const MeshPart& part : mesh.parts)
+        for (const MeshPart& part : objectParts_[o])
             draws.push_back({o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
                              (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor});
     }

@@ -33,6 +33,10 @@ public:
 
     // Replaces the meshes; uploads happen lazily, per shading mode, on the next render().
     void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
+    // Uploads now what render(scene) will draw (the meshes in each pane's shading mode), then lets go
+    // of the CPU copy: a one-frame headless render of a large model need not hold it twice. After
+    // this, render() may only use the shading modes of `scene`'s panes.
+    void uploadAndReleaseCpuGeometry(const Scene& scene);
     // Draws all panes of the scene's layout. Throws ShaderError or std::runtime_error on a GL error.
     void render(const Scene& scene, const RenderTarget& target);
     // Compiles the flat, gouraud and phong programs for `scene`'s specialisation now (render()
@@ -45,7 +49,7 @@ public:
 private:
     struct GpuMesh {
         gl::VertexArray vao;
-        gl::Buffer vertices;
+        std::array<gl::Buffer, 3> attributes;  // positions, normals, (flat) centroids: one buffer each
         gl::Buffer indices;
         GLsizei indexCount = 0;
     };
@@ -55,6 +59,7 @@ private:
     ShaderLibrary shaders_;
     std::map<std::string, gl::Program> programs_;         // by name + specialisation defines
     std::shared_ptr<const SceneGeometry> geometry_;
+    std::vector<std::vector<MeshPart>> objectParts_;      // per object: its parts (one for a plain mesh)
     std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
     gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
     GLint uniformAlignment_ = 256;

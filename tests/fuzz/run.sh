@@ -13,7 +13,7 @@ seed() {
   local target=$1 dir="$build/fuzz-seeds/$1"
   rm -rf "$dir"; mkdir -p "$dir"
   case $target in
-    scene) find "$root/assets/scenes" "$root/tests/scenes" "$root/tests/bad-inputs" "$root/bench/scenes" \
+    scene) find "$root/assets/scenes" "$root/tests/scenes" "$root/tests/bad-inputs" \
                 -name '*.json' -print0 ;;
     gltf)  { find "$root/assets/models" "$root/tests/bad-inputs" \( -name '*.gltf' -o -name '*.glb' \) -print0
              [ -d "$shared" ] && find "$shared" \( -name '*.gltf' -o -name '*.glb' \) -size -2M -print0; } ;;
