@@ -561,6 +561,85 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
     return m;
 }
 
+Light parseLightShorthand(const std::string& text, const std::string& opt) {
+    std::vector<std::string> parts;
+    std::stringstream ss(text);
+    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+    auto fail = [&](const std::string& what) -> void { throw InputError(opt + ": " + what + " (in \"" + text + "\")"); };
+    if (parts.size() < 2) fail("expected TYPE:X,Y,Z[:KEY=VALUE...], e.g. point:1,2,3:intensity=2");
+    auto numbers = [&](const std::string& key, const std::string& v, std::size_t count, char sep, double lo,
+                       double hi) {
+        std::vector<float> out;
+        std::stringstream vs(v);
+        for (std::string item; std::getline(vs, item, sep);) {
+            char* end = nullptr;
+            const float x = std::strtof(item.c_str(), &end);
+            if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
+                fail(key + ": \"" + item + "\" is not a number");
+            if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + fmtNumber(lo) + ".." + fmtNumber(hi) + ")");
+            out.push_back(x);
+        }
+        if (out.size() != count || (!v.empty() && v.back() == sep))
+            fail(key + ": expected " + std::to_string(count) + " numbers separated by '" + std::string(1, sep) + "'");
+        return out;
+    };
+    auto vec3Of = [&](const std::string& key, const std::string& v, double lo, double hi) {
+        const std::vector<float> n = numbers(key, v, 3, ',', lo, hi);
+        return glm::vec3(n[0], n[1], n[2]);
+    };
+    Light l;
+    const std::string& type = parts[0];
+    if (type == "point") l.type = LightType::Point;
+    else if (type == "directional") l.type = LightType::Directional;
+    else if (type == "area") l.type = LightType::Area;
+    else fail("unknown light type \"" + type + "\" (expected point, directional or area)");
+    const glm::vec3 where = vec3Of(type, parts[1], -1e6, 1e6);
+    if (l.type == LightType::Directional) {
+        if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
+        l.direction = where;
+    } else {
+        l.position = where;
+    }
+    bool rangeGiven = false;
+    for (std::size_t i = 2; i < parts.size(); ++i) {
+        const std::string& kv = parts[i];
+        const std::size_t eq = kv.find('=');
+        const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
+        const bool positional = l.type != LightType::Directional, area = l.type == LightType::Area;
+        if (key == "two-sided" && area && eq == std::string::npos) {
+            l.twoSided = true;
+            continue;
+        }
+        if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + kv + "\"");
+        if (key == "color") l.color = vec3Of(key, value, 0.0, 1.0);
+        else if (key == "intensity") l.intensity = numbers(key, value, 1, ',', 0.0, 1e9)[0];
+        else if (key == "attenuation" && positional) {
+            if (value == "none") l.attenuation = Attenuation::None;
+            else if (value == "inverse-square") l.attenuation = Attenuation::InverseSquare;
+            else fail("attenuation: unknown value \"" + value + "\" (expected none or inverse-square)");
+        } else if (key == "range" && positional) {
+            l.range = numbers(key, value, 1, ',', 1e-4, 1e9)[0];
+            rangeGiven = true;
+        } else if (key == "normal" && area) {
+            l.normal = vec3Of(key, value, -1e6, 1e6);
+            if (glm::length(l.normal) < 1e-6f) fail("normal: must not be a zero-length vector");
+        } else if (key == "size" && area) {
+            const std::vector<float> wh = numbers(key, value, 2, ',', 1e-4, 1e6);
+            l.size = {wh[0], wh[1]};
+        } else if (key == "samples" && area) {
+            const std::vector<float> n = numbers(key, value, 2, 'x', 1, kMaxAreaSamplesPerSide);
+            if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
+            l.samples = {int(n[0]), int(n[1])};
+        } else {
+            fail("unknown key \"" + key + "\" for a " + type + " light (" +
+                 (area ? "color, intensity, attenuation, range, normal, size, samples, two-sided"
+                       : positional ? "color, intensity, attenuation, range" : "color, intensity") + ")");
+        }
+    }
+    if (rangeGiven && l.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
+    return l;
+}
+
 void checkCoefficients(const Material& m, const std::string& where) {
     auto check = [&](const char* name, float v, float lo, float hi) {
         if (!std::isfinite(v) || v < lo || v > hi)
