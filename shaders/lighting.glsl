@@ -6,8 +6,8 @@
 //   spec_l = max(0, R(I_l).V)^k_e (Phong) or max(0, H_l.N)^k_e (Blinn-Phong), 0 where N.I_l <= 0
 //
 // Programs are specialised (app/render/renderer.cpp, programDefines): the number of lights, each
-// light's kind and attenuation, the reflection model and the output encoding are compile-time
-// constants. On llvmpipe a loop over a uniform light count with per-light branches made Phong
+// light's kind and attenuation (and an area light's sample counts), the reflection model, the output
+// encoding, and whether shadows are on (with the PCF radius) are compile-time constants. On llvmpipe a loop over a uniform light count with per-light branches made Phong
 // shading ~50% slower than the same formula with constants (bench/README.md); light positions,
 // colours and all material values stay uniforms, so dragging a slider never recompiles.
 #include "uniforms.glsl"
@@ -21,24 +21,30 @@
 #ifndef SL_ENCODING
 #define SL_ENCODING SL_ENCODING_LINEAR
 #endif
+#ifndef SL_SHADOWS
+#define SL_SHADOWS 0
+#endif
+#ifndef SL_SHADOW_PCF
+#define SL_SHADOW_PCF 0
+#endif
 // With SL_LIGHT_COUNT = n the renderer also defines SL_LIGHT_KIND_l and SL_LIGHT_ATTENUATION_l for
-// l < n; blocks for lights past the count are skipped by the preprocessor and never expanded.
+// l < n, and SL_LIGHT_SAMPLES_X_l, SL_LIGHT_SAMPLES_Y_l for area lights; blocks for lights past the
+// count are skipped by the preprocessor and never expanded.
+//
+// Shadows (SL_SHADOWS = 1) are the lecture's occlusion term v(p, I): each light has a depth texture
+// array (core/shadow_projection.hpp says what its layers see), and v multiplies that light's (or
+// sample's) share. Without shadows the macros below are empty and the code is what it was before.
+#if SL_SHADOWS && SL_LIGHT_COUNT > 0
+uniform sampler2DArrayShadow u_shadowMaps[SL_LIGHT_COUNT];  // unit SL_TEXTURE_SHADOW_BASE + l
+#define SL_SHADOW_PARAM sampler2DArrayShadow shadowMap,
+#define SL_SHADOW_ARG(l) u_shadowMaps[l],
+#else
+#define SL_SHADOW_PARAM
+#define SL_SHADOW_ARG(l)
+#endif
 
-// Light l's share: L_l (k_d C (N.I) + k_s S spec). `kind` and `attenuation` are constants, so the
-// compiler drops the branches that do not apply.
-vec3 lightTerm(int l, int kind, int attenuation, vec3 posWorld, vec3 N, vec3 V) {
-    vec3 I;
-    float falloff = 1.0;
-    if (kind == SL_LIGHT_DIRECTIONAL) {
-        I = normalize(-u_lights[l].positionOrDirection.xyz);
-    } else {
-        vec3 toLight = u_lights[l].positionOrDirection.xyz - posWorld;
-        float r2 = dot(toLight, toLight);
-        I = toLight * inversesqrt(r2);
-        if (attenuation == SL_ATTENUATION_INVERSE_SQUARE) falloff = 1.0 / r2;
-    }
-    float NdotI = dot(N, I);
-    if (NdotI <= 0.0) return vec3(0.0);  // light behind the surface: no diffuse and no highlight
+// k_d C (N.I) + k_s S spec for one light direction with N.I > 0.
+vec3 reflected(vec3 I, float NdotI, vec3 N, vec3 V) {
 #if SL_REFLECTION == SL_REFLECTION_PHONG
     vec3 R = 2.0 * NdotI * N - I;
     float cosLobe = dot(R, V);
@@ -47,7 +53,140 @@ vec3 lightTerm(int l, int kind, int attenuation, vec3 posWorld, vec3 N, vec3 V) 
 #endif
     float spec = pow(max(cosLobe, 0.0), u_coefficients.w);
     float kd = u_coefficients.y, ks = u_coefficients.z;
-    return u_lights[l].radiance.rgb * falloff * (kd * u_color.rgb * NdotI + ks * u_specularColor.rgb * spec);
+    return kd * u_color.rgb * NdotI + ks * u_specularColor.rgb * spec;
+}
+
+// The distance falloff at squared distance r2 (core/lighting.cpp, attenuationFactor).
+float distanceFalloff(int l, int attenuation, float r2) {
+    float falloff = 1.0;
+    if (attenuation == SL_ATTENUATION_INVERSE_SQUARE) falloff = 1.0 / r2;
+    if (attenuation == SL_ATTENUATION_INVERSE_SQUARE_RANGE) {
+        float q = r2 * u_lights[l].falloff.x;  // (r / range)^2
+        float window = clamp(1.0 - q * q, 0.0, 1.0);
+        falloff = window * window / r2;
+    }
+    return falloff;
+}
+
+// Area-light sample (i, j) of an nx x ny grid as an offset in [-0.5, 0.5]^2 of the rectangle: the
+// same stratified, fixed-seed jitter as areaSampleOffset() in core/lighting.cpp.
+uint jitterHash(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+vec2 areaSampleOffset(int i, int j, int nx, int ny) {
+    uint k = uint(j * nx + i);
+    float jx = nx == 1 ? 0.5 : float(jitterHash(2u * k + SL_AREA_JITTER_SEED) >> 8) * (1.0 / 16777216.0);
+    float jy = ny == 1 ? 0.5 : float(jitterHash(2u * k + 1u + SL_AREA_JITTER_SEED) >> 8) * (1.0 / 16777216.0);
+    return vec2((float(i) + jx) / float(nx) - 0.5, (float(j) + jy) / float(ny) - 0.5);
+}
+
+#if SL_SHADOWS
+// Shadow-map lookups compare depths in hardware (GL_COMPARE_REF_TO_TEXTURE, bilinear: 2 x 2
+// texels per lookup); percentage-closer filtering averages (2 SL_SHADOW_PCF + 1)^2 of them a texel
+// apart. Returns the visible fraction in [0, 1].
+float shadowLookup(sampler2DArrayShadow map, vec2 st, float layer, float depth, float texel) {
+#if SL_SHADOW_PCF == 0
+    return texture(map, vec4(st, layer, depth));
+#else
+    float sum = 0.0;
+    for (int y = -SL_SHADOW_PCF; y <= SL_SHADOW_PCF; ++y)
+        for (int x = -SL_SHADOW_PCF; x <= SL_SHADOW_PCF; ++x)
+            sum += texture(map, vec4(st + vec2(x, y) * texel, layer, depth));
+    return sum / float((2 * SL_SHADOW_PCF + 1) * (2 * SL_SHADOW_PCF + 1));
+#endif
+}
+
+// Normal-offset bias: the point looked up moves along its normal by u_shadowSettings.x texels (a
+// texel's world size grows with the distance from a point or area light), so a lit surface does not
+// shadow itself; the depth pass adds a slope-scaled offset (ShadowSettings::depthBias).
+
+// Point light: six cube faces in layers 0..5, picked by the major axis of p - light.
+float pointVisibility(sampler2DArrayShadow map, int l, vec3 posWorld, vec3 N) {
+    vec4 sh = u_lights[l].shadow;
+    vec3 d = posWorld - u_lights[l].positionOrDirection.xyz;
+    d += N * (u_shadowSettings.x * sh.x * length(d));
+    vec3 a = abs(d);
+    float ma, face;
+    vec2 uv;
+    if (a.x >= a.y && a.x >= a.z) {
+        ma = a.x, uv = d.yz, face = d.x >= 0.0 ? 0.0 : 1.0;
+    } else if (a.y >= a.z) {
+        ma = a.y, uv = d.zx, face = d.y >= 0.0 ? 2.0 : 3.0;
+    } else {
+        ma = a.z, uv = d.xy, face = d.z >= 0.0 ? 4.0 : 5.0;
+    }
+    vec2 st = 0.5 + 0.5 * uv / (ma * sh.w);
+    return shadowLookup(map, st, face, sh.y - sh.z / ma, u_lights[l].falloff.z);
+}
+
+// Directional light: one orthographic map.
+float directionalVisibility(sampler2DArrayShadow map, int l, vec3 posWorld, vec3 N) {
+    vec3 pos = posWorld + N * (u_shadowSettings.x * u_lights[l].shadow.x);
+    vec3 c = (u_lights[l].shadowClipFromWorld * vec4(pos, 1.0)).xyz * 0.5 + 0.5;
+    return shadowLookup(map, c.xy, 0.0, c.z, u_lights[l].falloff.z);
+}
+#endif
+
+// Light l's share: L_l (k_d C (N.I) + k_s S spec). `kind` and `attenuation` are constants, so the
+// compiler drops the branches that do not apply.
+vec3 lightTerm(int l, int kind, int attenuation, SL_SHADOW_PARAM vec3 posWorld, vec3 N, vec3 V) {
+    vec3 I;
+    float falloff = 1.0;
+    if (kind == SL_LIGHT_DIRECTIONAL) {
+        I = normalize(-u_lights[l].positionOrDirection.xyz);
+    } else {
+        vec3 toLight = u_lights[l].positionOrDirection.xyz - posWorld;
+        float r2 = dot(toLight, toLight);
+        I = toLight * inversesqrt(r2);
+        falloff = distanceFalloff(l, attenuation, r2);
+    }
+    float NdotI = dot(N, I);
+    if (NdotI <= 0.0) return vec3(0.0);  // light behind the surface: no diffuse and no highlight
+#if SL_SHADOWS
+    falloff *= kind == SL_LIGHT_DIRECTIONAL ? directionalVisibility(shadowMap, l, posWorld, N)
+                                            : pointVisibility(shadowMap, l, posWorld, N);
+#endif
+    return u_lights[l].radiance.rgb * falloff * reflected(I, NdotI, N, V);
+}
+
+// Area light l: nx * ny point-light samples, each weighted by its share of the area (1 / (nx ny))
+// and the cosine at the light (|cos| when two-sided; nothing from behind the emitting side). With
+// shadows, one occlusion test per sample, in that sample's own layer of the light's map.
+vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 posWorld, vec3 N, vec3 V) {
+    vec3 centre = u_lights[l].positionOrDirection.xyz;
+    vec3 edgeU = u_lights[l].areaU.xyz, edgeV = u_lights[l].areaV.xyz, front = u_lights[l].areaNormal.xyz;
+    float twoSided = u_lights[l].falloff.y;
+#if SL_SHADOWS
+    vec4 clipP = u_lights[l].shadowClipFromWorld * vec4(posWorld, 1.0);
+    vec4 clipN = u_lights[l].shadowClipFromWorld * vec4(N, 0.0);
+    float bias = u_shadowSettings.x * u_lights[l].shadow.x;
+#endif
+    vec3 sum = vec3(0.0);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            vec2 ab = areaSampleOffset(i, j, nx, ny);
+            vec3 toLight = centre + ab.x * edgeU + ab.y * edgeV - posWorld;
+            float r2 = dot(toLight, toLight);
+            vec3 I = toLight * inversesqrt(r2);
+            float cosLight = -dot(front, I);
+            cosLight = mix(cosLight, abs(cosLight), twoSided);
+            float NdotI = dot(N, I);
+            if (cosLight <= 0.0 || NdotI <= 0.0) continue;
+            float weight = cosLight * distanceFalloff(l, attenuation, r2);
+#if SL_SHADOWS
+            vec4 clip = clipP - ab.x * u_lights[l].shadowU - ab.y * u_lights[l].shadowV;
+            clip += clipN * (bias * clip.w);
+            vec3 c = clip.xyz / clip.w * 0.5 + 0.5;
+            weight *= texture(shadowMap, vec4(c.xy, float(j * nx + i), c.z));
+#endif
+            sum += weight * reflected(I, NdotI, N, V);
+        }
+    return u_lights[l].radiance.rgb / float(nx * ny) * sum;
 }
 
 // posWorld: the point being shaded; nrmWorld: its unit normal. Returns linear RGB in [0, 1].
@@ -56,52 +195,116 @@ vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld) {
     vec3 V = normalize(u_eyeWorld.xyz - posWorld);
     vec3 L = u_coefficients.x * u_ambient.rgb * u_color.rgb;
 #if SL_LIGHT_COUNT > 0
-    L += lightTerm(0, SL_LIGHT_KIND_0, SL_LIGHT_ATTENUATION_0, posWorld, N, V);
+#if SL_LIGHT_KIND_0 == SL_LIGHT_AREA
+    L += areaLightTerm(0, SL_LIGHT_ATTENUATION_0, SL_LIGHT_SAMPLES_X_0, SL_LIGHT_SAMPLES_Y_0, SL_SHADOW_ARG(0) posWorld, N, V);
+#else
+    L += lightTerm(0, SL_LIGHT_KIND_0, SL_LIGHT_ATTENUATION_0, SL_SHADOW_ARG(0) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 1
-    L += lightTerm(1, SL_LIGHT_KIND_1, SL_LIGHT_ATTENUATION_1, posWorld, N, V);
+#if SL_LIGHT_KIND_1 == SL_LIGHT_AREA
+    L += areaLightTerm(1, SL_LIGHT_ATTENUATION_1, SL_LIGHT_SAMPLES_X_1, SL_LIGHT_SAMPLES_Y_1, SL_SHADOW_ARG(1) posWorld, N, V);
+#else
+    L += lightTerm(1, SL_LIGHT_KIND_1, SL_LIGHT_ATTENUATION_1, SL_SHADOW_ARG(1) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 2
-    L += lightTerm(2, SL_LIGHT_KIND_2, SL_LIGHT_ATTENUATION_2, posWorld, N, V);
+#if SL_LIGHT_KIND_2 == SL_LIGHT_AREA
+    L += areaLightTerm(2, SL_LIGHT_ATTENUATION_2, SL_LIGHT_SAMPLES_X_2, SL_LIGHT_SAMPLES_Y_2, SL_SHADOW_ARG(2) posWorld, N, V);
+#else
+    L += lightTerm(2, SL_LIGHT_KIND_2, SL_LIGHT_ATTENUATION_2, SL_SHADOW_ARG(2) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 3
-    L += lightTerm(3, SL_LIGHT_KIND_3, SL_LIGHT_ATTENUATION_3, posWorld, N, V);
+#if SL_LIGHT_KIND_3 == SL_LIGHT_AREA
+    L += areaLightTerm(3, SL_LIGHT_ATTENUATION_3, SL_LIGHT_SAMPLES_X_3, SL_LIGHT_SAMPLES_Y_3, SL_SHADOW_ARG(3) posWorld, N, V);
+#else
+    L += lightTerm(3, SL_LIGHT_KIND_3, SL_LIGHT_ATTENUATION_3, SL_SHADOW_ARG(3) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 4
-    L += lightTerm(4, SL_LIGHT_KIND_4, SL_LIGHT_ATTENUATION_4, posWorld, N, V);
+#if SL_LIGHT_KIND_4 == SL_LIGHT_AREA
+    L += areaLightTerm(4, SL_LIGHT_ATTENUATION_4, SL_LIGHT_SAMPLES_X_4, SL_LIGHT_SAMPLES_Y_4, SL_SHADOW_ARG(4) posWorld, N, V);
+#else
+    L += lightTerm(4, SL_LIGHT_KIND_4, SL_LIGHT_ATTENUATION_4, SL_SHADOW_ARG(4) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 5
-    L += lightTerm(5, SL_LIGHT_KIND_5, SL_LIGHT_ATTENUATION_5, posWorld, N, V);
+#if SL_LIGHT_KIND_5 == SL_LIGHT_AREA
+    L += areaLightTerm(5, SL_LIGHT_ATTENUATION_5, SL_LIGHT_SAMPLES_X_5, SL_LIGHT_SAMPLES_Y_5, SL_SHADOW_ARG(5) posWorld, N, V);
+#else
+    L += lightTerm(5, SL_LIGHT_KIND_5, SL_LIGHT_ATTENUATION_5, SL_SHADOW_ARG(5) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 6
-    L += lightTerm(6, SL_LIGHT_KIND_6, SL_LIGHT_ATTENUATION_6, posWorld, N, V);
+#if SL_LIGHT_KIND_6 == SL_LIGHT_AREA
+    L += areaLightTerm(6, SL_LIGHT_ATTENUATION_6, SL_LIGHT_SAMPLES_X_6, SL_LIGHT_SAMPLES_Y_6, SL_SHADOW_ARG(6) posWorld, N, V);
+#else
+    L += lightTerm(6, SL_LIGHT_KIND_6, SL_LIGHT_ATTENUATION_6, SL_SHADOW_ARG(6) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 7
-    L += lightTerm(7, SL_LIGHT_KIND_7, SL_LIGHT_ATTENUATION_7, posWorld, N, V);
+#if SL_LIGHT_KIND_7 == SL_LIGHT_AREA
+    L += areaLightTerm(7, SL_LIGHT_ATTENUATION_7, SL_LIGHT_SAMPLES_X_7, SL_LIGHT_SAMPLES_Y_7, SL_SHADOW_ARG(7) posWorld, N, V);
+#else
+    L += lightTerm(7, SL_LIGHT_KIND_7, SL_LIGHT_ATTENUATION_7, SL_SHADOW_ARG(7) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 8
-    L += lightTerm(8, SL_LIGHT_KIND_8, SL_LIGHT_ATTENUATION_8, posWorld, N, V);
+#if SL_LIGHT_KIND_8 == SL_LIGHT_AREA
+    L += areaLightTerm(8, SL_LIGHT_ATTENUATION_8, SL_LIGHT_SAMPLES_X_8, SL_LIGHT_SAMPLES_Y_8, SL_SHADOW_ARG(8) posWorld, N, V);
+#else
+    L += lightTerm(8, SL_LIGHT_KIND_8, SL_LIGHT_ATTENUATION_8, SL_SHADOW_ARG(8) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 9
-    L += lightTerm(9, SL_LIGHT_KIND_9, SL_LIGHT_ATTENUATION_9, posWorld, N, V);
+#if SL_LIGHT_KIND_9 == SL_LIGHT_AREA
+    L += areaLightTerm(9, SL_LIGHT_ATTENUATION_9, SL_LIGHT_SAMPLES_X_9, SL_LIGHT_SAMPLES_Y_9, SL_SHADOW_ARG(9) posWorld, N, V);
+#else
+    L += lightTerm(9, SL_LIGHT_KIND_9, SL_LIGHT_ATTENUATION_9, SL_SHADOW_ARG(9) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 10
-    L += lightTerm(10, SL_LIGHT_KIND_10, SL_LIGHT_ATTENUATION_10, posWorld, N, V);
+#if SL_LIGHT_KIND_10 == SL_LIGHT_AREA
+    L += areaLightTerm(10, SL_LIGHT_ATTENUATION_10, SL_LIGHT_SAMPLES_X_10, SL_LIGHT_SAMPLES_Y_10, SL_SHADOW_ARG(10) posWorld, N, V);
+#else
+    L += lightTerm(10, SL_LIGHT_KIND_10, SL_LIGHT_ATTENUATION_10, SL_SHADOW_ARG(10) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 11
-    L += lightTerm(11, SL_LIGHT_KIND_11, SL_LIGHT_ATTENUATION_11, posWorld, N, V);
+#if SL_LIGHT_KIND_11 == SL_LIGHT_AREA
+    L += areaLightTerm(11, SL_LIGHT_ATTENUATION_11, SL_LIGHT_SAMPLES_X_11, SL_LIGHT_SAMPLES_Y_11, SL_SHADOW_ARG(11) posWorld, N, V);
+#else
+    L += lightTerm(11, SL_LIGHT_KIND_11, SL_LIGHT_ATTENUATION_11, SL_SHADOW_ARG(11) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 12
-    L += lightTerm(12, SL_LIGHT_KIND_12, SL_LIGHT_ATTENUATION_12, posWorld, N, V);
+#if SL_LIGHT_KIND_12 == SL_LIGHT_AREA
+    L += areaLightTerm(12, SL_LIGHT_ATTENUATION_12, SL_LIGHT_SAMPLES_X_12, SL_LIGHT_SAMPLES_Y_12, SL_SHADOW_ARG(12) posWorld, N, V);
+#else
+    L += lightTerm(12, SL_LIGHT_KIND_12, SL_LIGHT_ATTENUATION_12, SL_SHADOW_ARG(12) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 13
-    L += lightTerm(13, SL_LIGHT_KIND_13, SL_LIGHT_ATTENUATION_13, posWorld, N, V);
+#if SL_LIGHT_KIND_13 == SL_LIGHT_AREA
+    L += areaLightTerm(13, SL_LIGHT_ATTENUATION_13, SL_LIGHT_SAMPLES_X_13, SL_LIGHT_SAMPLES_Y_13, SL_SHADOW_ARG(13) posWorld, N, V);
+#else
+    L += lightTerm(13, SL_LIGHT_KIND_13, SL_LIGHT_ATTENUATION_13, SL_SHADOW_ARG(13) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 14
-    L += lightTerm(14, SL_LIGHT_KIND_14, SL_LIGHT_ATTENUATION_14, posWorld, N, V);
+#if SL_LIGHT_KIND_14 == SL_LIGHT_AREA
+    L += areaLightTerm(14, SL_LIGHT_ATTENUATION_14, SL_LIGHT_SAMPLES_X_14, SL_LIGHT_SAMPLES_Y_14, SL_SHADOW_ARG(14) posWorld, N, V);
+#else
+    L += lightTerm(14, SL_LIGHT_KIND_14, SL_LIGHT_ATTENUATION_14, SL_SHADOW_ARG(14) posWorld, N, V);
+#endif
 #endif
 #if SL_LIGHT_COUNT > 15
-    L += lightTerm(15, SL_LIGHT_KIND_15, SL_LIGHT_ATTENUATION_15, posWorld, N, V);
+#if SL_LIGHT_KIND_15 == SL_LIGHT_AREA
+    L += areaLightTerm(15, SL_LIGHT_ATTENUATION_15, SL_LIGHT_SAMPLES_X_15, SL_LIGHT_SAMPLES_Y_15, SL_SHADOW_ARG(15) posWorld, N, V);
+#else
+    L += lightTerm(15, SL_LIGHT_KIND_15, SL_LIGHT_ATTENUATION_15, SL_SHADOW_ARG(15) posWorld, N, V);
+#endif
 #endif
     return clamp(L, 0.0, 1.0);
 }

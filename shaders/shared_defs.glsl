@@ -11,11 +11,15 @@
 #define SL_BINDING_OBJECT 1        // ObjectBlock: transform and material, one per object
 
 #define SL_MAX_LIGHTS 16
+#define SL_TEXTURE_SHADOW_BASE 0   // light l's shadow map (a 2D array texture) is on texture unit BASE + l
 
 #define SL_LIGHT_POINT 0
 #define SL_LIGHT_DIRECTIONAL 1
+#define SL_LIGHT_AREA 2
 #define SL_ATTENUATION_NONE 0
 #define SL_ATTENUATION_INVERSE_SQUARE 1
+#define SL_ATTENUATION_INVERSE_SQUARE_RANGE 2  // 1/r^2 * clamp(1 - (r/range)^4, 0, 1)^2
+#define SL_AREA_JITTER_SEED 0x5ade1abU         // area-light sample jitter (core/lighting.hpp, areaSampleOffset)
 #define SL_REFLECTION_PHONG 0
 #define SL_REFLECTION_BLINN_PHONG 1
 #define SL_ENCODING_LINEAR 0

@@ -3,9 +3,21 @@
 #include "shared_defs.glsl"
 
 struct LightGpu {
-    vec4 positionOrDirection;  // xyz: world-space position (point) or travel direction (directional)
+    vec4 positionOrDirection;  // xyz: world-space position (point, area centre) or travel direction (directional)
     vec4 radiance;             // rgb: colour * intensity
-    ivec4 kind;                // x: SL_LIGHT_*, y: SL_ATTENUATION_*
+    ivec4 kind;                // x: SL_LIGHT_*, y: SL_ATTENUATION_*, z, w: area samples nx, ny
+    vec4 falloff;              // x: 1 / range^2 (windowed inverse-square), y: 1 for a two-sided area light,
+                               // z: 1 / shadow-map size (a texel in texture coordinates)
+    vec4 areaU;                // xyz: the area light's edge along its width (length = width)
+    vec4 areaV;                // xyz: the edge along its height
+    vec4 areaNormal;           // xyz: unit normal of the emitting side
+    // Shadows (core/shadow_projection.hpp). Directional: the orthographic map. Area: the map of the
+    // rectangle's centre; sample (a, b)'s map is shadowClipFromWorld * p - a shadowU - b shadowV.
+    mat4 shadowClipFromWorld;
+    vec4 shadowU;              // shadowClipFromWorld * vec4(areaU, 0)
+    vec4 shadowV;              // shadowClipFromWorld * vec4(areaV, 0)
+    vec4 shadow;               // x: a texel's world size (per unit of distance for point and area lights);
+                               // point cube faces: y - z / distance is the stored depth, w: tan(half fov)
 };
 
 layout(std140) uniform FrameBlock {
@@ -15,6 +27,7 @@ layout(std140) uniform FrameBlock {
     ivec4 u_settings;          // x: light count, y: SL_REFLECTION_*, z: SL_ENCODING_* (the programs'
                                // specialisation, as data: for tools that read the block)
     LightGpu u_lights[SL_MAX_LIGHTS];
+    vec4 u_shadowSettings;     // x: normal bias, in shadow-map texels
 };
 
 layout(std140) uniform ObjectBlock {

@@ -80,6 +80,13 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--ks") o.ks = parseFloat(arg, next());
         else if (arg == "--ke") o.ke = parseFloat(arg, next());
         else if (arg == "--mesh") o.mesh = parseMeshShorthand(next(), arg);
+        else if (arg == "--light") {
+            o.lights.push_back(parseLightShorthand(next(), arg));
+            if (o.lights.size() > std::size_t(kMaxLights))
+                throw InputError(arg + ": at most " + std::to_string(kMaxLights) + " lights");
+        }
+        else if (arg == "--shadows") noValue(), o.shadows = true;
+        else if (arg == "--no-shadows") noValue(), o.shadows = false;
         else if (arg == "--shader-dir") o.shaderDir = next();
         else if (arg == "--backend") {
             o.backend = next();
@@ -151,6 +158,11 @@ Scene sceneFromOptions(const Options& o) {
         checkCoefficients(obj.material, "--");
     }
     if (o.width) s.width = *o.width, s.height = *o.height;
+    if (!o.lights.empty()) {
+        s.lights = o.lights;
+        s.lightsGiven = true;
+    }
+    if (o.shadows) s.shadows.enabled = *o.shadows;
     if (o.mesh) {
         if (s.objects.empty()) s.objects.emplace_back();
         s.objects.front().mesh = *o.mesh;
@@ -173,6 +185,12 @@ Without --output (or --benchmark) it opens the interactive viewer.
   --size WxH              image size in pixels, e.g. 1280x720
   --mesh SPEC             replace the first object's mesh: uvsphere[:slices[:stacks]], icosphere[:n],
                           torus[:major[:minor]], cube, plane[:n], or a .gltf/.glb file
+  --light SPEC            replace the scene's lights (repeat for more, up to 16): TYPE:X,Y,Z[:KEY=VALUE]...
+                          point:X,Y,Z (position), directional:X,Y,Z (travel direction), area:X,Y,Z (centre);
+                          keys color=R,G,B intensity=I attenuation=none|inverse-square range=R (point, area)
+                          normal=X,Y,Z size=W,H samples=NXxNY two-sided (area), e.g.
+                          --light area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
+  --shadows, --no-shadows shadows (occlusion toward every light) on or off
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --backend NAME          headless OpenGL for --output/--benchmark: osmesa, egl, or auto (OSMesa,
                           else EGL)

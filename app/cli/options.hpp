@@ -18,6 +18,8 @@ struct Options {
     std::optional<float> ka, kd, ks, ke;
     std::optional<int> width, height;       // --size WxH
     std::optional<MeshSpec> mesh;           // --mesh: replaces the first object's mesh
+    std::vector<Light> lights;              // --light (repeatable): replace the scene's lights
+    std::optional<bool> shadows;            // --shadows / --no-shadows
     int benchmarkFrames = 0;                // --benchmark N
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context

@@ -2,13 +2,24 @@
 // CPU reference of the lecture's reflection model: the same inputs and the same result as
 // shaders/lighting.glsl, used by the tests (and later the pixel probe).
 //
-//   L = k_a A C + sum_l L_l ( k_d C max(0, N.I_l) + k_s S spec_l ),  each channel clamped to [0, 1]
-//   spec_l = max(0, R(I_l).V)^k_e (Phong) or max(0, H_l.N)^k_e (Blinn-Phong); 0 where N.I_l <= 0
-//   R(I) = 2 (N.I) N - I,  H = normalize(I + V),  L_l = colour * intensity * attenuation
+//   L = k_a A C + sum_l sum_k v(p, I_lk) L_lk ( k_d C max(0, N.I_lk) + k_s S spec_lk ),  each channel clamped to [0, 1]
+//   spec = max(0, R(I).V)^k_e (Phong) or max(0, H.N)^k_e (Blinn-Phong); 0 where N.I <= 0
+//   R(I) = 2 (N.I) N - I,  H = normalize(I + V)
+//
+// Point and directional lights are one sample k, with L = colour * intensity * attenuation. An area
+// light is nx * ny point-light samples (areaSamplePosition), each with
+//   L_k = colour * intensity * attenuation(r_k) * cos_k / (nx * ny),   cos_k = n_light . (-I_k)
+// (its share of the area, and the cosine at the light; |cos_k| when two-sided, 0 behind the light).
+// v(p, I) is the lecture's occlusion term: 1 unless the caller supplies a Visibility.
 #include "core/scene.hpp"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
 #include <vector>
 
 namespace shadelab {
@@ -30,13 +41,47 @@ struct ShadingTerms {
     glm::vec3 total{0.0f};            // clamp(ambient + diffuse + specular, 0, 1)
 };
 
-// nrmWorld must be unit length.
+// The occlusion test toward one light sample: from the shaded point along `towardLight` (unit) for
+// `distance` (infinite for directional lights). Returns v in [0, 1]: 1 visible, 0 occluded.
+struct LightRay {
+    std::size_t light = 0;            // index into LightingEnvironment::lights
+    int sample = 0;                   // area lights: j * nx + i; else 0
+    glm::vec3 towardLight{0.0f};
+    float distance = std::numeric_limits<float>::infinity();
+};
+using Visibility = std::function<float(const glm::vec3& posWorld, const LightRay& ray)>;
+
+// nrmWorld must be unit length. Without a visibility every light sample is visible.
 ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& posWorld,
-                        const glm::vec3& nrmWorld);
+                        const glm::vec3& nrmWorld, const Visibility& visibility = {});
 inline glm::vec3 shade(const Material& m, const LightingEnvironment& env, const glm::vec3& posWorld,
-                       const glm::vec3& nrmWorld) {
-    return shadeTerms(m, env, posWorld, nrmWorld).total;
+                       const glm::vec3& nrmWorld, const Visibility& visibility = {}) {
+    return shadeTerms(m, env, posWorld, nrmWorld, visibility).total;
 }
+
+// The distance falloff of a point or area light at squared distance r2: 1 (none), 1/r2
+// (inverse-square), or 1/r2 * clamp(1 - (r/range)^4, 0, 1)^2 (inverse-square with a range).
+float attenuationFactor(const Light& light, float r2);
+
+// An area light's rectangle: `u` and `v` are its edges (lengths size.x and size.y), `n` its unit front
+// normal. u runs along normalize(cross(ref, n)) with ref = +y, or +z when n is within ~2.6 degrees of
+// +-y; v = size.y * cross(n, u/|u|). A light facing down (n = -y) has u along +x and v along +z.
+struct AreaFrame {
+    glm::vec3 u{1.0f, 0.0f, 0.0f};
+    glm::vec3 v{0.0f, 0.0f, 1.0f};
+    glm::vec3 n{0.0f, -1.0f, 0.0f};
+};
+AreaFrame areaFrame(const Light& light);
+
+// Sample (i, j) of an nx x ny grid as an offset (a, b) in [-0.5, 0.5]^2 of the rectangle: stratified
+// (one sample per cell) and jittered inside its cell by a fixed integer hash of the sample index and
+// SL_AREA_JITTER_SEED, so every render is the same. A side with one sample sits at the centre (so 1 x 1
+// is the centre). shaders/lighting.glsl computes the same offsets with the same hash.
+glm::vec2 areaSampleOffset(int i, int j, const glm::ivec2& samples);
+// The world position of that sample: position + a u + b v.
+glm::vec3 areaSamplePosition(const Light& light, int i, int j);
+// The hash behind the jitter (lowbias32 by Chris Wellons), exposed for the test that pins it.
+std::uint32_t jitterHash(std::uint32_t x);
 
 // The sRGB transfer curve (IEC 61966-2-1) applied to a linear value in [0, 1].
 float encodeSrgb(float linear);

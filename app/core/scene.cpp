@@ -39,7 +39,19 @@ const char* toString(MeshSpec::Type t) {
     return "?";
 }
 const char* toString(Attenuation a) { return a == Attenuation::None ? "none" : "inverse-square"; }
-const char* toString(LightType t) { return t == LightType::Point ? "point" : "directional"; }
+const char* toString(LightType t) {
+    switch (t) {
+    case LightType::Point: return "point";
+    case LightType::Directional: return "directional";
+    case LightType::Area: return "area";
+    }
+    return "?";
+}
+
+bool ShadowSettings::operator==(const ShadowSettings& o) const {
+    return enabled == o.enabled && normalBias == o.normalBias && depthBias == o.depthBias && pcf == o.pcf &&
+           mapSize == o.mapSize && areaMapSize == o.areaMapSize;
+}
 const char* toString(OutputEncoding e) { return e == OutputEncoding::Linear ? "linear" : "srgb"; }
 
 }  // namespace shadelab

@@ -2,6 +2,7 @@
 // The scene model: the one description of what is drawn. The JSON scene file (scene_json.hpp), the
 // command line and the viewer's panel all edit this plain struct; the renderer only reads it.
 // Defaults here are the documented defaults of the scene-file format (README, "Scene file").
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <string>
@@ -13,7 +14,7 @@ enum class ShadingMode { Flat, Gouraud, Phong };
 enum class Layout { Single, Compare };
 enum class ReflectionModel { Phong, BlinnPhong };
 enum class OutputEncoding { Linear, Srgb };
-enum class LightType { Point, Directional };
+enum class LightType { Point, Directional, Area };
 enum class Attenuation { None, InverseSquare };
 
 // Limits shared by the parser, the CLI and the renderer.
@@ -21,6 +22,10 @@ inline constexpr int kMaxLights = 16;          // also SL_MAX_LIGHTS in shaders/
 inline constexpr int kMaxImageSide = 16384;    // pixels per side, refused before anything is allocated
 inline constexpr float kMinExponent = 1.0f;    // k_e range: the lecture's slider goes 1..1000
 inline constexpr float kMaxExponent = 10000.0f;
+inline constexpr int kMaxAreaSamplesPerSide = 16;  // an area light has at most 16 x 16 samples
+inline constexpr int kMinShadowMapSize = 64;       // shadow-map sides, pixels
+inline constexpr int kMaxShadowMapSize = 4096;
+inline constexpr int kMaxPcfRadius = 2;            // percentage-closer filtering: (2r+1)^2 lookups
 
 struct Material {
     glm::vec3 color{0.85f, 0.32f, 0.2f};   // C, the diffuse/ambient colour (linear RGB, 0..1)
@@ -69,11 +74,34 @@ struct SceneObject {
 
 struct Light {
     LightType type = LightType::Point;
-    glm::vec3 position{3.0f, 4.0f, 5.0f};     // point lights, world space
+    glm::vec3 position{3.0f, 4.0f, 5.0f};     // point lights: world space; area lights: the centre
     glm::vec3 direction{-1.0f, -1.0f, -1.0f}; // directional lights: the direction the light travels
     glm::vec3 color{1.0f};
-    float intensity = 1.0f;
-    Attenuation attenuation = Attenuation::None;  // point lights only
+    float intensity = 1.0f;                   // area lights: of the whole rectangle (see lighting.hpp)
+    Attenuation attenuation = Attenuation::None;  // point and area lights
+    // Inverse-square only: > 0 multiplies 1/r^2 by the window clamp(1 - (r/range)^4, 0, 1)^2 so the
+    // light reaches exactly zero at `range` (glTF KHR_lights_punctual's recommendation); 0: no window.
+    float range = 0.0f;
+    // Area lights: a w x h rectangle centred at `position`, emitting on the side `normal` points to
+    // (both sides when twoSided), evaluated as samples.x * samples.y point lights (lighting.hpp).
+    glm::vec3 normal{0.0f, -1.0f, 0.0f};
+    glm::vec2 size{1.0f, 1.0f};
+    glm::ivec2 samples{4, 4};
+    bool twoSided = false;
+};
+
+// Shadows (occlusion toward each light) and how the shadow maps are made. Biases are what keep a lit
+// surface from shadowing itself ("acne") without lifting shadows off their casters ("peter-panning").
+struct ShadowSettings {
+    bool enabled = false;
+    float normalBias = 1.5f;  // the looked-up point moves along its normal by this many shadow-map texels
+    float depthBias = 1.5f;   // slope-scaled depth offset of the shadow pass (glPolygonOffset factor and units)
+    int pcf = 1;              // percentage-closer filtering radius: (2*pcf+1)^2 lookups (point, directional)
+    int mapSize = 1024;       // side of each shadow map (a point light has six), pixels
+    int areaMapSize = 256;    // side of the map of each area-light sample (soft shadows average them)
+
+    bool operator==(const ShadowSettings& o) const;
+    bool operator!=(const ShadowSettings& o) const { return !(*this == o); }
 };
 
 struct Camera {
@@ -92,6 +120,7 @@ struct Scene {
     ReflectionModel reflection = ReflectionModel::BlinnPhong;
     glm::vec3 ambient{1.0f};
     std::vector<Light> lights{Light{}};
+    ShadowSettings shadows;
     Camera camera;
     glm::vec3 background{0.08f, 0.08f, 0.1f};
     int width = 1280;

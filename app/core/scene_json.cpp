@@ -68,9 +68,9 @@ private:
         if (o.contains(key)) out = static_cast<float>(number(o[key], join(path, key), lo, hi));
     }
     void integer(const json& o, const char* key, const std::string& path, int& out, int lo, int hi) const {
-        if (!o.contains(key)) return;
-        const json& j = o[key];
-        const std::string p = join(path, key);
+        if (o.contains(key)) out = integer(o[key], join(path, key), lo, hi);
+    }
+    int integer(const json& j, const std::string& p, int lo, int hi) const {
         if (!j.is_number_integer()) fail(p, std::string("expected an integer, got ") + typeName(j));
         // nlohmann stores non-negative integers as unsigned: compare in the type it holds.
         const bool tooBig = j.is_number_unsigned() ? j.get<unsigned long long>() > static_cast<unsigned long long>(hi)
@@ -79,7 +79,7 @@ private:
                                                      : j.get<long long>() < lo;
         if (tooBig) fail(p, "must be <= " + std::to_string(hi) + " (got " + j.dump() + ")");
         if (tooSmall) fail(p, "must be >= " + std::to_string(lo) + " (got " + j.dump() + ")");
-        out = j.get<int>();
+        return j.get<int>();
     }
     glm::vec3 vec3(const json& j, const std::string& path, double lo, double hi) const {
         if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
@@ -90,6 +90,28 @@ private:
     }
     void vec3(const json& o, const char* key, const std::string& path, glm::vec3& out, double lo, double hi) const {
         if (o.contains(key)) out = vec3(o[key], join(path, key), lo, hi);
+    }
+    void boolean(const json& o, const char* key, const std::string& path, bool& out) const {
+        if (!o.contains(key)) return;
+        if (!o[key].is_boolean()) fail(join(path, key), std::string("expected true or false, got ") + typeName(o[key]));
+        out = o[key].get<bool>();
+    }
+    // [x, y] of numbers in [lo, hi]
+    void vec2(const json& o, const char* key, const std::string& path, glm::vec2& out, double lo, double hi) const {
+        if (!o.contains(key)) return;
+        const json& j = o[key];
+        const std::string p = join(path, key);
+        if (!j.is_array() || j.size() != 2) fail(p, "expected an array of 2 numbers");
+        for (int i = 0; i < 2; ++i)
+            out[i] = static_cast<float>(number(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi));
+    }
+    // [x, y] of integers in [lo, hi]
+    void ivec2(const json& o, const char* key, const std::string& path, glm::ivec2& out, int lo, int hi) const {
+        if (!o.contains(key)) return;
+        const json& j = o[key];
+        const std::string p = join(path, key);
+        if (!j.is_array() || j.size() != 2) fail(p, "expected an array of 2 integers");
+        for (int i = 0; i < 2; ++i) out[i] = integer(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi);
     }
     void nonZero(const glm::vec3& v, const std::string& path) const {
         if (glm::length(v) < 1e-6f) fail(path, "must not be a zero-length vector");
@@ -115,6 +137,7 @@ private:
     Material material(const json& j, const std::string& path) const;
     Transform transform(const json& j, const std::string& path) const;
     Light light(const json& j, const std::string& path) const;
+    ShadowSettings shadowSettings(const json& j, const std::string& path) const;
     Camera camera(const json& j, const std::string& path) const;
 
     std::string file_;
@@ -198,23 +221,52 @@ Transform SceneReader::transform(const json& j, const std::string& path) const {
 Light SceneReader::light(const json& j, const std::string& path) const {
     Light l;
     if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
-    static const std::pair<const char*, LightType> kTypes[] = {{"point", LightType::Point},
-                                                                {"directional", LightType::Directional}};
+    static const std::pair<const char*, LightType> kTypes[] = {
+        {"point", LightType::Point}, {"directional", LightType::Directional}, {"area", LightType::Area}};
     choice(j, "type", path, l.type, kTypes);
-    if (l.type == LightType::Point) {
-        requireObject(j, path, {"type", "position", "color", "intensity", "attenuation"});
+    static const std::pair<const char*, Attenuation> kAtt[] = {{"none", Attenuation::None},
+                                                                {"inverse-square", Attenuation::InverseSquare}};
+    switch (l.type) {
+    case LightType::Point:
+        requireObject(j, path, {"type", "position", "color", "intensity", "attenuation", "range"});
         vec3(j, "position", path, l.position, -1e6, 1e6);
-        static const std::pair<const char*, Attenuation> kAtt[] = {{"none", Attenuation::None},
-                                                                    {"inverse-square", Attenuation::InverseSquare}};
-        choice(j, "attenuation", path, l.attenuation, kAtt);
-    } else {
+        break;
+    case LightType::Directional:
         requireObject(j, path, {"type", "direction", "color", "intensity"});
         vec3(j, "direction", path, l.direction, -1e6, 1e6);
         nonZero(l.direction, join(path, "direction"));
+        break;
+    case LightType::Area:
+        requireObject(j, path, {"type", "position", "normal", "size", "samples", "color", "intensity", "two_sided",
+                                "attenuation", "range"});
+        vec3(j, "position", path, l.position, -1e6, 1e6);
+        vec3(j, "normal", path, l.normal, -1e6, 1e6);
+        nonZero(l.normal, join(path, "normal"));
+        vec2(j, "size", path, l.size, 1e-4, 1e6);
+        ivec2(j, "samples", path, l.samples, 1, kMaxAreaSamplesPerSide);
+        boolean(j, "two_sided", path, l.twoSided);
+        break;
+    }
+    if (l.type != LightType::Directional) {
+        choice(j, "attenuation", path, l.attenuation, kAtt);
+        number(j, "range", path, l.range, 1e-4, 1e9);
+        if (j.contains("range") && l.attenuation != Attenuation::InverseSquare)
+            fail(join(path, "range"), "a range needs \"attenuation\": \"inverse-square\"");
     }
     vec3(j, "color", path, l.color, 0.0, 1.0);
     number(j, "intensity", path, l.intensity, 0.0, 1e9);
     return l;
+}
+
+ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& path) const {
+    ShadowSettings s;
+    requireObject(j, path, {"normal_bias", "depth_bias", "pcf", "map_size", "area_map_size"});
+    number(j, "normal_bias", path, s.normalBias, 0.0, 100.0);
+    number(j, "depth_bias", path, s.depthBias, 0.0, 100.0);
+    integer(j, "pcf", path, s.pcf, 0, kMaxPcfRadius);
+    integer(j, "map_size", path, s.mapSize, kMinShadowMapSize, kMaxShadowMapSize);
+    integer(j, "area_map_size", path, s.areaMapSize, kMinShadowMapSize, kMaxShadowMapSize);
+    return s;
 }
 
 Camera SceneReader::camera(const json& j, const std::string& path) const {
@@ -238,8 +290,8 @@ Camera SceneReader::camera(const json& j, const std::string& path) const {
 Scene SceneReader::read(const json& root) {
     Scene s;
     requireObject(root, "",
-                  {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "camera",
-                   "background", "size", "output_encoding"});
+                  {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
+                   "shadow_settings", "camera", "background", "size", "output_encoding"});
     if (root.contains("objects")) {
         if (root.contains("mesh") || root.contains("material"))
             fail("objects", "give either \"objects\" or the one-object shorthand \"mesh\"/\"material\", not both");
@@ -283,6 +335,8 @@ Scene SceneReader::read(const json& root) {
         for (size_t i = 0; i < list.size(); ++i) s.lights.push_back(light(list[i], "lights[" + std::to_string(i) + "]"));
         s.lightsGiven = true;
     }
+    if (root.contains("shadow_settings")) s.shadows = shadowSettings(root["shadow_settings"], "shadow_settings");
+    boolean(root, "shadows", "", s.shadows.enabled);
     if (root.contains("camera")) {
         s.camera = camera(root["camera"], "camera");
         s.cameraGiven = true;
@@ -422,16 +476,29 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     for (const Light& l : s.lights) {
         nlohmann::ordered_json lj;
         lj["type"] = toString(l.type);
-        if (l.type == LightType::Point) {
-            lj["position"] = vecJson(l.position);
-        } else {
+        if (l.type == LightType::Directional) {
             lj["direction"] = vecJson(l.direction);
+        } else {
+            lj["position"] = vecJson(l.position);
+        }
+        if (l.type == LightType::Area) {
+            lj["normal"] = vecJson(l.normal);
+            lj["size"] = {l.size.x, l.size.y};
+            lj["samples"] = {l.samples.x, l.samples.y};
+            lj["two_sided"] = l.twoSided;
         }
         lj["color"] = vecJson(l.color);
         lj["intensity"] = l.intensity;
-        if (l.type == LightType::Point) lj["attenuation"] = toString(l.attenuation);
+        if (l.type != LightType::Directional) {
+            lj["attenuation"] = toString(l.attenuation);
+            if (l.attenuation == Attenuation::InverseSquare && l.range > 0.0f) lj["range"] = l.range;
+        }
         j["lights"].push_back(lj);
     }
+    j["shadows"] = s.shadows.enabled;
+    j["shadow_settings"] = {{"normal_bias", s.shadows.normalBias}, {"depth_bias", s.shadows.depthBias},
+                            {"pcf", s.shadows.pcf},                {"map_size", s.shadows.mapSize},
+                            {"area_map_size", s.shadows.areaMapSize}};
     j["camera"] = {{"eye", vecJson(s.camera.eye)},        {"target", vecJson(s.camera.target)},
                    {"up", vecJson(s.camera.up)},          {"fov_y_deg", s.camera.fovYDeg},
                    {"near", s.camera.nearPlane},          {"far", s.camera.farPlane}};
@@ -496,6 +563,85 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
     }
     if (parts.size() > maxParts) throw InputError(opt + ": too many ':' parameters for " + kind);
     return m;
+}
+
+Light parseLightShorthand(const std::string& text, const std::string& opt) {
+    std::vector<std::string> parts;
+    std::stringstream ss(text);
+    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+    auto fail = [&](const std::string& what) -> void { throw InputError(opt + ": " + what + " (in \"" + text + "\")"); };
+    if (parts.size() < 2) fail("expected TYPE:X,Y,Z[:KEY=VALUE...], e.g. point:1,2,3:intensity=2");
+    auto numbers = [&](const std::string& key, const std::string& v, std::size_t count, char sep, double lo,
+                       double hi) {
+        std::vector<float> out;
+        std::stringstream vs(v);
+        for (std::string item; std::getline(vs, item, sep);) {
+            char* end = nullptr;
+            const float x = std::strtof(item.c_str(), &end);
+            if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
+                fail(key + ": \"" + item + "\" is not a number");
+            if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + fmtNumber(lo) + ".." + fmtNumber(hi) + ")");
+            out.push_back(x);
+        }
+        if (out.size() != count || (!v.empty() && v.back() == sep))
+            fail(key + ": expected " + std::to_string(count) + " numbers separated by '" + std::string(1, sep) + "'");
+        return out;
+    };
+    auto vec3Of = [&](const std::string& key, const std::string& v, double lo, double hi) {
+        const std::vector<float> n = numbers(key, v, 3, ',', lo, hi);
+        return glm::vec3(n[0], n[1], n[2]);
+    };
+    Light l;
+    const std::string& type = parts[0];
+    if (type == "point") l.type = LightType::Point;
+    else if (type == "directional") l.type = LightType::Directional;
+    else if (type == "area") l.type = LightType::Area;
+    else fail("unknown light type \"" + type + "\" (expected point, directional or area)");
+    const glm::vec3 where = vec3Of(type, parts[1], -1e6, 1e6);
+    if (l.type == LightType::Directional) {
+        if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
+        l.direction = where;
+    } else {
+        l.position = where;
+    }
+    bool rangeGiven = false;
+    for (std::size_t i = 2; i < parts.size(); ++i) {
+        const std::string& kv = parts[i];
+        const std::size_t eq = kv.find('=');
+        const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
+        const bool positional = l.type != LightType::Directional, area = l.type == LightType::Area;
+        if (key == "two-sided" && area && eq == std::string::npos) {
+            l.twoSided = true;
+            continue;
+        }
+        if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + kv + "\"");
+        if (key == "color") l.color = vec3Of(key, value, 0.0, 1.0);
+        else if (key == "intensity") l.intensity = numbers(key, value, 1, ',', 0.0, 1e9)[0];
+        else if (key == "attenuation" && positional) {
+            if (value == "none") l.attenuation = Attenuation::None;
+            else if (value == "inverse-square") l.attenuation = Attenuation::InverseSquare;
+            else fail("attenuation: unknown value \"" + value + "\" (expected none or inverse-square)");
+        } else if (key == "range" && positional) {
+            l.range = numbers(key, value, 1, ',', 1e-4, 1e9)[0];
+            rangeGiven = true;
+        } else if (key == "normal" && area) {
+            l.normal = vec3Of(key, value, -1e6, 1e6);
+            if (glm::length(l.normal) < 1e-6f) fail("normal: must not be a zero-length vector");
+        } else if (key == "size" && area) {
+            const std::vector<float> wh = numbers(key, value, 2, ',', 1e-4, 1e6);
+            l.size = {wh[0], wh[1]};
+        } else if (key == "samples" && area) {
+            const std::vector<float> n = numbers(key, value, 2, 'x', 1, kMaxAreaSamplesPerSide);
+            if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
+            l.samples = {int(n[0]), int(n[1])};
+        } else {
+            fail("unknown key \"" + key + "\" for a " + type + " light (" +
+                 (area ? "color, intensity, attenuation, range, normal, size, samples, two-sided"
+                       : positional ? "color, intensity, attenuation, range" : "color, intensity") + ")");
+        }
+    }
+    if (rangeGiven && l.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
+    return l;
 }
 
 void checkCoefficients(const Material& m, const std::string& where) {

@@ -28,6 +28,16 @@ std::string sceneToJson(const Scene& scene, const std::string& saveDir);
 // "torus[:major_segments[:minor_segments]]", "cube", "plane[:subdivisions]", or a .gltf/.glb path.
 MeshSpec parseMeshShorthand(const std::string& text, const std::string& optionName);
 
+// Parses the command line's light shorthand, TYPE:X,Y,Z[:KEY=VALUE]...:
+//   point:X,Y,Z        a point light at (X, Y, Z)
+//   directional:X,Y,Z  a directional light travelling along (X, Y, Z)
+//   area:X,Y,Z         an area light centred at (X, Y, Z)
+// and the keys color=R,G,B  intensity=I  attenuation=none|inverse-square  range=R (point, area)
+// normal=X,Y,Z  size=W,H  samples=NXxNY  two-sided (area). E.g.
+//   area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
+// Values are checked against the scene format's ranges; errors are InputErrors "<optionName>: ...".
+Light parseLightShorthand(const std::string& text, const std::string& optionName);
+
 // Validation shared with the command line; each throws InputError "<where>: <what>".
 void checkCoefficients(const Material& m, const std::string& where);
 void checkImageSize(int width, int height, const std::string& where);

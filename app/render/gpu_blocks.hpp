@@ -12,9 +12,20 @@ namespace shadelab::gpu {
 struct LightGpu {
     float positionOrDirection[4];
     float radiance[4];
-    std::int32_t kind[4];
+    std::int32_t kind[4];  // kind, attenuation, area samples nx, ny
+    float falloff[4];      // 1 / range^2, two-sided, 1 / shadow-map size
+    float areaU[4];
+    float areaV[4];
+    float areaNormal[4];
+    float shadowClipFromWorld[16];
+    float shadowU[4];
+    float shadowV[4];
+    float shadow[4];       // texel world size, depth = y - z / distance, tan(half fov)
 };
-static_assert(sizeof(LightGpu) == 48, "LightGpu must match std140");
+static_assert(offsetof(LightGpu, falloff) == 48, "std140 offset");
+static_assert(offsetof(LightGpu, shadowClipFromWorld) == 112, "std140 offset");
+static_assert(offsetof(LightGpu, shadow) == 208, "std140 offset");
+static_assert(sizeof(LightGpu) == 224, "LightGpu must match std140");
 
 struct FrameBlock {
     float clipFromWorld[16];
@@ -22,12 +33,14 @@ struct FrameBlock {
     float ambient[4];
     std::int32_t settings[4];  // light count, reflection model, output encoding
     LightGpu lights[SL_MAX_LIGHTS];
+    float shadowSettings[4];   // normal bias (texels)
 };
 static_assert(offsetof(FrameBlock, eyeWorld) == 64, "std140 offset");
 static_assert(offsetof(FrameBlock, ambient) == 80, "std140 offset");
 static_assert(offsetof(FrameBlock, settings) == 96, "std140 offset");
 static_assert(offsetof(FrameBlock, lights) == 112, "std140 offset");
-static_assert(sizeof(FrameBlock) == 112 + 48 * SL_MAX_LIGHTS, "std140 size");
+static_assert(offsetof(FrameBlock, shadowSettings) == 112 + 224 * SL_MAX_LIGHTS, "std140 offset");
+static_assert(sizeof(FrameBlock) == 128 + 224 * SL_MAX_LIGHTS, "std140 size");
 
 struct ObjectBlock {
     float worldFromObject[16];

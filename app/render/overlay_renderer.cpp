@@ -1,6 +1,7 @@
 #include "render/overlay_renderer.hpp"
 
 #include "core/camera.hpp"
+#include "core/lighting.hpp"
 #include "core/mesh.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
@@ -203,7 +204,8 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
 
 void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffset) {
     // A three-axis cross at each point light; for a directional light a cross up-light of the target
-    // and a line along the direction the light travels. Sizes follow the distance to the eye, so a
+    // and a line along the direction the light travels; for an area light its rectangle, normal and
+    // sample positions around the cross at its centre. Sizes follow the distance to the eye, so a
     // marker stays the same size on screen wherever the light is.
     std::vector<float> data;
     std::vector<std::pair<GLint, glm::vec4>> draws;  // first vertex, colour
@@ -218,6 +220,26 @@ void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffs
             at = cam.target - dir * reach;
             pushVertex(data, at);
             pushVertex(data, at + dir * (0.4f * reach));
+        }
+        if (light.type == LightType::Area) {
+            // The rectangle's outline, its emitting normal, and a dot per sample position.
+            const AreaFrame f = areaFrame(light);
+            const glm::vec3 c[4] = {at - 0.5f * f.u - 0.5f * f.v, at + 0.5f * f.u - 0.5f * f.v,
+                                    at + 0.5f * f.u + 0.5f * f.v, at - 0.5f * f.u + 0.5f * f.v};
+            for (int k = 0; k < 4; ++k) {
+                pushVertex(data, c[k]);
+                pushVertex(data, c[(k + 1) % 4]);
+            }
+            const float extent = 0.5f * std::max(light.size.x, light.size.y);
+            pushVertex(data, at);
+            pushVertex(data, at + f.n * extent);
+            const float tick = 0.01f * std::max(glm::length(cam.eye - at), 1e-3f);
+            for (int j = 0; j < light.samples.y; ++j)
+                for (int k = 0; k < light.samples.x; ++k) {
+                    const glm::vec3 p = areaSamplePosition(light, k, j);
+                    pushVertex(data, p - tick * glm::normalize(f.u));
+                    pushVertex(data, p + tick * glm::normalize(f.u));
+                }
         }
         const float half = 0.03f * std::max(glm::length(cam.eye - at), 1e-3f);
         for (int axis = 0; axis < 3; ++axis) {

@@ -3,6 +3,7 @@
 #include "core/glsl_include.hpp"
 #include "render/gpu_blocks.hpp"
 
+#include <string>
 #include <vector>
 
 namespace shadelab {
@@ -58,6 +59,16 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
     const GLuint object = glGetUniformBlockIndex(program.get(), "ObjectBlock");
     if (frame != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), frame, SL_BINDING_FRAME);
     if (object != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), object, SL_BINDING_OBJECT);
+    // Nor for samplers: light l's shadow map is on unit SL_TEXTURE_SHADOW_BASE + l.
+    GLint previous = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    glUseProgram(program.get());
+    for (int l = 0; l < SL_MAX_LIGHTS; ++l) {
+        const std::string sampler = "u_shadowMaps[" + std::to_string(l) + "]";
+        const GLint location = glGetUniformLocation(program.get(), sampler.c_str());
+        if (location >= 0) glUniform1i(location, SL_TEXTURE_SHADOW_BASE + l);
+    }
+    glUseProgram(GLuint(previous));
     return program;
 }
 

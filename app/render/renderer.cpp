@@ -1,12 +1,15 @@
 #include "render/renderer.hpp"
 
 #include "core/camera.hpp"
+#include "core/lighting.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 
+#include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 namespace shadelab {
@@ -16,6 +19,20 @@ const char* kProgramNames[3] = {"flat", "gouraud", "phong"};  // by ShadingMode
 
 void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
     dst[0] = v.x, dst[1] = v.y, dst[2] = v.z, dst[3] = w;
+}
+
+int attenuationKind(const Light& l) {
+    if (l.type == LightType::Directional || l.attenuation != Attenuation::InverseSquare) return SL_ATTENUATION_NONE;
+    return l.range > 0.0f ? SL_ATTENUATION_INVERSE_SQUARE_RANGE : SL_ATTENUATION_INVERSE_SQUARE;
+}
+
+int lightKind(const Light& l) {
+    switch (l.type) {
+    case LightType::Point: return SL_LIGHT_POINT;
+    case LightType::Directional: return SL_LIGHT_DIRECTIONAL;
+    case LightType::Area: return SL_LIGHT_AREA;
+    }
+    return SL_LIGHT_POINT;
 }
 
 gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
@@ -31,12 +48,20 @@ gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
     for (int i = 0; i < count; ++i) {
         const Light& l = s.lights[std::size_t(i)];
         gpu::LightGpu& g = b.lights[i];
-        const bool point = l.type == LightType::Point;
-        copyVec(g.positionOrDirection, point ? l.position : l.direction);
+        copyVec(g.positionOrDirection, l.type == LightType::Directional ? l.direction : l.position);
         copyVec(g.radiance, l.color * l.intensity);
-        g.kind[0] = point ? SL_LIGHT_POINT : SL_LIGHT_DIRECTIONAL;
-        g.kind[1] = (point && l.attenuation == Attenuation::InverseSquare) ? SL_ATTENUATION_INVERSE_SQUARE
-                                                                           : SL_ATTENUATION_NONE;
+        g.kind[0] = lightKind(l);
+        g.kind[1] = attenuationKind(l);
+        g.kind[2] = l.type == LightType::Area ? l.samples.x : 1;
+        g.kind[3] = l.type == LightType::Area ? l.samples.y : 1;
+        g.falloff[0] = l.range > 0.0f ? 1.0f / (l.range * l.range) : 0.0f;
+        g.falloff[1] = l.twoSided ? 1.0f : 0.0f;
+        if (l.type == LightType::Area) {
+            const AreaFrame f = areaFrame(l);
+            copyVec(g.areaU, f.u);
+            copyVec(g.areaV, f.v);
+            copyVec(g.areaNormal, f.n);
+        }
     }
     return b;
 }
@@ -71,20 +96,30 @@ void checkGl(const char* where) {
 
 std::vector<std::string> programDefines(const Scene& s) {
     const std::size_t count = std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS);
+    static const char* const kKinds[] = {"SL_LIGHT_POINT", "SL_LIGHT_DIRECTIONAL", "SL_LIGHT_AREA"};
+    static const char* const kAttenuations[] = {"SL_ATTENUATION_NONE", "SL_ATTENUATION_INVERSE_SQUARE",
+                                                "SL_ATTENUATION_INVERSE_SQUARE_RANGE"};
     std::vector<std::string> d;
     d.push_back("SL_LIGHT_COUNT " + std::to_string(count));
     for (std::size_t l = 0; l < count; ++l) {
         const Light& light = s.lights[l];
-        const bool point = light.type == LightType::Point;
-        d.push_back("SL_LIGHT_KIND_" + std::to_string(l) + (point ? " SL_LIGHT_POINT" : " SL_LIGHT_DIRECTIONAL"));
-        d.push_back("SL_LIGHT_ATTENUATION_" + std::to_string(l) +
-                    (point && light.attenuation == Attenuation::InverseSquare ? " SL_ATTENUATION_INVERSE_SQUARE"
-                                                                              : " SL_ATTENUATION_NONE"));
+        const std::string n = std::to_string(l);
+        d.push_back("SL_LIGHT_KIND_" + n + " " + kKinds[lightKind(light)]);
+        d.push_back("SL_LIGHT_ATTENUATION_" + n + " " + kAttenuations[attenuationKind(light)]);
+        if (light.type == LightType::Area) {
+            d.push_back("SL_LIGHT_SAMPLES_X_" + n + " " + std::to_string(light.samples.x));
+            d.push_back("SL_LIGHT_SAMPLES_Y_" + n + " " + std::to_string(light.samples.y));
+        }
     }
     d.push_back(std::string("SL_REFLECTION ") +
                 (s.reflection == ReflectionModel::Phong ? "SL_REFLECTION_PHONG" : "SL_REFLECTION_BLINN_PHONG"));
     d.push_back(std::string("SL_ENCODING ") +
                 (s.outputEncoding == OutputEncoding::Srgb ? "SL_ENCODING_SRGB" : "SL_ENCODING_LINEAR"));
+    // Only scenes with shadows get these: without them the programs are the ones they always were.
+    if (s.shadows.enabled && count > 0) {
+        d.push_back("SL_SHADOWS 1");
+        d.push_back("SL_SHADOW_PCF " + std::to_string(s.shadows.pcf));
+    }
     return d;
 }
 
@@ -111,10 +146,16 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     gpuMeshes_.clear();
     gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
     objectParts_.clear();
+    objectBoxes_.clear();
+    shadowMaps_.invalidate();
     if (!geometry_) return;
     for (const Mesh& mesh : geometry_->meshes) {
         objectParts_.push_back(mesh.parts);
         if (mesh.parts.empty()) objectParts_.back().push_back(MeshPart{0, std::uint32_t(mesh.indices.size()), false, {}});
+        Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+        for (const glm::vec3& p : mesh.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+        if (mesh.positions.empty()) box = Aabb{};
+        objectBoxes_.push_back(box);
     }
 }
 
@@ -191,6 +232,19 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
                              (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor});
     }
 
+    // Shadow maps first: they bind their own framebuffer, program and viewport.
+    const bool shadows = scene.shadows.enabled && !scene.lights.empty();
+    if (shadows) {
+        std::vector<ShadowMaps::DepthDraw> depthDraws;
+        std::vector<Aabb> boxes;
+        for (std::size_t o = 0; o < objects; ++o)
+            boxes.push_back(transformAabb(objectBoxes_[o], worldFromObject(scene.objects[o].transform)));
+        for (const Draw& d : draws)
+            depthDraws.push_back({gpuMesh(d.object, ShadingMode::Phong).vao.get(), d.first, d.count,
+                                  worldFromObject(scene.objects[d.object].transform)});
+        shadowMaps_.render(scene, depthDraws, boxes, shaders_);
+    }
+
     // All uniforms of the frame in one upload: a FrameBlock per pane, then an ObjectBlock per draw,
     // each at an offset glBindBufferRange accepts.
     const auto align = std::size_t(uniformAlignment_);
@@ -199,7 +253,8 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     const std::size_t objectsOffset = frameStride * panes.size();
     std::vector<unsigned char> staging(objectsOffset + objectStride * draws.size());
     for (std::size_t p = 0; p < panes.size(); ++p) {
-        const gpu::FrameBlock b = frameBlock(scene, float(panes[p].width) / float(std::max(panes[p].height, 1)));
+        gpu::FrameBlock b = frameBlock(scene, float(panes[p].width) / float(std::max(panes[p].height, 1)));
+        if (shadows) shadowMaps_.fillBlock(scene, b);
         std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
     }
     for (std::size_t d = 0; d < draws.size(); ++d) {
@@ -225,6 +280,8 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     glCullFace(GL_BACK);
     glProvokingVertex(GL_LAST_VERTEX_CONVENTION);  // FlatMesh puts each triangle's own vertex last
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    if (shadows) shadowMaps_.bindTextures();
 
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const Pane& pane = panes[p];

@@ -7,6 +7,7 @@
 #include "core/scene_geometry.hpp"
 #include "render/gl_handles.hpp"
 #include "render/shader_library.hpp"
+#include "render/shadow_maps.hpp"
 
 #include <array>
 #include <map>
@@ -44,6 +45,8 @@ public:
     void preparePrograms(const Scene& scene);
 
     std::string glRenderer() const;
+    // Depth views drawn by the last render() for shadows (0: none, or the maps were still valid).
+    int shadowViewsRendered() const { return shadowMaps_.viewsRendered(); }
     std::string glVersion() const;
 
 private:
@@ -63,10 +66,13 @@ private:
     std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
     gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
     GLint uniformAlignment_ = 256;
+    std::vector<Aabb> objectBoxes_;                       // per object, object space (for shadow maps)
+    ShadowMaps shadowMaps_;
 };
 
 // What the shading programs are specialised for (shaders/lighting.glsl): the number of lights, each
-// light's kind and attenuation, the reflection model and the output encoding, as "NAME VALUE" defines.
+// light's kind and attenuation (and an area light's sample counts), the reflection model, the output
+// encoding, and with shadows on SL_SHADOWS and the PCF radius, as "NAME VALUE" defines.
 // Everything else is a uniform, so editing values never recompiles.
 std::vector<std::string> programDefines(const Scene& scene);
 

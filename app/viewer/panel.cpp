@@ -149,17 +149,33 @@ void sectionLights(Scene& scene) {
         const bool open = ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %zu (%s)", i,
                                             toString(l.type));
         if (open) {
-            static const char* const kTypes[] = {"point", "directional"};
+            static const char* const kTypes[] = {"point", "directional", "area"};
             combo("type", l.type, kTypes);
-            if (l.type == LightType::Point)
-                ImGui::DragFloat3("position", &l.position.x, 0.05f, -1e6f, 1e6f, "%.2f");
-            else
+            if (l.type == LightType::Directional)
                 dragNonZero("direction", l.direction, 0.02f, false);
+            else
+                ImGui::DragFloat3(l.type == LightType::Area ? "centre" : "position", &l.position.x, 0.05f, -1e6f,
+                                  1e6f, "%.2f");
+            if (l.type == LightType::Area) {
+                dragNonZero("normal", l.normal, 0.02f, false);
+                ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+                l.size = glm::max(l.size, glm::vec2(1e-4f));
+                // Sample counts are a specialisation constant: changing them recompiles (once per count).
+                ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kMaxAreaSamplesPerSide);
+                l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kMaxAreaSamplesPerSide));
+                ImGui::Checkbox("two-sided", &l.twoSided);
+            }
             colorEdit("colour", l.color);
             ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-            if (l.type == LightType::Point) {
+            if (l.type != LightType::Directional) {
                 static const char* const kAttenuation[] = {"none", "inverse-square"};
                 combo("attenuation", l.attenuation, kAttenuation);
+                if (l.attenuation == Attenuation::InverseSquare) {
+                    // 0 = no window; otherwise the light fades smoothly to zero at this distance.
+                    ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f",
+                                     ImGuiSliderFlags_AlwaysClamp);
+                    if (l.range > 0.0f && l.range < 1e-4f) l.range = 1e-4f;
+                }
             }
             if (ImGui::Button("remove light")) remove = int(i);
             ImGui::TreePop();
@@ -169,6 +185,27 @@ void sectionLights(Scene& scene) {
     if (remove >= 0) scene.lights.erase(scene.lights.begin() + remove);
     ImGui::BeginDisabled(scene.lights.size() >= std::size_t(kMaxLights));
     if (ImGui::Button("add light")) scene.lights.emplace_back();
+    ImGui::EndDisabled();
+}
+
+void sectionShadows(ShadowSettings& s) {
+    ImGui::Checkbox("shadows (occlusion toward every light)", &s.enabled);
+    ImGui::BeginDisabled(!s.enabled);
+    ImGui::SliderFloat("normal bias (texels)", &s.normalBias, 0.0f, 8.0f, "%.2f");
+    ImGui::SliderFloat("depth bias (slope)", &s.depthBias, 0.0f, 8.0f, "%.2f");
+    s.normalBias = std::clamp(s.normalBias, 0.0f, 100.0f);
+    s.depthBias = std::clamp(s.depthBias, 0.0f, 100.0f);
+    ImGui::SliderInt("PCF radius", &s.pcf, 0, kMaxPcfRadius);
+    s.pcf = std::clamp(s.pcf, 0, kMaxPcfRadius);
+    // Powers of two from 64 to 4096, as an exponent slider.
+    auto sizeSlider = [](const char* label, int& size) {
+        int exponent = int(std::lround(std::log2(double(std::max(size, kMinShadowMapSize)))));
+        if (ImGui::SliderInt(label, &exponent, 6, 12, "")) size = 1 << std::clamp(exponent, 6, 12);
+        ImGui::SameLine();
+        ImGui::Text("%d", size);
+    };
+    sizeSlider("map size", s.mapSize);
+    sizeSlider("area map size", s.areaMapSize);
     ImGui::EndDisabled();
 }
 
@@ -258,6 +295,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
             sectionMesh(object.mesh, object.transform, status.objectTriangles);
     }
     if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) sectionLights(scene);
+    if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen)) sectionShadows(scene.shadows);
     if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) sectionOverlays(settings);
     if (ImGui::CollapsingHeader("Camera")) sectionCamera(scene.camera, requests);
     if (ImGui::CollapsingHeader("Background")) colorEdit("background", scene.background);

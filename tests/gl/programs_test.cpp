@@ -49,6 +49,25 @@ TEST_F(GlContext, EverySpecialisationCompiles) {
     scene.lights.assign(SL_MAX_LIGHTS, Light{});
     scene.reflection = ReflectionModel::Phong;
     variants.push_back(scene);
+    // Issue 5: every kind and falloff, with and without shadows, each PCF radius; 16 shadowed lights
+    // need 16 samplers in the vertex stage too (flat and gouraud light there).
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        Light& light = scene.lights[l];
+        light.type = LightType(l % 3);
+        light.attenuation = l % 2 ? Attenuation::InverseSquare : Attenuation::None;
+        light.range = l % 4 == 1 ? 5.0f : 0.0f;
+        light.samples = {int(l % 3) + 1, 2};
+    }
+    variants.push_back(scene);
+    for (int pcf = 0; pcf <= kMaxPcfRadius; ++pcf) {
+        scene.shadows.enabled = true;
+        scene.shadows.pcf = pcf;
+        variants.push_back(scene);
+    }
+    scene.lights.resize(1);
+    scene.lights[0].type = LightType::Area;
+    scene.lights[0].samples = {kMaxAreaSamplesPerSide, kMaxAreaSamplesPerSide};
+    variants.push_back(scene);
     for (const Scene& v : variants)
         for (const char* name : {"flat", "gouraud", "phong"}) {
             SCOPED_TRACE(name);

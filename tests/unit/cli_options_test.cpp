@@ -70,3 +70,49 @@ TEST(CliOptions, NegativeCoefficientIsRefused) {
     }
     EXPECT_THROW(sceneFromOptions(parseOptions({"--ke", "0"})), InputError);
 }
+
+// Issue 5: --light (repeatable) and --shadows.
+TEST(CliOptions, LightsAndShadows) {
+    const Options o = parseOptions({"--light", "point:1,2,3:intensity=9:attenuation=inverse-square:range=12",
+                                    "--light=directional:0,-1,-0.5:color=1,0.9,0.8",
+                                    "--light", "area:0,3,0:normal=0,-1,0.1:size=1.6,0.8:samples=8x4:two-sided",
+                                    "--shadows"});
+    ASSERT_EQ(o.lights.size(), 3u);
+    EXPECT_EQ(o.lights[0].type, LightType::Point);
+    EXPECT_EQ(o.lights[0].position, glm::vec3(1, 2, 3));
+    EXPECT_FLOAT_EQ(o.lights[0].intensity, 9.0f);
+    EXPECT_EQ(o.lights[0].attenuation, Attenuation::InverseSquare);
+    EXPECT_FLOAT_EQ(o.lights[0].range, 12.0f);
+    EXPECT_EQ(o.lights[1].type, LightType::Directional);
+    EXPECT_EQ(o.lights[1].direction, glm::vec3(0, -1, -0.5f));
+    EXPECT_EQ(o.lights[1].color, glm::vec3(1, 0.9f, 0.8f));
+    EXPECT_EQ(o.lights[2].type, LightType::Area);
+    EXPECT_EQ(o.lights[2].normal, glm::vec3(0, -1, 0.1f));
+    EXPECT_EQ(o.lights[2].size, glm::vec2(1.6f, 0.8f));
+    EXPECT_EQ(o.lights[2].samples, glm::ivec2(8, 4));
+    EXPECT_TRUE(o.lights[2].twoSided);
+    EXPECT_TRUE(*o.shadows);
+    EXPECT_FALSE(*parseOptions({"--no-shadows"}).shadows);
+    EXPECT_FALSE(parseOptions({}).shadows.has_value());
+}
+
+TEST(CliOptions, BadLightsNameTheFlagAndTheKey) {
+    EXPECT_NE(errorOf({"--light", "spot:1,2,3"}).find("--light: unknown light type \"spot\""), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "point"}).find("--light: expected TYPE:X,Y,Z"), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "point:1,2"}).find("point: expected 3 numbers"), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "point:1,2,x"}).find("\"x\" is not a number"), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "point:1,2,3:intensity=-1"}).find("intensity: -1 is out of range"), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "point:1,2,3:samples=4x4"}).find("unknown key \"samples\" for a point light"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--light", "area:0,3,0:samples=0x4"}).find("samples: 0 is out of range"), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "area:0,3,0:samples=2.5x4"}).find("samples: expected NXxNY integers"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--light", "point:1,2,3:range=5"}).find("range needs attenuation=inverse-square"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--light", "directional:0,0,0"}).find("zero-length"), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "point:1,2,3:color=2,0,0"}).find("color: 2 is out of range"), std::string::npos);
+    EXPECT_NE(errorOf({"--shadows=1"}).find("--shadows: takes no value"), std::string::npos);
+    std::vector<std::string> many;
+    for (int i = 0; i < 17; ++i) many.insert(many.end(), {"--light", "point:0,1,0"});
+    EXPECT_NE(errorOf(many).find("--light: at most 16 lights"), std::string::npos);
+}

@@ -146,3 +146,177 @@ TEST(Lighting, SrgbEncodingKnownValues) {
     EXPECT_NEAR(encodeSrgb(0.5f), 0.735357f, 1e-4f);
     EXPECT_NEAR(encodeSrgb(0.002f), 0.02584f, 1e-5f);  // linear segment
 }
+
+// ---- Issue 5: several lights, falloff windows, area lights, visibility -------------------------
+
+namespace {
+
+Light pointAt(glm::vec3 p, float intensity, Attenuation a = Attenuation::None) {
+    Light l;
+    l.position = p;
+    l.intensity = intensity;
+    l.attenuation = a;
+    return l;
+}
+
+LightingEnvironment envWith(std::vector<Light> lights) {
+    LightingEnvironment env;
+    env.ambient = {0.2f, 0.2f, 0.2f};
+    env.eyeWorld = {0.3f, 4.0f, 2.0f};
+    env.lights = std::move(lights);
+    return env;
+}
+
+}  // namespace
+
+// The lecture's "add their contributions": two lights together are the sum of each alone.
+TEST(Lighting, LightsAddUp) {
+    Material m = plainMaterial();
+    m.ka = 0.0f;
+    const Light a = pointAt({1, 2, 1}, 0.3f), b = pointAt({-2, 1, 0.5f}, 4.0f, Attenuation::InverseSquare);
+    const glm::vec3 p(0.1f, 0, 0), n(0, 1, 0);
+    const ShadingTerms both = shadeTerms(m, envWith({a, b}), p, n);
+    const ShadingTerms one = shadeTerms(m, envWith({a}), p, n), two = shadeTerms(m, envWith({b}), p, n);
+    EXPECT_NEAR(both.diffuse.x, one.diffuse.x + two.diffuse.x, kEps);
+    EXPECT_NEAR(both.specular.y, one.specular.y + two.specular.y, kEps);
+}
+
+// Inverse-square with a range: 1/r^2 * (1 - (r/range)^4)^2, zero from the range on.
+TEST(Lighting, RangeWindowReachesZero) {
+    Light l = pointAt({0, 0, 0}, 1.0f, Attenuation::InverseSquare);
+    EXPECT_NEAR(attenuationFactor(l, 4.0f), 0.25f, 1e-7f);  // no range: plain 1/r^2
+    l.range = 4.0f;
+    // r = 2: (1 - (1/2)^4)^2 / 4 = (15/16)^2 / 4
+    EXPECT_NEAR(attenuationFactor(l, 4.0f), (15.0f / 16.0f) * (15.0f / 16.0f) / 4.0f, 1e-7f);
+    EXPECT_NEAR(attenuationFactor(l, 0.01f), 100.0f, 1e-3f);  // near the light the window is ~1
+    EXPECT_EQ(attenuationFactor(l, 16.0f), 0.0f);             // r = range
+    EXPECT_EQ(attenuationFactor(l, 100.0f), 0.0f);            // beyond it
+    l.attenuation = Attenuation::None;
+    EXPECT_EQ(attenuationFactor(l, 100.0f), 1.0f);  // a range means nothing without inverse-square
+}
+
+// A 1 x 1 area light is a point light at its centre whose intensity is multiplied by the cosine at the
+// light, cos = n_light . (p - centre) / |p - centre| - in every term, with either falloff.
+TEST(Lighting, OneSampleAreaLightIsAPointLightTimesTheCosine) {
+    const Material m = plainMaterial();
+    const glm::vec3 p(0.4f, 0.0f, -0.3f), n = glm::normalize(glm::vec3(0.1f, 1.0f, 0.2f));
+    for (Attenuation att : {Attenuation::None, Attenuation::InverseSquare}) {
+        Light area;
+        area.type = LightType::Area;
+        area.position = {1.0f, 2.5f, 0.5f};
+        area.normal = {-0.3f, -1.0f, 0.1f};
+        area.size = {2.0f, 0.7f};
+        area.samples = {1, 1};
+        area.intensity = 3.0f;
+        area.color = {1.0f, 0.8f, 0.6f};
+        area.attenuation = att;
+        const float cosLight = glm::dot(glm::normalize(area.normal), glm::normalize(p - area.position));
+        ASSERT_GT(cosLight, 0.5f);
+        Light point = pointAt(area.position, area.intensity * cosLight, att);
+        point.color = area.color;
+        const ShadingTerms a = shadeTerms(m, envWith({area}), p, n), b = shadeTerms(m, envWith({point}), p, n);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(a.diffuse[c], b.diffuse[c], 1e-6f);
+            EXPECT_NEAR(a.specular[c], b.specular[c], 1e-6f);
+        }
+        EXPECT_GT(a.diffuse.x, 0.01f);
+    }
+}
+
+// An n x n area light, by hand: the sum over its samples of (1/n^2) * cos at the light * the point
+// term; far away (distance >> size) it tends to a point light at the centre.
+TEST(Lighting, AreaLightIsTheWeightedSumOfItsSamples) {
+    Material m = plainMaterial();
+    m.ks = 0.0f;
+    Light area;
+    area.type = LightType::Area;
+    area.position = {0.0f, 2.0f, 0.0f};
+    area.size = {1.0f, 2.0f};
+    area.samples = {3, 2};
+    area.attenuation = Attenuation::InverseSquare;
+    const glm::vec3 p(0.5f, 0.0f, 0.2f), n(0, 1, 0);
+    float expected = 0.0f;
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 3; ++i) {
+            const glm::vec3 s = areaSamplePosition(area, i, j);
+            EXPECT_NEAR(s.y, 2.0f, 1e-6f);  // in the light's plane, inside its rectangle
+            EXPECT_LE(std::fabs(s.x), 0.5f);
+            EXPECT_LE(std::fabs(s.z), 1.0f);
+            const glm::vec3 d = s - p;
+            const float r2 = glm::dot(d, d);
+            const glm::vec3 i_ = d / std::sqrt(r2);
+            expected += (1.0f / 6.0f) * (-glm::dot(glm::vec3(0, -1, 0), i_)) / r2 * m.kd * m.color.x * glm::dot(n, i_);
+        }
+    EXPECT_NEAR(shadeTerms(m, envWith({area}), p, n).diffuse.x, expected, 1e-6f);
+
+    area.position = {0.0f, 200.0f, 0.0f};
+    const Light point = pointAt(area.position, 1.0f, Attenuation::InverseSquare);
+    const float far = shadeTerms(m, envWith({area}), p, n).diffuse.x;
+    EXPECT_NEAR(far / shadeTerms(m, envWith({point}), p, n).diffuse.x, 1.0f, 1e-4f);
+}
+
+// One-sided lights light nothing behind them; two-sided ones light both sides the same.
+TEST(Lighting, AreaLightSides) {
+    Material m = plainMaterial();
+    Light area;
+    area.type = LightType::Area;
+    area.position = {0.0f, 1.0f, 0.0f};
+    area.normal = {0.0f, 1.0f, 0.0f};  // emits upward: the floor below is behind it
+    area.samples = {2, 2};
+    const glm::vec3 below(0.2f, 0.0f, 0.0f), above(0.2f, 2.0f, 0.0f);
+    EXPECT_EQ(shadeTerms(m, envWith({area}), below, {0, 1, 0}).diffuse, glm::vec3(0.0f));
+    area.twoSided = true;
+    const float under = shadeTerms(m, envWith({area}), below, {0, 1, 0}).diffuse.x;
+    const float over = shadeTerms(m, envWith({area}), above, {0, -1, 0}).diffuse.x;
+    EXPECT_GT(under, 0.05f);
+    EXPECT_NEAR(under, over, 1e-6f);  // mirror images
+}
+
+// The jitter: stratified (each sample in its own cell), fixed (pinned hash values), centred for one
+// sample per side.
+TEST(Lighting, AreaSampleJitterIsStratifiedAndFixed) {
+    EXPECT_EQ(jitterHash(0u), 0u);
+    EXPECT_EQ(jitterHash(1u), 0x688990c0u);
+    EXPECT_EQ(jitterHash(0x5ade1abu), 0xe74f2785u);
+    EXPECT_EQ(areaSampleOffset(0, 0, {1, 1}), glm::vec2(0.0f));
+    const glm::ivec2 n(8, 4);
+    float spread = 0.0f;
+    for (int j = 0; j < n.y; ++j)
+        for (int i = 0; i < n.x; ++i) {
+            const glm::vec2 o = areaSampleOffset(i, j, n);
+            EXPECT_GE(o.x + 0.5f, float(i) / 8.0f);
+            EXPECT_LT(o.x + 0.5f, float(i + 1) / 8.0f);
+            EXPECT_GE(o.y + 0.5f, float(j) / 4.0f);
+            EXPECT_LT(o.y + 0.5f, float(j + 1) / 4.0f);
+            spread += std::fabs(o.x + 0.5f - (float(i) + 0.5f) / 8.0f);
+        }
+    EXPECT_GT(spread, 0.01f) << "not jittered";
+    EXPECT_EQ(areaSampleOffset(3, 2, n), areaSampleOffset(3, 2, n));
+}
+
+// v(p, I): an occluded light leaves only the ambient term; the visibility sees each sample's ray.
+TEST(Lighting, VisibilityScalesEachLightSample) {
+    const Material m = plainMaterial();
+    Light area;
+    area.type = LightType::Area;
+    area.position = {0.0f, 3.0f, 0.0f};
+    area.samples = {2, 2};
+    const LightingEnvironment env = envWith({pointAt({1, 2, 0}, 1.0f), area});
+    const glm::vec3 p(0, 0, 0), n(0, 1, 0);
+    const ShadingTerms lit = shadeTerms(m, env, p, n);
+    const ShadingTerms dark = shadeTerms(m, env, p, n, [](const glm::vec3&, const LightRay&) { return 0.0f; });
+    EXPECT_EQ(dark.diffuse, glm::vec3(0.0f));
+    EXPECT_EQ(dark.specular, glm::vec3(0.0f));
+    EXPECT_EQ(dark.total, lit.ambient);
+    int rays = 0;
+    const ShadingTerms half = shadeTerms(m, env, p, n, [&](const glm::vec3& at, const LightRay& r) {
+        ++rays;
+        EXPECT_EQ(at, p);
+        EXPECT_NEAR(glm::length(r.towardLight), 1.0f, 1e-6f);
+        const glm::vec3 target = r.light == 0 ? glm::vec3(1, 2, 0) : areaSamplePosition(area, r.sample % 2, r.sample / 2);
+        EXPECT_NEAR(glm::length(p + r.distance * r.towardLight - target), 0.0f, 1e-5f);
+        return r.light == 1 ? 1.0f : 0.0f;  // the point light is hidden, the area light is not
+    });
+    EXPECT_EQ(rays, 5);
+    EXPECT_NEAR(half.diffuse.x, lit.diffuse.x - shadeTerms(m, envWith({pointAt({1, 2, 0}, 1.0f)}), p, n).diffuse.x, 1e-6f);
+}

@@ -213,3 +213,85 @@ TEST(SceneJson, MeshShorthand) {
     EXPECT_THROW(parseMeshShorthand("icosphere:99", "--mesh"), InputError);
     EXPECT_THROW(parseMeshShorthand("teapot", "--mesh"), InputError);
 }
+
+// Issue 5: area lights, attenuation ranges, shadows and their settings.
+TEST(SceneJson, LightsOfEveryKindAndShadowSettings) {
+    const Scene s = parse(R"({
+      "lights": [{"type": "point", "position": [1, 2, 3], "attenuation": "inverse-square", "range": 7.5},
+                 {"type": "area", "position": [0, 3, 0], "normal": [0, -1, 0.2], "size": [2, 0.5],
+                  "samples": [8, 3], "color": [1, 0.9, 0.8], "intensity": 12, "two_sided": true,
+                  "attenuation": "inverse-square"},
+                 {"type": "area"}],
+      "shadows": true,
+      "shadow_settings": {"normal_bias": 2.5, "depth_bias": 3, "pcf": 2, "map_size": 512, "area_map_size": 128}
+    })");
+    ASSERT_EQ(s.lights.size(), 3u);
+    EXPECT_FLOAT_EQ(s.lights[0].range, 7.5f);
+    const Light& a = s.lights[1];
+    EXPECT_EQ(a.type, LightType::Area);
+    EXPECT_EQ(a.normal, glm::vec3(0, -1, 0.2f));
+    EXPECT_EQ(a.size, glm::vec2(2, 0.5f));
+    EXPECT_EQ(a.samples, glm::ivec2(8, 3));
+    EXPECT_TRUE(a.twoSided);
+    EXPECT_EQ(a.attenuation, Attenuation::InverseSquare);
+    EXPECT_FLOAT_EQ(a.intensity, 12.0f);
+    // Documented defaults of an area light: 1 x 1 m facing down, 4 x 4 samples, one-sided, no falloff.
+    const Light& d = s.lights[2];
+    EXPECT_EQ(d.normal, glm::vec3(0, -1, 0));
+    EXPECT_EQ(d.size, glm::vec2(1, 1));
+    EXPECT_EQ(d.samples, glm::ivec2(4, 4));
+    EXPECT_FALSE(d.twoSided);
+    EXPECT_EQ(d.attenuation, Attenuation::None);
+    EXPECT_TRUE(s.shadows.enabled);
+    EXPECT_FLOAT_EQ(s.shadows.normalBias, 2.5f);
+    EXPECT_FLOAT_EQ(s.shadows.depthBias, 3.0f);
+    EXPECT_EQ(s.shadows.pcf, 2);
+    EXPECT_EQ(s.shadows.mapSize, 512);
+    EXPECT_EQ(s.shadows.areaMapSize, 128);
+    // Off unless asked for; the defaults of the settings are the documented ones.
+    const Scene plain = parse("{}");
+    EXPECT_FALSE(plain.shadows.enabled);
+    EXPECT_EQ(plain.shadows, ShadowSettings{});
+
+    // The round trip keeps all of it.
+    const Scene r = parse(sceneToJson(s, "/scenes"));
+    ASSERT_EQ(r.lights.size(), 3u);
+    EXPECT_FLOAT_EQ(r.lights[0].range, 7.5f);
+    EXPECT_EQ(r.lights[1].samples, a.samples);
+    EXPECT_EQ(r.lights[1].size, a.size);
+    EXPECT_EQ(r.lights[1].normal, a.normal);
+    EXPECT_TRUE(r.lights[1].twoSided);
+    EXPECT_EQ(r.shadows, s.shadows);
+    EXPECT_EQ(sceneToJson(r, "/scenes"), sceneToJson(s, "/scenes"));
+}
+
+TEST(SceneJson, LightAndShadowErrorsNameTheField) {
+    expectError(R"({"lights": [{"type": "spot"}]})",
+                {"lights[0].type", "unknown value \"spot\"", "\"point\", \"directional\", \"area\""});
+    expectError(R"({"lights": [{"type": "area", "samples": [0, 4]}]})", {"lights[0].samples[0]", ">= 1"});
+    expectError(R"({"lights": [{"type": "area", "samples": [4, 17]}]})", {"lights[0].samples[1]", "<= 16"});
+    expectError(R"({"lights": [{"type": "area", "samples": [4]}]})", {"lights[0].samples", "2 integers"});
+    expectError(R"({"lights": [{"type": "area", "samples": [2.5, 4]}]})", {"lights[0].samples[0]", "integer"});
+    expectError(R"({"lights": [{"type": "area", "size": [1, 0]}]})", {"lights[0].size[1]", ">= 0.0001"});
+    expectError(R"({"lights": [{"type": "area", "normal": [0, 0, 0]}]})", {"lights[0].normal", "zero-length"});
+    expectError(R"({"lights": [{"type": "area", "two_sided": 1}]})", {"lights[0].two_sided", "true or false"});
+    expectError(R"({"lights": [{"type": "area", "direction": [0, -1, 0]}]})", {"lights[0].direction", "unknown field"});
+    expectError(R"({"lights": [{"type": "point", "range": 5}]})", {"lights[0].range", "inverse-square"});
+    expectError(R"({"lights": [{"type": "point", "attenuation": "inverse-square", "range": 0}]})",
+                {"lights[0].range", ">= 0.0001"});
+    expectError(R"({"lights": [{"type": "directional", "range": 5}]})", {"lights[0].range", "unknown field"});
+    expectError(R"({"shadows": "yes"})", {"shadows", "true or false"});
+    expectError(R"({"shadow_settings": {"pcf": 3}})", {"shadow_settings.pcf", "<= 2"});
+    expectError(R"({"shadow_settings": {"map_size": 32}})", {"shadow_settings.map_size", ">= 64"});
+    expectError(R"({"shadow_settings": {"area_map_size": 8192}})", {"shadow_settings.area_map_size", "<= 4096"});
+    expectError(R"({"shadow_settings": {"normal_bias": -1}})", {"shadow_settings.normal_bias", ">= 0"});
+    expectError(R"({"shadow_settings": {"bias": 1}})", {"shadow_settings.bias", "unknown field"});
+}
+
+// Every shipped scene parses (the shadow scenes among them).
+TEST(SceneJson, ShippedScenesLoad) {
+    for (const auto& entry : fs::directory_iterator(std::string(SHADELAB_SOURCE_DIR) + "/assets/scenes")) {
+        SCOPED_TRACE(entry.path().string());
+        EXPECT_NO_THROW(loadSceneFile(entry.path().string()));
+    }
+}

@@ -1,0 +1,141 @@
+#include "render/shadow_maps.hpp"
+
+#include "core/lighting.hpp"
+#include "render/program.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+
+namespace shadelab {
+namespace {
+
+void put(std::vector<float>& s, const glm::vec3& v) { s.insert(s.end(), {v.x, v.y, v.z}); }
+
+// Everything a light's maps depend on, flattened: if it is unchanged, so are the maps.
+std::vector<float> signatureOf(const Scene& scene, const std::vector<ShadowMaps::DepthDraw>& draws) {
+    std::vector<float> s;
+    const ShadowSettings& st = scene.shadows;
+    s.insert(s.end(), {float(st.mapSize), float(st.areaMapSize), float(st.pcf), st.depthBias});
+    for (const Light& l : scene.lights) {
+        s.insert(s.end(), {float(int(l.type)), float(l.samples.x), float(l.samples.y), l.size.x, l.size.y,
+                           l.twoSided ? 1.0f : 0.0f});
+        put(s, l.position);
+        put(s, l.direction);
+        put(s, l.normal);
+    }
+    for (const ShadowMaps::DepthDraw& d : draws) {
+        s.insert(s.end(), {float(d.vao), float(d.first), float(d.count)});
+        s.insert(s.end(), glm::value_ptr(d.worldFromObject), glm::value_ptr(d.worldFromObject) + 16);
+    }
+    return s;
+}
+
+void copy4(float (&dst)[4], const glm::vec4& v) { std::memcpy(dst, glm::value_ptr(v), sizeof dst); }
+
+}  // namespace
+
+void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws, const std::vector<Aabb>& boxes,
+                        const ShaderLibrary& shaders) {
+    viewsRendered_ = 0;
+    const std::size_t count = std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS);
+    std::vector<float> signature = signatureOf(scene, draws);
+    if (signature == signature_ && lights_.size() == count) return;
+    signature_ = std::move(signature);
+
+    if (!program_) {
+        program_ = buildProgram("shadow_depth", shaders);
+        clipFromObjectLoc_ = glGetUniformLocation(program_.get(), "u_shadowClipFromObject");
+        GLuint fbo = 0;
+        glGenFramebuffers(1, &fbo);
+        framebuffer_ = gl::Framebuffer(fbo);
+    }
+    lights_.resize(count);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    glUseProgram(program_.get());
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);  // open meshes (a plane) cast from both sides
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    // Slope-scaled offset: surfaces at a grazing angle to the light get pushed further.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(scene.shadows.depthBias, scene.shadows.depthBias);
+    glClearDepth(1.0);
+
+    for (std::size_t l = 0; l < count; ++l) {
+        LightMaps& m = lights_[l];
+        m.projection = shadowProjection(scene.lights[l], boxes, scene.shadows);
+        const int layers = int(m.projection.clipFromWorld.size());
+        if (!m.texture || m.size != m.projection.size || m.layers != layers) {
+            GLuint id = 0;
+            glGenTextures(1, &id);
+            m.texture = gl::Texture(id);
+            m.size = m.projection.size;
+            m.layers = layers;
+            glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+            glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, m.size, m.size, layers, 0, GL_DEPTH_COMPONENT,
+                         GL_UNSIGNED_INT, nullptr);
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+            // Outside a map is lit: depth 1 at the border compares as "nothing in front".
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+            const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+            glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, border);
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        }
+        glViewport(0, 0, m.size, m.size);
+        for (int layer = 0; layer < layers; ++layer) {
+            glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, m.texture.get(), 0, layer);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            const glm::mat4& clipFromWorld = m.projection.clipFromWorld[std::size_t(layer)];
+            for (const DepthDraw& d : draws) {
+                if (d.count == 0) continue;
+                const glm::mat4 clipFromObject = clipFromWorld * d.worldFromObject;
+                glUniformMatrix4fv(clipFromObjectLoc_, 1, GL_FALSE, glm::value_ptr(clipFromObject));
+                glBindVertexArray(d.vao);
+                glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
+                               reinterpret_cast<void*>(std::size_t(d.first) * sizeof(std::uint32_t)));
+            }
+            ++viewsRendered_;
+        }
+    }
+    glBindVertexArray(0);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, 0, 0, 0);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void ShadowMaps::fillBlock(const Scene& scene, gpu::FrameBlock& b) const {
+    b.shadowSettings[0] = scene.shadows.normalBias;
+    for (std::size_t l = 0; l < lights_.size() && l < std::size_t(SL_MAX_LIGHTS); ++l) {
+        const ShadowProjection& p = lights_[l].projection;
+        gpu::LightGpu& g = b.lights[l];
+        g.falloff[2] = p.size > 0 ? 1.0f / float(p.size) : 0.0f;
+        const glm::mat4& clip = p.clipFromWorld.empty() ? glm::mat4(1.0f)
+                                : scene.lights[l].type == LightType::Area ? p.centreClipFromWorld
+                                                                           : p.clipFromWorld.front();
+        std::memcpy(g.shadowClipFromWorld, glm::value_ptr(clip), sizeof g.shadowClipFromWorld);
+        copy4(g.shadowU, p.uClip);
+        copy4(g.shadowV, p.vClip);
+        copy4(g.shadow, glm::vec4(p.texelWorld, p.depthA, p.depthB, p.tanHalf));
+    }
+}
+
+void ShadowMaps::bindTextures() const {
+    for (std::size_t l = 0; l < lights_.size(); ++l) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + SL_TEXTURE_SHADOW_BASE + int(l)));
+        glBindTexture(GL_TEXTURE_2D_ARRAY, lights_[l].texture.get());
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace shadelab

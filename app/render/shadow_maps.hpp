@@ -1,0 +1,59 @@
+#pragma once
+// Shadow maps for Renderer: one depth texture array per light, rendered before the shaded passes
+// when the scene asks for shadows. What each layer sees is decided GL-free in
+// core/shadow_projection.hpp; this class owns the textures, the depth-only program and the pass.
+// The maps are re-rendered only when something they depend on changed (lights, settings, object
+// transforms, geometry), so a still scene in the viewer pays for them once.
+#include "core/scene.hpp"
+#include "core/shadow_projection.hpp"
+#include "render/gl_handles.hpp"
+#include "render/gpu_blocks.hpp"
+#include "render/shader_library.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <vector>
+
+namespace shadelab {
+
+class ShadowMaps {
+public:
+    // One object part to draw into the maps: a VAO with positions at SL_ATTRIB_POSITION.
+    struct DepthDraw {
+        GLuint vao = 0;
+        GLsizei first = 0, count = 0;  // indices (uint32)
+        glm::mat4 worldFromObject{1.0f};
+    };
+
+    ShadowMaps() = default;
+    ShadowMaps(const ShadowMaps&) = delete;
+    ShadowMaps& operator=(const ShadowMaps&) = delete;
+
+    // Renders every light's maps (if anything changed). `objectBoxes` are world-space boxes of all
+    // objects. Leaves the framebuffer binding and viewport for the caller to set.
+    void render(const Scene& scene, const std::vector<DepthDraw>& draws, const std::vector<Aabb>& objectBoxes,
+                const ShaderLibrary& shaders);
+    // Writes the per-light shadow data and the settings into a FrameBlock.
+    void fillBlock(const Scene& scene, gpu::FrameBlock& block) const;
+    // Binds light l's map to texture unit SL_TEXTURE_SHADOW_BASE + l.
+    void bindTextures() const;
+    // Forget the cached maps (new geometry may reuse the old VAO names).
+    void invalidate() { signature_.clear(); }
+    // How many depth views the last render() drew (0 when the cache was used): for tests and the HUD.
+    int viewsRendered() const { return viewsRendered_; }
+
+private:
+    struct LightMaps {
+        gl::Texture texture;
+        int size = 0, layers = 0;
+        ShadowProjection projection;
+    };
+    gl::Program program_;
+    GLint clipFromObjectLoc_ = -1;
+    gl::Framebuffer framebuffer_;
+    std::vector<LightMaps> lights_;
+    std::vector<float> signature_;  // everything the maps depend on, as of the last render
+    int viewsRendered_ = 0;
+};
+
+}  // namespace shadelab
