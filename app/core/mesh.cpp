@@ -167,22 +167,35 @@ Mesh makeProceduralMesh(const MeshSpec& s) {
 FlatMesh makeFlatMesh(const Mesh& m) {
     FlatMesh f;
     const size_t vertexCount = m.positions.size(), triangles = m.triangleCount();
-    f.positions.reserve(vertexCount + triangles);
-    f.normals.reserve(vertexCount + triangles);
-    f.centroids.reserve(vertexCount + triangles);
     f.positions = m.positions;
     f.normals = m.normals;
     f.centroids = m.positions;
     f.indices.resize(m.indices.size());
+    std::vector<bool> claimed(vertexCount, false);
     for (size_t t = 0; t < triangles; ++t) {
-        const uint32_t a = m.indices[3 * t], b = m.indices[3 * t + 1], c = m.indices[3 * t + 2];
-        const glm::vec3 &pa = m.positions[a], &pb = m.positions[b], &pc = m.positions[c];
-        f.positions.push_back(pc);
-        f.normals.push_back(faceNormal(pa, pb, pc));
-        f.centroids.push_back((pa + pb + pc) / 3.0f);
-        f.indices[3 * t] = a;
-        f.indices[3 * t + 1] = b;
-        f.indices[3 * t + 2] = uint32_t(vertexCount + t);
+        uint32_t corner[3] = {m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]};
+        const glm::vec3 n = faceNormal(m.positions[corner[0]], m.positions[corner[1]], m.positions[corner[2]]);
+        const glm::vec3 centroid = (m.positions[corner[0]] + m.positions[corner[1]] + m.positions[corner[2]]) / 3.0f;
+        // Rotate (a, b, c) -> (b, c, a) -> (c, a, b) until the last corner is free: same winding.
+        int rotations = 0;
+        while (rotations < 3 && claimed[corner[2]]) {
+            std::rotate(corner, corner + 1, corner + 3);
+            ++rotations;
+        }
+        uint32_t provoking = corner[2];
+        if (rotations == 3) {  // all three corners already provoke other triangles: a vertex of its own
+            provoking = uint32_t(f.positions.size());
+            f.positions.push_back(m.positions[corner[2]]);
+            f.normals.push_back(n);
+            f.centroids.push_back(centroid);
+        } else {
+            claimed[provoking] = true;
+            f.normals[provoking] = n;
+            f.centroids[provoking] = centroid;
+        }
+        f.indices[3 * t] = corner[0];
+        f.indices[3 * t + 1] = corner[1];
+        f.indices[3 * t + 2] = provoking;
     }
     return f;
 }

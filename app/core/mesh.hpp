@@ -44,14 +44,16 @@ Mesh makePlane(float size, int subdivisions);                  // x-z square at 
 Mesh makeProceduralMesh(const MeshSpec& spec);
 
 // Vertex data for flat shading. GL takes a `flat` varying from the provoking (last) vertex of each
-// triangle, so every triangle gets a vertex of its own in that slot carrying its face normal and
-// centroid; the other two corners reuse the shared vertices. That is V + T vertices instead of the 3T
-// a de-indexed copy would need, and the colour is evaluated once per triangle, at the centroid.
+// triangle, so every triangle needs a vertex of its own in that slot, carrying its face normal and
+// centroid. Each triangle is rotated (which keeps its winding) so that a corner no other triangle has
+// claimed comes last; only triangles whose three corners are all taken get a new vertex. On a closed
+// mesh (T = 2V) that is about T vertices instead of the V + T of one new vertex per triangle, and a
+// third fewer vertex-shader runs. The colour is still evaluated once per triangle, at its centroid.
 struct FlatMesh {
     std::vector<glm::vec3> positions;   // object space
     std::vector<glm::vec3> normals;     // face normal at each provoking vertex (vertex normal elsewhere)
     std::vector<glm::vec3> centroids;   // triangle centroid at each provoking vertex (position elsewhere)
-    std::vector<std::uint32_t> indices; // (a, b, provoking) per triangle
+    std::vector<std::uint32_t> indices; // per triangle, its corners rotated so the provoking one is last
 };
 FlatMesh makeFlatMesh(const Mesh& mesh);
 

@@ -61,23 +61,31 @@ TEST(Mesh, ProceduralShapesAreConsistentAndCountsAreRight) {
 }
 
 TEST(Mesh, FlatMeshGivesEachTriangleItsOwnProvokingVertex) {
-    const Mesh m = makeIcoSphere(1, 1.0f);
-    const FlatMesh f = makeFlatMesh(m);
-    ASSERT_EQ(f.positions.size(), m.positions.size() + m.triangleCount());
-    ASSERT_EQ(f.indices.size(), m.indices.size());
-    for (size_t t = 0; t < m.triangleCount(); ++t) {
-        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
-                        c = m.positions[m.indices[3 * t + 2]];
-        // The same triangle, corners in the same order, ...
-        EXPECT_EQ(f.positions[f.indices[3 * t]], a);
-        EXPECT_EQ(f.positions[f.indices[3 * t + 1]], b);
-        EXPECT_EQ(f.positions[f.indices[3 * t + 2]], c);
-        // ... whose last (provoking) vertex is its own and carries the face normal and centroid.
-        const uint32_t p = f.indices[3 * t + 2];
-        EXPECT_EQ(p, m.positions.size() + t);
-        EXPECT_EQ(f.normals[p], faceNormal(a, b, c));
-        EXPECT_EQ(f.centroids[p], (a + b + c) / 3.0f);
+    for (const Mesh& m : {makeIcoSphere(2, 1.0f), makeUvSphere(24, 12, 1.0f), makeCube(2.0f), makeTorus(1, 0.3f, 12, 8)}) {
+        const FlatMesh f = makeFlatMesh(m);
+        ASSERT_EQ(f.indices.size(), m.indices.size());
+        std::vector<int> provokes(f.positions.size(), 0);
+        for (size_t t = 0; t < m.triangleCount(); ++t) {
+            const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                            c = m.positions[m.indices[3 * t + 2]];
+            const glm::vec3 fa = f.positions[f.indices[3 * t]], fb = f.positions[f.indices[3 * t + 1]],
+                            fc = f.positions[f.indices[3 * t + 2]];
+            // The same triangle, its corners rotated (winding kept): (a,b,c), (b,c,a) or (c,a,b).
+            const bool same = (fa == a && fb == b && fc == c) || (fa == b && fb == c && fc == a) ||
+                              (fa == c && fb == a && fc == b);
+            EXPECT_TRUE(same) << "triangle " << t;
+            // Its last (provoking) vertex carries its face normal and centroid, and is nobody else's.
+            const uint32_t p = f.indices[3 * t + 2];
+            EXPECT_EQ(f.normals[p], faceNormal(a, b, c));
+            EXPECT_NEAR(glm::distance(f.centroids[p], (a + b + c) / 3.0f), 0.0f, 1e-6f);
+            ++provokes[p];
+        }
+        for (int count : provokes) EXPECT_LE(count, 1);
+        // Far fewer vertices than one new vertex per triangle.
+        EXPECT_LT(f.positions.size(), m.positions.size() + m.triangleCount());
     }
+    const Mesh sphere = makeUvSphere(64, 32, 1.0f);
+    EXPECT_LE(makeFlatMesh(sphere).positions.size(), size_t(1.1 * double(sphere.triangleCount())));
 }
 
 TEST(Mesh, WorldBoundsFollowTransforms) {
