@@ -52,7 +52,7 @@ public:
 private:
     struct GpuMesh {
         gl::VertexArray vao;
-        std::array<gl::Buffer, 3> attributes;  // positions, normals, (flat) centroids: one buffer each
+        std::array<gl::Buffer, 1> attributes;  // interleaved positions, normals, (flat) centroids
         gl::Buffer indices;
         GLsizei indexCount = 0;
     };
