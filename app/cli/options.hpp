@@ -20,6 +20,12 @@ struct Options {
     std::optional<MeshSpec> mesh;           // --mesh: replaces the first object's mesh
     std::vector<Light> lights;              // --light (repeatable): replace the scene's lights
     std::optional<bool> shadows;            // --shadows / --no-shadows
+    std::optional<SpecularNormalization> specularNormalization;  // --specular-normalization none|energy
+    std::optional<FresnelMode> fresnel;     // --fresnel none|schlick|exact
+    std::optional<float> ior;               // --ior X (1..10)
+    std::optional<TermView> show;           // --show all|ambient|diffuse|specular|light:N|unlit
+    std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
+    std::optional<float> diffFactor;        // --diff-factor X (1..1000)
     int benchmarkFrames = 0;                // --benchmark N
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context

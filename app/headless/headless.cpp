@@ -65,7 +65,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                                                const ShaderLibrary& shaders, HeadlessBackend backend) {
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
-    const std::size_t triangles = geometry->triangleCount() * (scene.layout == Layout::Compare ? 3 : 1);
+    const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
     std::vector<BenchmarkResult> results;
