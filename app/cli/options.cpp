@@ -113,6 +113,13 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (f < 1.0f || f > kMaxDiffFactor) throw InputError(arg + ": must be between 1 and 1000 (got " + v + ")");
             o.diffFactor = f;
         }
+        else if (arg == "--sweep") {
+            o.sweeps.push_back(parseSweep(next(), arg));
+            if (o.sweeps.size() > std::size_t(kMaxSweeps))
+                throw InputError(arg + ": at most two sweeps (columns and rows)");
+            if (o.sweeps.size() == 2 && o.sweeps[0].parameter == o.sweeps[1].parameter)
+                throw InputError(arg + ": " + o.sweeps[1].parameter + " is swept twice");
+        }
         else if (arg == "--shadows") noValue(), o.shadows = true;
         else if (arg == "--no-shadows") noValue(), o.shadows = false;
         else if (arg == "--shader-dir") o.shaderDir = next();
@@ -160,6 +167,8 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw InputError("--screenshot-view: " + *o.screenshotView + ": only .png is supported");
     if (o.saveScene && !hasExtension(*o.saveScene, ".json"))
         throw InputError("--save-scene: " + *o.saveScene + ": scene files end in .json");
+    if (!o.sweeps.empty() && (!o.output || o.benchmarkFrames))
+        throw InputError("--sweep: renders a sheet to a PNG: give --output FILE.png (and no --benchmark)");
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
     const bool viewerFlags =
         o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel || !o.overlays.empty();
@@ -234,6 +243,10 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           normal=X,Y,Z size=W,H samples=NXxNY two-sided (area), e.g.
                           --light area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
   --shadows, --no-shadows shadows (occlusion toward every light) on or off
+  --sweep PARAM=V1,V2,... with --output: a contact sheet, one labelled tile (of --size) per value;
+                          a second --sweep makes a grid (rows). PARAM: ke, ks, kd, ka, intensity (every
+                          light), tessellation (first mesh), ior, shading, reflection,
+                          specular_normalization, fresnel. E.g. --sweep ke=1,8,32,128,512 --sweep shading=gouraud,phong
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --backend NAME          headless OpenGL for --output/--benchmark: osmesa, egl, or auto (OSMesa,
                           else EGL)
