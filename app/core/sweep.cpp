@@ -124,7 +124,9 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
 
 std::string sweepLabel(const Sweep& sweep, std::size_t index) {
     const std::string name = sweep.parameter == "ke" ? "k_e" : sweep.parameter == "ks" ? "k_s"
-                             : sweep.parameter == "kd" ? "k_d" : sweep.parameter == "ka" ? "k_a" : sweep.parameter;
+                             : sweep.parameter == "kd" ? "k_d" : sweep.parameter == "ka" ? "k_a"
+                             : sweep.parameter == "specular_normalization" ? "norm" : sweep.parameter == "tessellation" ? "tess"
+                                                                                                                        : sweep.parameter;
     return name + "=" + sweep.values.at(index);
 }
 
@@ -135,13 +137,15 @@ Image contactSheet(const std::vector<Image>& tiles, const std::vector<std::strin
     const int rows = (int(tiles.size()) + columns - 1) / columns;
     Image sheet(columns * tw + (columns + 1) * gap, rows * (th + bar) + (rows + 1) * gap);
     fillRect(sheet, 0, 0, sheet.width, sheet.height, Rgba8{40, 40, 44, 255});
+    // One label size for the whole sheet: twice the font when every label fits its tile, else 1x
+    // (and a label still too long is cut at the tile's width).
+    int scale = kSheetLabelScale;
+    for (const std::string& l : labels)
+        if (textWidth(l, kSheetLabelScale) > tw - 4) scale = 1;
     for (std::size_t i = 0; i < tiles.size(); ++i) {
         const int col = int(i) % columns, row = int(i) / columns;
         const int x0 = gap + col * (tw + gap), y0 = gap + row * (th + bar + gap);
-        // The label at twice the font size when it fits the tile, else at 1x, else cut to fit.
         std::string label = i < labels.size() ? labels[i] : std::string();
-        int scale = kSheetLabelScale;
-        if (textWidth(label, scale) > tw - 4) scale = 1;
         while (!label.empty() && textWidth(label, scale) > tw - 4) label.pop_back();
         const int lw = textWidth(label, scale);
         drawText(sheet, x0 + std::max((tw - lw) / 2, 2), y0 + (bar - textHeight("Ag", scale)) / 2, label, scale,

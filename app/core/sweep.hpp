@@ -31,8 +31,8 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
 std::string sweepLabel(const Sweep& sweep, std::size_t index);
 
 // Tiles in a grid of `columns`, row by row, each with its label in a bar above it. All tiles have
-// the same size. Background and label colours suit a projector (dark grey, white text). A label is
-// drawn at kSheetLabelScale when it fits its tile, else at scale 1, else cut at the tile's width.
+// the same size. Background and label colours suit a projector (dark grey, white text). Labels are
+// drawn at kSheetLabelScale when every label fits its tile, else at scale 1 (one still too long is cut).
 Image contactSheet(const std::vector<Image>& tiles, const std::vector<std::string>& labels, int columns);
 inline constexpr int kSheetLabelScale = 2;  // font pixels per image pixel of the labels
 
