@@ -27,6 +27,18 @@
 #ifndef SL_SHADOW_PCF
 #define SL_SHADOW_PCF 0
 #endif
+#ifndef SL_SPECULAR_NORMALIZATION
+#define SL_SPECULAR_NORMALIZATION SL_NORMALIZATION_NONE
+#endif
+#ifndef SL_FRESNEL
+#define SL_FRESNEL SL_FRESNEL_NONE
+#endif
+#ifndef SL_SHOW
+#define SL_SHOW SL_SHOW_ALL
+#endif
+#ifndef SL_SHOW_LIGHT_INDEX
+#define SL_SHOW_LIGHT_INDEX -1
+#endif
 // With SL_LIGHT_COUNT = n the renderer also defines SL_LIGHT_KIND_l and SL_LIGHT_ATTENUATION_l for
 // l < n, and SL_LIGHT_SAMPLES_X_l, SL_LIGHT_SAMPLES_Y_l for area lights; blocks for lights past the
 // count are skipped by the preprocessor and never expanded.
@@ -43,6 +55,28 @@ uniform sampler2DArrayShadow u_shadowMaps[SL_LIGHT_COUNT];  // unit SL_TEXTURE_S
 #define SL_SHADOW_ARG(l)
 #endif
 
+#if SL_FRESNEL == SL_FRESNEL_SCHLICK
+// Schlick: R0 + (1 - R0)(1 - cos)^5 (core/lighting.cpp, fresnelSchlick), from air onto ior.
+float fresnelWeight(float cosVH) {
+    float r0 = u_modelSettings.y;
+    float m = 1.0 - clamp(cosVH, 0.0, 1.0);
+    float m2 = m * m;
+    return r0 + (1.0 - r0) * m2 * m2 * m;
+}
+#elif SL_FRESNEL == SL_FRESNEL_EXACT
+// The unpolarised Fresnel reflectance (R_par + R_perp) / 2 from air (eta1 = 1) onto eta2 = ior
+// (core/lighting.cpp, fresnelExact). No total internal reflection from the air side.
+float fresnelWeight(float cosVH) {
+    float eta = u_modelSettings.x;
+    float c1 = clamp(cosVH, 0.0, 1.0);
+    float sin3Sq = (1.0 - c1 * c1) / (eta * eta);
+    float c3 = sqrt(max(1.0 - sin3Sq, 0.0));
+    float perp = (c1 - eta * c3) / (c1 + eta * c3);
+    float par = (c3 - eta * c1) / (c3 + eta * c1);
+    return 0.5 * (par * par + perp * perp);
+}
+#endif
+
 // k_d C (N.I) + k_s S spec for one light direction with N.I > 0.
 vec3 reflected(vec3 I, float NdotI, vec3 N, vec3 V) {
 #if SL_REFLECTION == SL_REFLECTION_PHONG
@@ -52,7 +86,23 @@ vec3 reflected(vec3 I, float NdotI, vec3 N, vec3 V) {
     float cosLobe = dot(normalize(I + V), N);
 #endif
     float spec = pow(max(cosLobe, 0.0), u_coefficients.w);
+#if SL_SPECULAR_NORMALIZATION == SL_NORMALIZATION_ENERGY
+    // n(k_e) / n(32): constant reflected energy, the same look as "none" at k_e = 32.
+#if SL_REFLECTION == SL_REFLECTION_PHONG
+    spec *= (u_coefficients.w + 2.0) / (SL_ENERGY_REFERENCE_EXPONENT + 2.0);
+#else
+    spec *= (u_coefficients.w + 8.0) / (SL_ENERGY_REFERENCE_EXPONENT + 8.0);
+#endif
+#endif
+#if SL_FRESNEL != SL_FRESNEL_NONE
+    spec *= fresnelWeight(dot(V, normalize(I + V)));
+#endif
     float kd = u_coefficients.y, ks = u_coefficients.z;
+#if SL_SHOW == SL_SHOW_DIFFUSE
+    ks = 0.0;
+#elif SL_SHOW == SL_SHOW_SPECULAR
+    kd = 0.0;
+#endif
     return kd * u_color.rgb * NdotI + ks * u_specularColor.rgb * spec;
 }
 
@@ -193,113 +243,120 @@ vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 
 vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld) {
     vec3 N = nrmWorld;
     vec3 V = normalize(u_eyeWorld.xyz - posWorld);
+#if SL_SHOW == SL_SHOW_UNLIT
+    return clamp(u_color.rgb, 0.0, 1.0);
+#endif
+#if SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_AMBIENT
     vec3 L = u_coefficients.x * u_ambient.rgb * u_color.rgb;
-#if SL_LIGHT_COUNT > 0
+#else
+    vec3 L = vec3(0.0);
+#endif
+#if SL_LIGHT_COUNT > 0 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 0)
 #if SL_LIGHT_KIND_0 == SL_LIGHT_AREA
     L += areaLightTerm(0, SL_LIGHT_ATTENUATION_0, SL_LIGHT_SAMPLES_X_0, SL_LIGHT_SAMPLES_Y_0, SL_SHADOW_ARG(0) posWorld, N, V);
 #else
     L += lightTerm(0, SL_LIGHT_KIND_0, SL_LIGHT_ATTENUATION_0, SL_SHADOW_ARG(0) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 1
+#if SL_LIGHT_COUNT > 1 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 1)
 #if SL_LIGHT_KIND_1 == SL_LIGHT_AREA
     L += areaLightTerm(1, SL_LIGHT_ATTENUATION_1, SL_LIGHT_SAMPLES_X_1, SL_LIGHT_SAMPLES_Y_1, SL_SHADOW_ARG(1) posWorld, N, V);
 #else
     L += lightTerm(1, SL_LIGHT_KIND_1, SL_LIGHT_ATTENUATION_1, SL_SHADOW_ARG(1) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 2
+#if SL_LIGHT_COUNT > 2 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 2)
 #if SL_LIGHT_KIND_2 == SL_LIGHT_AREA
     L += areaLightTerm(2, SL_LIGHT_ATTENUATION_2, SL_LIGHT_SAMPLES_X_2, SL_LIGHT_SAMPLES_Y_2, SL_SHADOW_ARG(2) posWorld, N, V);
 #else
     L += lightTerm(2, SL_LIGHT_KIND_2, SL_LIGHT_ATTENUATION_2, SL_SHADOW_ARG(2) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 3
+#if SL_LIGHT_COUNT > 3 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 3)
 #if SL_LIGHT_KIND_3 == SL_LIGHT_AREA
     L += areaLightTerm(3, SL_LIGHT_ATTENUATION_3, SL_LIGHT_SAMPLES_X_3, SL_LIGHT_SAMPLES_Y_3, SL_SHADOW_ARG(3) posWorld, N, V);
 #else
     L += lightTerm(3, SL_LIGHT_KIND_3, SL_LIGHT_ATTENUATION_3, SL_SHADOW_ARG(3) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 4
+#if SL_LIGHT_COUNT > 4 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 4)
 #if SL_LIGHT_KIND_4 == SL_LIGHT_AREA
     L += areaLightTerm(4, SL_LIGHT_ATTENUATION_4, SL_LIGHT_SAMPLES_X_4, SL_LIGHT_SAMPLES_Y_4, SL_SHADOW_ARG(4) posWorld, N, V);
 #else
     L += lightTerm(4, SL_LIGHT_KIND_4, SL_LIGHT_ATTENUATION_4, SL_SHADOW_ARG(4) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 5
+#if SL_LIGHT_COUNT > 5 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 5)
 #if SL_LIGHT_KIND_5 == SL_LIGHT_AREA
     L += areaLightTerm(5, SL_LIGHT_ATTENUATION_5, SL_LIGHT_SAMPLES_X_5, SL_LIGHT_SAMPLES_Y_5, SL_SHADOW_ARG(5) posWorld, N, V);
 #else
     L += lightTerm(5, SL_LIGHT_KIND_5, SL_LIGHT_ATTENUATION_5, SL_SHADOW_ARG(5) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 6
+#if SL_LIGHT_COUNT > 6 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 6)
 #if SL_LIGHT_KIND_6 == SL_LIGHT_AREA
     L += areaLightTerm(6, SL_LIGHT_ATTENUATION_6, SL_LIGHT_SAMPLES_X_6, SL_LIGHT_SAMPLES_Y_6, SL_SHADOW_ARG(6) posWorld, N, V);
 #else
     L += lightTerm(6, SL_LIGHT_KIND_6, SL_LIGHT_ATTENUATION_6, SL_SHADOW_ARG(6) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 7
+#if SL_LIGHT_COUNT > 7 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 7)
 #if SL_LIGHT_KIND_7 == SL_LIGHT_AREA
     L += areaLightTerm(7, SL_LIGHT_ATTENUATION_7, SL_LIGHT_SAMPLES_X_7, SL_LIGHT_SAMPLES_Y_7, SL_SHADOW_ARG(7) posWorld, N, V);
 #else
     L += lightTerm(7, SL_LIGHT_KIND_7, SL_LIGHT_ATTENUATION_7, SL_SHADOW_ARG(7) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 8
+#if SL_LIGHT_COUNT > 8 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 8)
 #if SL_LIGHT_KIND_8 == SL_LIGHT_AREA
     L += areaLightTerm(8, SL_LIGHT_ATTENUATION_8, SL_LIGHT_SAMPLES_X_8, SL_LIGHT_SAMPLES_Y_8, SL_SHADOW_ARG(8) posWorld, N, V);
 #else
     L += lightTerm(8, SL_LIGHT_KIND_8, SL_LIGHT_ATTENUATION_8, SL_SHADOW_ARG(8) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 9
+#if SL_LIGHT_COUNT > 9 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 9)
 #if SL_LIGHT_KIND_9 == SL_LIGHT_AREA
     L += areaLightTerm(9, SL_LIGHT_ATTENUATION_9, SL_LIGHT_SAMPLES_X_9, SL_LIGHT_SAMPLES_Y_9, SL_SHADOW_ARG(9) posWorld, N, V);
 #else
     L += lightTerm(9, SL_LIGHT_KIND_9, SL_LIGHT_ATTENUATION_9, SL_SHADOW_ARG(9) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 10
+#if SL_LIGHT_COUNT > 10 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 10)
 #if SL_LIGHT_KIND_10 == SL_LIGHT_AREA
     L += areaLightTerm(10, SL_LIGHT_ATTENUATION_10, SL_LIGHT_SAMPLES_X_10, SL_LIGHT_SAMPLES_Y_10, SL_SHADOW_ARG(10) posWorld, N, V);
 #else
     L += lightTerm(10, SL_LIGHT_KIND_10, SL_LIGHT_ATTENUATION_10, SL_SHADOW_ARG(10) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 11
+#if SL_LIGHT_COUNT > 11 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 11)
 #if SL_LIGHT_KIND_11 == SL_LIGHT_AREA
     L += areaLightTerm(11, SL_LIGHT_ATTENUATION_11, SL_LIGHT_SAMPLES_X_11, SL_LIGHT_SAMPLES_Y_11, SL_SHADOW_ARG(11) posWorld, N, V);
 #else
     L += lightTerm(11, SL_LIGHT_KIND_11, SL_LIGHT_ATTENUATION_11, SL_SHADOW_ARG(11) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 12
+#if SL_LIGHT_COUNT > 12 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 12)
 #if SL_LIGHT_KIND_12 == SL_LIGHT_AREA
     L += areaLightTerm(12, SL_LIGHT_ATTENUATION_12, SL_LIGHT_SAMPLES_X_12, SL_LIGHT_SAMPLES_Y_12, SL_SHADOW_ARG(12) posWorld, N, V);
 #else
     L += lightTerm(12, SL_LIGHT_KIND_12, SL_LIGHT_ATTENUATION_12, SL_SHADOW_ARG(12) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 13
+#if SL_LIGHT_COUNT > 13 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 13)
 #if SL_LIGHT_KIND_13 == SL_LIGHT_AREA
     L += areaLightTerm(13, SL_LIGHT_ATTENUATION_13, SL_LIGHT_SAMPLES_X_13, SL_LIGHT_SAMPLES_Y_13, SL_SHADOW_ARG(13) posWorld, N, V);
 #else
     L += lightTerm(13, SL_LIGHT_KIND_13, SL_LIGHT_ATTENUATION_13, SL_SHADOW_ARG(13) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 14
+#if SL_LIGHT_COUNT > 14 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 14)
 #if SL_LIGHT_KIND_14 == SL_LIGHT_AREA
     L += areaLightTerm(14, SL_LIGHT_ATTENUATION_14, SL_LIGHT_SAMPLES_X_14, SL_LIGHT_SAMPLES_Y_14, SL_SHADOW_ARG(14) posWorld, N, V);
 #else
     L += lightTerm(14, SL_LIGHT_KIND_14, SL_LIGHT_ATTENUATION_14, SL_SHADOW_ARG(14) posWorld, N, V);
 #endif
 #endif
-#if SL_LIGHT_COUNT > 15
+#if SL_LIGHT_COUNT > 15 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 15)
 #if SL_LIGHT_KIND_15 == SL_LIGHT_AREA
     L += areaLightTerm(15, SL_LIGHT_ATTENUATION_15, SL_LIGHT_SAMPLES_X_15, SL_LIGHT_SAMPLES_Y_15, SL_SHADOW_ARG(15) posWorld, N, V);
 #else

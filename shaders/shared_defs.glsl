@@ -24,5 +24,18 @@
 #define SL_REFLECTION_BLINN_PHONG 1
 #define SL_ENCODING_LINEAR 0
 #define SL_ENCODING_SRGB 1
+// Beyond the heuristic model (core/lighting.hpp); only scenes that use them get these defines.
+#define SL_NORMALIZATION_NONE 0
+#define SL_NORMALIZATION_ENERGY 1              // lobe * n(k_e) / n(SL_ENERGY_REFERENCE_EXPONENT)
+#define SL_ENERGY_REFERENCE_EXPONENT 32.0      // k_e at which "energy" looks like "none"
+#define SL_FRESNEL_NONE 0
+#define SL_FRESNEL_SCHLICK 1
+#define SL_FRESNEL_EXACT 2
+#define SL_SHOW_ALL 0                          // term isolation ("show")
+#define SL_SHOW_AMBIENT 1
+#define SL_SHOW_DIFFUSE 2
+#define SL_SHOW_SPECULAR 3
+#define SL_SHOW_LIGHT 4                        // one light's diffuse + specular: SL_SHOW_LIGHT_INDEX
+#define SL_SHOW_UNLIT 5                        // the material colour C, no lighting
 
 #endif

@@ -28,6 +28,7 @@ layout(std140) uniform FrameBlock {
                                // specialisation, as data: for tools that read the block)
     LightGpu u_lights[SL_MAX_LIGHTS];
     vec4 u_shadowSettings;     // x: normal bias, in shadow-map texels
+    vec4 u_modelSettings;      // x: ior = eta2 / eta1 (Fresnel), y: R0 = ((1 - ior) / (1 + ior))^2
 };
 
 layout(std140) uniform ObjectBlock {

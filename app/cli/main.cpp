@@ -66,6 +66,14 @@ int run(const std::vector<std::string>& args) {
     };
     const Stopwatch clock;
 
+    if (options.output && !options.sweeps.empty() && !options.info) {
+        const Image sheet = renderSweepHeadless(scene, options.sweeps, shaders, backend);
+        writePng(*options.output, sheet);
+        if (options.verbose)
+            std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
+                      << clock.ms() << " ms)\n";
+        return 0;
+    }
     if (options.output && !options.info && options.benchmarkFrames == 0) {
         const HeadlessFrame frame = renderSceneHeadless(std::move(scene), shaders, backend);
         report(frame.scene, frame.gltfInfo, frame.triangles);

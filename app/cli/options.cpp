@@ -64,7 +64,12 @@ Options parseOptions(const std::vector<std::string>& args) {
         };
         static const std::pair<const char*, ShadingMode> kShading[] = {
             {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
-        static const std::pair<const char*, Layout> kLayout[] = {{"single", Layout::Single}, {"compare", Layout::Compare}};
+        static const std::pair<const char*, Layout> kLayout[] = {
+            {"single", Layout::Single}, {"compare", Layout::Compare}, {"diff", Layout::Diff}};
+        static const std::pair<const char*, SpecularNormalization> kNorm[] = {
+            {"none", SpecularNormalization::None}, {"energy", SpecularNormalization::Energy}};
+        static const std::pair<const char*, FresnelMode> kFresnel[] = {
+            {"none", FresnelMode::None}, {"schlick", FresnelMode::Schlick}, {"exact", FresnelMode::Exact}};
         static const std::pair<const char*, ReflectionModel> kRefl[] = {{"phong", ReflectionModel::Phong},
                                                                          {"blinn-phong", ReflectionModel::BlinnPhong}};
         if (arg == "--help" || arg == "-h") noValue(), o.help = true;
@@ -84,6 +89,36 @@ Options parseOptions(const std::vector<std::string>& args) {
             o.lights.push_back(parseLightShorthand(next(), arg));
             if (o.lights.size() > std::size_t(kMaxLights))
                 throw InputError(arg + ": at most " + std::to_string(kMaxLights) + " lights");
+        }
+        else if (arg == "--specular-normalization") o.specularNormalization = parseChoice(arg, next(), kNorm);
+        else if (arg == "--fresnel") o.fresnel = parseChoice(arg, next(), kFresnel);
+        else if (arg == "--ior") {
+            const std::string v = next();
+            const float x = parseFloat(arg, v);
+            if (x < kMinIor || x > kMaxIor) throw InputError(arg + ": must be between 1 and 10 (got " + v + ")");
+            o.ior = x;
+        }
+        else if (arg == "--show") o.show = parseTermView(next(), arg);
+        else if (arg == "--diff") {
+            const std::string v = next();
+            const std::size_t comma = v.find(',');
+            if (comma == std::string::npos)
+                throw InputError(arg + ": expected two shading modes A,B, e.g. gouraud,phong (got \"" + v + "\")");
+            o.diffA = parseChoice(arg, v.substr(0, comma), kShading);
+            o.diffB = parseChoice(arg, v.substr(comma + 1), kShading);
+        }
+        else if (arg == "--diff-factor") {
+            const std::string v = next();
+            const float f = parseFloat(arg, v);
+            if (f < 1.0f || f > kMaxDiffFactor) throw InputError(arg + ": must be between 1 and 1000 (got " + v + ")");
+            o.diffFactor = f;
+        }
+        else if (arg == "--sweep") {
+            o.sweeps.push_back(parseSweep(next(), arg));
+            if (o.sweeps.size() > std::size_t(kMaxSweeps))
+                throw InputError(arg + ": at most two sweeps (columns and rows)");
+            if (o.sweeps.size() == 2 && o.sweeps[0].parameter == o.sweeps[1].parameter)
+                throw InputError(arg + ": " + o.sweeps[1].parameter + " is swept twice");
         }
         else if (arg == "--shadows") noValue(), o.shadows = true;
         else if (arg == "--no-shadows") noValue(), o.shadows = false;
@@ -132,6 +167,8 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw InputError("--screenshot-view: " + *o.screenshotView + ": only .png is supported");
     if (o.saveScene && !hasExtension(*o.saveScene, ".json"))
         throw InputError("--save-scene: " + *o.saveScene + ": scene files end in .json");
+    if (!o.sweeps.empty() && (!o.output || o.benchmarkFrames))
+        throw InputError("--sweep: renders a sheet to a PNG: give --output FILE.png (and no --benchmark)");
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
     const bool viewerFlags =
         o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel || !o.overlays.empty();
@@ -163,6 +200,15 @@ Scene sceneFromOptions(const Options& o) {
         s.lightsGiven = true;
     }
     if (o.shadows) s.shadows.enabled = *o.shadows;
+    if (o.specularNormalization) s.specularNormalization = *o.specularNormalization;
+    if (o.fresnel) s.fresnel = *o.fresnel;
+    if (o.ior) s.ior = *o.ior;
+    if (o.diffA) s.diff.a = *o.diffA, s.diff.b = *o.diffB;
+    if (o.diffFactor) s.diff.factor = *o.diffFactor;
+    if (o.show) s.show = *o.show;
+    if (s.show.term == ShowTerm::Light && s.show.light >= int(s.lights.size()))
+        throw InputError(std::string(o.show ? "--show" : "--light") + ": light " + std::to_string(s.show.light) +
+                         " does not exist (the scene has " + std::to_string(s.lights.size()) + " light(s))");
     if (o.mesh) {
         if (s.objects.empty()) s.objects.emplace_back();
         s.objects.front().mesh = *o.mesh;
@@ -178,8 +224,14 @@ Without --output (or --benchmark) it opens the interactive viewer.
 
   -o, --output FILE.png   render one frame offscreen (OSMesa, no display needed) and write it
   --shading MODE          flat | gouraud | phong
-  --layout LAYOUT         single | compare (three panes: flat | gouraud | phong)
+  --layout LAYOUT         single | compare (three panes: flat | gouraud | phong) | diff (A | B | |A-B| x factor)
+  --diff A,B              the two shading modes of layout diff (default gouraud,phong)
+  --diff-factor X         layout diff: |A - B| is multiplied by X (1..1000, default 4)
   --reflection MODEL      phong | blinn-phong
+  --specular-normalization none | energy   energy-normalised lobes ((k_e+2)/2pi, (k_e+8)/8pi; diffuse 1/pi)
+  --fresnel MODE          none | schlick | exact: the specular term weighted by the Fresnel reflectance at V.H
+  --ior X                 index of refraction eta2/eta1 for --fresnel (1..10, default 1.5)
+  --show TERM             all | ambient | diffuse | specular | light:N | unlit: draw one term of the formula
   --ka X --kd X --ks X    ambient, diffuse, specular weights (>= 0) of every object
   --ke X                  specular exponent (1..10000) of every object
   --size WxH              image size in pixels, e.g. 1280x720
@@ -191,6 +243,10 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           normal=X,Y,Z size=W,H samples=NXxNY two-sided (area), e.g.
                           --light area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
   --shadows, --no-shadows shadows (occlusion toward every light) on or off
+  --sweep PARAM=V1,V2,... with --output: a contact sheet, one labelled tile (of --size) per value;
+                          a second --sweep makes a grid (rows). PARAM: ke, ks, kd, ka, intensity (every
+                          light), tessellation (first mesh), ior, shading, reflection,
+                          specular_normalization, fresnel. E.g. --sweep ke=1,8,32,128,512 --sweep shading=gouraud,phong
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --backend NAME          headless OpenGL for --output/--benchmark: osmesa, egl, or auto (OSMesa,
                           else EGL)

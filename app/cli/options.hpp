@@ -2,6 +2,7 @@
 // The command line: `shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]`. Parsing is GL-free so
 // it is unit-tested (and fuzzed) on its own. Options override what the scene file says.
 #include "core/scene.hpp"
+#include "core/sweep.hpp"
 
 #include <optional>
 #include <string>
@@ -20,6 +21,13 @@ struct Options {
     std::optional<MeshSpec> mesh;           // --mesh: replaces the first object's mesh
     std::vector<Light> lights;              // --light (repeatable): replace the scene's lights
     std::optional<bool> shadows;            // --shadows / --no-shadows
+    std::optional<SpecularNormalization> specularNormalization;  // --specular-normalization none|energy
+    std::optional<FresnelMode> fresnel;     // --fresnel none|schlick|exact
+    std::optional<float> ior;               // --ior X (1..10)
+    std::optional<TermView> show;           // --show all|ambient|diffuse|specular|light:N|unlit
+    std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
+    std::optional<float> diffFactor;        // --diff-factor X (1..1000)
+    std::vector<Sweep> sweeps;              // --sweep PARAM=V1,V2,... (at most two: columns, rows), with --output
     int benchmarkFrames = 0;                // --benchmark N
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context

@@ -25,14 +25,21 @@ glm::mat4 worldFromObject(const Transform& t) {
 
 glm::mat3 normalWorldFromObject(const glm::mat4& m) { return glm::transpose(glm::inverse(glm::mat3(m))); }
 
-std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height) {
-    if (layout == Layout::Single) return {Pane{0, 0, width, height, mode}};
+std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height, const DiffSettings& diff) {
+    if (layout == Layout::Single) return {Pane{0, 0, width, height, mode, false}};
     std::vector<Pane> panes;
+    if (layout == Layout::Diff) {
+        const int w = width / 3;
+        panes.push_back(Pane{0, 0, w, height, diff.a, false});
+        panes.push_back(Pane{w, 0, w, height, diff.b, false});
+        panes.push_back(Pane{2 * w, 0, w, height, diff.b, true});
+        return panes;
+    }
     const ShadingMode modes[3] = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
     for (int i = 0; i < 3; ++i) {
         // Pane edges at floor(i * W / 3): the three panes cover the image exactly, widths differ by <= 1.
         const int x0 = i * width / 3, x1 = (i + 1) * width / 3;
-        panes.push_back(Pane{x0, 0, x1 - x0, height, modes[i]});
+        panes.push_back(Pane{x0, 0, x1 - x0, height, modes[i], false});
     }
     return panes;
 }

@@ -22,9 +22,13 @@ glm::mat3 normalWorldFromObject(const glm::mat4& worldFromObject);
 struct Pane {
     int x = 0, y = 0, width = 0, height = 0;
     ShadingMode mode = ShadingMode::Phong;
+    bool difference = false;  // layout diff's third pane: |pane 0 - pane 1| * factor (mode = diff.b)
 };
-// single: one pane with the scene's mode; compare: three equal panes flat | gouraud | phong.
-std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height);
+// single: one pane with the scene's mode; compare: three equal panes flat | gouraud | phong;
+// diff: three panes of exactly the same size diff.a | diff.b | difference (the last width % 3
+// columns stay background, so the difference pane's pixels line up with both sources).
+std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height,
+                              const DiffSettings& diff = DiffSettings{});
 
 // Places the camera so a bounding sphere fills most of a pane of the given aspect, looking from the
 // default camera's direction; when the scene gave no lights, moves the default light with it.

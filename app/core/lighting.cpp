@@ -11,19 +11,24 @@
 namespace shadelab {
 namespace {
 
+constexpr float kPi = 3.14159265358979f;
+
 // One light sample's addend: radiance * (k_d C (N.I) + k_s S spec), nothing when N.I <= 0.
-void addSample(ShadingTerms& t, const Material& m, ReflectionModel model, const glm::vec3& n, const glm::vec3& v,
-               const glm::vec3& i, const glm::vec3& radiance) {
+void addSample(LightShare& t, const Material& m, const LightingEnvironment& env, const glm::vec3& n,
+               const glm::vec3& v, const glm::vec3& i, const glm::vec3& radiance) {
     const float nDotI = glm::dot(n, i);
     if (nDotI <= 0.0f) return;  // light behind the surface: no diffuse, no specular
     float cosLobe;
-    if (model == ReflectionModel::Phong) {
+    const glm::vec3 h = glm::normalize(i + v);
+    if (env.model == ReflectionModel::Phong) {
         const glm::vec3 r = 2.0f * nDotI * n - i;
         cosLobe = glm::dot(r, v);
     } else {
-        cosLobe = glm::dot(glm::normalize(i + v), n);
+        cosLobe = glm::dot(h, n);
     }
-    const float spec = std::pow(std::max(cosLobe, 0.0f), m.ke);
+    float spec = std::pow(std::max(cosLobe, 0.0f), m.ke);
+    if (env.normalization == SpecularNormalization::Energy) spec *= energySpecularScale(env.model, m.ke);
+    if (env.fresnel != FresnelMode::None) spec *= fresnelWeight(env.fresnel, std::max(glm::dot(v, h), 0.0f), env.ior);
     t.diffuse += radiance * m.kd * m.color * nDotI;
     t.specular += radiance * m.ks * m.specularColor * spec;
 }
@@ -31,7 +36,64 @@ void addSample(ShadingTerms& t, const Material& m, ReflectionModel model, const 
 }  // namespace
 
 LightingEnvironment lightingEnvironment(const Scene& s) {
-    return LightingEnvironment{s.reflection, s.ambient, s.lights, s.camera.eye};
+    LightingEnvironment env;
+    env.model = s.reflection;
+    env.normalization = s.specularNormalization;
+    env.fresnel = s.fresnel;
+    env.ior = s.ior;
+    env.show = s.show;
+    env.ambient = s.ambient;
+    env.lights = s.lights;
+    env.eyeWorld = s.camera.eye;
+    return env;
+}
+
+float lobeNormalization(ReflectionModel model, float ke) {
+    return model == ReflectionModel::Phong ? (ke + 2.0f) / (2.0f * kPi) : (ke + 8.0f) / (8.0f * kPi);
+}
+
+float energySpecularScale(ReflectionModel model, float ke) {
+    return lobeNormalization(model, ke) / lobeNormalization(model, kEnergyReferenceExponent);
+}
+
+FresnelTerms fresnelExact(float cosTheta1, float eta1, float eta2) {
+    FresnelTerms f;
+    const float c1 = glm::clamp(cosTheta1, 0.0f, 1.0f);
+    const float sin1 = std::sqrt(std::max(0.0f, 1.0f - c1 * c1));
+    const float sin3 = eta1 / eta2 * sin1;  // Snell: eta1 sin theta1 = eta2 sin theta3
+    if (sin3 >= 1.0f) {
+        f.parallel = f.perpendicular = f.average = 1.0f;
+        f.totalInternal = true;
+        return f;
+    }
+    const float c3 = std::sqrt(1.0f - sin3 * sin3);
+    // The cosine forms of the lecture's tan^2/sin^2 quotients (equal to them, and finite at normal incidence).
+    const float perp = (eta1 * c1 - eta2 * c3) / (eta1 * c1 + eta2 * c3);
+    const float par = (eta1 * c3 - eta2 * c1) / (eta1 * c3 + eta2 * c1);
+    f.parallel = par * par;
+    f.perpendicular = perp * perp;
+    f.average = 0.5f * (f.parallel + f.perpendicular);
+    return f;
+}
+
+float fresnelR0(float eta1, float eta2) {
+    const float r = (eta1 - eta2) / (eta1 + eta2);
+    return r * r;
+}
+
+float fresnelSchlick(float cosTheta1, float eta1, float eta2) {
+    const float r0 = fresnelR0(eta1, eta2);
+    const float m = 1.0f - glm::clamp(cosTheta1, 0.0f, 1.0f);
+    return r0 + (1.0f - r0) * m * m * m * m * m;
+}
+
+float fresnelWeight(FresnelMode mode, float cosVH, float ior) {
+    switch (mode) {
+    case FresnelMode::None: return 1.0f;
+    case FresnelMode::Schlick: return fresnelSchlick(cosVH, 1.0f, ior);
+    case FresnelMode::Exact: return fresnelExact(cosVH, 1.0f, ior).average;
+    }
+    return 1.0f;
 }
 
 float attenuationFactor(const Light& light, float r2) {
@@ -82,6 +144,7 @@ glm::vec3 areaSamplePosition(const Light& l, int i, int j) {
 ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& p, const glm::vec3& n,
                         const Visibility& visibility) {
     ShadingTerms t;
+    t.lights.resize(env.lights.size());
     const glm::vec3 v = glm::normalize(env.eyeWorld - p);
     t.ambient = m.ka * env.ambient * m.color;
     auto visible = [&](std::size_t light, int sample, const glm::vec3& i, float distance) {
@@ -94,14 +157,14 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
         switch (light.type) {
         case LightType::Directional: {
             const glm::vec3 i = glm::normalize(-light.direction);
-            addSample(t, m, env.model, n, v, i, power * visible(li, 0, i, std::numeric_limits<float>::infinity()));
+            addSample(t.lights[li], m, env, n, v, i, power * visible(li, 0, i, std::numeric_limits<float>::infinity()));
             break;
         }
         case LightType::Point: {
             const glm::vec3 d = light.position - p;
             const float r2 = glm::dot(d, d), r = std::sqrt(r2);
             const glm::vec3 i = d / r;
-            addSample(t, m, env.model, n, v, i, power * attenuationFactor(light, r2) * visible(li, 0, i, r));
+            addSample(t.lights[li], m, env, n, v, i, power * attenuationFactor(light, r2) * visible(li, 0, i, r));
             break;
         }
         case LightType::Area: {
@@ -116,13 +179,26 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
                     if (light.twoSided) cosLight = std::fabs(cosLight);
                     if (cosLight <= 0.0f) continue;  // behind the emitting side
                     const float vis = visible(li, sj * light.samples.x + si, i, r);
-                    addSample(t, m, env.model, n, v, i, power * (attenuationFactor(light, r2) * cosLight * share * vis));
+                    addSample(t.lights[li], m, env, n, v, i, power * (attenuationFactor(light, r2) * cosLight * share * vis));
                 }
             break;
         }
         }
     }
-    t.total = glm::clamp(t.ambient + t.diffuse + t.specular, 0.0f, 1.0f);
+    for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
+    glm::vec3 shown(0.0f);
+    switch (env.show.term) {
+    case ShowTerm::All: shown = t.ambient + t.diffuse + t.specular; break;
+    case ShowTerm::Ambient: shown = t.ambient; break;
+    case ShowTerm::Diffuse: shown = t.diffuse; break;
+    case ShowTerm::Specular: shown = t.specular; break;
+    case ShowTerm::Light:
+        if (env.show.light >= 0 && std::size_t(env.show.light) < t.lights.size())
+            shown = t.lights[std::size_t(env.show.light)].diffuse + t.lights[std::size_t(env.show.light)].specular;
+        break;
+    case ShowTerm::Unlit: shown = m.color; break;
+    }
+    t.total = glm::clamp(shown, 0.0f, 1.0f);
     return t;
 }
 

@@ -11,6 +11,20 @@
 //   L_k = colour * intensity * attenuation(r_k) * cos_k / (nx * ny),   cos_k = n_light . (-I_k)
 // (its share of the area, and the cosine at the light; |cos_k| when two-sided, 0 behind the light).
 // v(p, I) is the lecture's occlusion term: 1 unless the caller supplies a Visibility.
+//
+// Beyond the heuristic model (scene fields; the GLSL is specialised for each, see lighting.glsl):
+// - "specular_normalization": "energy" replaces the lobe cos^k_e by the energy-normalised lobe
+//   n(k_e) cos^k_e, n = (k_e + 2) / 2pi (Phong) or (k_e + 8) / 8pi (Blinn-Phong), and the diffuse
+//   term k_d C (N.I) by k_d C/pi (N.I). The lights' radiance is scaled by pi (so the diffuse term is
+//   unchanged) and k_s is read relative to k_e = 32 (divided by pi n(32)), so that the default scene
+//   looks the same at k_e = 32. Net effect, exactly: spec is multiplied by
+//   energySpecularScale = n(k_e) / n(32) = (k_e + 2) / 34 (Phong) or (k_e + 8) / 40 (Blinn-Phong),
+//   and the energy the lobe reflects stays constant as k_e changes (instead of the highlight dimming).
+// - "fresnel": spec is multiplied by F(V.H), the reflectance of a surface of relative index of
+//   refraction `ior` (= eta2/eta1, light arriving from eta1 = air): Schlick's R0 + (1 - R0)(1 - cos)^5,
+//   or the exact unpolarised Fresnel average (R_par + R_perp) / 2.
+// - "show": only one addend is drawn (ambient, diffuse, specular, one light's diffuse + specular) or
+//   the unlit colour C; the total is that addend clamped to [0, 1].
 #include "core/scene.hpp"
 
 #include <glm/vec2.hpp>
@@ -26,6 +40,10 @@ namespace shadelab {
 
 struct LightingEnvironment {
     ReflectionModel model = ReflectionModel::BlinnPhong;
+    SpecularNormalization normalization = SpecularNormalization::None;
+    FresnelMode fresnel = FresnelMode::None;
+    float ior = 1.5f;                 // eta2 / eta1
+    TermView show;
     glm::vec3 ambient{1.0f};          // A
     std::vector<Light> lights;        // world space
     glm::vec3 eyeWorld{0.0f};
@@ -33,13 +51,43 @@ struct LightingEnvironment {
 
 LightingEnvironment lightingEnvironment(const Scene& scene);
 
-// Each addend of the formula before clamping, and the clamped total.
+// One light's share (summed over an area light's samples), before clamping.
+struct LightShare {
+    glm::vec3 diffuse{0.0f};
+    glm::vec3 specular{0.0f};
+};
+
+// Each addend of the formula before clamping, and the clamped total (of what `show` selects).
 struct ShadingTerms {
     glm::vec3 ambient{0.0f};
     glm::vec3 diffuse{0.0f};
     glm::vec3 specular{0.0f};
-    glm::vec3 total{0.0f};            // clamp(ambient + diffuse + specular, 0, 1)
+    glm::vec3 total{0.0f};            // clamp(ambient + diffuse + specular, 0, 1) with show = all
+    std::vector<LightShare> lights;   // per light, in the order of LightingEnvironment::lights
 };
+
+// The energy-normalisation of the lobe: (k_e + 2) / 2pi (Phong) or (k_e + 8) / 8pi (Blinn-Phong).
+float lobeNormalization(ReflectionModel model, float ke);
+// What "specular_normalization": "energy" multiplies spec by: lobeNormalization(k_e) / lobeNormalization(32).
+float energySpecularScale(ReflectionModel model, float ke);
+inline constexpr float kEnergyReferenceExponent = 32.0f;  // the default scene looks the same here
+
+// Fresnel reflectance for light arriving from a medium eta1 onto eta2 at incidence angle theta1
+// (cosTheta1 = cos theta1 in [0, 1]). Past the critical angle (eta1 > eta2) every term is 1.
+struct FresnelTerms {
+    float parallel = 0.0f;       // R_par: E field in the plane of incidence
+    float perpendicular = 0.0f;  // R_perp
+    float average = 0.0f;        // (R_par + R_perp) / 2: unpolarised light
+    bool totalInternal = false;
+};
+FresnelTerms fresnelExact(float cosTheta1, float eta1, float eta2);
+// R0 = ((eta1 - eta2) / (eta1 + eta2))^2, the reflectance at normal incidence.
+float fresnelR0(float eta1, float eta2);
+// Schlick: R0 + (1 - R0)(1 - cos theta)^5, as the lecture writes it (with cos theta1; it knows no TIR).
+float fresnelSchlick(float cosTheta1, float eta1, float eta2);
+// The weight the specular term gets in the scene's Fresnel mode: 1 (none), Schlick or the exact average,
+// from air (eta1 = 1) onto `ior`, at cos = V.H.
+float fresnelWeight(FresnelMode mode, float cosVH, float ior);
 
 // The occlusion test toward one light sample: from the shaded point along `towardLight` (unit) for
 // `distance` (infinite for directional lights). Returns v in [0, 1]: 1 visible, 0 occluded.

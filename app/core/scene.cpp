@@ -25,7 +25,14 @@ const char* toString(ShadingMode m) {
     }
     return "?";
 }
-const char* toString(Layout l) { return l == Layout::Single ? "single" : "compare"; }
+const char* toString(Layout l) {
+    switch (l) {
+    case Layout::Single: return "single";
+    case Layout::Compare: return "compare";
+    case Layout::Diff: return "diff";
+    }
+    return "?";
+}
 const char* toString(ReflectionModel r) { return r == ReflectionModel::Phong ? "phong" : "blinn-phong"; }
 const char* toString(MeshSpec::Type t) {
     switch (t) {
@@ -53,5 +60,25 @@ bool ShadowSettings::operator==(const ShadowSettings& o) const {
            mapSize == o.mapSize && areaMapSize == o.areaMapSize;
 }
 const char* toString(OutputEncoding e) { return e == OutputEncoding::Linear ? "linear" : "srgb"; }
+const char* toString(SpecularNormalization n) { return n == SpecularNormalization::None ? "none" : "energy"; }
+const char* toString(FresnelMode f) {
+    switch (f) {
+    case FresnelMode::None: return "none";
+    case FresnelMode::Schlick: return "schlick";
+    case FresnelMode::Exact: return "exact";
+    }
+    return "?";
+}
+std::string toString(const TermView& t) {
+    switch (t.term) {
+    case ShowTerm::All: return "all";
+    case ShowTerm::Ambient: return "ambient";
+    case ShowTerm::Diffuse: return "diffuse";
+    case ShowTerm::Specular: return "specular";
+    case ShowTerm::Light: return "light:" + std::to_string(t.light);
+    case ShowTerm::Unlit: return "unlit";
+    }
+    return "?";
+}
 
 }  // namespace shadelab

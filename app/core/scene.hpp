@@ -11,11 +11,16 @@
 namespace shadelab {
 
 enum class ShadingMode { Flat, Gouraud, Phong };
-enum class Layout { Single, Compare };
+enum class Layout { Single, Compare, Diff };
 enum class ReflectionModel { Phong, BlinnPhong };
 enum class OutputEncoding { Linear, Srgb };
 enum class LightType { Point, Directional, Area };
 enum class Attenuation { None, InverseSquare };
+// Beyond the heuristic model (lighting.hpp has the exact formulas):
+enum class SpecularNormalization { None, Energy };  // "energy": lobes normalised to constant reflected energy
+enum class FresnelMode { None, Schlick, Exact };    // specular weighted by the Fresnel reflectance at V.H
+// Term isolation: which addend(s) of the formula are drawn ("show").
+enum class ShowTerm { All, Ambient, Diffuse, Specular, Light, Unlit };
 
 // Limits shared by the parser, the CLI and the renderer.
 inline constexpr int kMaxLights = 16;          // also SL_MAX_LIGHTS in shaders/shared_defs.glsl
@@ -26,6 +31,9 @@ inline constexpr int kMaxAreaSamplesPerSide = 16;  // an area light has at most 
 inline constexpr int kMinShadowMapSize = 64;       // shadow-map sides, pixels
 inline constexpr int kMaxShadowMapSize = 4096;
 inline constexpr int kMaxPcfRadius = 2;            // percentage-closer filtering: (2r+1)^2 lookups
+inline constexpr float kMinIor = 1.0f;             // relative index of refraction eta2 / eta1 of the surface
+inline constexpr float kMaxIor = 10.0f;
+inline constexpr float kMaxDiffFactor = 1000.0f;   // layout "diff": |A - B| is multiplied by 1..1000
 
 struct Material {
     glm::vec3 color{0.85f, 0.32f, 0.2f};   // C, the diffuse/ambient colour (linear RGB, 0..1)
@@ -113,6 +121,23 @@ struct Camera {
     float farPlane = 100.0f;
 };
 
+// What the formula draws: every term, one of them, one light's share, or the unlit colour C.
+struct TermView {
+    ShowTerm term = ShowTerm::All;
+    int light = 0;  // ShowTerm::Light: index into Scene::lights (diffuse + specular of that light alone)
+
+    bool operator==(const TermView& o) const { return term == o.term && (term != ShowTerm::Light || light == o.light); }
+    bool operator!=(const TermView& o) const { return !(*this == o); }
+};
+
+// Layout "diff": panes a | b | |a - b| * factor, all of the same size, one camera. The difference is
+// taken of the displayed 8-bit values (after clamping and output encoding).
+struct DiffSettings {
+    ShadingMode a = ShadingMode::Gouraud;
+    ShadingMode b = ShadingMode::Phong;
+    float factor = 4.0f;  // 1..kMaxDiffFactor
+};
+
 struct Scene {
     std::vector<SceneObject> objects{SceneObject{}};
     ShadingMode shading = ShadingMode::Phong;
@@ -126,6 +151,13 @@ struct Scene {
     int width = 1280;
     int height = 720;
     OutputEncoding outputEncoding = OutputEncoding::Linear;
+    SpecularNormalization specularNormalization = SpecularNormalization::None;
+    FresnelMode fresnel = FresnelMode::None;
+    float ior = 1.5f;             // eta2 / eta1 at every surface (eta1 = 1: air); used when fresnel != none
+    TermView show;                // "show": "all" | "ambient" | "diffuse" | "specular" | "light:N" | "unlit"
+    DiffSettings diff;            // layout "diff"
+    std::string title;            // lecture presets: shown by the viewer's playlist (and nothing else)
+    std::string caption;          // one sentence under the title
 
     // Bookkeeping, not part of the file format:
     bool cameraGiven = false;     // false: a glTF model may be auto-framed
@@ -142,5 +174,8 @@ const char* toString(MeshSpec::Type t);
 const char* toString(Attenuation a);
 const char* toString(LightType t);
 const char* toString(OutputEncoding e);
+const char* toString(SpecularNormalization n);
+const char* toString(FresnelMode f);
+std::string toString(const TermView& t);  // "all", ..., "light:2"
 
 }  // namespace shadelab

@@ -36,7 +36,7 @@ void frameIfNeeded(Scene& scene, const SceneGeometry& g) {
         meshes.push_back(&g.meshes[i]);
         transforms.push_back(worldFromObject(scene.objects[i].transform));
     }
-    const auto panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height);
+    const auto panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
     const Pane& p = panes.front();
     frameBounds(scene, worldBounds(meshes, transforms), float(p.width) / float(p.height));
 }

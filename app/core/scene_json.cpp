@@ -113,6 +113,16 @@ private:
         if (!j.is_array() || j.size() != 2) fail(p, "expected an array of 2 integers");
         for (int i = 0; i < 2; ++i) out[i] = integer(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi);
     }
+    // A short single-line text (titles, captions): at most 500 characters, no control characters.
+    void text(const json& o, const char* key, std::string& out) const {
+        if (!o.contains(key)) return;
+        if (!o[key].is_string()) fail(key, std::string("expected a string, got ") + typeName(o[key]));
+        const std::string t = o[key].get<std::string>();
+        if (t.size() > 500) fail(key, "at most 500 characters (got " + std::to_string(t.size()) + ")");
+        for (char c : t)
+            if (static_cast<unsigned char>(c) < 0x20) fail(key, "must be one line without control characters");
+        out = t;
+    }
     void nonZero(const glm::vec3& v, const std::string& path) const {
         if (glm::length(v) < 1e-6f) fail(path, "must not be a zero-length vector");
     }
@@ -291,7 +301,8 @@ Scene SceneReader::read(const json& root) {
     Scene s;
     requireObject(root, "",
                   {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
-                   "shadow_settings", "camera", "background", "size", "output_encoding"});
+                   "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
+                   "fresnel", "ior", "show", "diff", "title", "caption"});
     if (root.contains("objects")) {
         if (root.contains("mesh") || root.contains("material"))
             fail("objects", "give either \"objects\" or the one-object shorthand \"mesh\"/\"material\", not both");
@@ -316,8 +327,25 @@ Scene SceneReader::read(const json& root) {
     static const std::pair<const char*, ShadingMode> kShading[] = {
         {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
     choice(root, "shading", "", s.shading, kShading);
-    static const std::pair<const char*, Layout> kLayout[] = {{"single", Layout::Single}, {"compare", Layout::Compare}};
+    static const std::pair<const char*, Layout> kLayout[] = {
+        {"single", Layout::Single}, {"compare", Layout::Compare}, {"diff", Layout::Diff}};
     choice(root, "layout", "", s.layout, kLayout);
+    if (root.contains("diff")) {
+        const json& d = root["diff"];
+        requireObject(d, "diff", {"a", "b", "factor"});
+        choice(d, "a", "diff", s.diff.a, kShading);
+        choice(d, "b", "diff", s.diff.b, kShading);
+        number(d, "factor", "diff", s.diff.factor, 1.0, kMaxDiffFactor);
+    }
+    static const std::pair<const char*, SpecularNormalization> kNorm[] = {{"none", SpecularNormalization::None},
+                                                                           {"energy", SpecularNormalization::Energy}};
+    choice(root, "specular_normalization", "", s.specularNormalization, kNorm);
+    static const std::pair<const char*, FresnelMode> kFresnel[] = {
+        {"none", FresnelMode::None}, {"schlick", FresnelMode::Schlick}, {"exact", FresnelMode::Exact}};
+    choice(root, "fresnel", "", s.fresnel, kFresnel);
+    number(root, "ior", "", s.ior, kMinIor, kMaxIor);
+    text(root, "title", s.title);
+    text(root, "caption", s.caption);
     static const std::pair<const char*, ReflectionModel> kRefl[] = {{"phong", ReflectionModel::Phong},
                                                                      {"blinn-phong", ReflectionModel::BlinnPhong}};
     choice(root, "reflection", "", s.reflection, kRefl);
@@ -334,6 +362,17 @@ Scene SceneReader::read(const json& root) {
         s.lights.clear();
         for (size_t i = 0; i < list.size(); ++i) s.lights.push_back(light(list[i], "lights[" + std::to_string(i) + "]"));
         s.lightsGiven = true;
+    }
+    if (root.contains("show")) {
+        if (!root["show"].is_string()) fail("show", std::string("expected a string, got ") + typeName(root["show"]));
+        try {
+            s.show = parseTermView(root["show"].get<std::string>(), "");
+        } catch (const InputError& e) {
+            fail("show", e.what());
+        }
+        if (s.show.term == ShowTerm::Light && s.show.light >= int(s.lights.size()))
+            fail("show", "light " + std::to_string(s.show.light) + " does not exist (the scene has " +
+                             std::to_string(s.lights.size()) + " light(s))");
     }
     if (root.contains("shadow_settings")) s.shadows = shadowSettings(root["shadow_settings"], "shadow_settings");
     boolean(root, "shadows", "", s.shadows.enabled);
@@ -505,6 +544,13 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     j["background"] = vecJson(s.background);
     j["size"] = {s.width, s.height};
     j["output_encoding"] = toString(s.outputEncoding);
+    j["specular_normalization"] = toString(s.specularNormalization);
+    j["fresnel"] = toString(s.fresnel);
+    j["ior"] = s.ior;
+    j["show"] = toString(s.show);
+    j["diff"] = {{"a", toString(s.diff.a)}, {"b", toString(s.diff.b)}, {"factor", s.diff.factor}};
+    if (!s.title.empty()) j["title"] = s.title;
+    if (!s.caption.empty()) j["caption"] = s.caption;
     return j.dump(2) + "\n";
 }
 
@@ -642,6 +688,36 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
     }
     if (rangeGiven && l.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
     return l;
+}
+
+TermView parseTermView(const std::string& text, const std::string& where) {
+    const std::string prefix = where.empty() ? std::string() : where + ": ";
+    TermView t;
+    static const std::pair<const char*, ShowTerm> kTerms[] = {{"all", ShowTerm::All},
+                                                             {"ambient", ShowTerm::Ambient},
+                                                             {"diffuse", ShowTerm::Diffuse},
+                                                             {"specular", ShowTerm::Specular},
+                                                             {"unlit", ShowTerm::Unlit}};
+    for (const auto& k : kTerms)
+        if (text == k.first) {
+            t.term = k.second;
+            return t;
+        }
+    if (text.rfind("light:", 0) == 0) {
+        const std::string n = text.substr(6);
+        char* end = nullptr;
+        const long v = std::strtol(n.c_str(), &end, 10);
+        if (n.empty() || end != n.c_str() + n.size() || n[0] == '-' || n[0] == '+')
+            throw InputError(prefix + "\"" + n + "\" is not a light index (light:N, N = 0.." +
+                             std::to_string(kMaxLights - 1) + ")");
+        if (v >= kMaxLights)
+            throw InputError(prefix + "light index " + n + " is out of range (0.." + std::to_string(kMaxLights - 1) + ")");
+        t.term = ShowTerm::Light;
+        t.light = int(v);
+        return t;
+    }
+    throw InputError(prefix + "unknown value \"" + text +
+                     "\" (expected one of all, ambient, diffuse, specular, light:N, unlit)");
 }
 
 void checkCoefficients(const Material& m, const std::string& where) {

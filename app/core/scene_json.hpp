@@ -39,6 +39,10 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& optionNa
 Light parseLightShorthand(const std::string& text, const std::string& optionName);
 
 // Validation shared with the command line; each throws InputError "<where>: <what>".
+// "all" | "ambient" | "diffuse" | "specular" | "light:N" (0 <= N < kMaxLights) | "unlit". Throws
+// InputError "WHERE: what" (no prefix when `where` is empty). Whether light N exists is the caller's check.
+TermView parseTermView(const std::string& text, const std::string& where);
+
 void checkCoefficients(const Material& m, const std::string& where);
 void checkImageSize(int width, int height, const std::string& where);
 

@@ -60,12 +60,49 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     return frame;
 }
 
+Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, const ShaderLibrary& shaders,
+                          HeadlessBackend backend, const std::string& flag) {
+    const std::size_t columns = sweeps.empty() ? 1 : sweeps[0].values.size();
+    const std::size_t rows = sweeps.size() > 1 ? sweeps[1].values.size() : 1;
+    // Every tile's scene first: a value that does not fit the scene (tessellation of a cube) is an
+    // input error before any context is made.
+    std::vector<Scene> scenes;
+    std::vector<std::string> labels;
+    for (std::size_t r = 0; r < rows; ++r)
+        for (std::size_t c = 0; c < columns; ++c) {
+            Scene s = base;
+            std::string label;
+            if (!sweeps.empty()) applySweep(s, sweeps[0], c, flag), label = sweepLabel(sweeps[0], c);
+            if (sweeps.size() > 1) applySweep(s, sweeps[1], r, flag), label += "  " + sweepLabel(sweeps[1], r);
+            scenes.push_back(std::move(s));
+            labels.push_back(std::move(label));
+        }
+    const auto context = makeHeadlessContext(backend, base.width, base.height);
+    Renderer renderer(context->getProcAddress(), shaders);
+    std::vector<Image> tiles;
+    std::shared_ptr<SceneGeometry> geometry;
+    const Scene* built = nullptr;
+    for (Scene& s : scenes) {
+        bool same = built && built->objects.size() == s.objects.size();
+        for (std::size_t o = 0; same && o < s.objects.size(); ++o) same = built->objects[o].mesh == s.objects[o].mesh;
+        if (!same) {
+            geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
+            renderer.setGeometry(geometry);
+            built = &s;
+        }
+        frameIfNeeded(s, *geometry);
+        renderer.render(s, context->target());
+        tiles.push_back(readPixels(context->target()));
+    }
+    return contactSheet(tiles, labels, int(columns));
+}
+
 std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
                                                const ShaderLibrary& shaders, HeadlessBackend backend) {
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
-    const std::size_t triangles = geometry->triangleCount() * (scene.layout == Layout::Compare ? 3 : 1);
+    const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
     std::vector<BenchmarkResult> results;

@@ -3,6 +3,7 @@
 #include "core/image.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
+#include "core/sweep.hpp"
 #include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
 
@@ -26,6 +27,12 @@ struct HeadlessFrame {
     std::size_t triangles = 0;
 };
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend);
+
+// A sweep sheet (core/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
+// with two sweeps, per value of sweeps[1] (rows), each labelled, rendered on one context. Geometry is
+// rebuilt only when a tile's meshes differ from the previous tile's (a tessellation sweep).
+Image renderSweepHeadless(const Scene& scene, const std::vector<Sweep>& sweeps, const ShaderLibrary& shaders,
+                          HeadlessBackend backend, const std::string& flag = "--sweep");
 
 struct BenchmarkResult {
     ShadingMode mode = ShadingMode::Phong;

@@ -34,13 +34,15 @@ struct FrameBlock {
     std::int32_t settings[4];  // light count, reflection model, output encoding
     LightGpu lights[SL_MAX_LIGHTS];
     float shadowSettings[4];   // normal bias (texels)
+    float modelSettings[4];    // ior, R0
 };
 static_assert(offsetof(FrameBlock, eyeWorld) == 64, "std140 offset");
 static_assert(offsetof(FrameBlock, ambient) == 80, "std140 offset");
 static_assert(offsetof(FrameBlock, settings) == 96, "std140 offset");
 static_assert(offsetof(FrameBlock, lights) == 112, "std140 offset");
 static_assert(offsetof(FrameBlock, shadowSettings) == 112 + 224 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(sizeof(FrameBlock) == 128 + 224 * SL_MAX_LIGHTS, "std140 size");
+static_assert(offsetof(FrameBlock, modelSettings) == 128 + 224 * SL_MAX_LIGHTS, "std140 offset");
+static_assert(sizeof(FrameBlock) == 144 + 224 * SL_MAX_LIGHTS, "std140 size");
 
 struct ObjectBlock {
     float worldFromObject[16];

@@ -126,7 +126,7 @@ const OverlayRenderer::Lines& OverlayRenderer::lines(std::size_t object, LineKin
 
 void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options) {
     if (!options.any()) return;
-    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height);
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
     const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
 
     // One upload per frame: a FrameBlock per pane, an ObjectBlock per object, then an identity

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <array>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -41,6 +42,8 @@ gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
     std::memcpy(b.clipFromWorld, glm::value_ptr(clipFromWorld), sizeof b.clipFromWorld);
     copyVec(b.eyeWorld, s.camera.eye, 1.0f);
     copyVec(b.ambient, s.ambient);
+    b.modelSettings[0] = s.ior;
+    b.modelSettings[1] = fresnelR0(1.0f, s.ior);
     const int count = int(std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS));
     b.settings[0] = count;
     b.settings[1] = s.reflection == ReflectionModel::Phong ? SL_REFLECTION_PHONG : SL_REFLECTION_BLINN_PHONG;
@@ -115,6 +118,24 @@ std::vector<std::string> programDefines(const Scene& s) {
                 (s.reflection == ReflectionModel::Phong ? "SL_REFLECTION_PHONG" : "SL_REFLECTION_BLINN_PHONG"));
     d.push_back(std::string("SL_ENCODING ") +
                 (s.outputEncoding == OutputEncoding::Srgb ? "SL_ENCODING_SRGB" : "SL_ENCODING_LINEAR"));
+    // The model extensions and term isolation: only scenes that use them get these defines, so every
+    // other scene compiles to the programs it always did.
+    if (s.specularNormalization == SpecularNormalization::Energy)
+        d.push_back("SL_SPECULAR_NORMALIZATION SL_NORMALIZATION_ENERGY");
+    if (s.fresnel != FresnelMode::None)
+        d.push_back(std::string("SL_FRESNEL ") +
+                    (s.fresnel == FresnelMode::Schlick ? "SL_FRESNEL_SCHLICK" : "SL_FRESNEL_EXACT"));
+    switch (s.show.term) {
+    case ShowTerm::All: break;
+    case ShowTerm::Ambient: d.push_back("SL_SHOW SL_SHOW_AMBIENT"); break;
+    case ShowTerm::Diffuse: d.push_back("SL_SHOW SL_SHOW_DIFFUSE"); break;
+    case ShowTerm::Specular: d.push_back("SL_SHOW SL_SHOW_SPECULAR"); break;
+    case ShowTerm::Unlit: d.push_back("SL_SHOW SL_SHOW_UNLIT"); break;
+    case ShowTerm::Light:
+        d.push_back("SL_SHOW SL_SHOW_LIGHT");
+        d.push_back("SL_SHOW_LIGHT_INDEX " + std::to_string(s.show.light));
+        break;
+    }
     // Only scenes with shadows get these: without them the programs are the ones they always were.
     if (s.shadows.enabled && count > 0) {
         d.push_back("SL_SHADOWS 1");
@@ -160,7 +181,7 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
 }
 
 void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
-    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1))
+    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1, scene.diff))
         for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) gpuMesh(o, pane.mode);
     geometry_.reset();
 }
@@ -223,7 +244,7 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
 }
 
 void Renderer::render(const Scene& scene, const RenderTarget& target) {
-    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height);
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
     const std::size_t objects = std::min(objectParts_.size(), scene.objects.size());
 
     // One draw per object part (a glTF primitive's base colour, or the whole mesh).
@@ -293,6 +314,7 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
 
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const Pane& pane = panes[p];
+        if (pane.difference) continue;  // drawn below, from the other two panes
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
         glUseProgram(program(pane.mode, scene));
         glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
@@ -313,7 +335,54 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     }
     glBindVertexArray(0);
     glFrontFace(GL_CCW);
+    if (panes.size() == 3 && panes[2].difference) drawDifference(panes[2], panes[0], panes[1], scene.diff.factor, target);
     checkGl("render");
+}
+
+void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target) {
+    if (pane.width <= 0 || pane.height <= 0) return;
+    if (!diffProgram_) {
+        diffProgram_ = buildProgram("difference", shaders_);
+        emptyVao_ = gl::makeVertexArray();
+        glUseProgram(diffProgram_.get());
+        glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceA"), 0);
+        glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceB"), 1);
+    }
+    if (!diffSources_[0] || diffWidth_ != pane.width || diffHeight_ != pane.height) {
+        for (gl::Texture& t : diffSources_) {
+            GLuint id = 0;
+            glGenTextures(1, &id);
+            t = gl::Texture(id);
+            glBindTexture(GL_TEXTURE_2D, id);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, pane.width, pane.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        diffWidth_ = pane.width, diffHeight_ = pane.height;
+    }
+    // Copy both source panes out of the target (GL's rows run bottom-up: y flips).
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer);
+    const Pane* sources[2] = {&a, &b};
+    for (int k = 0; k < 2; ++k) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + k));
+        glBindTexture(GL_TEXTURE_2D, diffSources_[std::size_t(k)].get());
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, sources[k]->x, target.height - sources[k]->y - sources[k]->height,
+                            pane.width, pane.height);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    const int originY = target.height - pane.y - pane.height;
+    glViewport(pane.x, originY, pane.width, pane.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(diffProgram_.get());
+    glUniform2i(glGetUniformLocation(diffProgram_.get(), "u_paneOrigin"), pane.x, originY);
+    glUniform1f(glGetUniformLocation(diffProgram_.get(), "u_factor"), factor);
+    glBindVertexArray(emptyVao_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
 }
 
 Image readPixels(const RenderTarget& target) {

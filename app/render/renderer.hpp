@@ -2,6 +2,7 @@
 // The GL renderer: draws a Scene into a framebuffer it is handed. It never creates a context; the
 // front end (the GLFW viewer, the OSMesa or any other headless context) makes one current and passes
 // its get-proc-address function. All GL state the renderer relies on is set in render().
+#include "core/camera.hpp"
 #include "core/image.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
@@ -68,6 +69,12 @@ private:
     GLint uniformAlignment_ = 256;
     std::vector<Aabb> objectBoxes_;                       // per object, object space (for shadow maps)
     ShadowMaps shadowMaps_;
+    // Layout diff: copies of the two source panes and the program that subtracts them.
+    void drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target);
+    std::array<gl::Texture, 2> diffSources_;
+    int diffWidth_ = 0, diffHeight_ = 0;
+    gl::Program diffProgram_;
+    gl::VertexArray emptyVao_;                            // core profile draws need a bound VAO
 };
 
 // What the shading programs are specialised for (shaders/lighting.glsl): the number of lights, each

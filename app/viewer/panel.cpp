@@ -74,6 +74,19 @@ void sectionShading(Scene& scene) {
     bool compare = scene.layout == Layout::Compare;
     if (ImGui::Checkbox("compare: flat | gouraud | phong  (C)", &compare))
         scene.layout = compare ? Layout::Compare : Layout::Single;
+    bool diff = scene.layout == Layout::Diff;
+    if (ImGui::Checkbox("difference: A | B | |A - B| x factor  (D)", &diff))
+        scene.layout = diff ? Layout::Diff : Layout::Single;
+    if (diff) {
+        static const char* const kModes[] = {"flat", "gouraud", "phong"};
+        ImGui::PushItemWidth(ImGui::GetFontSize() * 6.0f);
+        combo("A", scene.diff.a, kModes);
+        ImGui::SameLine();
+        combo("B", scene.diff.b, kModes);
+        ImGui::PopItemWidth();
+        ImGui::SliderFloat("factor", &scene.diff.factor, 1.0f, kMaxDiffFactor, "%.1f", ImGuiSliderFlags_Logarithmic);
+        scene.diff.factor = std::clamp(scene.diff.factor, 1.0f, kMaxDiffFactor);
+    }
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Reflection");
     ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
@@ -82,6 +95,23 @@ void sectionShading(Scene& scene) {
     radio("Blinn-Phong", scene.reflection, ReflectionModel::BlinnPhong);
     static const char* const kEncodings[] = {"linear", "sRGB"};
     combo("output encoding", scene.outputEncoding, kEncodings);
+    // Beyond the heuristic model (core/lighting.hpp): each switch recompiles the programs once.
+    static const char* const kNormalizations[] = {"none (heuristic)", "energy-normalised"};
+    combo("lobe normalisation", scene.specularNormalization, kNormalizations);
+    static const char* const kFresnel[] = {"none", "Schlick", "exact"};
+    combo("Fresnel", scene.fresnel, kFresnel);
+    if (scene.fresnel != FresnelMode::None) {
+        ImGui::SliderFloat("ior eta2/eta1", &scene.ior, kMinIor, 4.0f, "%.3f");
+        scene.ior = std::clamp(scene.ior, kMinIor, kMaxIor);
+    }
+    // Term isolation: each addend of the formula alone.
+    static const char* const kTerms[] = {"all", "ambient", "diffuse", "specular", "one light", "unlit C"};
+    combo("show", scene.show.term, kTerms);
+    if (scene.show.term == ShowTerm::Light) {
+        const int last = std::max(int(scene.lights.size()) - 1, 0);
+        ImGui::SliderInt("light", &scene.show.light, 0, last);
+        scene.show.light = std::clamp(scene.show.light, 0, last);
+    }
 }
 
 void sectionMaterial(Material& m) {
@@ -310,8 +340,10 @@ void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSca
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const float fontSize = ImGui::GetFontSize() * 2.0f;  // read from the back of a lecture hall
     const float pad = fontSize * 0.3f;
-    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height)) {
-        const char* text = toString(pane.mode);
+    const std::string diffLabel = "|" + std::string(toString(scene.diff.a)) + " - " + toString(scene.diff.b) + "| x " +
+                                  std::to_string(int(std::lround(scene.diff.factor)));
+    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
+        const char* text = pane.difference ? diffLabel.c_str() : toString(pane.mode);
         const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, text);
         const float cx = view.x + (float(pane.x) + float(pane.width) * 0.5f) / framebufferScale;
         const ImVec2 pos(std::round(cx - size.x * 0.5f), std::round(view.y + float(pane.y) / framebufferScale + pad * 2));

@@ -71,7 +71,7 @@ BoundingSphere SceneDocument::bounds() const {
 }
 
 float SceneDocument::paneAspect(int width, int height) const {
-    const Pane pane = layoutPanes(scene_.layout, scene_.shading, width, height).front();
+    const Pane pane = layoutPanes(scene_.layout, scene_.shading, width, height, scene_.diff).front();
     return float(std::max(pane.width, 1)) / float(std::max(pane.height, 1));
 }
 

@@ -155,6 +155,7 @@ void Viewer::handleKeys() {
         case 'c': case 'C':
             scene.layout = scene.layout == Layout::Compare ? Layout::Single : Layout::Compare;
             break;
+        case 'd': case 'D': scene.layout = scene.layout == Layout::Diff ? Layout::Single : Layout::Diff; break;
         case 'w': case 'W': overlays.wireframe = !overlays.wireframe; break;
         case 'n': overlays.vertexNormals = !overlays.vertexNormals; break;
         case 'N': overlays.faceNormals = !overlays.faceNormals; break;
@@ -217,7 +218,8 @@ void Viewer::uploadGeometryIfChanged() {
         overlays_->setGeometry(geometry);
         uploaded_ = geometry.get();
     }
-    const std::size_t panes = document_.scene().layout == Layout::Compare ? 3 : 1;
+    const Layout layout = document_.scene().layout;
+    const std::size_t panes = layout == Layout::Compare ? 3 : layout == Layout::Diff ? 2 : 1;
     status_.frameTriangles = geometry ? geometry->triangleCount() * panes : 0;
     const auto selected = std::size_t(settings_.selectedObject);
     status_.objectTriangles = geometry && selected < geometry->meshes.size() ? geometry->meshes[selected].triangleCount() : 0;

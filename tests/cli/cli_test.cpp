@@ -69,6 +69,32 @@ TEST_F(Cli, BothHeadlessBackendsRenderTheSameImage) {
     EXPECT_NE(bench.out.find("\"backend\": \"egl\""), std::string::npos) << bench.out;
 }
 
+// --sweep: one labelled tile per value in one PNG, a second sweep makes rows; the tiles are the renders
+// of each value (the middle one equals a plain --output render with that value).
+TEST_F(Cli, SweepSheetHasOneTilePerValue) {
+    const RunResult r = run({"--sweep", "ke=1,32,512", "--sweep", "shading=gouraud,phong", "--size", "64x48",
+                             "--output", path("sheet.png")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image sheet = readPng(path("sheet.png"));
+    EXPECT_EQ(sheet.width, 3 * 64 + 4 * 4);
+    const int bar = (sheet.height - 3 * 4) / 2 - 48;
+    EXPECT_GT(bar, 10);
+    ASSERT_EQ(run({"--ke", "32", "--shading", "phong", "--size", "64x48", "--output", path("one.png")}).exitCode, 0);
+    const Image one = readPng(path("one.png"));
+    Image tile(64, 48);
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x)
+            std::copy_n(sheet.pixel(4 + 68 + x, 4 + (48 + bar + 4) + bar + y), 4, tile.pixel(x, y));
+    EXPECT_EQ(compareImages(tile, one, 0).maxDifference, 0);
+    const RunResult noOutput = run({"--sweep", "ke=1,2"});
+    EXPECT_EQ(noOutput.exitCode, 2);
+    EXPECT_NE(noOutput.err.find("--sweep: renders a sheet to a PNG"), std::string::npos) << noOutput.err;
+    const RunResult cube = run({"--mesh", "cube", "--sweep", "tessellation=4,8", "--output", path("c.png")});
+    EXPECT_EQ(cube.exitCode, 2);
+    EXPECT_NE(cube.err.find("--sweep: tessellation: the first object is a cube"), std::string::npos) << cube.err;
+    EXPECT_FALSE(fs::exists(path("c.png")));
+}
+
 TEST_F(Cli, ScenePlusOverrides) {
     const std::string scene = file("s.json", R"({"mesh": {"type": "cube"}, "shading": "flat", "size": [50, 40]})");
     const RunResult r = run({scene, "--shading", "gouraud", "--ke", "8", "--size", "64x48", "--output", path("o.png")});

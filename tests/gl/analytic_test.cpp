@@ -67,6 +67,13 @@ struct PhongCase {
     ReflectionModel model;
     OutputEncoding encoding;
     const char* name;
+    // Issue 6: the model extensions and term isolation, each checked against the same reference.
+    SpecularNormalization normalization = SpecularNormalization::None;
+    FresnelMode fresnel = FresnelMode::None;
+    TermView show = {};
+    float ke = 32.0f;
+    float ks = 0.5f;
+    float ior = 1.5f;
 };
 
 class PhongVersusRayCast : public ::testing::TestWithParam<PhongCase> {};
@@ -82,6 +89,12 @@ TEST_P(PhongVersusRayCast, PixelsMatchTheReferenceOnTheTrueSphere) {
     Scene scene = litSphereScene(256, 128);
     scene.reflection = GetParam().model;
     scene.outputEncoding = GetParam().encoding;
+    scene.specularNormalization = GetParam().normalization;
+    scene.fresnel = GetParam().fresnel;
+    scene.ior = GetParam().ior;
+    scene.show = GetParam().show;
+    scene.objects[0].material.ke = GetParam().ke;
+    scene.objects[0].material.ks = GetParam().ks;
     const Rendered r = renderScene(scene);
     const Pane pane = layoutPanes(scene.layout, scene.shading, scene.width, scene.height)[0];
     const LightingEnvironment env = lightingEnvironment(scene);
@@ -118,7 +131,28 @@ TEST_P(PhongVersusRayCast, PixelsMatchTheReferenceOnTheTrueSphere) {
 INSTANTIATE_TEST_SUITE_P(Models, PhongVersusRayCast,
                          ::testing::Values(PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Linear, "blinn"},
                                            PhongCase{ReflectionModel::Phong, OutputEncoding::Linear, "phong"},
-                                           PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Srgb, "srgb"}),
+                                           PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Srgb, "srgb"},
+                                           PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Linear, "energy_schlick",
+                                                     SpecularNormalization::Energy, FresnelMode::Schlick, {}, 128.0f,
+                                                     4.0f, 1.5f},
+                                           PhongCase{ReflectionModel::Phong, OutputEncoding::Linear, "energy_exact",
+                                                     SpecularNormalization::Energy, FresnelMode::Exact, {}, 8.0f,
+                                                     3.0f, 1.33f},
+                                           PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Linear, "show_specular",
+                                                     SpecularNormalization::None, FresnelMode::None,
+                                                     TermView{ShowTerm::Specular, 0}},
+                                           PhongCase{ReflectionModel::Phong, OutputEncoding::Linear, "show_diffuse",
+                                                     SpecularNormalization::None, FresnelMode::None,
+                                                     TermView{ShowTerm::Diffuse, 0}},
+                                           PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Srgb, "show_light1",
+                                                     SpecularNormalization::None, FresnelMode::None,
+                                                     TermView{ShowTerm::Light, 1}},
+                                           PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Linear, "show_ambient",
+                                                     SpecularNormalization::None, FresnelMode::None,
+                                                     TermView{ShowTerm::Ambient, 0}},
+                                           PhongCase{ReflectionModel::BlinnPhong, OutputEncoding::Linear, "show_unlit",
+                                                     SpecularNormalization::None, FresnelMode::None,
+                                                     TermView{ShowTerm::Unlit, 0}}),
                          [](const auto& p) { return std::string(p.param.name); });
 
 // Flat shading: every pixel inside a triangle (at least one pixel from its edges) has one colour, equal
@@ -293,6 +327,49 @@ TEST(CompareLayout, PanesEqualSingleRendersOfTheirMode) {
         EXPECT_LE(d.maxDifference, 1) << toString(modes[i]);
         EXPECT_GT(compareImages(one.image, Image(64, 80), 0).failingPixels, 1000u) << "blank render";
     }
+}
+
+// Layout diff: panes A | B | |A - B| * factor, all 64 wide (the 2 leftover columns stay background).
+// The difference pane is exactly |pane A - pane B| * factor of the displayed 8-bit values (<= 1 for the
+// rounding of (a - b) / 255 * factor back to 8 bits), and the source panes are the single renders of
+// their mode (<= 1, as in the compare layout), so the difference pane is within factor + 1 of
+// |single A - single B| * factor.
+TEST(DiffLayout, DifferencePaneIsTheAmplifiedDifferenceOfTheSingleRenders) {
+    Scene scene = litSphereScene(16, 8);
+    scene.layout = Layout::Diff;
+    scene.diff = DiffSettings{ShadingMode::Gouraud, ShadingMode::Phong, 4.0f};
+    scene.width = 3 * 64 + 2;
+    scene.height = 80;
+    const Rendered diff = renderScene(scene);
+    Image singles[2] = {Image(64, 80), Image(64, 80)};
+    for (int k = 0; k < 2; ++k) {
+        Scene single = scene;
+        single.layout = Layout::Single;
+        single.shading = k == 0 ? scene.diff.a : scene.diff.b;
+        single.width = 64;
+        singles[k] = renderScene(single).image;
+    }
+    int nonZero = 0, worstVsPanes = 0, worstVsSingles = 0;
+    const glm::ivec3 background = quantize(scene.background);
+    for (int y = 0; y < 80; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const glm::ivec3 a = quantize(color(diff.image, x, y)), b = quantize(color(diff.image, 64 + x, y));
+            const glm::ivec3 d = quantize(color(diff.image, 128 + x, y));
+            const glm::ivec3 sa = quantize(color(singles[0], x, y)), sb = quantize(color(singles[1], x, y));
+            EXPECT_LE(maxChannelDifference(a, sa), 1);
+            EXPECT_LE(maxChannelDifference(b, sb), 1);
+            const glm::ivec3 fromPanes = glm::min(glm::abs(a - b) * 4, glm::ivec3(255));
+            const glm::ivec3 fromSingles = glm::min(glm::abs(sa - sb) * 4, glm::ivec3(255));
+            worstVsPanes = std::max(worstVsPanes, maxChannelDifference(d, fromPanes));
+            worstVsSingles = std::max(worstVsSingles, maxChannelDifference(d, fromSingles));
+            nonZero += d != glm::ivec3(0);
+        }
+        for (int x = 192; x < 194; ++x) EXPECT_EQ(quantize(color(diff.image, x, y)), background);
+    }
+    EXPECT_LE(worstVsPanes, 1);
+    EXPECT_LE(worstVsSingles, 5);
+    EXPECT_GT(nonZero, 300) << "gouraud and phong should differ on a 16 x 8 sphere";
+    if (HasFailure()) saveForInspection("diff_layout", diff.image);
 }
 
 // A mirroring transform must not turn the object inside out: back-face culling follows the winding

@@ -67,7 +67,7 @@ TEST_P(Golden, MatchesBaseline) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                          ::testing::Values("flat_uvsphere", "gouraud_uvsphere", "phong_uvsphere", "phong_reflection",
-                                           "compare_torus", "compare_icosphere_srgb", "objects_lights",
+                                           "diff_icosphere", "fresnel_energy_compare", "compare_torus", "compare_icosphere_srgb", "objects_lights",
                                            "gltf_suzanne_compare", "gltf_negative_scale", "gem_compare", "shadow_point",
                                            "shadow_directional", "shadow_area_1x1", "shadow_area_4x4",
                                            "shadow_area_8x8", "shadow_objects_compare"),

@@ -68,12 +68,39 @@ TEST_F(GlContext, EverySpecialisationCompiles) {
     scene.lights[0].type = LightType::Area;
     scene.lights[0].samples = {kMaxAreaSamplesPerSide, kMaxAreaSamplesPerSide};
     variants.push_back(scene);
+    // Issue 6: lobe normalisation, both Fresnel modes, every isolated term, with shadows and 16 lights.
+    scene.lights.assign(SL_MAX_LIGHTS, Light{});
+    scene.shadows.enabled = true;
+    scene.specularNormalization = SpecularNormalization::Energy;
+    for (ReflectionModel model : {ReflectionModel::Phong, ReflectionModel::BlinnPhong})
+        for (FresnelMode fresnel : {FresnelMode::Schlick, FresnelMode::Exact}) {
+            scene.reflection = model;
+            scene.fresnel = fresnel;
+            variants.push_back(scene);
+        }
+    for (ShowTerm term : {ShowTerm::Ambient, ShowTerm::Diffuse, ShowTerm::Specular, ShowTerm::Unlit})
+        scene.show = TermView{term, 0}, variants.push_back(scene);
+    for (int l : {0, 7, SL_MAX_LIGHTS - 1}) scene.show = TermView{ShowTerm::Light, l}, variants.push_back(scene);
     for (const Scene& v : variants)
         for (const char* name : {"flat", "gouraud", "phong"}) {
             SCOPED_TRACE(name);
             EXPECT_TRUE(buildProgram(name, library, programDefines(v)));
         }
+    EXPECT_TRUE(buildProgram("difference", library));
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// Scenes that use none of issue 6's switches get exactly the defines (so the programs) they had before.
+TEST(ProgramDefines, DefaultScenesAreNotSpecialisedForTheLectureSwitches) {
+    Scene scene;
+    for (const std::string& d : programDefines(scene)) {
+        EXPECT_EQ(d.find("SL_SHOW"), std::string::npos) << d;
+        EXPECT_EQ(d.find("SL_FRESNEL"), std::string::npos) << d;
+        EXPECT_EQ(d.find("SL_SPECULAR_NORMALIZATION"), std::string::npos) << d;
+    }
+    scene.ior = 2.0f;  // a value, not a switch: a uniform
+    scene.layout = Layout::Diff;
+    EXPECT_EQ(programDefines(scene), programDefines(Scene{}));
 }
 
 TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
@@ -113,6 +140,7 @@ TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
         EXPECT_EQ(uniformOffset(p.get(), "u_lights[1].radiance"),
                   GLint(offsetof(gpu::FrameBlock, lights) + sizeof(gpu::LightGpu) + offsetof(gpu::LightGpu, radiance)));
         EXPECT_EQ(uniformOffset(p.get(), "u_coefficients"), GLint(offsetof(gpu::ObjectBlock, coefficients)));
+        EXPECT_EQ(uniformOffset(p.get(), "u_modelSettings"), GLint(offsetof(gpu::FrameBlock, modelSettings)));
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     }
 }

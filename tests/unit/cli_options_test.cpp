@@ -35,6 +35,38 @@ TEST(CliOptions, ParsesEveryOption) {
     EXPECT_EQ(parseOptions({"--benchmark", "100"}).benchmarkFrames, 100);
 }
 
+TEST(CliOptions, LectureFlags) {
+    const Options o = parseOptions({"--layout", "diff", "--diff", "flat,phong", "--diff-factor", "8",
+                                    "--specular-normalization", "energy", "--fresnel=schlick", "--ior", "1.33",
+                                    "--show", "specular"});
+    EXPECT_EQ(*o.layout, Layout::Diff);
+    EXPECT_EQ(*o.diffA, ShadingMode::Flat);
+    EXPECT_EQ(*o.diffB, ShadingMode::Phong);
+    EXPECT_FLOAT_EQ(*o.diffFactor, 8.0f);
+    EXPECT_EQ(*o.specularNormalization, SpecularNormalization::Energy);
+    EXPECT_EQ(*o.fresnel, FresnelMode::Schlick);
+    EXPECT_FLOAT_EQ(*o.ior, 1.33f);
+    EXPECT_EQ(o.show->term, ShowTerm::Specular);
+    EXPECT_EQ(parseOptions({"--show", "light:3"}).show->light, 3);
+    EXPECT_NE(errorOf({"--diff", "flat"}).find("--diff: expected two shading modes"), std::string::npos);
+    EXPECT_NE(errorOf({"--diff", "flat,toon"}).find("--diff: unknown value \"toon\""), std::string::npos);
+    EXPECT_NE(errorOf({"--diff-factor", "0"}).find("--diff-factor: must be between 1 and 1000"), std::string::npos);
+    EXPECT_NE(errorOf({"--ior", "0.9"}).find("--ior: must be between 1 and 10"), std::string::npos);
+    EXPECT_NE(errorOf({"--fresnel", "fast"}).find("--fresnel: unknown value"), std::string::npos);
+    EXPECT_NE(errorOf({"--specular-normalization", "yes"}).find("--specular-normalization: unknown value"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--show", "glow"}).find("--show: unknown value \"glow\""), std::string::npos);
+    EXPECT_NE(errorOf({"--show", "light:-1"}).find("--show: \"-1\" is not a light index"), std::string::npos);
+    // A light that does not exist is found once the scene is known.
+    Options missing = parseOptions({"--show", "light:2"});
+    try {
+        sceneFromOptions(missing);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--show: light 2 does not exist"), std::string::npos) << e.what();
+    }
+}
+
 TEST(CliOptions, BadFlagsNameTheFlag) {
     EXPECT_NE(errorOf({"--frobnicate"}).find("--frobnicate: unknown option"), std::string::npos);
     EXPECT_NE(errorOf({"--ka"}).find("--ka: needs a value"), std::string::npos);

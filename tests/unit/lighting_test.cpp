@@ -1,8 +1,14 @@
 // The CPU reference of the lecture's formula, checked against values worked out by hand here.
 #include "core/lighting.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <initializer_list>
+#include <utility>
 
 #include <cmath>
 
@@ -319,4 +325,194 @@ TEST(Lighting, VisibilityScalesEachLightSample) {
     });
     EXPECT_EQ(rays, 5);
     EXPECT_NEAR(half.diffuse.x, lit.diffuse.x - shadeTerms(m, envWith({pointAt({1, 2, 0}, 1.0f)}), p, n).diffuse.x, 1e-6f);
+}
+
+// ---- Beyond the heuristic model (issue 6): Fresnel, Schlick, energy-normalised lobes, term isolation.
+
+namespace {
+constexpr double kPiD = 3.14159265358979323846;
+
+// The lecture's forms, written independently of core/lighting.cpp: R_par = tan^2(t1 - t3) / tan^2(t1 + t3),
+// R_perp = sin^2(t1 - t3) / sin^2(t1 + t3), with Snell's eta1 sin t1 = eta2 sin t3 (t1 > 0).
+void lectureFresnel(double theta1, double eta1, double eta2, double& par, double& perp) {
+    const double theta3 = std::asin(eta1 / eta2 * std::sin(theta1));
+    par = std::pow(std::tan(theta1 - theta3), 2) / std::pow(std::tan(theta1 + theta3), 2);
+    perp = std::pow(std::sin(theta1 - theta3), 2) / std::pow(std::sin(theta1 + theta3), 2);
+}
+}  // namespace
+
+TEST(Fresnel, NormalIncidenceEqualsR0) {
+    const std::initializer_list<std::pair<float, float>> media = {
+        {1.0f, 1.5f}, {1.0f, 1.33f}, {1.0f, 2.4f}, {1.5f, 1.0f}, {1.33f, 1.0f}};
+    for (const auto& [eta1, eta2] : media) {
+        const double r0 = std::pow((eta1 - eta2) / (eta1 + eta2), 2.0);  // by hand, e.g. 0.04 for glass
+        const FresnelTerms f = fresnelExact(1.0f, eta1, eta2);
+        EXPECT_NEAR(f.parallel, r0, 1e-6) << eta1 << " -> " << eta2;
+        EXPECT_NEAR(f.perpendicular, r0, 1e-6);
+        EXPECT_NEAR(f.average, r0, 1e-6);
+        EXPECT_NEAR(fresnelSchlick(1.0f, eta1, eta2), r0, 1e-6);
+        EXPECT_NEAR(fresnelR0(eta1, eta2), r0, 1e-6);
+    }
+    EXPECT_NEAR(fresnelR0(1.0f, 1.5f), 0.04f, 1e-6);
+}
+
+TEST(Fresnel, ExactMatchesTheLecturesTanAndSinForms) {
+    for (double deg : {10.0, 30.0, 45.0, 60.0, 75.0, 85.0})
+        for (double eta2 : {1.33, 1.5, 2.0}) {
+            double par = 0.0, perp = 0.0;
+            lectureFresnel(deg * kPiD / 180.0, 1.0, eta2, par, perp);
+            const FresnelTerms f = fresnelExact(float(std::cos(deg * kPiD / 180.0)), 1.0f, float(eta2));
+            EXPECT_NEAR(f.parallel, par, 2e-5) << deg << " deg, eta2 " << eta2;
+            EXPECT_NEAR(f.perpendicular, perp, 2e-5) << deg << " deg, eta2 " << eta2;
+            EXPECT_NEAR(f.average, 0.5 * (par + perp), 2e-5);
+        }
+    // Brewster's angle, tan theta_B = eta2 / eta1: the parallel polarisation is not reflected at all.
+    EXPECT_NEAR(fresnelExact(float(std::cos(std::atan(1.5))), 1.0f, 1.5f).parallel, 0.0f, 1e-6);
+    // Grazing incidence reflects everything.
+    EXPECT_NEAR(fresnelExact(0.0f, 1.0f, 1.5f).average, 1.0f, 1e-6);
+}
+
+TEST(Fresnel, TotalInternalReflectionPastTheCriticalAngle) {
+    const double critical = std::asin(1.0 / 1.5);  // 41.8 degrees, glass to air
+    const FresnelTerms below = fresnelExact(float(std::cos(critical - 0.01)), 1.5f, 1.0f);
+    const FresnelTerms above = fresnelExact(float(std::cos(critical + 0.01)), 1.5f, 1.0f);
+    EXPECT_FALSE(below.totalInternal);
+    EXPECT_LT(below.average, 1.0f);
+    EXPECT_TRUE(above.totalInternal);
+    EXPECT_EQ(above.average, 1.0f);
+}
+
+// Schlick's approximation is exact at 0 and 90 degrees; in between, for dielectrics from air with
+// 1.33 <= eta <= 2 (water to dense glass), it stays within 0.061 of the exact average (the largest
+// gap, found by sampling every 0.01 degree, is 0.0599 for water and 0.0357 for eta = 1.5, near 80 deg).
+TEST(Fresnel, SchlickAgreesWithTheExactCurveWithinTheKnownBound) {
+    for (float eta : {1.33f, 1.5f, 1.7f, 2.0f}) {
+        double worst = 0.0;
+        for (int k = 0; k <= 9000; ++k) {
+            const float c = float(std::cos(k / 100.0 * kPiD / 180.0));
+            worst = std::max(worst, double(std::fabs(fresnelSchlick(c, 1.0f, eta) - fresnelExact(c, 1.0f, eta).average)));
+        }
+        EXPECT_LT(worst, 0.061) << "eta " << eta;
+        if (eta == 1.5f) {
+            EXPECT_LT(worst, 0.036);
+        }
+        EXPECT_NEAR(fresnelSchlick(0.0f, 1.0f, eta), 1.0f, 1e-6);
+    }
+}
+
+// Numerical integration over the outgoing hemisphere: the energy a lobe reflects for light from
+// direction theta_i is the integral of n(k_e) lobe(w_o) cos(theta_o) dw_o (midpoint rule, 360 x 720
+// cells; its own error is below 0.2%, 0.5% for k_e = 512). Phong's (k_e + 2) / 2pi makes that exactly 1
+// at normal incidence and less elsewhere (the horizon cuts the lobe). Blinn-Phong's (k_e + 8) / 8pi is
+// the usual approximation of the exact factor (k_e + 2)(k_e + 4) / (8pi (2^(-k_e/2) + k_e)): it
+// overshoots by at most 7.5% (k_e = 8, normal incidence; 2.4% at k_e = 1, 0.4% at 512) and is below 1
+// from 30 degrees on; the exact factor stays <= 1 everywhere. Without normalisation the reflected
+// energy falls as 2pi / (k_e + 2): the highlight dims as k_e grows, the lecture's "not energy conserving".
+TEST(EnergyNormalization, NormalisedLobesIntegrateToAtMostOne) {
+    auto integral = [](ReflectionModel model, float ke, double thetaI) {
+        const glm::dvec3 n(0, 0, 1), i(std::sin(thetaI), 0, std::cos(thetaI));
+        const glm::dvec3 r = 2.0 * glm::dot(n, i) * n - i;
+        const int steps = 360;  // theta_o cells; phi_o gets twice as many
+        double sum = 0.0;
+        for (int a = 0; a < steps; ++a) {
+            const double t = (a + 0.5) * (kPiD / 2.0) / steps;
+            for (int b = 0; b < 2 * steps; ++b) {
+                const double p = (b + 0.5) * (2.0 * kPiD) / (2 * steps);
+                const glm::dvec3 o(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+                const double c = model == ReflectionModel::Phong ? glm::dot(r, o) : glm::dot(glm::normalize(i + o), n);
+                sum += std::pow(std::max(c, 0.0), double(ke)) * std::cos(t) * std::sin(t);
+            }
+        }
+        return sum * (kPiD / 2.0 / steps) * (2.0 * kPiD / (2 * steps));
+    };
+    for (float ke : {1.0f, 8.0f, 32.0f, 128.0f, 512.0f})
+        for (double deg : {0.0, 30.0, 60.0, 85.0}) {
+            const double lobe = integral(ReflectionModel::Phong, ke, deg * kPiD / 180.0);
+            EXPECT_LE(lobe * lobeNormalization(ReflectionModel::Phong, ke), 1.005) << "Phong k_e " << ke << " at " << deg;
+            EXPECT_GT(lobe * lobeNormalization(ReflectionModel::Phong, ke), 0.0);
+            const double blinn = integral(ReflectionModel::BlinnPhong, ke, deg * kPiD / 180.0);
+            const double k = double(ke);
+            const double exact = (k + 2.0) * (k + 4.0) / (8.0 * kPiD * (std::pow(2.0, -k / 2.0) + k));
+            EXPECT_LE(blinn * exact, 1.003) << "Blinn-Phong (exact factor) k_e " << ke << " at " << deg;
+            EXPECT_LE(blinn * lobeNormalization(ReflectionModel::BlinnPhong, ke), deg == 0.0 ? 1.076 : 1.0)
+                << "Blinn-Phong k_e " << ke << " at " << deg;
+        }
+    EXPECT_NEAR(integral(ReflectionModel::Phong, 32.0f, 0.0) * lobeNormalization(ReflectionModel::Phong, 32.0f), 1.0, 2e-3);
+    EXPECT_NEAR(integral(ReflectionModel::Phong, 512.0f, 0.0) * lobeNormalization(ReflectionModel::Phong, 512.0f), 1.0, 5e-3);
+    EXPECT_NEAR(integral(ReflectionModel::Phong, 8.0f, 0.0), 2.0 * kPiD / 10.0, 2e-3);
+}
+
+TEST(EnergyNormalization, LooksTheSameAtKe32AndKeepsEnergyElsewhere) {
+    EXPECT_FLOAT_EQ(energySpecularScale(ReflectionModel::Phong, 32.0f), 1.0f);
+    EXPECT_FLOAT_EQ(energySpecularScale(ReflectionModel::BlinnPhong, 32.0f), 1.0f);
+    EXPECT_NEAR(energySpecularScale(ReflectionModel::Phong, 128.0f), 130.0f / 34.0f, 1e-5);
+    EXPECT_NEAR(energySpecularScale(ReflectionModel::BlinnPhong, 1.0f), 9.0f / 40.0f, 1e-5);
+    EXPECT_NEAR(lobeNormalization(ReflectionModel::Phong, 8.0f), 10.0 / (2.0 * kPiD), 1e-6);
+    EXPECT_NEAR(lobeNormalization(ReflectionModel::BlinnPhong, 8.0f), 16.0 / (8.0 * kPiD), 1e-6);
+
+    // In shadeTerms: the diffuse term is unchanged, spec is multiplied by the scale.
+    const float a = 40.0f * 3.14159265f / 180.0f;
+    const glm::vec3 towardLight(0.0f, std::sin(a), std::cos(a));
+    LightingEnvironment env;
+    env.eyeWorld = {0.0f, 0.0f, 10.0f};
+    env.lights = {directional(-towardLight)};
+    Material m = plainMaterial();
+    for (ReflectionModel model : {ReflectionModel::Phong, ReflectionModel::BlinnPhong})
+        for (float ke : {1.0f, 32.0f, 200.0f}) {
+            m.ke = ke;
+            env.model = model;
+            env.normalization = SpecularNormalization::None;
+            const ShadingTerms plain = shadeTerms(m, env, {0, 0, 0}, {0, 0, 1});
+            env.normalization = SpecularNormalization::Energy;
+            const ShadingTerms energy = shadeTerms(m, env, {0, 0, 0}, {0, 0, 1});
+            EXPECT_EQ(energy.diffuse, plain.diffuse);
+            const float scale = model == ReflectionModel::Phong ? (ke + 2.0f) / 34.0f : (ke + 8.0f) / 40.0f;
+            EXPECT_NEAR(energy.specular.x, plain.specular.x * scale, 1e-6f);
+        }
+}
+
+// The specular term is weighted by F(V.H): Blinn-Phong, light at 60 degrees, eye on the normal, so
+// H is 30 degrees off both and V.H = cos 30.
+TEST(Fresnel, WeightsTheSpecularTermAtTheAngleBetweenVAndH) {
+    const float a = 60.0f * 3.14159265f / 180.0f;
+    LightingEnvironment env;
+    env.eyeWorld = {0.0f, 0.0f, 10.0f};
+    env.lights = {directional(-glm::vec3(0.0f, std::sin(a), std::cos(a)))};
+    const Material m = plainMaterial();
+    const ShadingTerms plain = shadeTerms(m, env, {0, 0, 0}, {0, 0, 1});
+    const double c = std::cos(a / 2.0f), r0 = 0.04;
+    env.ior = 1.5f;
+    env.fresnel = FresnelMode::Schlick;
+    const ShadingTerms schlick = shadeTerms(m, env, {0, 0, 0}, {0, 0, 1});
+    EXPECT_NEAR(schlick.specular.x, plain.specular.x * (r0 + (1.0 - r0) * std::pow(1.0 - c, 5.0)), 1e-6);
+    EXPECT_EQ(schlick.diffuse, plain.diffuse);
+    env.fresnel = FresnelMode::Exact;
+    double par = 0.0, perp = 0.0;
+    lectureFresnel(a / 2.0, 1.0, 1.5, par, perp);
+    EXPECT_NEAR(shadeTerms(m, env, {0, 0, 0}, {0, 0, 1}).specular.x, plain.specular.x * 0.5 * (par + perp), 1e-6);
+}
+
+TEST(TermIsolation, EachTermAloneAndOneLightsShare) {
+    LightingEnvironment env;
+    env.ambient = {1, 1, 1};
+    env.eyeWorld = {0.0f, 0.0f, 10.0f};
+    env.lights = {directional({0, 0, -1}, 0.5f), directional(-glm::normalize(glm::vec3(0, 1, 1)), 0.25f)};
+    Material m = plainMaterial();
+    const ShadingTerms all = shadeTerms(m, env, {0, 0, 0}, {0, 0, 1});
+    ASSERT_EQ(all.lights.size(), 2u);
+    // Per light, by hand: light 0 head-on (N.I = 1, spec 1), light 1 at 45 degrees.
+    EXPECT_NEAR(all.lights[0].diffuse.x, 0.5f * 0.6f * 0.5f, kEps);
+    EXPECT_NEAR(all.lights[0].specular.x, 0.5f * 0.3f, kEps);
+    EXPECT_NEAR(all.lights[1].diffuse.x, 0.25f * 0.6f * 0.5f * std::sqrt(0.5f), kEps);
+    EXPECT_NEAR(all.diffuse.x, all.lights[0].diffuse.x + all.lights[1].diffuse.x, kEps);
+    auto shown = [&](ShowTerm term, int light = 0) {
+        env.show = TermView{term, light};
+        return shadeTerms(m, env, {0, 0, 0}, {0, 0, 1}).total;
+    };
+    EXPECT_EQ(shown(ShowTerm::All), all.total);
+    EXPECT_EQ(shown(ShowTerm::Ambient), glm::clamp(all.ambient, 0.0f, 1.0f));
+    EXPECT_EQ(shown(ShowTerm::Diffuse), glm::clamp(all.diffuse, 0.0f, 1.0f));
+    EXPECT_EQ(shown(ShowTerm::Specular), glm::clamp(all.specular, 0.0f, 1.0f));
+    EXPECT_EQ(shown(ShowTerm::Light, 1), glm::clamp(all.lights[1].diffuse + all.lights[1].specular, 0.0f, 1.0f));
+    EXPECT_EQ(shown(ShowTerm::Unlit), m.color);
 }

@@ -128,6 +128,21 @@ TEST(SceneJson, ErrorsNameTheFileAndTheField) {
     expectError(R"({"camera": {"eye": [0, 5, 0], "up": [0, 1, 0]}})", {"camera.up", "parallel"});
     expectError(R"({"objects": [{"transform": {"scale": [1, 0, 1]}}]})", {"objects[0].transform.scale"});
     expectError(R"({"objects": [], "mesh": {"type": "cube"}})", {"objects", "not both"});
+    expectError(R"({"layout": "sidebyside"})", {"layout", "\"diff\""});
+    expectError(R"({"diff": {"a": "toon"}})", {"diff.a", "toon"});
+    expectError(R"({"diff": {"factor": 0.5}})", {"diff.factor", ">= 1"});
+    expectError(R"({"diff": {"c": 1}})", {"diff.c", "unknown field"});
+    expectError(R"({"specular_normalization": "physical"})", {"specular_normalization", "\"energy\""});
+    expectError(R"({"fresnel": true})", {"fresnel", "got a boolean"});
+    expectError(R"({"ior": 0.5})", {"ior", ">= 1"});
+    expectError(R"({"ior": 11})", {"ior", "<= 10"});
+    expectError(R"({"show": "glossy"})", {"show", "unknown value \"glossy\""});
+    expectError(R"({"show": "light:x"})", {"show", "not a light index"});
+    expectError(R"({"show": "light:1"})", {"show", "light 1 does not exist"});
+    expectError(R"({"show": "light:99"})", {"show", "out of range"});
+    expectError(R"({"show": 3})", {"show", "expected a string"});
+    expectError(R"({"title": 3})", {"title", "expected a string"});
+    expectError(R"({"caption": "two\nlines"})", {"caption", "one line"});
     std::string many = R"({"lights": [)";
     for (int i = 0; i < 17; ++i) many += std::string(i ? "," : "") + "{}";
     expectError(many + "]}", {"lights", "at most 16"});
@@ -189,6 +204,42 @@ TEST(SceneJson, SavedSceneLoadsBackTheSame) {
     EXPECT_EQ(moved.objects[1].mesh.resolvedPath, "/scenes/m/box.gltf");
     // Saving is stable: a second round trip gives identical text.
     EXPECT_EQ(sceneToJson(r, "/scenes"), saved);
+}
+
+TEST(SceneJson, LectureFieldsAreReadAndSaved) {
+    const Scene defaults = parse("{}");
+    EXPECT_EQ(defaults.specularNormalization, SpecularNormalization::None);
+    EXPECT_EQ(defaults.fresnel, FresnelMode::None);
+    EXPECT_FLOAT_EQ(defaults.ior, 1.5f);
+    EXPECT_EQ(defaults.show.term, ShowTerm::All);
+    EXPECT_EQ(defaults.diff.a, ShadingMode::Gouraud);
+    EXPECT_EQ(defaults.diff.b, ShadingMode::Phong);
+    EXPECT_FLOAT_EQ(defaults.diff.factor, 4.0f);
+    EXPECT_TRUE(defaults.title.empty());
+    const Scene s = parse(R"({"layout": "diff", "diff": {"a": "flat", "b": "gouraud", "factor": 16},
+      "specular_normalization": "energy", "fresnel": "exact", "ior": 1.33, "show": "light:1",
+      "lights": [{}, {"type": "directional"}], "title": "Fresnel", "caption": "Glass reflects more at grazing angles."})");
+    EXPECT_EQ(s.layout, Layout::Diff);
+    EXPECT_EQ(s.diff.a, ShadingMode::Flat);
+    EXPECT_EQ(s.diff.b, ShadingMode::Gouraud);
+    EXPECT_FLOAT_EQ(s.diff.factor, 16.0f);
+    EXPECT_EQ(s.specularNormalization, SpecularNormalization::Energy);
+    EXPECT_EQ(s.fresnel, FresnelMode::Exact);
+    EXPECT_FLOAT_EQ(s.ior, 1.33f);
+    EXPECT_EQ(s.show, (TermView{ShowTerm::Light, 1}));
+    EXPECT_EQ(s.title, "Fresnel");
+    const Scene r = parse(sceneToJson(s, "/scenes"));
+    EXPECT_EQ(r.layout, s.layout);
+    EXPECT_EQ(r.diff.a, s.diff.a);
+    EXPECT_FLOAT_EQ(r.diff.factor, s.diff.factor);
+    EXPECT_EQ(r.specularNormalization, s.specularNormalization);
+    EXPECT_EQ(r.fresnel, s.fresnel);
+    EXPECT_FLOAT_EQ(r.ior, s.ior);
+    EXPECT_EQ(r.show, s.show);
+    EXPECT_EQ(r.title, s.title);
+    EXPECT_EQ(r.caption, s.caption);
+    for (const char* term : {"all", "ambient", "diffuse", "specular", "unlit"})
+        EXPECT_EQ(toString(parse(std::string(R"({"show": ")") + term + "\"}").show), term);
 }
 
 TEST(SceneJson, DefaultSceneIsBuiltInAndValid) {
