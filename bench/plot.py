@@ -1,8 +1,8 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots frame time against triangle count for the three shading modes, shadelab and the bare OSMesa
 reference on the same axes, from build/bench/results.json (written by bench/run.py).
 
-  python3 bench/plot.py [results.json] [-o bench/frame_time.png]      (needs python3-matplotlib)
+  bench/plot.py [results.json] [-o bench/frame_time.png]   (Debian's /usr/bin/python3 with python3-matplotlib)
 """
 import argparse
 import json
