@@ -270,8 +270,7 @@ void angleWeightedNormals(const std::vector<glm::vec3>& pos, const std::vector<s
         }
     }
     for (auto& n : nrm) {
-        const float l = glm::length(n);
-        n = l > 0.0f ? n / l : glm::vec3(0.0f, 1.0f, 0.0f);
+        n = safeNormalize(n);
     }
 }
 
@@ -326,8 +325,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
                  "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(pos.count));
         normals = readVec3(nv);
         for (glm::vec3& n : normals) {
-            const float l = glm::length(n);
-            n = (std::isfinite(l) && l > 0.0f) ? n / l : glm::vec3(0.0f, 1.0f, 0.0f);
+            n = safeNormalize(n);
         }
     } else {
         angleWeightedNormals(positions, tris, normals);
@@ -349,8 +347,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         for (std::size_t i = 0; i < positions.size(); ++i) {
             mesh_.positions.push_back(glm::vec3(world * glm::vec4(positions[i], 1.0f)));
             const glm::vec3 n = nrmWorld * normals[i];
-            const float l = glm::length(n);
-            mesh_.normals.push_back(l > 0.0f ? n / l : glm::vec3(0.0f, 1.0f, 0.0f));
+            mesh_.normals.push_back(safeNormalize(n));
         }
     }
     const auto firstIndex = std::uint32_t(mesh_.indices.size());

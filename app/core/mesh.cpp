@@ -11,6 +11,14 @@
 
 namespace shadelab {
 
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+    const float largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    // Below ~1e-30 a float has lost most of its mantissa (denormals start at 1.2e-38).
+    if (!std::isfinite(largest) || !(largest > 1e-30f)) return fallback;
+    const glm::vec3 scaled = v / largest;  // largest component exactly 1: length in [1, sqrt 3]
+    return scaled / glm::length(scaled);
+}
+
 glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     const glm::vec3 n = glm::cross(c - b, a - b);
     const float len = glm::length(n);

@@ -29,6 +29,11 @@ struct Mesh {
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
+// `v` scaled to unit length, or `fallback` when that is not possible (zero, not finite, or so small
+// that its direction is lost to rounding). Rescales by the largest component first, so huge and
+// tiny (denormal) vectors normalise accurately. Input files can hold any such normal.
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback = glm::vec3(0.0f, 1.0f, 0.0f));
+
 // The lecture's face normal of a counter-clockwise triangle a, b, c: normalize((c - b) x (a - b)).
 glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 

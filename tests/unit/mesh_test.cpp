@@ -2,6 +2,8 @@
 #include "core/mesh.hpp"
 
 #include <glm/geometric.hpp>
+
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace shadelab;
@@ -28,6 +30,22 @@ TEST(Mesh, FaceNormalFollowsTheLectureFormula) {
     // counter-clockwise seen from +z
     EXPECT_EQ(faceNormal({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), glm::vec3(0, 0, 1));
     EXPECT_EQ(faceNormal({0, 0, 0}, {0, 1, 0}, {1, 0, 0}), glm::vec3(0, 0, -1));
+}
+
+// Found by fuzz_gltf: a file's normal with denormal components (1e-44) passed a "length > 0" check
+// and did not come out unit length. tests/fuzz/corpus/gltf/crash-denormal-normals.glb keeps it.
+TEST(Mesh, SafeNormalizeGivesUnitVectorsOrTheFallback) {
+    for (const glm::vec3& v : {glm::vec3(1e-44f, 0, 0), glm::vec3(3e-39f, 2e-39f, 0), glm::vec3(1e38f, 1e38f, 1e38f),
+                               glm::vec3(0.3f, -4.0f, 12.0f), glm::vec3(1e-20f, 2e-20f, 2e-20f)}) {
+        const glm::vec3 n = safeNormalize(v);
+        EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f) << v.x << " " << v.y << " " << v.z;
+    }
+    EXPECT_EQ(safeNormalize(glm::vec3(1e-44f, 0, 0)), glm::vec3(0, 1, 0));  // direction lost: fallback
+    EXPECT_EQ(safeNormalize(glm::vec3(0.0f)), glm::vec3(0, 1, 0));
+    EXPECT_EQ(safeNormalize(glm::vec3(NAN, 0, 0), glm::vec3(1, 0, 0)), glm::vec3(1, 0, 0));
+    EXPECT_EQ(safeNormalize(glm::vec3(INFINITY, 0, 0)), glm::vec3(0, 1, 0));
+    const glm::vec3 tiny = safeNormalize(glm::vec3(1e-20f, 2e-20f, 2e-20f));
+    EXPECT_NEAR(tiny.x, 1.0f / 3.0f, 1e-6f);
 }
 
 TEST(Mesh, UvSphereMatchesTheBenchmarkLayout) {
