@@ -12,9 +12,11 @@
 namespace shadelab {
 
 glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+    // Each component checked: std::max with a NaN in it can return a finite value.
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return fallback;
     const float largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
     // Below ~1e-30 a float has lost most of its mantissa (denormals start at 1.2e-38).
-    if (!std::isfinite(largest) || !(largest > 1e-30f)) return fallback;
+    if (!(largest > 1e-30f)) return fallback;
     const glm::vec3 scaled = v / largest;  // largest component exactly 1: length in [1, sqrt 3]
     return scaled / glm::length(scaled);
 }

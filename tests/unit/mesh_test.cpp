@@ -44,6 +44,7 @@ TEST(Mesh, SafeNormalizeGivesUnitVectorsOrTheFallback) {
     EXPECT_EQ(safeNormalize(glm::vec3(0.0f)), glm::vec3(0, 1, 0));
     EXPECT_EQ(safeNormalize(glm::vec3(NAN, 0, 0), glm::vec3(1, 0, 0)), glm::vec3(1, 0, 0));
     EXPECT_EQ(safeNormalize(glm::vec3(INFINITY, 0, 0)), glm::vec3(0, 1, 0));
+    EXPECT_EQ(safeNormalize(glm::vec3(0, NAN, 1)), glm::vec3(0, 1, 0));  // NaN after a finite component
     const glm::vec3 tiny = safeNormalize(glm::vec3(1e-20f, 2e-20f, 2e-20f));
     EXPECT_NEAR(tiny.x, 1.0f / 3.0f, 1e-6f);
 }
