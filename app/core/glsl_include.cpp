@@ -1,6 +1,7 @@
 #include "core/glsl_include.hpp"
 
-#include <regex>
+#include <cctype>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -49,14 +50,20 @@ ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string
 }
 
 std::string locateGlslLog(const std::string& log, const std::vector<std::string>& files) {
-    static const std::regex kMesa(R"(^(\s*(?:ERROR: |WARNING: )?)(\d+):(\d+))");
+    // A log line starts (after blanks and an optional "ERROR: " or "WARNING: ") with
+    // "SOURCE:LINE", e.g. Mesa's "0:12(5): error: ...": replace SOURCE by its file name.
     std::istringstream in(log);
     std::string line, result;
     while (std::getline(in, line)) {
-        std::smatch m;
-        if (std::regex_search(line, m, kMesa)) {
-            const size_t id = std::stoul(m[2].str());
-            if (id < files.size()) line = m[1].str() + files[id] + ":" + m[3].str() + line.substr(size_t(m.length(0)));
+        size_t p = line.find_first_not_of(" \t");
+        for (const char* prefix : {"ERROR: ", "WARNING: "})
+            if (p != std::string::npos && line.compare(p, std::strlen(prefix), prefix) == 0) p += std::strlen(prefix);
+        size_t digits = p;
+        while (digits < line.size() && std::isdigit(static_cast<unsigned char>(line[digits]))) ++digits;
+        if (p != std::string::npos && digits > p && digits + 1 < line.size() && line[digits] == ':' &&
+            std::isdigit(static_cast<unsigned char>(line[digits + 1]))) {
+            const size_t id = std::stoul(line.substr(p, digits - p));
+            if (id < files.size()) line = line.substr(0, p) + files[id] + line.substr(digits);
         }
         result += line + "\n";
     }
