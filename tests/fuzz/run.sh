@@ -27,9 +27,12 @@ run() {  # run TARGET EXTRA-ARGS...
   local seeds; seeds=$(seed "$target")
   local fresh="$build/fuzz-corpus/$target"
   mkdir -p "$fresh" "$build/fuzz-crashes"
-  # The first folder receives new interesting inputs; the repository's folders are only read.
+  # The first folder receives new interesting inputs; the repository's folders are only read (a
+  # target may have no regression inputs yet: git keeps no empty folder).
+  local kept=()
+  [ -d "$root/tests/fuzz/corpus/$target" ] && kept=("$root/tests/fuzz/corpus/$target")
   "$build/tests/fuzz/fuzz_$target" -artifact_prefix="$build/fuzz-crashes/$target-" -print_final_stats=1 \
-      -rss_limit_mb=4096 "$@" "$fresh" "$root/tests/fuzz/corpus/$target" "$seeds"
+      -rss_limit_mb=4096 "$@" "$fresh" "${kept[@]}" "$seeds"
 }
 
 case ${1:-regress} in
