@@ -224,8 +224,8 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
         std::vector<glm::vec3> interleaved(count * attributes);
         for (std::size_t i = 0; i < count; ++i)
             for (std::size_t a = 0; a < attributes; ++a) interleaved[i * attributes + a] = (*arrays[a])[i];
-        g.attributes[0] = gl::makeBuffer();
-        glBindBuffer(GL_ARRAY_BUFFER, g.attributes[0].get());
+        g.vertices = gl::makeBuffer();
+        glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data(),
                      GL_STATIC_DRAW);
     }

@@ -53,7 +53,7 @@ public:
 private:
     struct GpuMesh {
         gl::VertexArray vao;
-        std::array<gl::Buffer, 1> attributes;  // interleaved positions, normals, (flat) centroids
+        gl::Buffer vertices;  // interleaved positions, normals and (flat) centroids
         gl::Buffer indices;
         GLsizei indexCount = 0;
     };
