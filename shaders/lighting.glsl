@@ -11,15 +11,13 @@
 // shading ~50% slower than the same formula with constants (bench/README.md); light positions,
 // colours and all material values stay uniforms, so dragging a slider never recompiles.
 #include "uniforms.glsl"
+#include "encoding.glsl"
 
 #ifndef SL_LIGHT_COUNT
 #define SL_LIGHT_COUNT 0
 #endif
 #ifndef SL_REFLECTION
 #define SL_REFLECTION SL_REFLECTION_BLINN_PHONG
-#endif
-#ifndef SL_ENCODING
-#define SL_ENCODING SL_ENCODING_LINEAR
 #endif
 #ifndef SL_SHADOWS
 #define SL_SHADOWS 0
@@ -38,6 +36,12 @@
 #endif
 #ifndef SL_SHOW_LIGHT_INDEX
 #define SL_SHOW_LIGHT_INDEX -1
+#endif
+// SL_ACCUMULATE = 1: a pass of progressive area-light sampling (Renderer::renderProgressive). Each
+// area light evaluates only the samples u_areaPass selects, and the programs write linear values that
+// the renderer sums over the passes in a float buffer, then clamps and encodes in shaders/resolve.frag.
+#ifndef SL_ACCUMULATE
+#define SL_ACCUMULATE 0
 #endif
 // With SL_LIGHT_COUNT = n the renderer also defines SL_LIGHT_KIND_l and SL_LIGHT_ATTENUATION_l for
 // l < n, and SL_LIGHT_SAMPLES_X_l, SL_LIGHT_SAMPLES_Y_l for area lights; blocks for lights past the
@@ -217,8 +221,16 @@ vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 
     float bias = u_shadowSettings.x * u_lights[l].shadow.x;
 #endif
     vec3 sum = vec3(0.0);
+#if SL_ACCUMULATE
+    // This pass's share of the grid: every stride-th sample from an offset, weighted by the number of
+    // passes (stride.x * stride.y). Each sample lies in exactly one pass, so the mean of all passes
+    // is the full sum below, whatever nx and ny are.
+    for (int j = u_areaPass.y; j < ny; j += u_areaPass.w)
+        for (int i = u_areaPass.x; i < nx; i += u_areaPass.z) {
+#else
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
+#endif
             vec2 ab = areaSampleOffset(i, j, nx, ny);
             vec3 toLight = centre + ab.x * edgeU + ab.y * edgeV - posWorld;
             float r2 = dot(toLight, toLight);
@@ -236,11 +248,15 @@ vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 
 #endif
             sum += weight * reflected(I, NdotI, N, V);
         }
+#if SL_ACCUMULATE
+    sum *= float(u_areaPass.z * u_areaPass.w);
+#endif
     return u_lights[l].radiance.rgb / float(nx * ny) * sum;
 }
 
-// posWorld: the point being shaded; nrmWorld: its unit normal. Returns linear RGB in [0, 1].
-vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld) {
+// posWorld: the point being shaded; nrmWorld: its unit normal. Returns linear RGB before the clamp
+// (progressive Phong sums these over passes and clamps the mean; everything else uses shadeLecture).
+vec3 shadeLectureUnclamped(vec3 posWorld, vec3 nrmWorld) {
     vec3 N = nrmWorld;
     vec3 V = normalize(u_eyeWorld.xyz - posWorld);
 #if SL_SHOW == SL_SHOW_UNLIT
@@ -363,16 +379,8 @@ vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld) {
     L += lightTerm(15, SL_LIGHT_KIND_15, SL_LIGHT_ATTENUATION_15, SL_SHADOW_ARG(15) posWorld, N, V);
 #endif
 #endif
-    return clamp(L, 0.0, 1.0);
+    return L;
 }
 
-// What the framebuffer gets: the value itself, or its sRGB encoding when the scene asks for it.
-vec3 encodeOutput(vec3 linear) {
-#if SL_ENCODING == SL_ENCODING_SRGB
-    vec3 lo = 12.92 * linear;
-    vec3 hi = 1.055 * pow(linear, vec3(1.0 / 2.4)) - 0.055;
-    return mix(hi, lo, vec3(lessThanEqual(linear, vec3(0.0031308))));
-#else
-    return linear;
-#endif
-}
+// The lecture's L, clamped to [0, 1]: linear RGB.
+vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld) { return clamp(shadeLectureUnclamped(posWorld, nrmWorld), 0.0, 1.0); }

@@ -29,6 +29,8 @@ layout(std140) uniform FrameBlock {
     LightGpu u_lights[SL_MAX_LIGHTS];
     vec4 u_shadowSettings;     // x: normal bias, in shadow-map texels
     vec4 u_modelSettings;      // x: ior = eta2 / eta1 (Fresnel), y: R0 = ((1 - ior) / (1 + ior))^2
+    ivec4 u_areaPass;          // progressive sampling (SL_ACCUMULATE): this pass's first area-light
+                               // sample (x: i, y: j) and the stride between samples (z: along i, w: j)
 };
 
 layout(std140) uniform ObjectBlock {

@@ -106,7 +106,8 @@ int run(const std::vector<std::string>& args) {
         if (scene.layout == Layout::Compare) modes = {scene.shading};
         else if (options.shading) modes = {*options.shading};
         else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
-        for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders, backend))
+        for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders, backend,
+                                                          options.progressiveStride))
             std::cout << toJson(r) << std::endl;
         return 0;
     }
@@ -117,6 +118,7 @@ int run(const std::vector<std::string>& args) {
     viewer.viewScreenshotPath = options.screenshotView.value_or("");
     viewer.saveScenePath = options.saveScene.value_or("");
     viewer.hidePanel = options.hidePanel;
+    viewer.progressiveStride = options.progressiveStride;
     for (const std::string& o : options.overlays) {
         viewer.overlays.wireframe |= o == "wireframe";
         viewer.overlays.vertexNormals |= o == "vertex-normals";

@@ -130,6 +130,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         }
         else if (arg == "--benchmark") o.benchmarkFrames = parseInt(arg, next(), 1, 1000000);
         else if (arg == "--frames") o.frames = parseInt(arg, next(), 1, 100000000);
+        else if (arg == "--progressive") o.progressiveStride = parseInt(arg, next(), 1, kMaxAreaSamplesPerSide);
         else if (arg == "--screenshot") o.screenshot = next();
         else if (arg == "--screenshot-view") o.screenshotView = next();
         else if (arg == "--save-scene") o.saveScene = next();
@@ -169,6 +170,8 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw InputError("--save-scene: " + *o.saveScene + ": scene files end in .json");
     if (!o.sweeps.empty() && (!o.output || o.benchmarkFrames))
         throw InputError("--sweep: renders a sheet to a PNG: give --output FILE.png (and no --benchmark)");
+    if (o.progressiveStride && o.output)
+        throw InputError("--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark");
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
     const bool viewerFlags =
         o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel || !o.overlays.empty();
@@ -248,6 +251,9 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           light), tessellation (first mesh), ior, shading, reflection,
                           specular_normalization, fresnel. E.g. --sweep ke=1,8,32,128,512 --sweep shading=gouraud,phong
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
+  --progressive S         area lights in the viewer (and --benchmark): a frame evaluates every S-th
+                          sample per axis, the view refines over S*S frames (1..16; default: the
+                          viewer picks S from its frame time; --benchmark times one such frame)
   --backend NAME          headless OpenGL for --output/--benchmark: osmesa, egl, or auto (OSMesa,
                           else EGL)
   --shader-dir DIR        read GLSL files from DIR when present (default: the checkout's shaders/

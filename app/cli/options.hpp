@@ -29,6 +29,7 @@ struct Options {
     std::optional<float> diffFactor;        // --diff-factor X (1..1000)
     std::vector<Sweep> sweeps;              // --sweep PARAM=V1,V2,... (at most two: columns, rows), with --output
     int benchmarkFrames = 0;                // --benchmark N
+    int progressiveStride = 0;              // --progressive S (1..16): area-light samples over S*S frames (viewer, benchmark)
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context
     bool info = false;                      // --info: print what was loaded, render nothing

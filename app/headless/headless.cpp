@@ -2,6 +2,7 @@
 
 #include "render/renderer.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -99,7 +100,8 @@ Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, c
 
 std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
-                                               const ShaderLibrary& shaders, HeadlessBackend backend) {
+                                               const ShaderLibrary& shaders, HeadlessBackend backend,
+                                               int progressiveStride) {
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
@@ -111,11 +113,20 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
         s.shading = mode;
         std::vector<double> ms;
         for (int f = 0; f < warmup + frames; ++f) {
-            for (SceneObject& o : s.objects)
-                o.transform.rotationDeg.y = scene.objects.front().transform.rotationDeg.y +
-                                            glm::degrees(0.01f) * float(f);
+            const float turn = 0.01f * float(f);
+            if (progressiveStride > 0) {
+                // The viewer while the view is dragged: the camera orbits, so every frame restarts
+                // the sum and draws its first pass; the shadow maps stay valid.
+                const glm::vec3 offset = scene.camera.eye - scene.camera.target;
+                s.camera.eye = scene.camera.target + glm::vec3(glm::rotate(glm::mat4(1.0f), turn, scene.camera.up) *
+                                                              glm::vec4(offset, 0.0f));
+            } else {
+                for (SceneObject& o : s.objects)
+                    o.transform.rotationDeg.y = scene.objects.front().transform.rotationDeg.y + glm::degrees(turn);
+            }
             const auto t0 = std::chrono::steady_clock::now();
-            renderer.render(s, target);
+            if (progressiveStride > 0) renderer.renderProgressive(s, target, progressiveStride, true);
+            else renderer.render(s, target);
             glFinish();
             const auto t1 = std::chrono::steady_clock::now();
             if (f >= warmup) ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());

@@ -46,11 +46,14 @@ struct BenchmarkResult {
 };
 // Renders `warmup + frames` frames of each mode (glFinish after each, as ../shared/bench/probe.cpp
 // does) and reports per-frame times of the last `frames`. The objects turn by 0.01 rad about y per
-// frame, like the probe's sphere, so no frame repeats the previous one.
+// frame, like the probe's sphere, so no frame repeats the previous one. With `progressiveStride` > 0
+// a frame is the viewer's first progressive pass (Renderer::renderProgressive) and the camera orbits
+// instead, as when the view is dragged.
 std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
                                                const ShaderLibrary& shaders = ShaderLibrary(),
-                                               HeadlessBackend backend = HeadlessBackend::Auto);
+                                               HeadlessBackend backend = HeadlessBackend::Auto,
+                                               int progressiveStride = 0);
 std::string toJson(const BenchmarkResult& r);
 
 }  // namespace shadelab

@@ -35,6 +35,7 @@ struct FrameBlock {
     LightGpu lights[SL_MAX_LIGHTS];
     float shadowSettings[4];   // normal bias (texels)
     float modelSettings[4];    // ior, R0
+    std::int32_t areaPass[4];  // progressive sampling: first sample (i, j), stride (i, j)
 };
 static_assert(offsetof(FrameBlock, eyeWorld) == 64, "std140 offset");
 static_assert(offsetof(FrameBlock, ambient) == 80, "std140 offset");
@@ -42,7 +43,8 @@ static_assert(offsetof(FrameBlock, settings) == 96, "std140 offset");
 static_assert(offsetof(FrameBlock, lights) == 112, "std140 offset");
 static_assert(offsetof(FrameBlock, shadowSettings) == 112 + 224 * SL_MAX_LIGHTS, "std140 offset");
 static_assert(offsetof(FrameBlock, modelSettings) == 128 + 224 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(sizeof(FrameBlock) == 144 + 224 * SL_MAX_LIGHTS, "std140 size");
+static_assert(offsetof(FrameBlock, areaPass) == 144 + 224 * SL_MAX_LIGHTS, "std140 offset");
+static_assert(sizeof(FrameBlock) == 160 + 224 * SL_MAX_LIGHTS, "std140 size");
 
 struct ObjectBlock {
     float worldFromObject[16];

@@ -37,8 +37,9 @@ gl::Shader compileStage(GLenum stage, const std::string& programName, const std:
 }  // namespace
 
 gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
-                         const std::vector<std::string>& defines) {
-    gl::Shader vs = compileStage(GL_VERTEX_SHADER, name, name + ".vert", library, defines);
+                         const std::vector<std::string>& defines, const std::string& vertexName) {
+    gl::Shader vs = compileStage(GL_VERTEX_SHADER, name, (vertexName.empty() ? name : vertexName) + ".vert", library,
+                                 defines);
     gl::Shader fs = compileStage(GL_FRAGMENT_SHADER, name, name + ".frag", library, defines);
     gl::Program program(glCreateProgram());
     glAttachShader(program.get(), vs.get());

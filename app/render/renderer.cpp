@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <limits>
@@ -85,6 +86,40 @@ gpu::ObjectBlock objectBlock(const SceneObject& o) {
 }
 
 std::size_t alignUp(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
+
+// A width x height texture read with texelFetch (nearest, one level).
+gl::Texture makeImageTexture(GLint internalFormat, GLenum format, GLenum type, int width, int height) {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    gl::Texture t(id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    return t;
+}
+
+gl::Framebuffer makeFramebuffer(GLuint color, GLuint depth) {
+    GLuint id = 0;
+    glGenFramebuffers(1, &id);
+    gl::Framebuffer f(id);
+    glBindFramebuffer(GL_FRAMEBUFFER, id);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+    if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("progressive sampling: the float framebuffer is not complete on this GL");
+    return f;
+}
+
+// The ordered-dither rank of (x, y) in a 2^bits square: bit-reversed interleaving of y and x ^ y.
+unsigned bayerRank(unsigned x, unsigned y, int bits) {
+    unsigned rank = 0;
+    for (int b = 0; b < bits; ++b) {
+        rank = (rank << 2) | (((x ^ y) >> b & 1u) << 1) | (y >> b & 1u);
+    }
+    return rank;
+}
 
 void checkGl(const char* where) {
     const GLenum e = glGetError();
@@ -190,8 +225,9 @@ void Renderer::preparePrograms(const Scene& scene) {
     for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene);
 }
 
-GLuint Renderer::program(ShadingMode mode, const Scene& scene) {
-    const std::vector<std::string> defines = programDefines(scene);
+GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate) {
+    std::vector<std::string> defines = programDefines(scene);
+    if (accumulate) defines.push_back("SL_ACCUMULATE 1");
     std::string key = kProgramNames[std::size_t(mode)];
     for (const std::string& d : defines) key += ";" + d;
     gl::Program& p = programs_[key];
@@ -245,6 +281,13 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
 
 void Renderer::render(const Scene& scene, const RenderTarget& target) {
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
+    drawPanes(scene, panes, target, nullptr, false);
+    if (panes.size() == 3 && panes[2].difference) drawDifference(panes[2], panes[0], panes[1], scene.diff.factor, target);
+    checkGl("render");
+}
+
+void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, const RenderTarget& target,
+                         const AreaSamplePass* pass, bool add) {
     const std::size_t objects = std::min(objectParts_.size(), scene.objects.size());
 
     // One draw per object part (a glTF primitive's base colour, or the whole mesh).
@@ -284,6 +327,11 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     for (std::size_t p = 0; p < panes.size(); ++p) {
         gpu::FrameBlock b = frameBlock(scene, float(panes[p].width) / float(std::max(panes[p].height, 1)));
         if (shadows) shadowMaps_.fillBlock(scene, b);
+        // Only Phong panes split the samples: flat and Gouraud clamp per face or vertex before the
+        // rasteriser, so their passes evaluate every sample (they are cheap) and their mean is exact.
+        const bool split = pass && panes[p].mode == ShadingMode::Phong;
+        const glm::ivec2 first = split ? pass->first : glm::ivec2(0), stride = split ? pass->stride : glm::ivec2(1);
+        b.areaPass[0] = first.x, b.areaPass[1] = first.y, b.areaPass[2] = stride.x, b.areaPass[3] = stride.y;
         std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
     }
     for (std::size_t d = 0; d < draws.size(); ++d) {
@@ -299,12 +347,22 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     glDisable(GL_BLEND);
     glViewport(0, 0, target.width, target.height);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
-    glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    if (add) {
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_EQUAL);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+    } else {
+        glDepthMask(GL_TRUE);
+        // A progressive pass marks uncovered pixels with alpha 0 (shaders/resolve.frag).
+        if (pass) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        else glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glDepthFunc(GL_LESS);
+    }
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glProvokingVertex(GL_LAST_VERTEX_CONVENTION);  // FlatMesh puts each triangle's own vertex last
@@ -316,7 +374,7 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
         const Pane& pane = panes[p];
         if (pane.difference) continue;  // drawn below, from the other two panes
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
-        glUseProgram(program(pane.mode, scene));
+        glUseProgram(program(pane.mode, scene, pass != nullptr));
         glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
                           sizeof(gpu::FrameBlock));
         for (std::size_t d = 0; d < draws.size(); ++d) {
@@ -335,14 +393,103 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     }
     glBindVertexArray(0);
     glFrontFace(GL_CCW);
+    if (add) {
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+    }
+}
+
+std::vector<glm::ivec2> progressivePassOrder(const glm::ivec2& stride) {
+    std::vector<glm::ivec2> order;
+    for (int y = 0; y < stride.y; ++y)
+        for (int x = 0; x < stride.x; ++x) order.emplace_back(x, y);
+    int bits = 0;
+    while ((1 << bits) < std::max(stride.x, stride.y)) ++bits;
+    std::stable_sort(order.begin(), order.end(), [bits](const glm::ivec2& a, const glm::ivec2& b) {
+        return bayerRank(unsigned(a.x), unsigned(a.y), bits) < bayerRank(unsigned(b.x), unsigned(b.y), bits);
+    });
+    return order;
+}
+
+Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, const RenderTarget& target, int stride,
+                                                        bool restart) {
+    Progressive& pr = progressive_;
+    const int w = target.width, h = target.height;
+    // Along each axis no stride beyond the largest sample count: such passes would have no samples.
+    glm::ivec2 maxSamples(1);
+    for (const Light& l : scene.lights)
+        if (l.type == LightType::Area) maxSamples = glm::max(maxSamples, l.samples);
+    const glm::ivec2 s = glm::clamp(glm::ivec2(stride), glm::ivec2(1), maxSamples);
+    if (pr.width != w || pr.height != h) {
+        pr.sumColor = makeImageTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
+        pr.depth = makeImageTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
+        pr.sumFbo = makeFramebuffer(pr.sumColor.get(), pr.depth.get());
+        pr.width = w, pr.height = h;
+        restart = true;
+    }
+    if (restart || s != pr.stride) {
+        pr.stride = s;
+        pr.order = progressivePassOrder(s);
+        pr.done = 0;
+    }
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, w, h, scene.diff);
+    if (pr.done < int(pr.order.size())) {
+        // The first pass draws the sum's surfaces and depth as a frame does. The others add into it:
+        // the same programs draw the same surfaces at the same depths, so with GL_EQUAL exactly the
+        // visible fragment of each pixel is shaded and added (and hidden ones cost nothing).
+        const AreaSamplePass pass{pr.order[std::size_t(pr.done)], s};
+        drawPanes(scene, panes, RenderTarget{pr.sumFbo.get(), w, h}, &pass, pr.done > 0);
+        ++pr.done;
+    }
+
+    // The image so far, with the surfaces' depth for the overlays.
+    const std::size_t encoding = scene.outputEncoding == OutputEncoding::Srgb ? 1 : 0;
+    gl::Program& resolve = pr.resolve[encoding];
+    if (!resolve) {
+        resolve = buildProgram("resolve", shaders_, {encoding ? "SL_ENCODING SL_ENCODING_SRGB" : "SL_ENCODING SL_ENCODING_LINEAR"},
+                               kFullscreenVertex);
+        glUseProgram(resolve.get());
+        glUniform1i(glGetUniformLocation(resolve.get(), "u_sum"), 0);
+        glUniform1i(glGetUniformLocation(resolve.get(), "u_depth"), 1);
+        if (!emptyVao_) emptyVao_ = gl::makeVertexArray();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    glViewport(0, 0, w, h);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, pr.sumColor.get());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, pr.depth.get());
+    glActiveTexture(GL_TEXTURE0);
+    glUseProgram(resolve.get());
+    glUniform3f(glGetUniformLocation(resolve.get(), "u_background"), scene.background.r, scene.background.g,
+                scene.background.b);
+    drawFullscreen(resolve.get());
+    glDepthFunc(GL_LESS);
     if (panes.size() == 3 && panes[2].difference) drawDifference(panes[2], panes[0], panes[1], scene.diff.factor, target);
-    checkGl("render");
+    checkGl("progressive render");
+    return {pr.done, int(pr.order.size())};
+}
+
+void Renderer::drawFullscreen(GLuint program) {
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program);
+    glBindVertexArray(emptyVao_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glEnable(GL_CULL_FACE);
 }
 
 void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target) {
     if (pane.width <= 0 || pane.height <= 0) return;
     if (!diffProgram_) {
-        diffProgram_ = buildProgram("difference", shaders_);
+        diffProgram_ = buildProgram("difference", shaders_, {}, kFullscreenVertex);
         emptyVao_ = gl::makeVertexArray();
         glUseProgram(diffProgram_.get());
         glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceA"), 0);

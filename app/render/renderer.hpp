@@ -41,6 +41,20 @@ public:
     void uploadAndReleaseCpuGeometry(const Scene& scene);
     // Draws all panes of the scene's layout. Throws ShaderError or std::runtime_error on a GL error.
     void render(const Scene& scene, const RenderTarget& target);
+    // Progressive area-light sampling, for the viewer: an area light's samples cost per fragment in
+    // Phong (an 8x8 light with shadows takes ~2 s a frame at 1280x720 on llvmpipe), so they are
+    // spread over passes. Each call draws at most one pass, in which Phong panes evaluate every
+    // stride-th sample of each area light (both axes) from that pass's first sample, sums the pass
+    // into a float buffer, and draws the mean so far - clamped and encoded as render() does - into
+    // `target`, depth included. After passCount calls the image is render()'s, within float rounding.
+    // `restart` (the scene, camera or size changed) starts a new sum; a complete image is redrawn
+    // without drawing the scene. `stride` is clamped per axis to the largest sample count there.
+    struct ProgressiveStatus {
+        int passesDone = 0;
+        int passCount = 1;
+        bool complete() const { return passesDone >= passCount; }
+    };
+    ProgressiveStatus renderProgressive(const Scene& scene, const RenderTarget& target, int stride, bool restart);
     // Compiles the flat, gouraud and phong programs for `scene`'s specialisation now (render()
     // otherwise compiles each on first use). Throws ShaderError.
     void preparePrograms(const Scene& scene);
@@ -58,7 +72,17 @@ private:
         GLsizei indexCount = 0;
     };
     const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
-    GLuint program(ShadingMode mode, const Scene& scene);
+    GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false);
+    // The samples one progressive pass evaluates: i = first.x + k stride.x, j = first.y + m stride.y.
+    struct AreaSamplePass {
+        glm::ivec2 first{0};
+        glm::ivec2 stride{1};
+    };
+    // Shadow maps, then every pane but the difference into `target`; with `pass`, the accumulating
+    // programs (linear output, alpha 0 where nothing was drawn) evaluate that pass's samples, and
+    // with `add` they are added to what the target holds, where its depth equals theirs.
+    void drawPanes(const Scene& scene, const std::vector<Pane>& panes, const RenderTarget& target,
+                   const AreaSamplePass* pass, bool add);
 
     ShaderLibrary shaders_;
     std::map<std::string, gl::Program> programs_;         // by name + specialisation defines
@@ -75,7 +99,24 @@ private:
     int diffWidth_ = 0, diffHeight_ = 0;
     gl::Program diffProgram_;
     gl::VertexArray emptyVao_;                            // core profile draws need a bound VAO
+    // Progressive sampling: the passes are summed in sumColor (alpha counts them), over the depth
+    // the first pass wrote.
+    struct Progressive {
+        gl::Framebuffer sumFbo;
+        gl::Texture sumColor, depth;                     // RGBA32F, DEPTH24
+        int width = 0, height = 0;
+        glm::ivec2 stride{0};
+        std::vector<glm::ivec2> order;                   // each pass's first sample
+        int done = 0;
+        std::array<gl::Program, 2> resolve;              // by output encoding (linear, sRGB)
+    } progressive_;
+    void drawFullscreen(GLuint program);
 };
+
+// The order of progressive sampling's passes for `stride` (x, y): every first sample in
+// [0, stride.x) x [0, stride.y) once, in ordered-dither (Bayer) order, so the passes drawn so far are
+// spread over the light instead of filling it row by row.
+std::vector<glm::ivec2> progressivePassOrder(const glm::ivec2& stride);
 
 // What the shading programs are specialised for (shaders/lighting.glsl): the number of lights, each
 // light's kind and attenuation (and an area light's sample counts), the reflection model, the output

@@ -366,6 +366,7 @@ void drawHud(const PanelStatus& status, const UiRect& view) {
         const float fps = io.Framerate > 0.0f ? io.Framerate : 0.0f;
         ImGui::Text("%.2f ms  %.1f FPS  %zu triangles", fps > 0.0f ? 1000.0f / fps : 0.0f, fps, status.frameTriangles);
         ImGui::TextUnformatted(status.glRenderer.c_str());
+        if (!status.progress.empty()) ImGui::TextUnformatted(status.progress.c_str());
     }
     ImGui::End();
 }

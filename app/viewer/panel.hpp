@@ -29,6 +29,7 @@ struct PanelStatus {
     std::string glRenderer;
     std::size_t frameTriangles = 0;   // drawn per frame, all panes
     std::size_t objectTriangles = 0;  // of the selected object's mesh
+    std::string progress;             // progressive area-light sampling: "pass k of n"; empty when off
 };
 
 // Buttons pressed this frame.

@@ -3,6 +3,7 @@
 #include "core/camera.hpp"
 #include "core/file_io.hpp"
 #include "core/image.hpp"
+#include "core/scene_json.hpp"
 #include "viewer/orbit.hpp"
 
 #define GLFW_INCLUDE_NONE
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <iostream>
@@ -25,6 +27,22 @@ namespace {
 constexpr float kPanelWidth = 380.0f;
 // Orbit speed: dragging across ~400 screen units turns the model half way round.
 constexpr float kOrbitRadPerUnit = 0.008f;
+
+// Progressive sampling's stride (every S-th area-light sample per axis in a frame): a power of two,
+// first the one that leaves about 4 samples per pass, then doubled while a pass takes longer than
+// kPassBudgetMs and halved while it takes under a quarter of that (llvmpipe at 1280x720: an 8x8 light
+// with shadows settles at 8, one sample a frame).
+constexpr double kPassBudgetMs = 90.0;
+int adaptStride(int stride, int samples, double lastPassMs) {
+    if (stride <= 0) {
+        stride = 1;
+        while (samples / (stride * stride) > 4) stride *= 2;
+        return stride;
+    }
+    if (lastPassMs > kPassBudgetMs && stride < kMaxAreaSamplesPerSide) return stride * 2;
+    if (lastPassMs > 0.0 && lastPassMs < kPassBudgetMs / 4 && stride > 1) return stride / 2;
+    return stride;
+}
 
 // "shadelab-20250131-142512-034.png": sortable, and distinct for two F12 presses in one second.
 std::string timestampedName() {
@@ -103,9 +121,9 @@ bool Viewer::frame(bool last) {
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
     if (settings_.paneLabels) drawPaneLabels(document_.scene(), l.view, l.scale);
-    if (settings_.showHud && settings_.showPanel) drawHud(status_, l.view);
     const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
-    const Image view = renderView(l, captureView);
+    const Image view = renderView(l, captureView, last);
+    if (settings_.showHud && settings_.showPanel) drawHud(status_, l.view);  // after: it shows this frame's pass
     imgui_.render();
     if (screenshotRequested_) saveScreenshot(view);
     if (last) writeLastFrameFiles(l, view);
@@ -227,17 +245,59 @@ void Viewer::uploadGeometryIfChanged() {
 
 // Draws the scene and the overlays into the 3D view. With `capture`, returns the view as drawn, read
 // before ImGui adds labels or panel (what F12 and --screenshot-view save); otherwise an empty image.
-Image Viewer::renderView(const FrameLayout& l, bool capture) {
+// A capture or the last frame completes a progressive image first: a file never holds a partial one.
+Image Viewer::renderView(const FrameLayout& l, bool capture, bool last) {
     if (l.viewWidth <= 0 || l.framebufferHeight <= 0) return {};  // minimised
     const RenderTarget view{0, l.viewWidth, l.framebufferHeight};
     try {
-        renderer_->render(document_.scene(), view);
+        renderScene(view, capture || last);
         overlays_->render(document_.scene(), view, settings_.overlays);
         if (capture) return opaque(readPixels(view));
     } catch (const std::exception& e) {
         setStatus(e.what(), true);
     }
     return {};
+}
+
+// Scenes with sampled area lights refine over frames (Renderer::renderProgressive): a frame draws one
+// pass, so dragging a slider or the camera stays fluid, and a still view converges to the one-pass
+// image. The stride adapts at each restart to keep a pass near kPassBudgetMs on this machine.
+void Viewer::renderScene(const RenderTarget& view, bool complete) {
+    const Scene& scene = document_.scene();
+    const auto now = std::chrono::steady_clock::now();
+    if (passDrawnLastFrame_) lastPassMs_ = std::chrono::duration<double, std::milli>(now - lastFrameStart_).count();
+    lastFrameStart_ = now;
+    passDrawnLastFrame_ = false;
+    int samples = 1;
+    for (const Light& light : scene.lights)
+        if (light.type == LightType::Area) samples = std::max(samples, light.samples.x * light.samples.y);
+    if (samples <= 1) {
+        progressiveSignature_.clear();
+        status_.progress.clear();
+        renderer_->render(scene, view);
+        return;
+    }
+    // Everything the image depends on; a change restarts the sum.
+    std::string signature = sceneToJson(scene, "") + std::to_string(reinterpret_cast<std::uintptr_t>(renderer_.get())) +
+                            "/" + std::to_string(reinterpret_cast<std::uintptr_t>(uploaded_)) + "/" +
+                            std::to_string(view.width) + "x" + std::to_string(view.height);
+    const bool restart = signature != progressiveSignature_;
+    if (restart) {
+        progressiveSignature_ = std::move(signature);
+        progressiveStride_ = options_.progressiveStride > 0 ? options_.progressiveStride
+                                                             : adaptStride(progressiveStride_, samples, lastPassMs_);
+    }
+    // The frame's time measures a pass only if it drew exactly one (a complete image is only redrawn).
+    passDrawnLastFrame_ = restart || !progressiveComplete_;
+    Renderer::ProgressiveStatus status = renderer_->renderProgressive(scene, view, progressiveStride_, restart);
+    if (complete && !status.complete()) {
+        while (!status.complete()) status = renderer_->renderProgressive(scene, view, progressiveStride_, false);
+        passDrawnLastFrame_ = false;
+    }
+    progressiveComplete_ = status.complete();
+    status_.progress = status.passCount > 1 ? "area-light samples: pass " + std::to_string(status.passesDone) + " of " +
+                                                  std::to_string(status.passCount)
+                                            : "";
 }
 
 void Viewer::saveScreenshot(const Image& view) {

@@ -13,6 +13,7 @@
 #include "viewer/panel.hpp"
 #include "viewer/scene_document.hpp"
 
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -28,6 +29,9 @@ struct ViewerOptions {
     std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes)
     bool hidePanel = false;           // --hide-panel: start as if Tab had been pressed
     OverlayOptions overlays;          // --overlays: which overlays start switched on
+    // --progressive S: with area lights, each frame evaluates every S-th sample per axis and the view
+    // refines over S*S frames (Renderer::renderProgressive); 0 picks S from the measured frame time.
+    int progressiveStride = 0;
     bool verbose = false;
 };
 
@@ -59,7 +63,8 @@ private:
     void handleKeys();
     void apply(const PanelRequests& requests);
     void uploadGeometryIfChanged();
-    Image renderView(const FrameLayout& layout, bool capture);
+    Image renderView(const FrameLayout& layout, bool capture, bool last);
+    void renderScene(const RenderTarget& view, bool complete);
     void saveScreenshot(const Image& view);
     void writeLastFrameFiles(const FrameLayout& layout, const Image& view);
     void loadFile(const std::string& path);
@@ -76,6 +81,13 @@ private:
     ViewSettings settings_;
     PanelStatus status_;
     bool screenshotRequested_ = false;
+    // Progressive sampling: what the sum so far was drawn from, the stride, and the last pass's time.
+    std::string progressiveSignature_;
+    int progressiveStride_ = 0;
+    double lastPassMs_ = 0.0;
+    bool passDrawnLastFrame_ = false;
+    bool progressiveComplete_ = false;
+    std::chrono::steady_clock::time_point lastFrameStart_;
 };
 
 }  // namespace shadelab

@@ -86,7 +86,7 @@ TEST_F(GlContext, EverySpecialisationCompiles) {
             SCOPED_TRACE(name);
             EXPECT_TRUE(buildProgram(name, library, programDefines(v)));
         }
-    EXPECT_TRUE(buildProgram("difference", library));
+    EXPECT_TRUE(buildProgram("difference", library, {}, kFullscreenVertex));
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

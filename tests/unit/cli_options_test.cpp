@@ -33,6 +33,9 @@ TEST(CliOptions, ParsesEveryOption) {
     EXPECT_EQ(o.shaderDir, "s");
     EXPECT_TRUE(o.verbose);
     EXPECT_EQ(parseOptions({"--benchmark", "100"}).benchmarkFrames, 100);
+    EXPECT_EQ(parseOptions({"--benchmark", "5", "--progressive", "8"}).progressiveStride, 8);
+    EXPECT_EQ(parseOptions({"--progressive", "16"}).progressiveStride, 16);
+    EXPECT_EQ(parseOptions({}).progressiveStride, 0);  // the viewer adapts
 }
 
 TEST(CliOptions, LectureFlags) {

@@ -143,6 +143,21 @@ TEST(Window, MatchesHeadless) {
                     "whole window, panel hidden");
 }
 
+// An area light refines over frames in the window (progressive sampling, one pass of 16 per frame
+// with --progressive 4); the last frame completes it, so the view equals the headless image.
+TEST(Window, ProgressiveAreaLightMatchesHeadless) {
+    const std::string dir = outDir();
+    const RunResult headless = shadelab(scene("area_progressive.json") + " --output " + dir + "/headless.png", dir);
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    for (const char* stride : {"4", "2"}) {
+        const RunResult shown = shadelab(scene("area_progressive.json") + " --frames 3 --progressive " + stride +
+                                             " --screenshot-view " + dir + "/view.png",
+                                         dir);
+        ASSERT_EQ(shown.status, 0) << shown.output;
+        expectSameImage(readPng(dir + "/view.png"), readPng(dir + "/headless.png"), std::string("stride ") + stride);
+    }
+}
+
 // A scene saved from the viewer holds what was on screen: loaded headless it renders the same image,
 // and saved again from the viewer it is the same file.
 TEST(Window, SaveRoundTrip) {

@@ -1,6 +1,0 @@
-// Layout "diff": one full-screen triangle over the difference pane (no vertex buffers; the
-// positions come from gl_VertexID).
-void main() {
-    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
