@@ -2,8 +2,10 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/plot_image.hpp"
 #include "core/scene_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -120,6 +122,18 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (o.sweeps.size() == 2 && o.sweeps[0].parameter == o.sweeps[1].parameter)
                 throw InputError(arg + ": " + o.sweeps[1].parameter + " is swept twice");
         }
+        else if (arg == "--plot") {
+            static const std::pair<const char*, PlotKind> kPlots[] = {{"lobe", PlotKind::Lobe}, {"fresnel", PlotKind::Fresnel}};
+            o.plot = parseChoice(arg, next(), kPlots);
+        }
+        else if (arg == "--incidence") {
+            const std::string v = next();
+            const float deg = parseFloat(arg, v);
+            if (deg < 0.0f || deg > kMaxIncidenceDeg)
+                throw InputError(arg + ": must be between 0 and 89 degrees (got " + v + ")");
+            o.incidenceDeg = deg;
+        }
+        else if (arg == "--from-inside") noValue(), o.fromInside = true;
         else if (arg == "--shadows") noValue(), o.shadows = true;
         else if (arg == "--no-shadows") noValue(), o.shadows = false;
         else if (arg == "--shader-dir") o.shaderDir = next();
@@ -176,6 +190,19 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw InputError(std::string(o.output ? "--output" : "--benchmark") +
                          ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel and --overlays are "
                          "for the viewer, which --output/--benchmark do not open");
+    if (o.plot) {
+        if (!o.output) throw InputError("--plot: writes a PNG: give --output FILE.png");
+        if (!o.sweeps.empty() || o.benchmarkFrames)
+            throw InputError("--plot: draws one plot: not with --sweep or --benchmark");
+        if (o.width && (*o.width < kPlotMinWidth || *o.height < kPlotMinHeight || *o.width > kPlotMaxSide ||
+                        *o.height > kPlotMaxSide))
+            throw InputError("--size: a plot is " + std::to_string(kPlotMinWidth) + "x" + std::to_string(kPlotMinHeight) +
+                             " to " + std::to_string(kPlotMaxSide) + "x" + std::to_string(kPlotMaxSide) + " pixels");
+    } else if ((o.incidenceDeg || o.fromInside) && (o.output || o.benchmarkFrames)) {
+        // They set up --plot; a render has no use for them.
+        throw InputError(std::string(o.incidenceDeg ? "--incidence" : "--from-inside") +
+                         ": sets up the plots: use it with --plot, or in the viewer");
+    }
     return o;
 }
 
@@ -216,6 +243,13 @@ Scene sceneFromOptions(const Options& o) {
     return s;
 }
 
+PlotSettings plotSettings(const Options& o) {
+    PlotSettings s;
+    if (o.incidenceDeg) s.incidenceDeg = *o.incidenceDeg;
+    s.fromInside = o.fromInside;
+    return s;
+}
+
 std::string usage() {
     return R"(usage: shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]
 
@@ -247,6 +281,13 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           a second --sweep makes a grid (rows). PARAM: ke, ks, kd, ka, intensity (every
                           light), tessellation (first mesh), ior, shading, reflection,
                           specular_normalization, fresnel. E.g. --sweep ke=1,8,32,128,512 --sweep shading=gouraud,phong
+  --plot lobe|fresnel     with --output: the lecture's plot for the scene's parameters, drawn on the CPU
+                          (800x600 unless --size): lobe = Phong and Blinn-Phong spec in the plane of
+                          incidence for k_e; fresnel = R_par, R_perp, their average and Schlick over the
+                          angle of incidence, from air (eta_1 = 1) into eta_2 = --ior
+  --incidence DEG         the lobe plot's angle between the incoming light I and N (0..89, default 45)
+  --from-inside           the Fresnel plot from inside the material (eta_1 = --ior, eta_2 = 1): total
+                          internal reflection past the critical angle
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --backend NAME          headless OpenGL for --output/--benchmark: osmesa, egl, or auto (OSMesa,
                           else EGL)
