@@ -134,6 +134,8 @@ int run(const std::vector<std::string>& args) {
         viewer.overlays.faceNormals |= o == "face-normals";
         viewer.overlays.lightMarkers |= o == "lights";
     }
+    viewer.plots = plotSettings(options);
+    viewer.panelSections = options.panelSections;
     viewer.verbose = options.verbose;
     Viewer(std::move(scene), std::move(geometry), viewer).run();
     return 0;

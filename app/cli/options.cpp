@@ -4,6 +4,7 @@
 #include "core/file_io.hpp"
 #include "core/plot_image.hpp"
 #include "core/scene_json.hpp"
+#include "viewer/panel_sections.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +135,20 @@ Options parseOptions(const std::vector<std::string>& args) {
             o.incidenceDeg = deg;
         }
         else if (arg == "--from-inside") noValue(), o.fromInside = true;
+        else if (arg == "--panel-sections") {
+            std::vector<std::string> sections;
+            std::stringstream list(next());
+            for (std::string name; std::getline(list, name, ',');) {
+                if (std::find_if(std::begin(kPanelSections), std::end(kPanelSections),
+                                 [&](const char* s) { return name == s; }) == std::end(kPanelSections)) {
+                    std::string allowed;
+                    for (const char* s : kPanelSections) allowed += std::string(allowed.empty() ? "" : ", ") + s;
+                    throw InputError(arg + ": unknown section \"" + name + "\" (expected some of " + allowed + ")");
+                }
+                sections.push_back(name);
+            }
+            o.panelSections = sections;
+        }
         else if (arg == "--shadows") noValue(), o.shadows = true;
         else if (arg == "--no-shadows") noValue(), o.shadows = false;
         else if (arg == "--shader-dir") o.shaderDir = next();
@@ -184,12 +199,12 @@ Options parseOptions(const std::vector<std::string>& args) {
     if (!o.sweeps.empty() && (!o.output || o.benchmarkFrames))
         throw InputError("--sweep: renders a sheet to a PNG: give --output FILE.png (and no --benchmark)");
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
-    const bool viewerFlags =
-        o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel || !o.overlays.empty();
+    const bool viewerFlags = o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel ||
+                             !o.overlays.empty() || o.panelSections;
     if (viewerFlags && (o.output || o.benchmarkFrames))
         throw InputError(std::string(o.output ? "--output" : "--benchmark") +
-                         ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel and --overlays are "
-                         "for the viewer, which --output/--benchmark do not open");
+                         ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel, --overlays and "
+                         "--panel-sections are for the viewer, which --output/--benchmark do not open");
     if (o.plot) {
         if (!o.output) throw InputError("--plot: writes a PNG: give --output FILE.png");
         if (!o.sweeps.empty() || o.benchmarkFrames)
@@ -199,7 +214,7 @@ Options parseOptions(const std::vector<std::string>& args) {
             throw InputError("--size: a plot is " + std::to_string(kPlotMinWidth) + "x" + std::to_string(kPlotMinHeight) +
                              " to " + std::to_string(kPlotMaxSide) + "x" + std::to_string(kPlotMaxSide) + " pixels");
     } else if ((o.incidenceDeg || o.fromInside) && (o.output || o.benchmarkFrames)) {
-        // They set up --plot; a render has no use for them.
+        // They set up the plots (--plot, or the viewer's Plots section); a render has no use for them.
         throw InputError(std::string(o.incidenceDeg ? "--incidence" : "--from-inside") +
                          ": sets up the plots: use it with --plot, or in the viewer");
     }
@@ -302,6 +317,9 @@ Viewer (the window; keys and mouse are listed in its panel under "Keys"):
   --save-scene FILE.json  on the last frame, save the scene as the panel's "save scene" does
   --hide-panel            start with the panel hidden (Tab shows it)
   --overlays LIST         start with overlays on: wireframe,vertex-normals,face-normals,lights
+  --panel-sections LIST   start with exactly these panel sections open, e.g. plots or shading,material
+                          (shading, material, plots, mesh, lights, shadows, overlays, camera, background,
+                          file, keys); --incidence and --from-inside set the Plots section's controls
   -v, --verbose           say what was loaded and written
   -h, --help              this text
   --version               print the version

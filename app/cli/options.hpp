@@ -43,6 +43,7 @@ struct Options {
     std::optional<std::string> saveScene;   // --save-scene FILE.json: the scene as "save scene" writes it
     bool hidePanel = false;                 // --hide-panel: start with the panel hidden (as Tab)
     std::vector<std::string> overlays;      // --overlays a,b: wireframe, vertex-normals, face-normals, lights
+    std::optional<std::vector<std::string>> panelSections;  // --panel-sections a,b: open exactly these panel sections
     bool verbose = false;
     bool help = false;
     bool version = false;

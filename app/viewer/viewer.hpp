@@ -14,7 +14,9 @@
 #include "viewer/scene_document.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -28,6 +30,8 @@ struct ViewerOptions {
     std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes)
     bool hidePanel = false;           // --hide-panel: start as if Tab had been pressed
     OverlayOptions overlays;          // --overlays: which overlays start switched on
+    PlotSettings plots;               // --incidence, --from-inside: the Plots section's starting controls
+    std::optional<std::vector<std::string>> panelSections;  // --panel-sections: exactly these open at start
     bool verbose = false;
 };
 
