@@ -157,6 +157,8 @@ Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg) {
         PlotPolyline spoke = line("grid", {{0.0f, 0.0f}, r * unitAt(float(d))}, kPlotGrid);
         spoke.dashed = true;
         p.lines.push_back(std::move(spoke));
+        // Where I or R runs along a spoke, the arrow's letter stands there and the angle is the title's.
+        if (std::abs(std::abs(float(d)) - incidenceDeg) < 8.0f) continue;
         p.labels.push_back(label(r * unitAt(float(d)), std::to_string(std::abs(d)), {d < 0 ? 1.0f : 0.0f, 1.0f},
                                  {d < 0 ? -0.2f : 0.2f, 0.0f}, kPlotAxis));
     }
