@@ -75,7 +75,7 @@ std::vector<LobeSample> sampleLobe(const LightingEnvironment& env, float ke, flo
     for (int d = -90; d <= 90; ++d) angles.push_back(float(d));
     // Phong's lobe falls to 1% at acos(0.01^(1/k_e)) from R; Blinn-Phong's spans about twice that in V
     // (N.H = cos of half V's angle from R, in this plane). 400 more samples over 1.5 times that width
-    // keep a k_e = 10000 lobe (0.7 degrees at half height) smooth.
+    // keep a k_e = 10000 lobe (1.35 degrees wide at half height) smooth.
     const float halfWidthDeg = 2.0f * glm::degrees(std::acos(std::pow(0.01f, 1.0f / ke))) * 1.5f;
     const int extra = 200;
     for (int k = -extra; k <= extra; ++k) {
@@ -131,7 +131,9 @@ Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg) {
     float peak = 0.0f;
     for (const LobeSample& s : samples) peak = std::max({peak, s.phong, s.blinnPhong});
     // Reference half circles at up to four round spec values; the outer one reaches the higher peak.
-    const float step = niceStep(peak > 0.0f ? peak : 1.0f, 4);
+    // A peak of float rounding only (Fresnel at ior 1 reflects nothing) keeps the scale of 1.
+    if (peak < 1e-6f) peak = 1.0f;
+    const float step = niceStep(peak, 4);
     const int rings = std::max(1, int(std::ceil(peak / step - 1e-4f)));
     const float r = step * float(rings);
 
@@ -350,7 +352,8 @@ PlotLayout paintPlot(const Plot& plot, glm::vec2 size, float lineUnit, PlotPaint
     for (const PlotPolyline& l : plot.lines) {
         std::vector<glm::vec2> pixels;
         pixels.reserve(l.points.size());
-        for (const glm::vec2& p : l.points) pixels.push_back(layout.toPixels(p));
+        for (const glm::vec2& p : l.points)
+            if (std::isfinite(p.x) && std::isfinite(p.y)) pixels.push_back(layout.toPixels(p));  // never a NaN pixel
         stroke(l, pixels, l.arrow);
     }
     for (const PlotLabel& l : plot.labels) painter.text(layout.labelAt(l, measure(l.text)), l.text, l.color);

@@ -18,6 +18,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadelab {
@@ -78,8 +79,8 @@ struct PlotLabel {
 
 struct Plot {
     PlotKind kind = PlotKind::Fresnel;
-    std::string title;                // one line: what is plotted
-    std::string subtitle;             // one line: the parameters that shaped the curves
+    std::string title;                // what is plotted, for which parameters (the layout wraps it)
+    std::string subtitle;             // how to read it: the radius, R0, the normalisation
     glm::vec2 min{0.0f}, max{1.0f};   // the rectangle of plot coordinates that is shown
     bool equalAspect = false;         // one unit spans as many pixels along x as along y (polar plots)
     std::vector<PlotPolyline> lines;  // in drawing order: grid first, curves last
@@ -140,7 +141,9 @@ struct PlotLayout {
     float lineHeight = 0.0f;
     glm::vec2 pixelsPerUnit{1.0f};              // y is flipped: larger plot y is higher up
     glm::vec2 plotOrigin{0.0f};                 // the pixel of plot point (0, 0)
-    glm::vec2 toPixels(glm::vec2 p) const { return {plotOrigin.x + p.x * pixelsPerUnit.x, plotOrigin.y - p.y * pixelsPerUnit.y}; }
+    glm::vec2 toPixels(glm::vec2 p) const {
+        return {plotOrigin.x + p.x * pixelsPerUnit.x, plotOrigin.y - p.y * pixelsPerUnit.y};
+    }
     // A label's top-left pixel, given its measured size.
     glm::vec2 labelAt(const PlotLabel& label, glm::vec2 textSize) const;
 };
