@@ -35,6 +35,13 @@ protected:
         return (dir_ / name).string();
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    // Runs `args` plus --output NAME and reads the PNG it wrote (an empty image if it failed).
+    Image runToPng(std::vector<std::string> args, const std::string& name) const {
+        args.insert(args.end(), {"--output", path(name)});
+        const RunResult r = run(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r.exitCode == 0 ? readPng(path(name)) : Image();
+    }
     fs::path dir_;
 };
 
@@ -101,9 +108,7 @@ TEST_F(Cli, SweepSheetHasOneTilePerValue) {
 // The test finds the plot's frame in the image itself (the rows and columns that are mostly the axis
 // colour), then looks up R_perp, R_par and the average at 70 degrees, computed here from the tan/sin forms.
 TEST_F(Cli, FresnelPlotCurvesAreWhereTheFormulasPutThem) {
-    const RunResult r = run({"--plot", "fresnel", "--ior", "1.5", "--size", "640x480", "--output", path("f.png")});
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const Image img = readPng(path("f.png"));
+    const Image img = runToPng({"--plot", "fresnel", "--ior", "1.5", "--size", "640x480"}, "f.png");
     ASSERT_EQ(img.width, 640);
     ASSERT_EQ(img.height, 480);
     // The axis colour (170, 170, 175) on the dark background, at 75% coverage or more (a line 1.5 pixels
@@ -157,9 +162,7 @@ TEST_F(Cli, FresnelPlotCurvesAreWhereTheFormulasPutThem) {
 
 // --plot lobe: the requested size (800x600 by default), and the lobes on R's side of N.
 TEST_F(Cli, LobePlotHasItsLobesOnTheMirrorSide) {
-    const RunResult r = run({"--plot", "lobe", "--ke", "64", "--incidence", "30", "--output", path("l.png")});
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const Image img = readPng(path("l.png"));
+    const Image img = runToPng({"--plot", "lobe", "--ke", "64", "--incidence", "30"}, "l.png");
     ASSERT_EQ(img.width, 800);
     ASSERT_EQ(img.height, 600);
     // Below the title and legend: Phong's orange (240, 170, 40) only right of the centre (N).
