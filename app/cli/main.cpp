@@ -5,6 +5,7 @@
 #include "core/file_io.hpp"
 #include "core/gltf_import.hpp"
 #include "core/image.hpp"
+#include "core/plot_image.hpp"
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
 #include "render/program.hpp"
@@ -42,6 +43,16 @@ int run(const std::vector<std::string>& args) {
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
     Scene scene = sceneFromOptions(options);
+    if (options.plot && !options.info) {
+        // Drawn on the CPU from core/lighting's formulas: no GL, no context, no shaders.
+        const Material material = scene.objects.empty() ? Material{} : scene.objects.front().material;
+        const Image image = renderPlotImage(scenePlot(*options.plot, scene, material, plotSettings(options)),
+                                            options.width.value_or(kPlotDefaultWidth),
+                                            options.height.value_or(kPlotDefaultHeight));
+        writePng(*options.output, image);
+        if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
+        return 0;
+    }
     // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
     const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
     const ShaderLibrary shaders(shaderDir);
@@ -125,6 +136,8 @@ int run(const std::vector<std::string>& args) {
         viewer.overlays.faceNormals |= o == "face-normals";
         viewer.overlays.lightMarkers |= o == "lights";
     }
+    viewer.plots = plotSettings(options);
+    viewer.panelSections = options.panelSections;
     viewer.verbose = options.verbose;
     Viewer(std::move(scene), std::move(geometry), viewer).run();
     return 0;

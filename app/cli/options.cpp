@@ -2,8 +2,11 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/plot_image.hpp"
 #include "core/scene_json.hpp"
+#include "viewer/panel_sections.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -120,6 +123,32 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (o.sweeps.size() == 2 && o.sweeps[0].parameter == o.sweeps[1].parameter)
                 throw InputError(arg + ": " + o.sweeps[1].parameter + " is swept twice");
         }
+        else if (arg == "--plot") {
+            static const std::pair<const char*, PlotKind> kPlots[] = {{"lobe", PlotKind::Lobe}, {"fresnel", PlotKind::Fresnel}};
+            o.plot = parseChoice(arg, next(), kPlots);
+        }
+        else if (arg == "--incidence") {
+            const std::string v = next();
+            const float deg = parseFloat(arg, v);
+            if (deg < 0.0f || deg > kMaxIncidenceDeg)
+                throw InputError(arg + ": must be between 0 and 89 degrees (got " + v + ")");
+            o.incidenceDeg = deg;
+        }
+        else if (arg == "--from-inside") noValue(), o.fromInside = true;
+        else if (arg == "--panel-sections") {
+            std::vector<std::string> sections;
+            std::stringstream list(next());
+            for (std::string name; std::getline(list, name, ',');) {
+                if (std::find_if(std::begin(kPanelSections), std::end(kPanelSections),
+                                 [&](const char* s) { return name == s; }) == std::end(kPanelSections)) {
+                    std::string allowed;
+                    for (const char* s : kPanelSections) allowed += std::string(allowed.empty() ? "" : ", ") + s;
+                    throw InputError(arg + ": unknown section \"" + name + "\" (expected some of " + allowed + ")");
+                }
+                sections.push_back(name);
+            }
+            o.panelSections = sections;
+        }
         else if (arg == "--shadows") noValue(), o.shadows = true;
         else if (arg == "--no-shadows") noValue(), o.shadows = false;
         else if (arg == "--shader-dir") o.shaderDir = next();
@@ -173,12 +202,25 @@ Options parseOptions(const std::vector<std::string>& args) {
     if (o.progressiveStride && o.output)
         throw InputError("--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark");
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
-    const bool viewerFlags =
-        o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel || !o.overlays.empty();
+    const bool viewerFlags = o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel ||
+                             !o.overlays.empty() || o.panelSections;
     if (viewerFlags && (o.output || o.benchmarkFrames))
         throw InputError(std::string(o.output ? "--output" : "--benchmark") +
-                         ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel and --overlays are "
-                         "for the viewer, which --output/--benchmark do not open");
+                         ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel, --overlays and "
+                         "--panel-sections are for the viewer, which --output/--benchmark do not open");
+    if (o.plot) {
+        if (!o.output) throw InputError("--plot: writes a PNG: give --output FILE.png");
+        if (!o.sweeps.empty() || o.benchmarkFrames)
+            throw InputError("--plot: draws one plot: not with --sweep or --benchmark");
+        if (o.width && (*o.width < kPlotMinWidth || *o.height < kPlotMinHeight || *o.width > kPlotMaxSide ||
+                        *o.height > kPlotMaxSide))
+            throw InputError("--size: a plot is " + std::to_string(kPlotMinWidth) + "x" + std::to_string(kPlotMinHeight) +
+                             " to " + std::to_string(kPlotMaxSide) + "x" + std::to_string(kPlotMaxSide) + " pixels");
+    } else if ((o.incidenceDeg || o.fromInside) && (o.output || o.benchmarkFrames)) {
+        // They set up the plots (--plot, or the viewer's Plots section); a render has no use for them.
+        throw InputError(std::string(o.incidenceDeg ? "--incidence" : "--from-inside") +
+                         ": sets up the plots: use it with --plot, or in the viewer");
+    }
     return o;
 }
 
@@ -219,6 +261,13 @@ Scene sceneFromOptions(const Options& o) {
     return s;
 }
 
+PlotSettings plotSettings(const Options& o) {
+    PlotSettings s;
+    if (o.incidenceDeg) s.incidenceDeg = *o.incidenceDeg;
+    s.fromInside = o.fromInside;
+    return s;
+}
+
 std::string usage() {
     return R"(usage: shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]
 
@@ -250,6 +299,13 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           a second --sweep makes a grid (rows). PARAM: ke, ks, kd, ka, intensity (every
                           light), tessellation (first mesh), ior, shading, reflection,
                           specular_normalization, fresnel. E.g. --sweep ke=1,8,32,128,512 --sweep shading=gouraud,phong
+  --plot lobe|fresnel     with --output: the lecture's plot for the scene's parameters, drawn on the CPU
+                          (800x600 unless --size): lobe = Phong and Blinn-Phong spec in the plane of
+                          incidence for k_e; fresnel = R_par, R_perp, their average and Schlick over the
+                          angle of incidence, from air (eta_1 = 1) into eta_2 = --ior
+  --incidence DEG         the lobe plot's angle between the incoming light I and N (0..89, default 45)
+  --from-inside           the Fresnel plot from inside the material (eta_1 = --ior, eta_2 = 1): total
+                          internal reflection past the critical angle
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --progressive S         area lights in the viewer (and --benchmark): a frame evaluates every S-th
                           sample per axis, the view refines over S*S frames (1..16; default: the
@@ -267,6 +323,9 @@ Viewer (the window; keys and mouse are listed in its panel under "Keys"):
   --save-scene FILE.json  on the last frame, save the scene as the panel's "save scene" does
   --hide-panel            start with the panel hidden (Tab shows it)
   --overlays LIST         start with overlays on: wireframe,vertex-normals,face-normals,lights
+  --panel-sections LIST   start with exactly these panel sections open, e.g. plots or shading,material
+                          (shading, material, plots, mesh, lights, shadows, overlays, camera, background,
+                          file, keys); --incidence and --from-inside set the Plots section's controls
   -v, --verbose           say what was loaded and written
   -h, --help              this text
   --version               print the version

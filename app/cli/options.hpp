@@ -1,6 +1,7 @@
 #pragma once
 // The command line: `shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]`. Parsing is GL-free so
 // it is unit-tested (and fuzzed) on its own. Options override what the scene file says.
+#include "core/plot.hpp"
 #include "core/scene.hpp"
 #include "core/sweep.hpp"
 
@@ -28,6 +29,9 @@ struct Options {
     std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
     std::optional<float> diffFactor;        // --diff-factor X (1..1000)
     std::vector<Sweep> sweeps;              // --sweep PARAM=V1,V2,... (at most two: columns, rows), with --output
+    std::optional<PlotKind> plot;           // --plot lobe|fresnel: write that plot (no GL) to --output
+    std::optional<float> incidenceDeg;      // --incidence DEG (0..89): the lobe plot's incoming direction
+    bool fromInside = false;                // --from-inside: Fresnel plot with eta1 = ior, eta2 = 1
     int benchmarkFrames = 0;                // --benchmark N
     int progressiveStride = 0;              // --progressive S (1..16): area-light samples over S*S frames (viewer, benchmark)
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
@@ -40,6 +44,7 @@ struct Options {
     std::optional<std::string> saveScene;   // --save-scene FILE.json: the scene as "save scene" writes it
     bool hidePanel = false;                 // --hide-panel: start with the panel hidden (as Tab)
     std::vector<std::string> overlays;      // --overlays a,b: wireframe, vertex-normals, face-normals, lights
+    std::optional<std::vector<std::string>> panelSections;  // --panel-sections a,b: open exactly these panel sections
     bool verbose = false;
     bool help = false;
     bool version = false;
@@ -51,6 +56,9 @@ Options parseOptions(const std::vector<std::string>& args);
 // Loads the input named by the options (scene file, model, or the default scene) and applies every
 // override. Throws InputError.
 Scene sceneFromOptions(const Options& options);
+
+// The plot --plot asks for, from the scene and --incidence/--from-inside (see scenePlot).
+PlotSettings plotSettings(const Options& options);
 
 std::string usage();
 

@@ -18,19 +18,8 @@ void addSample(LightShare& t, const Material& m, const LightingEnvironment& env,
                const glm::vec3& v, const glm::vec3& i, const glm::vec3& radiance) {
     const float nDotI = glm::dot(n, i);
     if (nDotI <= 0.0f) return;  // light behind the surface: no diffuse, no specular
-    float cosLobe;
-    const glm::vec3 h = glm::normalize(i + v);
-    if (env.model == ReflectionModel::Phong) {
-        const glm::vec3 r = 2.0f * nDotI * n - i;
-        cosLobe = glm::dot(r, v);
-    } else {
-        cosLobe = glm::dot(h, n);
-    }
-    float spec = std::pow(std::max(cosLobe, 0.0f), m.ke);
-    if (env.normalization == SpecularNormalization::Energy) spec *= energySpecularScale(env.model, m.ke);
-    if (env.fresnel != FresnelMode::None) spec *= fresnelWeight(env.fresnel, std::max(glm::dot(v, h), 0.0f), env.ior);
     t.diffuse += radiance * m.kd * m.color * nDotI;
-    t.specular += radiance * m.ks * m.specularColor * spec;
+    t.specular += radiance * m.ks * m.specularColor * specularTerm(env, m.ke, n, i, v);
 }
 
 }  // namespace
@@ -94,6 +83,23 @@ float fresnelWeight(FresnelMode mode, float cosVH, float ior) {
     case FresnelMode::Exact: return fresnelExact(cosVH, 1.0f, ior).average;
     }
     return 1.0f;
+}
+
+float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v) {
+    const float nDotI = glm::dot(n, i);
+    if (nDotI <= 0.0f) return 0.0f;  // light behind the surface
+    float cosLobe;
+    const glm::vec3 h = glm::normalize(i + v);
+    if (env.model == ReflectionModel::Phong) {
+        const glm::vec3 r = 2.0f * nDotI * n - i;
+        cosLobe = glm::dot(r, v);
+    } else {
+        cosLobe = glm::dot(h, n);
+    }
+    float spec = std::pow(std::max(cosLobe, 0.0f), ke);
+    if (env.normalization == SpecularNormalization::Energy) spec *= energySpecularScale(env.model, ke);
+    if (env.fresnel != FresnelMode::None) spec *= fresnelWeight(env.fresnel, std::max(glm::dot(v, h), 0.0f), env.ior);
+    return spec;
 }
 
 float attenuationFactor(const Light& light, float r2) {

@@ -89,6 +89,12 @@ float fresnelSchlick(float cosTheta1, float eta1, float eta2);
 // from air (eta1 = 1) onto `ior`, at cos = V.H.
 float fresnelWeight(FresnelMode mode, float cosVH, float ior);
 
+// spec of the formula above for one light direction, as the shaders compute it: the lobe
+// max(0, R(I).V)^k_e or max(0, H.N)^k_e of env.model, times energySpecularScale with energy
+// normalisation, times fresnelWeight(V.H) with Fresnel; 0 where N.I <= 0. n, i, v are unit vectors
+// (normal, toward the light, toward the eye). The lobe plot (core/plot.hpp) draws this function.
+float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v);
+
 // The occlusion test toward one light sample: from the shaded point along `towardLight` (unit) for
 // `distance` (infinite for directional lights). Returns v in [0, 1]: 1 visible, 0 occluded.
 struct LightRay {

@@ -1,6 +1,8 @@
 #include "viewer/panel.hpp"
 
 #include "core/camera.hpp"
+#include "viewer/panel_sections.hpp"
+#include "viewer/plot_view.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 namespace shadelab {
@@ -62,6 +65,11 @@ bool cameraValid(const Camera& c) {
     return glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) >= 1e-3f;
 }
 
+void iorSlider(Scene& scene) {
+    ImGui::SliderFloat("ior eta2/eta1", &scene.ior, kMinIor, 4.0f, "%.3f");
+    scene.ior = std::clamp(scene.ior, kMinIor, kMaxIor);
+}
+
 void sectionShading(Scene& scene) {
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Shading");
@@ -100,10 +108,7 @@ void sectionShading(Scene& scene) {
     combo("lobe normalisation", scene.specularNormalization, kNormalizations);
     static const char* const kFresnel[] = {"none", "Schlick", "exact"};
     combo("Fresnel", scene.fresnel, kFresnel);
-    if (scene.fresnel != FresnelMode::None) {
-        ImGui::SliderFloat("ior eta2/eta1", &scene.ior, kMinIor, 4.0f, "%.3f");
-        scene.ior = std::clamp(scene.ior, kMinIor, kMaxIor);
-    }
+    if (scene.fresnel != FresnelMode::None) iorSlider(scene);
     // Term isolation: each addend of the formula alone.
     static const char* const kTerms[] = {"all", "ambient", "diffuse", "specular", "one light", "unlit C"};
     combo("show", scene.show.term, kTerms);
@@ -123,6 +128,20 @@ void sectionMaterial(Material& m) {
     // The exponent is what the lecture sweeps: a logarithmic slider gives 1..10 as much travel as 100..1000.
     if (ImGui::SliderFloat("k_e exponent", &m.ke, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.ke = std::clamp(m.ke, kMinExponent, kMaxExponent);
+}
+
+// The lecture's plots for the current parameters (core/plot.hpp): rebuilt every frame, which costs
+// about a thousand formula evaluations, so every slider in the panel moves the curves at once.
+void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
+    ImGui::SliderFloat("incidence", &plots.incidenceDeg, 0.0f, kMaxIncidenceDeg, "theta_i = %.1f deg");
+    plots.incidenceDeg = std::clamp(plots.incidenceDeg, 0.0f, kMaxIncidenceDeg);
+    iorSlider(scene);
+    ImGui::Checkbox("from inside (eta_1 = ior, eta_2 = 1)", &plots.fromInside);
+    // Heights that leave room for the header and legend rows at the panel's width and the plot below.
+    const float width = ImGui::GetContentRegionAvail().x;
+    plotWidget("##lobe", scenePlot(PlotKind::Lobe, scene, material, plots), width * 0.85f);
+    ImGui::Spacing();
+    plotWidget("##fresnel", scenePlot(PlotKind::Fresnel, scene, material, plots), width * 0.95f);
 }
 
 void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles) {
@@ -312,25 +331,35 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         if (status.isError) ImGui::PopStyleColor();
         ImGui::Separator();
     }
-    if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) sectionShading(scene);
-    if (!scene.objects.empty()) {
-        settings.selectedObject = std::clamp(settings.selectedObject, 0, int(scene.objects.size()) - 1);
-        SceneObject& object = scene.objects[std::size_t(settings.selectedObject)];
-        if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-            if (scene.objects.size() > 1)
-                ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
-            sectionMaterial(object.material);
+    // A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
+    auto section = [&](const char* title, const char* name, bool defaultOpen) {
+        if (settings.startSections) {
+            const auto& open = *settings.startSections;
+            ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
         }
-        if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen))
-            sectionMesh(object.mesh, object.transform, status.objectTriangles);
+        return ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
+    };
+    if (section("Shading", kPanelSections[0], true)) sectionShading(scene);
+    settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
+    SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
+    if (object && section("Material", kPanelSections[1], true)) {
+        if (scene.objects.size() > 1)
+            ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
+        sectionMaterial(object->material);
     }
-    if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) sectionLights(scene);
-    if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen)) sectionShadows(scene.shadows);
-    if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) sectionOverlays(settings);
-    if (ImGui::CollapsingHeader("Camera")) sectionCamera(scene.camera, requests);
-    if (ImGui::CollapsingHeader("Background")) colorEdit("background", scene.background);
-    if (ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) sectionFile(settings, status, requests);
-    if (ImGui::CollapsingHeader("Keys")) sectionKeys();
+    if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
+        sectionPlots(scene, object ? object->material : Material{}, settings.plots);
+    if (object && section("Mesh", kPanelSections[3], true))
+        sectionMesh(object->mesh, object->transform, status.objectTriangles);
+    if (section("Lights", kPanelSections[4], true)) sectionLights(scene);
+    if (section("Shadows", kPanelSections[5], true)) sectionShadows(scene.shadows);
+    if (section("Overlays", kPanelSections[6], true)) sectionOverlays(settings);
+    if (section("Camera", kPanelSections[7], false)) sectionCamera(scene.camera, requests);
+    if (section("Background", kPanelSections[8], false)) colorEdit("background", scene.background);
+    if (section("File", kPanelSections[9], true)) sectionFile(settings, status, requests);
+    if (section("Keys", kPanelSections[10], false)) sectionKeys();
+    static_assert(std::size(kPanelSections) == 11, "every section above has its name");
+    settings.startSections.reset();
     ImGui::PopItemWidth();
     ImGui::End();
     return requests;

@@ -3,11 +3,14 @@
 // change shows on the next frame), the compare-pane labels and the HUD. Immediate mode: these functions
 // are called every frame, hold no state of their own, and report button presses as requests that the
 // viewer carries out, so file and GL work never happens inside a widget.
+#include "core/plot.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -19,6 +22,9 @@ struct ViewSettings {
     bool showHud = true;           // frame time, FPS, triangles, GL renderer
     std::string scenePath;         // the Save / Load field
     int selectedObject = 0;        // whose material, mesh and transform the panel shows
+    PlotSettings plots;            // the Plots section's incidence angle and side of the surface
+    // --panel-sections: on the first frame, exactly these sections (kPanelSections names) are opened.
+    std::optional<std::vector<std::string>> startSections;
 };
 
 // What the panel shows besides the scene.

@@ -76,6 +76,8 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
       document_(std::move(scene), std::move(geometry)) {
     settings_.showPanel = !options_.hidePanel;
     settings_.overlays = options_.overlays;
+    settings_.plots = options_.plots;
+    settings_.startSections = options_.panelSections;
     settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
     status_.glRenderer = renderer_->glRenderer();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.

@@ -15,7 +15,9 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -32,6 +34,8 @@ struct ViewerOptions {
     // --progressive S: with area lights, each frame evaluates every S-th sample per axis and the view
     // refines over S*S frames (Renderer::renderProgressive); 0 picks S from the measured frame time.
     int progressiveStride = 0;
+    PlotSettings plots;               // --incidence, --from-inside: the Plots section's starting controls
+    std::optional<std::vector<std::string>> panelSections;  // --panel-sections: exactly these open at start
     bool verbose = false;
 };
 

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +35,13 @@ protected:
         return (dir_ / name).string();
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    // Runs `args` plus --output NAME and reads the PNG it wrote (an empty image if it failed).
+    Image runToPng(std::vector<std::string> args, const std::string& name) const {
+        args.insert(args.end(), {"--output", path(name)});
+        const RunResult r = run(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r.exitCode == 0 ? readPng(path(name)) : Image();
+    }
     fs::path dir_;
 };
 
@@ -93,6 +102,112 @@ TEST_F(Cli, SweepSheetHasOneTilePerValue) {
     EXPECT_EQ(cube.exitCode, 2);
     EXPECT_NE(cube.err.find("--sweep: tessellation: the first object is a cube"), std::string::npos) << cube.err;
     EXPECT_FALSE(fs::exists(path("c.png")));
+}
+
+// --plot fresnel: a PNG of the requested size whose curves are where the lecture's formulas put them.
+// The test finds the plot's frame in the image itself (the rows and columns that are mostly the axis
+// colour), then looks up R_perp, R_par and the average at 70 degrees, computed here from the tan/sin forms.
+TEST_F(Cli, FresnelPlotCurvesAreWhereTheFormulasPutThem) {
+    const Image img = runToPng({"--plot", "fresnel", "--ior", "1.5", "--size", "640x480"}, "f.png");
+    ASSERT_EQ(img.width, 640);
+    ASSERT_EQ(img.height, 480);
+    // The axis colour (170, 170, 175) on the dark background, at 75% coverage or more (a line 1.5 pixels
+    // wide covers at least one pixel of each row or column that much).
+    auto axisLike = [&](int x, int y) {
+        const std::uint8_t* p = img.pixel(x, y);
+        return std::abs(p[0] - 170) <= 45 && std::abs(p[1] - 170) <= 45 && std::abs(p[2] - 175) <= 45 &&
+               std::abs(p[0] - p[2]) < 20;
+    };
+    // The centres of the runs of rows (or columns) in which more than half the pixels are axis-like.
+    auto edges = [&](bool rows) {
+        std::vector<double> centres;
+        const int outer = rows ? img.height : img.width, inner = rows ? img.width : img.height;
+        int runStart = -1;
+        for (int k = 0; k <= outer; ++k) {
+            int count = 0;
+            for (int j = 0; k < outer && j < inner; ++j) count += rows ? axisLike(j, k) : axisLike(k, j);
+            const bool full = count > inner / 2;
+            if (full && runStart < 0) runStart = k;
+            if (!full && runStart >= 0) centres.push_back(0.5 * (runStart + k - 1) + 0.5), runStart = -1;
+        }
+        return centres;
+    };
+    const std::vector<double> horizontal = edges(true), vertical = edges(false);
+    ASSERT_EQ(horizontal.size(), 2u) << "expected the frame's top and bottom";
+    ASSERT_EQ(vertical.size(), 2u) << "expected the frame's left and right";
+    const double top = horizontal[0], bottom = horizontal[1], left = vertical[0], right = vertical[1];
+    EXPECT_GT(right - left, 400);
+    EXPECT_GT(bottom - top, 200);
+
+    const double kPi = 3.14159265358979323846, t1 = 70.0 * kPi / 180.0, t3 = std::asin(std::sin(t1) / 1.5);
+    const double perp = std::pow(std::sin(t1 - t3) / std::sin(t1 + t3), 2.0);  // 0.300
+    const double par = std::pow(std::tan(t1 - t3) / std::tan(t1 + t3), 2.0);   // 0.043
+    const int x = int(left + 70.0 / 90.0 * (right - left));
+    auto rowOf = [&](double reflectance) { return int(std::lround(bottom - reflectance * (bottom - top) - 0.5)); };
+    // A pixel within 3 rows of `reflectance` whose colour is within 40 of `rgb`.
+    auto curveNear = [&](double reflectance, std::array<int, 3> rgb) {
+        for (int y = rowOf(reflectance) - 3; y <= rowOf(reflectance) + 3; ++y) {
+            const std::uint8_t* p = img.pixel(x, y);
+            if (std::abs(p[0] - rgb[0]) <= 40 && std::abs(p[1] - rgb[1]) <= 40 && std::abs(p[2] - rgb[2]) <= 40) return true;
+        }
+        return false;
+    };
+    const std::array<int, 3> vermillion{240, 100, 60}, skyBlue{86, 180, 233}, white{235, 235, 235};
+    EXPECT_TRUE(curveNear(perp, vermillion)) << "R_perp at 70 degrees, R = " << perp;
+    EXPECT_TRUE(curveNear(par, skyBlue)) << "R_par at 70 degrees, R = " << par;
+    EXPECT_TRUE(curveNear((par + perp) / 2.0, white)) << "the average at 70 degrees";
+    EXPECT_FALSE(curveNear(0.6, vermillion)) << "R_perp is not at 0.6";
+    EXPECT_FALSE(curveNear(perp, skyBlue)) << "R_par is not where R_perp is";
+}
+
+// --plot lobe: the requested size (800x600 by default), and the lobes on R's side of N.
+TEST_F(Cli, LobePlotHasItsLobesOnTheMirrorSide) {
+    const Image img = runToPng({"--plot", "lobe", "--ke", "64", "--incidence", "30"}, "l.png");
+    ASSERT_EQ(img.width, 800);
+    ASSERT_EQ(img.height, 600);
+    // Below the title and legend: Phong's orange (240, 170, 40) only right of the centre (N).
+    int left = 0, right = 0;
+    for (int y = img.height * 2 / 5; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const std::uint8_t* p = img.pixel(x, y);
+            if (std::abs(p[0] - 240) <= 20 && std::abs(p[1] - 170) <= 20 && std::abs(p[2] - 40) <= 30)
+                (x < img.width / 2 ? left : right)++;
+        }
+    EXPECT_EQ(left, 0);
+    EXPECT_GT(right, 300);
+}
+
+// The plot needs no GL: no shaders (a broken --shader-dir does not matter) and no GL library loaded.
+// glibc's loader reports every library it loads, dlopen'ed ones included, under LD_DEBUG=libs; a
+// render run with the same setting is the control that the report names libOSMesa.
+TEST_F(Cli, PlotsNeedNoGl) {
+    fs::create_directories(dir_ / "broken-shaders");
+    std::ofstream(dir_ / "broken-shaders" / "lighting.glsl") << "this is not GLSL\n";
+    const std::vector<std::string> env = {"LD_DEBUG=libs", "LD_DEBUG_OUTPUT=" + path("ld-plot")};
+    const RunResult plot = test::runShadelab({"--plot", "lobe", "--shader-dir", path("broken-shaders"), "--output",
+                                              path("p.png")},
+                                             fs::current_path(), dir_, env);
+    ASSERT_EQ(plot.exitCode, 0) << plot.err;
+    const RunResult render = test::runShadelab({"--size", "32x32", "--backend", "osmesa", "--output", path("r.png")},
+                                               fs::current_path(), dir_, {"LD_DEBUG=libs", "LD_DEBUG_OUTPUT=" + path("ld-render")});
+    ASSERT_EQ(render.exitCode, 0) << render.err;
+    std::string plotLog, renderLog;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("ld-plot", 0) == 0) plotLog += slurp(entry.path());
+        if (name.rfind("ld-render", 0) == 0) renderLog += slurp(entry.path());
+    }
+    ASSERT_NE(renderLog.find("libOSMesa"), std::string::npos) << "LD_DEBUG reports nothing here";
+    EXPECT_EQ(plotLog.find("libOSMesa"), std::string::npos);
+    EXPECT_EQ(plotLog.find("libEGL"), std::string::npos);
+    EXPECT_EQ(plotLog.find("libGL"), std::string::npos);
+}
+
+TEST_F(Cli, PlotNeedsAnOutputFile) {
+    const RunResult r = run({"--plot", "lobe"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--plot: writes a PNG: give --output FILE.png"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 TEST_F(Cli, ScenePlusOverrides) {

@@ -13,9 +13,9 @@ struct RunResult {
 };
 
 // Runs SHADELAB_EXE with `args` in folder `cwd`, DISPLAY and WAYLAND_DISPLAY unset (as in CI);
-// stdout and stderr are captured through files in `captureDir`.
+// stdout and stderr are captured through files in `captureDir`. `env`: more NAME=VALUE settings.
 RunResult runShadelab(const std::vector<std::string>& args, const std::filesystem::path& cwd,
-                      const std::filesystem::path& captureDir);
+                      const std::filesystem::path& captureDir, const std::vector<std::string>& env = {});
 
 std::string slurp(const std::filesystem::path& p);
 

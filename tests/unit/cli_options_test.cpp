@@ -151,3 +151,28 @@ TEST(CliOptions, BadLightsNameTheFlagAndTheKey) {
     for (int i = 0; i < 17; ++i) many.insert(many.end(), {"--light", "point:0,1,0"});
     EXPECT_NE(errorOf(many).find("--light: at most 16 lights"), std::string::npos);
 }
+
+TEST(CliOptions, Plots) {
+    const Options o = parseOptions({"--plot", "fresnel", "--from-inside", "--incidence", "60", "--output", "f.png"});
+    EXPECT_EQ(o.plot, PlotKind::Fresnel);
+    EXPECT_TRUE(o.fromInside);
+    EXPECT_FLOAT_EQ(*o.incidenceDeg, 60.0f);
+    EXPECT_FLOAT_EQ(plotSettings(o).incidenceDeg, 60.0f);
+    EXPECT_TRUE(plotSettings(o).fromInside);
+    EXPECT_FLOAT_EQ(plotSettings(parseOptions({})).incidenceDeg, 45.0f);  // the default
+    EXPECT_EQ(parseOptions({"--plot=lobe", "-o", "l.png", "--size", "320x240"}).plot, PlotKind::Lobe);
+    // The viewer's Plots section takes them too (no --output there).
+    EXPECT_FLOAT_EQ(*parseOptions({"--incidence", "0"}).incidenceDeg, 0.0f);
+
+    EXPECT_NE(errorOf({"--plot", "lobe"}).find("--plot: writes a PNG: give --output FILE.png"), std::string::npos);
+    EXPECT_NE(errorOf({"--plot", "polar", "-o", "x.png"}).find("--plot: unknown value \"polar\""), std::string::npos);
+    EXPECT_NE(errorOf({"--plot", "lobe", "-o", "x.png", "--benchmark", "3"}).find("not with --sweep or --benchmark"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--plot", "lobe", "-o", "x.png", "--size", "319x240"}).find("--size: a plot is 320x240"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--plot", "lobe", "-o", "x.png", "--size", "4097x300"}).find("to 4096x4096"), std::string::npos);
+    EXPECT_NE(errorOf({"--incidence", "89.5"}).find("--incidence: must be between 0 and 89"), std::string::npos);
+    EXPECT_NE(errorOf({"--incidence", "x"}).find("--incidence: \"x\" is not a number"), std::string::npos);
+    EXPECT_NE(errorOf({"--from-inside=1"}).find("--from-inside: takes no value"), std::string::npos);
+    EXPECT_NE(errorOf({"--incidence", "30", "-o", "x.png"}).find("--incidence: sets up the plots"), std::string::npos);
+}

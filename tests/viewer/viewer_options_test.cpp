@@ -1,6 +1,7 @@
 // The viewer's command-line flags (app/cli/options.*).
 #include "cli/options.hpp"
 #include "core/error.hpp"
+#include "viewer/panel_sections.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,13 @@ TEST(ViewerOptions, ParseWithEveryOtherOption) {
     EXPECT_EQ(o.width, 640);
 }
 
+TEST(ViewerOptions, PanelSections) {
+    EXPECT_FALSE(parseOptions({}).panelSections.has_value());
+    EXPECT_EQ(*parseOptions({"--panel-sections", "plots,shading"}).panelSections,
+              (std::vector<std::string>{"plots", "shading"}));
+    for (const char* name : kPanelSections) EXPECT_NO_THROW(parseOptions({"--panel-sections", name})) << name;
+}
+
 TEST(ViewerOptions, RefusesWhatCannotWork) {
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
              {"--frames", "0"},
@@ -30,7 +38,9 @@ TEST(ViewerOptions, RefusesWhatCannotWork) {
              {"--overlays", "wireframe,glow"},
              {"--hide-panel=yes"},
              {"--output", "x.png", "--frames", "3"},
-             {"--benchmark", "5", "--screenshot", "w.png"}})
+             {"--benchmark", "5", "--screenshot", "w.png"},
+             {"--panel-sections", "plots,charts"},
+             {"--output", "x.png", "--panel-sections", "plots"}})
         EXPECT_THROW(parseOptions(args), InputError) << args[0] << " " << args.back();
 }
 

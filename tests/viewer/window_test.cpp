@@ -212,5 +212,38 @@ TEST(Window, Overlays) {
         EXPECT_TRUE(std::equal(a.pixel(x, y), a.pixel(x, y) + 4, b.pixel(x, y))) << x << "," << y;
 }
 
+// The Plots section draws the lecture's plots in the panel, live: opened with --panel-sections plots it
+// shows Phong's orange lobe (and nothing in the default panel is that colour), and the lobe follows
+// the incidence angle (--incidence sets the section's slider): at 70 degrees it lies further right
+// than at 10.
+TEST(Window, Plots) {
+    const std::string dir = outDir();
+    struct Orange {
+        int count = 0;
+        double meanX = 0.0;
+    };
+    auto phongOrange = [&](const std::string& args, const std::string& name) {
+        const RunResult r = shadelab(args + " --size 640x720 --frames 3 --screenshot " + dir + "/" + name, dir);
+        EXPECT_EQ(r.status, 0) << r.output;
+        const Image window = readPng(dir + "/" + name);
+        Orange o;
+        for (int y = 0; y < window.height; ++y)
+            for (int x = 640; x < window.width; ++x) {  // the panel, right of the 3D view
+                const std::uint8_t* p = window.pixel(x, y);
+                if (std::abs(p[0] - 240) <= 20 && std::abs(p[1] - 170) <= 20 && std::abs(p[2] - 40) <= 30)
+                    ++o.count, o.meanX += x;
+            }
+        if (o.count) o.meanX /= o.count;
+        return o;
+    };
+    const Orange closed = phongOrange("", "default.png");
+    EXPECT_EQ(closed.count, 0) << "the Plots section is open by default, or something else is orange";
+    const Orange steep = phongOrange("--panel-sections plots --incidence 10", "plots-10.png");
+    const Orange flat = phongOrange("--panel-sections plots --incidence 70", "plots-70.png");
+    EXPECT_GT(steep.count, 150) << "no Phong lobe in the panel";
+    EXPECT_GT(flat.count, 150) << "no Phong lobe in the panel";
+    EXPECT_GT(flat.meanX, steep.meanX + 20.0) << "the lobe does not follow the incidence angle";
+}
+
 }  // namespace
 }  // namespace shadelab

@@ -1,0 +1,17 @@
+#pragma once
+// The lecture's plots (core/plot.hpp) rasterised on the CPU into an image, for --plot lobe|fresnel:
+// antialiased lines (coverage from the distance to each segment), filled arrowheads, and
+// stb_easy_font text (core/text.hpp). No GL, no context.
+#include "core/image.hpp"
+#include "core/plot.hpp"
+
+namespace shadelab {
+
+// Text and line widths grow with the image: text scale max(1, round(min(width / 400, height / 300)))
+// (2 at the default 800 x 600), one line unit = 0.75 pixels per text scale.
+Image renderPlotImage(const Plot& plot, int width, int height);
+inline constexpr int kPlotDefaultWidth = 800, kPlotDefaultHeight = 600;
+// Smaller plots have no room for their labels; larger ones are not needed for a slide.
+inline constexpr int kPlotMinWidth = 320, kPlotMinHeight = 240, kPlotMaxSide = 4096;
+
+}  // namespace shadelab

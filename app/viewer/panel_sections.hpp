@@ -1,0 +1,9 @@
+#pragma once
+// The names of the panel's collapsing sections, as --panel-sections takes them (in the panel's order).
+// Header-only constants: cli/options.cpp checks the flag against them without linking the viewer.
+namespace shadelab {
+
+inline constexpr const char* kPanelSections[] = {"shading", "material", "plots", "mesh", "lights", "shadows",
+                                                 "overlays", "camera", "background", "file", "keys"};
+
+}  // namespace shadelab

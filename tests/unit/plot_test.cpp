@@ -1,0 +1,333 @@
+// The lecture's plots (core/plot.hpp, core/plot_image.hpp): the curves' values against the formulas
+// written out here in double precision — in the plane of incidence Phong's R.V is cos(phi - theta_i)
+// and Blinn-Phong's N.H is cos((phi - theta_i) / 2) — the Fresnel curves against the lecture's tan/sin
+// forms, Brewster's and the critical angle, the layout, and the rasterised PNGs against goldens.
+#include "core/image.hpp"
+#include "core/plot.hpp"
+#include "core/plot_image.hpp"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+using namespace shadelab;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+double rad(double deg) { return deg * kPi / 180.0; }
+
+const PlotPolyline& lineNamed(const Plot& plot, const std::string& prefix) {
+    for (const PlotPolyline& l : plot.lines)
+        if (l.name.rfind(prefix, 0) == 0) return l;
+    throw std::runtime_error("no line named " + prefix);
+}
+bool hasLineNamed(const Plot& plot, const std::string& prefix) {
+    return std::any_of(plot.lines.begin(), plot.lines.end(), [&](const PlotPolyline& l) { return l.name.rfind(prefix, 0) == 0; });
+}
+
+// Float formulas against double ones: relative error grows with the exponent (pow amplifies cos's
+// ~1e-7 error k_e times), so 1e-3 relative covers k_e = 1000 with margin.
+void expectClose(double actual, double expected, const std::string& what) {
+    EXPECT_NEAR(actual, expected, 1e-3 * expected + 1e-6) << what;
+}
+
+}  // namespace
+
+TEST(LobePlot, SamplesAreThePhongAndBlinnPhongLobesInThePlane) {
+    const LightingEnvironment env;  // heuristic lobes, no Fresnel
+    for (float ke : {1.0f, 8.0f, 32.0f, 1000.0f})
+        for (float incidence : {0.0f, 30.0f, 45.0f, 70.0f}) {
+            const std::vector<LobeSample> samples = sampleLobe(env, ke, incidence);
+            ASSERT_GT(samples.size(), 181u);
+            EXPECT_FLOAT_EQ(samples.front().angleDeg, -90.0f);
+            EXPECT_FLOAT_EQ(samples.back().angleDeg, 90.0f);
+            for (std::size_t k = 0; k < samples.size(); ++k) {
+                const LobeSample& s = samples[k];
+                if (k > 0) {
+                    ASSERT_GT(s.angleDeg, samples[k - 1].angleDeg);
+                }
+                const double delta = rad(double(s.angleDeg) - double(incidence));  // V's angle from R
+                const std::string at = "k_e " + std::to_string(ke) + ", theta_i " + std::to_string(incidence) +
+                                       ", V at " + std::to_string(s.angleDeg);
+                expectClose(s.phong, std::pow(std::max(0.0, std::cos(delta)), double(ke)), "Phong, " + at);
+                expectClose(s.blinnPhong, std::pow(std::cos(delta / 2.0), double(ke)), "Blinn-Phong, " + at);
+            }
+        }
+}
+
+// Both lobes peak at 1 exactly where V = R (in this plane H = N there), for every incidence.
+TEST(LobePlot, BothLobesPeakAlongTheMirrorDirection) {
+    for (float incidence : {0.0f, 20.0f, 45.0f, 80.0f}) {
+        const std::vector<LobeSample> s = sampleLobe(LightingEnvironment{}, 64.0f, incidence);
+        const auto phongPeak = std::max_element(s.begin(), s.end(), [](auto& a, auto& b) { return a.phong < b.phong; });
+        const auto blinnPeak =
+            std::max_element(s.begin(), s.end(), [](auto& a, auto& b) { return a.blinnPhong < b.blinnPhong; });
+        EXPECT_FLOAT_EQ(phongPeak->angleDeg, incidence);
+        EXPECT_FLOAT_EQ(blinnPeak->angleDeg, incidence);
+        EXPECT_NEAR(phongPeak->phong, 1.0f, 1e-5f);
+        EXPECT_NEAR(blinnPeak->blinnPhong, 1.0f, 1e-5f);
+    }
+}
+
+// Energy normalisation multiplies spec by (k_e + 2) / 34 (Phong) and (k_e + 8) / 40 (Blinn-Phong), as
+// the README states; Fresnel then weights each V by F(V.H), here Schlick at V = R where V.H = cos theta_i.
+TEST(LobePlot, EnergyNormalisationAndFresnelScaleTheLobes) {
+    LightingEnvironment env;
+    env.normalization = SpecularNormalization::Energy;
+    const std::vector<LobeSample> s = sampleLobe(env, 128.0f, 45.0f);
+    const auto atR = std::find_if(s.begin(), s.end(), [](auto& x) { return x.angleDeg == 45.0f; });
+    ASSERT_NE(atR, s.end());
+    EXPECT_NEAR(atR->phong, 130.0 / 34.0, 1e-4);
+    EXPECT_NEAR(atR->blinnPhong, 136.0 / 40.0, 1e-4);
+
+    env.fresnel = FresnelMode::Schlick;
+    env.ior = 1.5f;
+    const std::vector<LobeSample> f = sampleLobe(env, 128.0f, 45.0f);
+    const auto fAtR = std::find_if(f.begin(), f.end(), [](auto& x) { return x.angleDeg == 45.0f; });
+    const double r0 = 0.04, schlick = r0 + (1.0 - r0) * std::pow(1.0 - std::cos(rad(45.0)), 5.0);
+    EXPECT_NEAR(fAtR->phong, 130.0 / 34.0 * schlick, 1e-4);
+}
+
+// The plot's curves are spec * (sin phi, cos phi); the outer ring reaches the higher peak with a round
+// value; N, I and R point where the lecture's figure has them.
+TEST(LobePlot, PolylinesAreTheSamplesInPolarForm) {
+    LightingEnvironment env;
+    env.model = ReflectionModel::Phong;
+    const float incidence = 30.0f;
+    const Plot plot = lobePlot(env, 32.0f, incidence);
+    const std::vector<LobeSample> s = sampleLobe(env, 32.0f, incidence);
+    const PlotPolyline& phong = lineNamed(plot, "Phong");
+    const PlotPolyline& blinn = lineNamed(plot, "Blinn-Phong");
+    EXPECT_NE(phong.name.find("(in use)"), std::string::npos);
+    EXPECT_EQ(blinn.name.find("(in use)"), std::string::npos);
+    ASSERT_EQ(phong.points.size(), s.size());
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        const double a = rad(s[k].angleDeg);
+        EXPECT_NEAR(phong.points[k].x, s[k].phong * std::sin(a), 1e-6);
+        EXPECT_NEAR(phong.points[k].y, s[k].phong * std::cos(a), 1e-6);
+        EXPECT_NEAR(blinn.points[k].x, s[k].blinnPhong * std::sin(a), 1e-6);
+        EXPECT_NEAR(blinn.points[k].y, s[k].blinnPhong * std::cos(a), 1e-6);
+    }
+    EXPECT_NE(plot.title.find("k_e = 32"), std::string::npos) << plot.title;
+    EXPECT_NE(plot.title.find("theta_i = 30 deg"), std::string::npos) << plot.title;
+
+    const glm::vec2 n = lineNamed(plot, "N").points.back(), i = lineNamed(plot, "I").points.back(),
+                    r = lineNamed(plot, "R").points.back();
+    EXPECT_NEAR(glm::normalize(n).y, 1.0, 1e-6);
+    EXPECT_NEAR(glm::normalize(i).x, -std::sin(rad(30.0)), 1e-6);
+    EXPECT_NEAR(glm::normalize(i).y, std::cos(rad(30.0)), 1e-6);
+    EXPECT_NEAR(glm::normalize(r).x, std::sin(rad(30.0)), 1e-6);
+    EXPECT_NEAR(glm::normalize(r).y, std::cos(rad(30.0)), 1e-6);
+
+    // Peak 1: rings at 0.25, 0.5, 0.75, 1. With energy normalisation at k_e = 512 the Phong peak is
+    // 514 / 34 = 15.1: rings of 5 up to 20.
+    float outer = 0.0f;
+    for (const PlotPolyline& l : plot.lines)
+        if (l.name == "grid" && l.points.size() > 2) outer = std::max(outer, glm::length(l.points.front()));
+    EXPECT_NEAR(outer, 1.0f, 1e-6f);
+    env.normalization = SpecularNormalization::Energy;
+    const Plot energy = lobePlot(env, 512.0f, incidence);
+    float energyOuter = 0.0f;
+    for (const PlotPolyline& l : energy.lines)
+        if (l.name == "grid" && l.points.size() > 2) energyOuter = std::max(energyOuter, glm::length(l.points.front()));
+    EXPECT_NEAR(energyOuter, 20.0f, 1e-4f);
+}
+
+// A k_e = 10000 lobe is 1.35 degrees wide at half height (cos^k_e = 1/2 at 0.67 degrees from R): the
+// dense samples around R resolve it with dozens of points.
+TEST(LobePlot, ANarrowLobeIsResolved) {
+    const std::vector<LobeSample> s = sampleLobe(LightingEnvironment{}, 10000.0f, 45.0f);
+    const int aboveHalf = int(std::count_if(s.begin(), s.end(), [](auto& x) { return x.phong > 0.5f; }));
+    EXPECT_GE(aboveHalf, 30);
+}
+
+namespace {
+// The lecture's forms: R_par = tan^2(t1 - t3) / tan^2(t1 + t3), R_perp = sin^2(t1 - t3) / sin^2(t1 + t3),
+// eta1 sin t1 = eta2 sin t3.
+void lectureFresnel(double theta1, double eta1, double eta2, double& par, double& perp) {
+    const double theta3 = std::asin(eta1 / eta2 * std::sin(theta1));
+    par = std::pow(std::tan(theta1 - theta3) / std::tan(theta1 + theta3), 2.0);
+    perp = std::pow(std::sin(theta1 - theta3) / std::sin(theta1 + theta3), 2.0);
+}
+}  // namespace
+
+TEST(FresnelPlot, CurvesAreTheLecturesFormulas) {
+    for (const auto& [eta1, eta2] : {std::pair{1.0f, 1.5f}, std::pair{1.0f, 2.4f}, std::pair{1.5f, 1.0f}}) {
+        const Plot plot = fresnelPlot(eta1, eta2);
+        const PlotPolyline& par = lineNamed(plot, "R_par");
+        const PlotPolyline& perp = lineNamed(plot, "R_perp");
+        const PlotPolyline& average = lineNamed(plot, "(R_par + R_perp) / 2");
+        const PlotPolyline& schlick = lineNamed(plot, "Schlick");
+        ASSERT_EQ(par.points.size(), schlick.points.size());
+        const double critical = eta1 > eta2 ? std::asin(double(eta2) / double(eta1)) * 180.0 / kPi : 90.0;
+        const double r0 = std::pow((double(eta1) - eta2) / (double(eta1) + eta2), 2.0);
+        for (std::size_t k = 0; k < par.points.size(); ++k) {
+            const double deg = par.points[k].x, t1 = rad(deg);
+            const std::string at = std::to_string(eta1) + " -> " + std::to_string(eta2) + " at " + std::to_string(deg);
+            EXPECT_NEAR(schlick.points[k].y, r0 + (1.0 - r0) * std::pow(1.0 - std::cos(t1), 5.0), 1e-5) << at;
+            if (deg >= critical) {  // total internal reflection
+                EXPECT_EQ(par.points[k].y, 1.0f) << at;
+                EXPECT_EQ(perp.points[k].y, 1.0f) << at;
+                continue;
+            }
+            double p = r0, s = r0;  // normal incidence: both are R0 (the quotients are 0/0 there)
+            if (deg > 0.0) lectureFresnel(t1, eta1, eta2, p, s);
+            // Near grazing and near the critical angle the float evaluation loses digits (1 - cos^2).
+            const double tolerance = deg > 89.0 || critical - deg < 1.0 ? 2e-3 : 2e-5;
+            EXPECT_NEAR(par.points[k].y, p, tolerance) << at;
+            EXPECT_NEAR(perp.points[k].y, s, tolerance) << at;
+            EXPECT_NEAR(average.points[k].y, (p + s) / 2.0, tolerance) << at;
+        }
+    }
+}
+
+TEST(FresnelPlot, NormalIncidenceGivesR0) {
+    const std::vector<FresnelSample> s = sampleFresnel(1.0f, 1.33f);
+    EXPECT_EQ(s.front().angleDeg, 0.0f);
+    const double r0 = std::pow((1.0 - 1.33) / (1.0 + 1.33), 2.0);
+    EXPECT_NEAR(s.front().exact.average, r0, 1e-6);
+    EXPECT_NEAR(s.front().exact.parallel, r0, 1e-6);
+    EXPECT_NEAR(s.front().exact.perpendicular, r0, 1e-6);
+    EXPECT_NEAR(s.front().schlick, r0, 1e-6);
+}
+
+// R_par vanishes at Brewster's angle atan(eta2 / eta1), from either side, and the plot marks it.
+TEST(FresnelPlot, RParIsZeroAtBrewstersAngle) {
+    for (const auto& [eta1, eta2] : {std::pair{1.0f, 1.5f}, std::pair{1.5f, 1.0f}, std::pair{1.0f, 4.0f}}) {
+        const double brewster = std::atan(double(eta2) / double(eta1)) * 180.0 / kPi;
+        const std::vector<FresnelSample> s = sampleFresnel(eta1, eta2);
+        const auto lowest = std::min_element(s.begin(), s.end(), [](auto& a, auto& b) { return a.exact.parallel < b.exact.parallel; });
+        EXPECT_NEAR(lowest->angleDeg, brewster, 1e-4) << eta1 << " -> " << eta2;
+        EXPECT_LT(lowest->exact.parallel, 1e-6f);
+        EXPECT_GT(lowest->exact.perpendicular, 0.01f);  // R_perp does not vanish: reflected light is polarised
+        const Plot plot = fresnelPlot(eta1, eta2);
+        const PlotPolyline& marker = lineNamed(plot, "Brewster");
+        EXPECT_NEAR(marker.points.front().x, brewster, 1e-4);
+    }
+}
+
+// From the denser medium, everything past asin(eta2 / eta1) is reflected; the plot marks that angle.
+// Into the denser medium there is no critical angle and no marker.
+TEST(FresnelPlot, CriticalAngleFromInside) {
+    const double critical = std::asin(1.0 / 1.5) * 180.0 / kPi;  // 41.81 degrees
+    ASSERT_TRUE(criticalAngleDeg(1.5f, 1.0f).has_value());
+    EXPECT_NEAR(*criticalAngleDeg(1.5f, 1.0f), critical, 1e-4);
+    EXPECT_FALSE(criticalAngleDeg(1.0f, 1.5f).has_value());
+    EXPECT_FALSE(criticalAngleDeg(1.5f, 1.5f).has_value());
+
+    const Plot inside = fresnelPlot(1.5f, 1.0f);
+    const PlotPolyline& marker = lineNamed(inside, "critical angle");
+    EXPECT_NEAR(marker.points.front().x, critical, 1e-4);
+    EXPECT_NEAR(marker.points.back().x, critical, 1e-4);
+    EXPECT_TRUE(marker.inLegend);
+    EXPECT_NE(marker.name.find("41.8"), std::string::npos) << marker.name;
+    for (const FresnelSample& s : sampleFresnel(1.5f, 1.0f)) {
+        EXPECT_EQ(s.exact.totalInternal, s.angleDeg >= critical - 1e-4) << s.angleDeg;
+        if (s.angleDeg < critical - 1e-3) {
+            EXPECT_LT(s.exact.average, 1.0f) << s.angleDeg;
+        }
+    }
+    EXPECT_FALSE(hasLineNamed(fresnelPlot(1.0f, 1.5f), "critical angle"));
+}
+
+TEST(ScenePlot, TakesTheScenesParameters) {
+    Scene scene;
+    scene.ior = 1.8f;
+    scene.reflection = ReflectionModel::BlinnPhong;
+    Material m;
+    m.ke = 200.0f;
+    const Plot lobe = scenePlot(PlotKind::Lobe, scene, m, PlotSettings{60.0f, false});
+    EXPECT_NE(lobe.title.find("k_e = 200"), std::string::npos) << lobe.title;
+    EXPECT_NE(lobe.title.find("theta_i = 60 deg"), std::string::npos) << lobe.title;
+    EXPECT_NE(lineNamed(lobe, "Blinn-Phong").name.find("(in use)"), std::string::npos);
+    const Plot outside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, false});
+    EXPECT_NE(outside.title.find("eta_1 = 1.00 -> eta_2 = 1.80"), std::string::npos) << outside.title;
+    const Plot inside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, true});
+    EXPECT_NE(inside.title.find("eta_1 = 1.80 -> eta_2 = 1.00"), std::string::npos) << inside.title;
+    EXPECT_TRUE(hasLineNamed(inside, "critical angle"));
+}
+
+// Every label, header line and legend entry lies inside the image at the sizes --plot allows, and the
+// polar plot keeps its circles round.
+TEST(PlotLayout, EverythingFitsAndCirclesStayRound) {
+    // A font of fixed-width 6-pixel characters, 9 pixels tall (stb_easy_font at scale 1 is close).
+    const MeasureText measure = [](const std::string& t) { return glm::vec2(6.0f * float(t.size()), 9.0f); };
+    LightingEnvironment env;
+    env.normalization = SpecularNormalization::Energy;
+    env.fresnel = FresnelMode::Exact;
+    for (const Plot& plot : {lobePlot(env, 32.0f, 45.0f), fresnelPlot(1.5f, 1.0f)})
+        for (const glm::vec2 size : {glm::vec2(320, 240), glm::vec2(800, 600), glm::vec2(1600, 500)}) {
+            const PlotLayout l = layoutPlot(plot, size, 10.0f, measure);
+            const std::string what = std::string(toString(plot.kind)) + " at " + std::to_string(int(size.x)) + "x" +
+                                     std::to_string(int(size.y));
+            auto inside = [&](glm::vec2 lo, glm::vec2 hi) {
+                return lo.x >= 0.0f && lo.y >= 0.0f && hi.x <= size.x && hi.y <= size.y;
+            };
+            for (const PlotLabel& label : plot.labels) {
+                const glm::vec2 at = l.labelAt(label, measure(label.text));
+                EXPECT_TRUE(inside(at, at + measure(label.text))) << what << ": " << label.text;
+            }
+            for (const PlotLayout::Line& line : l.header)
+                EXPECT_TRUE(inside(line.at, line.at + measure(line.text))) << what << ": " << line.text;
+            for (const PlotLegendEntry& e : l.legend)
+                EXPECT_TRUE(inside(e.swatchFrom, e.textAt + measure(plot.lines[e.line].name))) << what;
+            EXPECT_TRUE(inside(l.areaMin, l.areaMax)) << what;
+            EXPECT_GT(l.areaMax.y - l.areaMin.y, 0.3f * size.y) << what << ": the plot area is squeezed";
+            EXPECT_NEAR(l.toPixels(plot.min).x, l.areaMin.x, 1e-3) << what;
+            EXPECT_NEAR(l.toPixels(plot.max).y, l.areaMin.y, 1e-3) << what;
+            if (plot.equalAspect) {
+                EXPECT_EQ(l.pixelsPerUnit.x, l.pixelsPerUnit.y) << what;
+            }
+        }
+}
+
+TEST(PlotLayout, DashesCoverTheirShareOfTheLine) {
+    const std::vector<glm::vec2> polyline = {{0, 0}, {103, 0}, {103, 47}};  // 150 pixels long
+    const auto dashes = dashPolyline(polyline, 6.0f, 4.0f);
+    float drawn = 0.0f;
+    for (const auto& d : dashes) {
+        float length = 0.0f;
+        for (std::size_t k = 1; k < d.size(); ++k) length += glm::length(d[k] - d[k - 1]);
+        EXPECT_LE(length, 6.0f + 1e-3f);
+        drawn += length;
+    }
+    EXPECT_EQ(dashes.size(), 15u);                // 15 periods of 10 pixels
+    EXPECT_NEAR(drawn, 150.0f * 0.6f, 1e-2f);
+    ASSERT_EQ(dashes[10].size(), 3u);            // the dash over the corner (100..106) bends with it
+    EXPECT_NEAR(dashes[10][1].x, 103.0f, 1e-4f);
+    EXPECT_NEAR(dashes[10][1].y, 0.0f, 1e-4f);
+}
+
+// The PNGs --plot writes, against goldens that were looked at. The rasteriser is plain float code, so
+// the same build reproduces them exactly; the tolerance (the golden tests' defaults) absorbs another
+// compiler's rounding of a few edge pixels. SHADELAB_UPDATE_GOLDENS=1 rewrites them.
+TEST(PlotGolden, LobeAndFresnel) {
+    LightingEnvironment env;
+    const std::pair<std::string, Plot> cases[] = {{"plot_lobe", lobePlot(env, 32.0f, 45.0f)},
+                                                  {"plot_fresnel_inside", fresnelPlot(1.5f, 1.0f)}};
+    for (const auto& [name, plot] : cases) {
+        const Image actual = renderPlotImage(plot, 640, 480);
+        const std::string golden = std::string(SHADELAB_SOURCE_DIR) + "/tests/golden/" + name + ".png";
+        if (std::getenv("SHADELAB_UPDATE_GOLDENS")) {
+            writePng(golden, actual, 9);
+            continue;
+        }
+        const Image expected = readPng(golden);
+        const CompareTolerance tolerance;
+        const CompareResult r = compareImages(actual, expected, tolerance.pixelThreshold);
+        if (!r.matches(tolerance)) {
+            const std::filesystem::path out = SHADELAB_TEST_OUTPUT_DIR;
+            std::filesystem::create_directories(out);
+            writePng((out / (name + ".actual.png")).string(), actual);
+            writePng((out / (name + ".diff.png")).string(), differenceImage(actual, expected, tolerance.pixelThreshold));
+        }
+        EXPECT_TRUE(r.matches(tolerance)) << name << ": " << describe(r, tolerance) << " (actual and diff in "
+                                          << SHADELAB_TEST_OUTPUT_DIR << ")";
+    }
+}
