@@ -1,6 +1,7 @@
 #include "viewer/panel.hpp"
 
 #include "core/camera.hpp"
+#include "viewer/probe_view.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -170,14 +171,21 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles) {
     }
 }
 
-void sectionLights(Scene& scene) {
+void sectionLights(Scene& scene, int& selected) {
     colorEdit("ambient A", scene.ambient);
+    ImGui::TextDisabled("click a light's name to select it (again: none)");
     int remove = -1;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         Light& l = scene.lights[i];
         ImGui::PushID(int(i));
-        const bool open = ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %zu (%s)", i,
-                                            toString(l.type));
+        // The arrow folds the node; a click on the name selects the light (an area light then shows
+        // its samples, and the probe draws only this light's vectors).
+        const bool isSelected = selected == int(i);
+        const ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_OpenOnArrow |
+                                         (isSelected ? ImGuiTreeNodeFlags_Selected : 0);
+        const bool open = ImGui::TreeNodeEx("light", flags, "light %zu (%s)%s", i, toString(l.type),
+                                            isSelected && l.type == LightType::Area ? ": samples shown" : "");
+        if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selected = isSelected ? -1 : int(i);
         if (open) {
             static const char* const kTypes[] = {"point", "directional", "area"};
             combo("type", l.type, kTypes);
@@ -212,7 +220,11 @@ void sectionLights(Scene& scene) {
         }
         ImGui::PopID();
     }
-    if (remove >= 0) scene.lights.erase(scene.lights.begin() + remove);
+    if (remove >= 0) {
+        scene.lights.erase(scene.lights.begin() + remove);
+        if (selected == remove) selected = -1;
+        else if (selected > remove) --selected;
+    }
     ImGui::BeginDisabled(scene.lights.size() >= std::size_t(kMaxLights));
     if (ImGui::Button("add light")) scene.lights.emplace_back();
     ImGui::EndDisabled();
@@ -286,15 +298,18 @@ void sectionKeys() {
         "W        wireframe\n"
         "N        vertex normals   Shift+N face normals\n"
         "L        light markers\n"
+        "click    probe the pixel: N, I, V, R, H and every term\n"
+        "Esc      clear the probe (with none: quit)\n"
         "R        reset camera     F  frame model\n"
         "F12      screenshot of the 3D view\n"
         "Tab      hide / show the panel\n"
-        "Esc, Q   quit");
+        "Q        quit");
 }
 
 }  // namespace
 
-PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area) {
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
+                        const ProbeResult* probe) {
     PanelRequests requests;
     ImGui::SetNextWindowPos(ImVec2(area.x, area.y));
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height));
@@ -312,6 +327,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         if (status.isError) ImGui::PopStyleColor();
         ImGui::Separator();
     }
+    if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
+        requests.clearProbe |= probeSection(scene, *probe);
     if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) sectionShading(scene);
     if (!scene.objects.empty()) {
         settings.selectedObject = std::clamp(settings.selectedObject, 0, int(scene.objects.size()) - 1);
@@ -324,7 +341,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen))
             sectionMesh(object.mesh, object.transform, status.objectTriangles);
     }
-    if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) sectionLights(scene);
+    if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) sectionLights(scene, settings.selectedLight);
     if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen)) sectionShadows(scene.shadows);
     if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) sectionOverlays(settings);
     if (ImGui::CollapsingHeader("Camera")) sectionCamera(scene.camera, requests);

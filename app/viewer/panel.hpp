@@ -3,6 +3,7 @@
 // change shows on the next frame), the compare-pane labels and the HUD. Immediate mode: these functions
 // are called every frame, hold no state of their own, and report button presses as requests that the
 // viewer carries out, so file and GL work never happens inside a widget.
+#include "core/probe.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
@@ -19,6 +20,9 @@ struct ViewSettings {
     bool showHud = true;           // frame time, FPS, triangles, GL renderer
     std::string scenePath;         // the Save / Load field
     int selectedObject = 0;        // whose material, mesh and transform the panel shows
+    // The light selected in the panel (-1: none): an area light shows its samples, and the probe's
+    // arrows show only this light's I, R and H.
+    int selectedLight = -1;
 };
 
 // What the panel shows besides the scene.
@@ -35,6 +39,7 @@ struct PanelStatus {
 struct PanelRequests {
     bool save = false, load = false, screenshot = false;
     bool resetCamera = false, frameModel = false, reloadShaders = false, quit = false;
+    bool clearProbe = false;
 };
 
 // A rectangle in ImGui's coordinates (window screen units, origin top-left).
@@ -42,7 +47,9 @@ struct UiRect {
     float x = 0, y = 0, width = 0, height = 0;
 };
 
-PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area);
+// `probe`: this frame's pixel probe, listed in a "Probe" section; null when none is set.
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
+                        const ProbeResult* probe = nullptr);
 
 // Labels each pane of the 3D view with its shading mode. `view` is the 3D view; `framebufferScale`
 // converts the renderer's pixel panes to ImGui units.

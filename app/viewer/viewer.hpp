@@ -4,6 +4,8 @@
 // all of it; run() loops over frame(), which is the whole per-frame story:
 //   poll -> ImGui frame -> keys/mouse/drops -> panel -> apply requests -> renderer -> ImGui -> swap.
 #include "core/image.hpp"
+#include "core/probe.hpp"
+#include "core/ray_cast.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
@@ -13,8 +15,12 @@
 #include "viewer/panel.hpp"
 #include "viewer/scene_document.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -28,6 +34,8 @@ struct ViewerOptions {
     std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes)
     bool hidePanel = false;           // --hide-panel: start as if Tab had been pressed
     OverlayOptions overlays;          // --overlays: which overlays start switched on
+    std::optional<glm::ivec2> probe;  // --probe X,Y: start with the pixel probe set at this 3D-view pixel
+    int selectedLight = -1;           // --select-light N: start with light N selected in the panel
     bool verbose = false;
 };
 
@@ -59,12 +67,20 @@ private:
     void handleKeys();
     void apply(const PanelRequests& requests);
     void uploadGeometryIfChanged();
-    Image renderView(const FrameLayout& layout, bool capture);
+    Image renderView(const FrameLayout& layout, bool capture, const std::vector<OverlayArrow>& arrows);
     void saveScreenshot(const Image& view);
     void writeLastFrameFiles(const FrameLayout& layout, const Image& view);
     void loadFile(const std::string& path);
     void reloadShaders();
     void setStatus(std::string message, bool isError);
+    // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
+    // the same surface point with the scene as it is then.
+    void setProbe(int x, int y);
+    void evaluateProbe();
+    const SceneRayCaster& rayCaster();
+    // This frame's probe arrows (their labels go on ImGui's list now; renderView draws the arrows),
+    // and the selected light's sample markers switched on.
+    std::vector<OverlayArrow> probeOverlays(const FrameLayout& layout);
 
     ViewerOptions options_;
     GlfwWindow window_;   // before every GL user: the context outlives them
@@ -76,6 +92,17 @@ private:
     ViewSettings settings_;
     PanelStatus status_;
     bool screenshotRequested_ = false;
+    std::optional<ProbeAnchor> probeAnchor_;
+    // The meshes probeAnchor_'s triangle is in, and those caster_ was built from. Weak: a rebuilt
+    // geometry may reuse a freed one's address, an expired pointer cannot be mistaken for it.
+    std::weak_ptr<const SceneGeometry> probeGeometry_;
+    std::optional<ProbeResult> probe_;         // this frame's evaluation of probeAnchor_
+    std::optional<glm::ivec2> pendingProbe_;   // --probe: set on the first frame, once the view has its size
+    // Rebuilt when the geometry or an object's transform changes (what it was built from is kept).
+    std::unique_ptr<SceneRayCaster> caster_;
+    std::weak_ptr<const SceneGeometry> casterGeometry_;
+    std::vector<Transform> casterTransforms_;
+    const SceneRayCaster noTriangles_;         // what probeAnchor() gets when shadows are off (it is not used)
 };
 
 }  // namespace shadelab
