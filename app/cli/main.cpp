@@ -5,6 +5,8 @@
 #include "core/file_io.hpp"
 #include "core/gltf_import.hpp"
 #include "core/image.hpp"
+#include "core/probe.hpp"
+#include "core/ray_cast.hpp"
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
 #include "render/program.hpp"
@@ -42,6 +44,7 @@ int run(const std::vector<std::string>& args) {
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
     Scene scene = sceneFromOptions(options);
+    if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
     // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
     const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
     const ShaderLibrary shaders(shaderDir);
@@ -72,6 +75,18 @@ int run(const std::vector<std::string>& args) {
         if (options.verbose)
             std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
                       << clock.ms() << " ms)\n";
+        return 0;
+    }
+    if (options.output && options.probe) {
+        // The probe needs the CPU geometry after the render, so this path builds it itself rather
+        // than through renderSceneHeadless (which lets go of it once uploaded).
+        auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+        frameIfNeeded(scene, *geometry);
+        report(scene, geometry->gltfInfo, geometry->triangleCount());
+        const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
+                                             options.probe->y);
+        writePng(*options.output, renderHeadless(scene, geometry, shaders, backend));
+        std::cout << probeToJson(scene, probe) << std::endl;
         return 0;
     }
     if (options.output && !options.info && options.benchmarkFrames == 0) {
@@ -124,6 +139,8 @@ int run(const std::vector<std::string>& args) {
         viewer.overlays.lightMarkers |= o == "lights";
     }
     viewer.verbose = options.verbose;
+    if (options.probe) viewer.probe = *options.probe;
+    viewer.selectedLight = options.selectLight.value_or(-1);
     Viewer(std::move(scene), std::move(geometry), viewer).run();
     return 0;
 }

@@ -4,6 +4,8 @@
 #include "core/scene.hpp"
 #include "core/sweep.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +30,9 @@ struct Options {
     std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
     std::optional<float> diffFactor;        // --diff-factor X (1..1000)
     std::vector<Sweep> sweeps;              // --sweep PARAM=V1,V2,... (at most two: columns, rows), with --output
+    // --probe X,Y: with --output, print every term of the formula at that pixel as JSON; in the viewer,
+    // start with the probe set there.
+    std::optional<glm::ivec2> probe;
     int benchmarkFrames = 0;                // --benchmark N
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context
@@ -39,6 +44,7 @@ struct Options {
     std::optional<std::string> saveScene;   // --save-scene FILE.json: the scene as "save scene" writes it
     bool hidePanel = false;                 // --hide-panel: start with the panel hidden (as Tab)
     std::vector<std::string> overlays;      // --overlays a,b: wireframe, vertex-normals, face-normals, lights
+    std::optional<int> selectLight;         // --select-light N: start with light N selected in the panel
     bool verbose = false;
     bool help = false;
     bool version = false;
