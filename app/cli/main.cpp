@@ -6,6 +6,8 @@
 #include "core/gltf_import.hpp"
 #include "core/image.hpp"
 #include "core/plot_image.hpp"
+#include "core/probe.hpp"
+#include "core/ray_cast.hpp"
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
 #include "render/program.hpp"
@@ -53,6 +55,7 @@ int run(const std::vector<std::string>& args) {
         if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
         return 0;
     }
+    if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
     // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
     const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
     const ShaderLibrary shaders(shaderDir);
@@ -83,6 +86,18 @@ int run(const std::vector<std::string>& args) {
         if (options.verbose)
             std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
                       << clock.ms() << " ms)\n";
+        return 0;
+    }
+    if (options.output && options.probe) {
+        // The probe needs the CPU geometry after the render, so this path builds it itself rather
+        // than through renderSceneHeadless (which lets go of it once uploaded).
+        auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+        frameIfNeeded(scene, *geometry);
+        report(scene, geometry->gltfInfo, geometry->triangleCount());
+        const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
+                                             options.probe->y);
+        writePng(*options.output, renderHeadless(scene, geometry, shaders, backend));
+        std::cout << probeToJson(scene, probe) << std::endl;
         return 0;
     }
     if (options.output && !options.info && options.benchmarkFrames == 0) {
@@ -139,6 +154,8 @@ int run(const std::vector<std::string>& args) {
     viewer.plots = plotSettings(options);
     viewer.panelSections = options.panelSections;
     viewer.verbose = options.verbose;
+    if (options.probe) viewer.probe = *options.probe;
+    viewer.selectedLight = options.selectLight.value_or(-1);
     Viewer(std::move(scene), std::move(geometry), viewer).run();
     return 0;
 }

@@ -157,6 +157,15 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (o.backend != "auto" && o.backend != "osmesa" && o.backend != "egl")
                 throw InputError(arg + ": unknown value \"" + o.backend + "\" (expected one of auto, osmesa, egl)");
         }
+        else if (arg == "--probe") {
+            const std::string v = next();
+            const std::size_t comma = v.find(',');
+            if (comma == std::string::npos)
+                throw InputError(arg + ": expected the pixel as X,Y, e.g. 640,360 (got \"" + v + "\")");
+            const int x = parseInt(arg, v.substr(0, comma), 0, kMaxImageSide - 1);  // x first: it is named first
+            o.probe = glm::ivec2(x, parseInt(arg, v.substr(comma + 1), 0, kMaxImageSide - 1));
+        }
+        else if (arg == "--select-light") o.selectLight = parseInt(arg, next(), 0, kMaxLights - 1);
         else if (arg == "--benchmark") o.benchmarkFrames = parseInt(arg, next(), 1, 1000000);
         else if (arg == "--frames") o.frames = parseInt(arg, next(), 1, 100000000);
         else if (arg == "--progressive") o.progressiveStride = parseInt(arg, next(), 1, kMaxAreaSamplesPerSide);
@@ -199,15 +208,18 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw InputError("--save-scene: " + *o.saveScene + ": scene files end in .json");
     if (!o.sweeps.empty() && (!o.output || o.benchmarkFrames))
         throw InputError("--sweep: renders a sheet to a PNG: give --output FILE.png (and no --benchmark)");
+    if (o.probe && (!o.sweeps.empty() || o.benchmarkFrames || o.info))
+        throw InputError(std::string("--probe: probes one pixel of one frame (with --output, or in the viewer); not with ") +
+                         (!o.sweeps.empty() ? "--sweep" : o.benchmarkFrames ? "--benchmark" : "--info"));
     if (o.progressiveStride && o.output)
         throw InputError("--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark");
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
     const bool viewerFlags = o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel ||
-                             !o.overlays.empty() || o.panelSections;
+                             !o.overlays.empty() || o.panelSections || o.selectLight;
     if (viewerFlags && (o.output || o.benchmarkFrames))
         throw InputError(std::string(o.output ? "--output" : "--benchmark") +
-                         ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel, --overlays and "
-                         "--panel-sections are for the viewer, which --output/--benchmark do not open");
+                         ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel, --overlays, "
+                         "--panel-sections and --select-light are for the viewer, which --output/--benchmark do not open");
     if (o.plot) {
         if (!o.output) throw InputError("--plot: writes a PNG: give --output FILE.png");
         if (!o.sweeps.empty() || o.benchmarkFrames)
@@ -258,6 +270,9 @@ Scene sceneFromOptions(const Options& o) {
         if (s.objects.empty()) s.objects.emplace_back();
         s.objects.front().mesh = *o.mesh;
     }
+    if (o.selectLight && *o.selectLight >= int(s.lights.size()))
+        throw InputError("--select-light: light " + std::to_string(*o.selectLight) + " does not exist (the scene has " +
+                         std::to_string(s.lights.size()) + " light(s))");
     return s;
 }
 
@@ -306,6 +321,9 @@ Without --output (or --benchmark) it opens the interactive viewer.
   --incidence DEG         the lobe plot's angle between the incoming light I and N (0..89, default 45)
   --from-inside           the Fresnel plot from inside the material (eta_1 = --ior, eta_2 = 1): total
                           internal reflection past the critical angle
+  --probe X,Y             with --output: also print, as JSON, every term of the formula at pixel X,Y
+                          (top-left origin) the way that pixel's shading mode evaluates it; without
+                          --output: open the viewer with the probe set at X,Y of the 3D view
   --benchmark N           render N frames offscreen per shading mode; print one JSON line per mode
   --progressive S         area lights in the viewer (and --benchmark): a frame evaluates every S-th
                           sample per axis, the view refines over S*S frames (1..16; default: the
@@ -326,6 +344,7 @@ Viewer (the window; keys and mouse are listed in its panel under "Keys"):
   --panel-sections LIST   start with exactly these panel sections open, e.g. plots or shading,material
                           (shading, material, plots, mesh, lights, shadows, overlays, camera, background,
                           file, keys); --incidence and --from-inside set the Plots section's controls
+  --select-light N        start with light N selected in the panel (an area light shows its samples)
   -v, --verbose           say what was loaded and written
   -h, --help              this text
   --version               print the version

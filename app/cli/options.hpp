@@ -5,6 +5,8 @@
 #include "core/scene.hpp"
 #include "core/sweep.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +34,9 @@ struct Options {
     std::optional<PlotKind> plot;           // --plot lobe|fresnel: write that plot (no GL) to --output
     std::optional<float> incidenceDeg;      // --incidence DEG (0..89): the lobe plot's incoming direction
     bool fromInside = false;                // --from-inside: Fresnel plot with eta1 = ior, eta2 = 1
+    // --probe X,Y: with --output, print every term of the formula at that pixel as JSON; in the viewer,
+    // start with the probe set there.
+    std::optional<glm::ivec2> probe;
     int benchmarkFrames = 0;                // --benchmark N
     int progressiveStride = 0;              // --progressive S (1..16): area-light samples over S*S frames (viewer, benchmark)
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
@@ -45,6 +50,7 @@ struct Options {
     bool hidePanel = false;                 // --hide-panel: start with the panel hidden (as Tab)
     std::vector<std::string> overlays;      // --overlays a,b: wireframe, vertex-normals, face-normals, lights
     std::optional<std::vector<std::string>> panelSections;  // --panel-sections a,b: open exactly these panel sections
+    std::optional<int> selectLight;         // --select-light N: start with light N selected in the panel
     bool verbose = false;
     bool help = false;
     bool version = false;

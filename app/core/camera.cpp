@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -42,6 +43,24 @@ std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int he
         panes.push_back(Pane{x0, 0, x1 - x0, height, modes[i], false});
     }
     return panes;
+}
+
+glm::vec3 pixelDirectionWorld(const Camera& c, const Pane& pane, float px, float py) {
+    const float aspect = float(pane.width) / float(std::max(pane.height, 1));
+    const glm::mat4 worldFromClip = glm::inverse(clipFromView(c, aspect) * viewFromWorld(c));
+    const float ndcX = 2.0f * (px - float(pane.x)) / float(pane.width) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (py - float(pane.y)) / float(pane.height);
+    glm::vec4 nearWorld = worldFromClip * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+    glm::vec4 farWorld = worldFromClip * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    return glm::normalize(glm::vec3(farWorld) / farWorld.w - glm::vec3(nearWorld) / nearWorld.w);
+}
+
+glm::vec3 projectToImage(const Camera& c, const Pane& pane, const glm::vec3& posWorld) {
+    const float aspect = float(pane.width) / float(std::max(pane.height, 1));
+    const glm::vec4 clip = clipFromView(c, aspect) * viewFromWorld(c) * glm::vec4(posWorld, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {float(pane.x) + (ndc.x + 1.0f) * 0.5f * float(pane.width),
+            float(pane.y) + (1.0f - ndc.y) * 0.5f * float(pane.height), clip.w};
 }
 
 void frameBounds(Scene& scene, const BoundingSphere& b, float paneAspect) {

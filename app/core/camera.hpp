@@ -30,6 +30,13 @@ struct Pane {
 std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height,
                               const DiffSettings& diff = DiffSettings{});
 
+// The unit direction (world space) from the eye through image point (px, py) of a pane; pixel
+// centres are at +0.5, y runs down. The inverse of the renderer's projection for that pane.
+glm::vec3 pixelDirectionWorld(const Camera& camera, const Pane& pane, float px, float py);
+// Where a world point lands in the image: continuous pixel coordinates (y down) in x, y, and the
+// clip-space w in z (positive in front of the eye).
+glm::vec3 projectToImage(const Camera& camera, const Pane& pane, const glm::vec3& posWorld);
+
 // Places the camera so a bounding sphere fills most of a pane of the given aspect, looking from the
 // default camera's direction; when the scene gave no lights, moves the default light with it.
 void frameBounds(Scene& scene, const BoundingSphere& bounds, float paneAspect);

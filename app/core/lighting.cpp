@@ -192,7 +192,7 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
         }
     }
     for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
-    glm::vec3 shown(0.0f);
+    glm::vec3& shown = t.shown;
     switch (env.show.term) {
     case ShowTerm::All: shown = t.ambient + t.diffuse + t.specular; break;
     case ShowTerm::Ambient: shown = t.ambient; break;

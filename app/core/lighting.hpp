@@ -62,7 +62,8 @@ struct ShadingTerms {
     glm::vec3 ambient{0.0f};
     glm::vec3 diffuse{0.0f};
     glm::vec3 specular{0.0f};
-    glm::vec3 total{0.0f};            // clamp(ambient + diffuse + specular, 0, 1) with show = all
+    glm::vec3 shown{0.0f};            // what `show` selects before clamping: ambient + diffuse + specular with show = all
+    glm::vec3 total{0.0f};            // clamp(shown, 0, 1)
     std::vector<LightShare> lights;   // per light, in the order of LightingEnvironment::lights
 };
 

@@ -8,8 +8,10 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -124,8 +126,9 @@ const OverlayRenderer::Lines& OverlayRenderer::lines(std::size_t object, LineKin
     return l;
 }
 
-void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options) {
-    if (!options.any()) return;
+void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options,
+                             const std::vector<OverlayArrow>& arrows) {
+    if (!options.any() && arrows.empty()) return;
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
     const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
 
@@ -195,6 +198,10 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
             }
         }
         if (options.lightMarkers) drawLights(scene, GLintptr(identityOffset));
+        const int marked = options.sampleMarkersLight;
+        if (marked >= 0 && std::size_t(marked) < scene.lights.size() && scene.lights[std::size_t(marked)].type == LightType::Area)
+            drawAreaSamples(scene, scene.lights[std::size_t(marked)], GLintptr(identityOffset));
+        if (!arrows.empty()) drawArrows(scene, pane, int(p), arrows, GLintptr(identityOffset));
     }
     glBindVertexArray(0);
     glDepthMask(GL_TRUE);
@@ -253,17 +260,115 @@ void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffs
         const glm::vec3 c = peak > 1e-3f ? light.color / peak : glm::vec3(1.0f);
         draws.emplace_back(first, glm::vec4(c, 1.0f));
     }
-    if (draws.empty()) return;
-    upload(lightLines_.vao, lightLines_.vertices, data, GL_STREAM_DRAW);
+    drawWorldLines(data, draws, identityObjectOffset);
+}
+
+void OverlayRenderer::drawWorldLines(const std::vector<float>& data, const std::vector<std::pair<GLint, glm::vec4>>& runs,
+                                     GLintptr identityObjectOffset) {
+    if (runs.empty()) return;
+    upload(worldLines_.vao, worldLines_.vertices, data, GL_STREAM_DRAW);
     glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(), identityObjectOffset,
                       sizeof(gpu::ObjectBlock));
     glUniform1f(normalLengthLoc_, 0.0f);
-    glBindVertexArray(lightLines_.vao.get());
-    for (std::size_t d = 0; d < draws.size(); ++d) {
-        const GLint end = d + 1 < draws.size() ? draws[d + 1].first : GLint(data.size() / kFloatsPerVertex);
-        glUniform4fv(colorLoc_, 1, glm::value_ptr(draws[d].second));
-        glDrawArrays(GL_LINES, draws[d].first, end - draws[d].first);
+    glBindVertexArray(worldLines_.vao.get());
+    for (std::size_t d = 0; d < runs.size(); ++d) {
+        const GLint end = d + 1 < runs.size() ? runs[d + 1].first : GLint(data.size() / kFloatsPerVertex);
+        glUniform4fv(colorLoc_, 1, glm::value_ptr(runs[d].second));
+        glDrawArrays(GL_LINES, runs[d].first, end - runs[d].first);
     }
+}
+
+void OverlayRenderer::drawAreaSamples(const Scene& scene, const Light& light, GLintptr identityObjectOffset) {
+    // The rectangle, its nx x ny stratification cells (faint), and a small square with a cross at each
+    // sample position: areaSamplePosition(), the positions the shaders light with, so the jitter inside
+    // each cell is what the picture uses.
+    std::vector<float> data;
+    std::vector<std::pair<GLint, glm::vec4>> runs;
+    const AreaFrame f = areaFrame(light);
+    const glm::vec3 uUnit = glm::normalize(f.u), vUnit = glm::normalize(f.v);
+    const glm::vec3 origin = light.position - 0.5f * f.u - 0.5f * f.v;  // corner (a, b) = (-0.5, -0.5)
+    const float peak = std::max({light.color.r, light.color.g, light.color.b});
+    const glm::vec3 color = peak > 1e-3f ? light.color / peak : glm::vec3(1.0f);
+    runs.emplace_back(0, glm::vec4(color, 0.35f));
+    for (int i = 1; i < light.samples.x; ++i) {
+        const glm::vec3 p = origin + float(i) / float(light.samples.x) * f.u;
+        pushVertex(data, p);
+        pushVertex(data, p + f.v);
+    }
+    for (int j = 1; j < light.samples.y; ++j) {
+        const glm::vec3 p = origin + float(j) / float(light.samples.y) * f.v;
+        pushVertex(data, p);
+        pushVertex(data, p + f.u);
+    }
+    runs.emplace_back(GLint(data.size() / kFloatsPerVertex), glm::vec4(color, 1.0f));
+    const glm::vec3 corners[4] = {origin, origin + f.u, origin + f.u + f.v, origin + f.v};
+    for (int k = 0; k < 4; ++k) {
+        pushVertex(data, corners[k]);
+        pushVertex(data, corners[(k + 1) % 4]);
+    }
+    // Squares about 12 pixels across at the light's distance (at 600 pixels of height and 45 degrees),
+    // but never more than 40% of a cell, so neighbours stay apart.
+    const float cell = std::min(light.size.x / float(light.samples.x), light.size.y / float(light.samples.y));
+    const float half = std::min(0.008f * glm::length(scene.camera.eye - light.position), 0.2f * cell);
+    for (int j = 0; j < light.samples.y; ++j)
+        for (int i = 0; i < light.samples.x; ++i) {
+            const glm::vec3 p = areaSamplePosition(light, i, j);
+            const glm::vec3 c[4] = {p - half * uUnit - half * vUnit, p + half * uUnit - half * vUnit,
+                                    p + half * uUnit + half * vUnit, p - half * uUnit + half * vUnit};
+            for (int k = 0; k < 4; ++k) {
+                pushVertex(data, c[k]);
+                pushVertex(data, c[(k + 1) % 4]);
+            }
+            pushVertex(data, c[0]);
+            pushVertex(data, c[2]);
+            pushVertex(data, c[1]);
+            pushVertex(data, c[3]);
+        }
+    drawWorldLines(data, runs, identityObjectOffset);
+}
+
+void OverlayRenderer::drawArrows(const Scene& scene, const Pane& pane, int paneIndex,
+                                 const std::vector<OverlayArrow>& arrows, GLintptr identityObjectOffset) {
+    std::vector<float> data;
+    std::vector<std::pair<GLint, glm::vec4>> runs;
+    const Camera& cam = scene.camera;
+    // A pixel's world size per unit of distance from the eye, in this pane.
+    const float pixelPerDistance = 2.0f * std::tan(glm::radians(cam.fovYDeg) * 0.5f) / float(std::max(pane.height, 1));
+    for (const OverlayArrow& a : arrows) {
+        if (a.pane >= 0 && a.pane != paneIndex) continue;
+        runs.emplace_back(GLint(data.size() / kFloatsPerVertex), a.color);
+        const float pixel = pixelPerDistance * std::max(glm::length(cam.eye - a.fromWorld), 1e-3f);
+        const glm::vec3 d = a.toWorld - a.fromWorld;
+        const float length = glm::length(d);
+        if (length < 1e-6f) {  // a marker: a three-axis cross ~10 pixels across
+            for (int axis = 0; axis < 3; ++axis) {
+                glm::vec3 offset(0.0f);
+                offset[axis] = 5.0f * pixel;
+                pushVertex(data, a.fromWorld - offset);
+                pushVertex(data, a.fromWorld + offset);
+            }
+            continue;
+        }
+        const glm::vec3 dir = d / length;
+        // `side` is across the arrow as seen from the eye; `lift` completes the frame.
+        glm::vec3 side = glm::cross(dir, cam.eye - a.fromWorld);
+        if (glm::length(side) < 1e-6f) side = glm::cross(dir, std::fabs(dir.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0));
+        side = glm::normalize(side);
+        const glm::vec3 lift = glm::cross(side, dir);
+        // Core-profile lines are one pixel wide: three side by side make a shaft that reads on a projector.
+        for (float o : {-1.0f, 0.0f, 1.0f}) {
+            pushVertex(data, a.fromWorld + o * pixel * side);
+            pushVertex(data, a.toWorld + o * pixel * side);
+        }
+        // The head: four lines from the tip back to a ring around the shaft.
+        const float head = std::min(0.25f * length, 16.0f * pixel);
+        const glm::vec3 base = a.toWorld - head * dir;
+        for (const glm::vec3& across : {side, -side, lift, -lift}) {
+            pushVertex(data, a.toWorld);
+            pushVertex(data, base + 0.45f * head * across);
+        }
+    }
+    drawWorldLines(data, runs, identityObjectOffset);
 }
 
 }  // namespace shadelab

@@ -9,8 +9,11 @@
 #include "render/renderer.hpp"
 #include "render/shader_library.hpp"
 
+#include <glm/vec4.hpp>
+
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace shadelab {
@@ -22,7 +25,19 @@ struct OverlayOptions {
     bool faceNormals = false;
     bool lightMarkers = false;
     float normalScale = 0.12f;  // normal line length as a share of each object's bounding radius
-    bool any() const { return wireframe || vertexNormals || faceNormals || lightMarkers; }
+    // An area light (index into Scene::lights; -1: none) whose rectangle, stratification cells and
+    // nx x ny sample positions are marked: the light selected in the viewer's panel.
+    int sampleMarkersLight = -1;
+    bool any() const { return wireframe || vertexNormals || faceNormals || lightMarkers || sampleMarkersLight >= 0; }
+};
+
+// An arrow in world space (the pixel probe's N, I, V, R, H), drawn with a head at `toWorld`. A zero
+// length arrow is drawn as a small cross: a marker at a point.
+struct OverlayArrow {
+    glm::vec3 fromWorld{0.0f};
+    glm::vec3 toWorld{0.0f};
+    glm::vec4 color{1.0f};  // linear RGB and alpha
+    int pane = -1;          // index into the layout's panes: drawn only there; -1: in every pane
 };
 
 class OverlayRenderer {
@@ -33,9 +48,10 @@ public:
 
     // Line buffers are built lazily, per object and kind, the first time an overlay needs them.
     void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
-    // Draws the enabled overlays into every pane of the scene's layout. Call right after
-    // Renderer::render() on the same target, before anything clears its depth buffer.
-    void render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options);
+    // Draws the enabled overlays and the arrows into every pane of the scene's layout. Call right
+    // after Renderer::render() on the same target, before anything clears its depth buffer.
+    void render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options,
+                const std::vector<OverlayArrow>& arrows = {});
 
 private:
     enum LineKind { Edges, VertexNormals, FaceNormals, kLineKinds };
@@ -45,14 +61,20 @@ private:
         GLsizei vertexCount = 0;
     };
     const Lines& lines(std::size_t object, LineKind kind);
+    // Lines given in world space (light markers, sample markers, arrows), one colour per run.
+    void drawWorldLines(const std::vector<float>& data, const std::vector<std::pair<GLint, glm::vec4>>& runs,
+                        GLintptr identityObjectOffset);
     void drawLights(const Scene& scene, GLintptr identityObjectOffset);
+    void drawAreaSamples(const Scene& scene, const Light& light, GLintptr identityObjectOffset);
+    void drawArrows(const Scene& scene, const Pane& pane, int paneIndex, const std::vector<OverlayArrow>& arrows,
+                    GLintptr identityObjectOffset);
 
     gl::Program program_;
     GLint normalLengthLoc_ = -1, depthBiasLoc_ = -1, colorLoc_ = -1;
     std::shared_ptr<const SceneGeometry> geometry_;
     std::vector<std::array<Lines, kLineKinds>> lines_;  // per object
     std::vector<float> objectRadius_;                   // per object, object space
-    Lines lightLines_;                                  // rebuilt every frame (a few dozen vertices)
+    Lines worldLines_;                                  // rebuilt every draw (a few hundred vertices at most)
     gl::Buffer uniforms_;
     GLint uniformAlignment_ = 256;
 };

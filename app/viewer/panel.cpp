@@ -3,6 +3,7 @@
 #include "core/camera.hpp"
 #include "viewer/panel_sections.hpp"
 #include "viewer/plot_view.hpp"
+#include "viewer/probe_view.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -189,14 +190,21 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles) {
     }
 }
 
-void sectionLights(Scene& scene) {
+void sectionLights(Scene& scene, int& selected) {
     colorEdit("ambient A", scene.ambient);
+    ImGui::TextDisabled("click a light's name to select it (again: none)");
     int remove = -1;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         Light& l = scene.lights[i];
         ImGui::PushID(int(i));
-        const bool open = ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %zu (%s)", i,
-                                            toString(l.type));
+        // The arrow folds the node; a click on the name selects the light (an area light then shows
+        // its samples, and the probe draws only this light's vectors).
+        const bool isSelected = selected == int(i);
+        const ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_OpenOnArrow |
+                                         (isSelected ? ImGuiTreeNodeFlags_Selected : 0);
+        const bool open = ImGui::TreeNodeEx("light", flags, "light %zu (%s)%s", i, toString(l.type),
+                                            isSelected && l.type == LightType::Area ? ": samples shown" : "");
+        if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selected = isSelected ? -1 : int(i);
         if (open) {
             static const char* const kTypes[] = {"point", "directional", "area"};
             combo("type", l.type, kTypes);
@@ -231,7 +239,11 @@ void sectionLights(Scene& scene) {
         }
         ImGui::PopID();
     }
-    if (remove >= 0) scene.lights.erase(scene.lights.begin() + remove);
+    if (remove >= 0) {
+        scene.lights.erase(scene.lights.begin() + remove);
+        if (selected == remove) selected = -1;
+        else if (selected > remove) --selected;
+    }
     ImGui::BeginDisabled(scene.lights.size() >= std::size_t(kMaxLights));
     if (ImGui::Button("add light")) scene.lights.emplace_back();
     ImGui::EndDisabled();
@@ -305,15 +317,18 @@ void sectionKeys() {
         "W        wireframe\n"
         "N        vertex normals   Shift+N face normals\n"
         "L        light markers\n"
+        "click    probe the pixel: N, I, V, R, H and every term\n"
+        "Esc      clear the probe (with none: quit)\n"
         "R        reset camera     F  frame model\n"
         "F12      screenshot of the 3D view\n"
         "Tab      hide / show the panel\n"
-        "Esc, Q   quit");
+        "Q        quit");
 }
 
 }  // namespace
 
-PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area) {
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
+                        const ProbeResult* probe) {
     PanelRequests requests;
     ImGui::SetNextWindowPos(ImVec2(area.x, area.y));
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height));
@@ -331,6 +346,9 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         if (status.isError) ImGui::PopStyleColor();
         ImGui::Separator();
     }
+    // The probe's terms come first: a click on the view is a question the panel answers at once.
+    if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
+        requests.clearProbe |= probeSection(scene, *probe);
     // A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
     auto section = [&](const char* title, const char* name, bool defaultOpen) {
         if (settings.startSections) {
@@ -351,7 +369,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         sectionPlots(scene, object ? object->material : Material{}, settings.plots);
     if (object && section("Mesh", kPanelSections[3], true))
         sectionMesh(object->mesh, object->transform, status.objectTriangles);
-    if (section("Lights", kPanelSections[4], true)) sectionLights(scene);
+    if (section("Lights", kPanelSections[4], true)) sectionLights(scene, settings.selectedLight);
     if (section("Shadows", kPanelSections[5], true)) sectionShadows(scene.shadows);
     if (section("Overlays", kPanelSections[6], true)) sectionOverlays(settings);
     if (section("Camera", kPanelSections[7], false)) sectionCamera(scene.camera, requests);

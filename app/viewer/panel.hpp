@@ -4,6 +4,7 @@
 // are called every frame, hold no state of their own, and report button presses as requests that the
 // viewer carries out, so file and GL work never happens inside a widget.
 #include "core/plot.hpp"
+#include "core/probe.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
@@ -25,6 +26,9 @@ struct ViewSettings {
     PlotSettings plots;            // the Plots section's incidence angle and side of the surface
     // --panel-sections: on the first frame, exactly these sections (kPanelSections names) are opened.
     std::optional<std::vector<std::string>> startSections;
+    // The light selected in the panel (-1: none): an area light shows its samples, and the probe's
+    // arrows show only this light's I, R and H.
+    int selectedLight = -1;
 };
 
 // What the panel shows besides the scene.
@@ -42,6 +46,7 @@ struct PanelStatus {
 struct PanelRequests {
     bool save = false, load = false, screenshot = false;
     bool resetCamera = false, frameModel = false, reloadShaders = false, quit = false;
+    bool clearProbe = false;
 };
 
 // A rectangle in ImGui's coordinates (window screen units, origin top-left).
@@ -49,7 +54,9 @@ struct UiRect {
     float x = 0, y = 0, width = 0, height = 0;
 };
 
-PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area);
+// `probe`: this frame's pixel probe, listed in a "Probe" section; null when none is set.
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
+                        const ProbeResult* probe = nullptr);
 
 // Labels each pane of the 3D view with its shading mode. `view` is the 3D view; `framebufferScale`
 // converts the renderer's pixel panes to ImGui units.

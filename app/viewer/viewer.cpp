@@ -5,6 +5,7 @@
 #include "core/image.hpp"
 #include "core/scene_json.hpp"
 #include "viewer/orbit.hpp"
+#include "viewer/probe_view.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -58,6 +59,10 @@ std::string timestampedName() {
     return std::string(name) + suffix;
 }
 
+bool sameTransform(const Transform& a, const Transform& b) {
+    return a.translation == b.translation && a.rotationDeg == b.rotationDeg && a.scale == b.scale;
+}
+
 // The default framebuffer's alpha is whatever blending left there; a screenshot is opaque.
 Image opaque(Image image) {
     for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
@@ -78,6 +83,8 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     settings_.overlays = options_.overlays;
     settings_.plots = options_.plots;
     settings_.startSections = options_.panelSections;
+    settings_.selectedLight = options_.selectedLight;
+    pendingProbe_ = options_.probe;
     settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
     status_.glRenderer = renderer_->glRenderer();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
@@ -116,15 +123,19 @@ bool Viewer::frame(bool last) {
     const FrameLayout l = layout();
     document_.scene().width = std::max(l.viewWidth, 1);   // the scene's size is the 3D view's, so a
     document_.scene().height = std::max(l.framebufferHeight, 1);  // saved scene renders this image
+    if (pendingProbe_) setProbe(pendingProbe_->x, pendingProbe_->y), pendingProbe_.reset();
     handleInput(l);
-    const PanelRequests requests = settings_.showPanel ? drawPanel(document_.scene(), settings_, status_, l.panel)
+    evaluateProbe();
+    const PanelRequests requests = settings_.showPanel ? drawPanel(document_.scene(), settings_, status_, l.panel,
+                                                                   probe_ ? &*probe_ : nullptr)
                                                        : PanelRequests{};
     apply(requests);
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
     if (settings_.paneLabels) drawPaneLabels(document_.scene(), l.view, l.scale);
+    const std::vector<OverlayArrow> arrows = probeOverlays(l);
     const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
-    const Image view = renderView(l, captureView, last);
+    const Image view = renderView(l, captureView, last, arrows);
     if (settings_.showHud && settings_.showPanel) drawHud(status_, l.view);  // after: it shows this frame's pass
     imgui_.render();
     if (screenshotRequested_) saveScreenshot(view);
@@ -155,6 +166,12 @@ void Viewer::handleInput(const FrameLayout& l) {
     // Mouse: ImGui's view of it, so a drag that starts on the panel moves a slider, not the camera.
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
+    // A click (press and release without a drag) probes the pixel it was pressed on.
+    const float threshold = io.MouseDragThreshold;
+    if (io.MouseReleased[0] && io.MouseDragMaxDistanceSqr[0] < threshold * threshold) {
+        const int x = int(std::floor(io.MouseClickedPos[0].x * l.scale)), y = int(std::floor(io.MouseClickedPos[0].y * l.scale));
+        if (x >= 0 && x < l.viewWidth && y >= 0 && y < l.framebufferHeight) setProbe(x, y);
+    }
     Camera& camera = document_.scene().camera;
     if (io.MouseDown[0]) orbitCamera(camera, -io.MouseDelta.x * kOrbitRadPerUnit, io.MouseDelta.y * kOrbitRadPerUnit);
     if (io.MouseDown[1] || io.MouseDown[2]) panCamera(camera, io.MouseDelta.x, io.MouseDelta.y, l.view.height);
@@ -188,7 +205,11 @@ void Viewer::handleKeys() {
     }
     // ImGui 1.86 indexes keys by the backend's key codes (GLFW's).
     if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) settings_.showPanel = !settings_.showPanel;
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) window_.requestClose();
+    // Esc clears the probe first; with none set it quits.
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
+        if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
+        else window_.requestClose();
+    }
     if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) screenshotRequested_ = true;
     if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) reloadShaders();
 }
@@ -200,6 +221,7 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.load) loadFile(settings_.scenePath);
     if (r.reloadShaders) reloadShaders();
     if (r.quit) window_.requestClose();
+    if (r.clearProbe) probeAnchor_.reset(), probe_.reset();
     if (r.save) {
         try {
             document_.save(settings_.scenePath);
@@ -248,12 +270,12 @@ void Viewer::uploadGeometryIfChanged() {
 // Draws the scene and the overlays into the 3D view. With `capture`, returns the view as drawn, read
 // before ImGui adds labels or panel (what F12 and --screenshot-view save); otherwise an empty image.
 // A capture or the last frame completes a progressive image first: a file never holds a partial one.
-Image Viewer::renderView(const FrameLayout& l, bool capture, bool last) {
+Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const std::vector<OverlayArrow>& arrows) {
     if (l.viewWidth <= 0 || l.framebufferHeight <= 0) return {};  // minimised
     const RenderTarget view{0, l.viewWidth, l.framebufferHeight};
     try {
         renderScene(view, capture || last);
-        overlays_->render(document_.scene(), view, settings_.overlays);
+        overlays_->render(document_.scene(), view, settings_.overlays, arrows);
         if (capture) return opaque(readPixels(view));
     } catch (const std::exception& e) {
         setStatus(e.what(), true);
@@ -358,6 +380,62 @@ void Viewer::reloadShaders() {
     } catch (const std::exception& e) {
         setStatus(std::string("shaders not reloaded, the previous ones stay:\n") + e.what(), true);
     }
+}
+
+const SceneRayCaster& Viewer::rayCaster() {
+    const Scene& scene = document_.scene();
+    const auto& geometry = document_.geometry();
+    bool same = caster_ && casterGeometry_.lock() == geometry && casterTransforms_.size() == scene.objects.size();
+    for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
+        same = sameTransform(casterTransforms_[o], scene.objects[o].transform);
+    if (!same) {
+        caster_ = geometry ? std::make_unique<SceneRayCaster>(scene, *geometry) : std::make_unique<SceneRayCaster>();
+        casterGeometry_ = geometry;
+        casterTransforms_.clear();
+        for (const SceneObject& o : scene.objects) casterTransforms_.push_back(o.transform);
+    }
+    return *caster_;
+}
+
+void Viewer::setProbe(int x, int y) {
+    const Scene& scene = document_.scene();
+    if (!document_.geometry() || x < 0 || y < 0 || x >= scene.width || y >= scene.height) {
+        setStatus("probe: pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
+                      std::to_string(scene.width) + "x" + std::to_string(scene.height) + " view",
+                  true);
+        return;
+    }
+    const ProbeResult r = probePixel(scene, *document_.geometry(), rayCaster(), x, y);
+    if (r.miss) {
+        setStatus("probe: no surface at pixel " + std::to_string(x) + "," + std::to_string(y) + " (background)", false);
+        return;
+    }
+    probeAnchor_ = r.anchor;
+    probeGeometry_ = document_.geometry();
+    setStatus("probe at pixel " + std::to_string(x) + "," + std::to_string(y) + " (Esc clears it)", false);
+}
+
+void Viewer::evaluateProbe() {
+    probe_.reset();
+    const auto& geometry = document_.geometry();
+    if (probeAnchor_ && geometry != probeGeometry_.lock()) probeAnchor_.reset();  // its triangle was in the old meshes
+    if (!probeAnchor_ || !geometry || !validAnchor(document_.scene(), *geometry, *probeAnchor_)) return;
+    // The ray caster is only needed for occlusion: without shadows, dragging a transform must not
+    // rebuild it every frame.
+    const bool shadows = document_.scene().shadows.enabled;
+    probe_ = probeAnchor(document_.scene(), *geometry, shadows ? rayCaster() : noTriangles_, *probeAnchor_);
+}
+
+std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l) {
+    const Scene& scene = document_.scene();
+    if (settings_.selectedLight >= int(scene.lights.size())) settings_.selectedLight = -1;  // fewer lights now
+    settings_.overlays.sampleMarkersLight = settings_.selectedLight;
+    std::vector<OverlayArrow> arrows;
+    if (!probe_) return arrows;
+    const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_, settings_.selectedLight);
+    drawProbeLabels(scene, labelled, l.view, l.scale);
+    for (const ProbeArrow& a : labelled) arrows.push_back(a.arrow);
+    return arrows;
 }
 
 void Viewer::setStatus(std::string message, bool isError) {

@@ -4,6 +4,8 @@
 // all of it; run() loops over frame(), which is the whole per-frame story:
 //   poll -> ImGui frame -> keys/mouse/drops -> panel -> apply requests -> renderer -> ImGui -> swap.
 #include "core/image.hpp"
+#include "core/probe.hpp"
+#include "core/ray_cast.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
@@ -14,6 +16,8 @@
 #include "viewer/scene_document.hpp"
 
 #include <chrono>
+#include <glm/vec2.hpp>
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,6 +40,8 @@ struct ViewerOptions {
     int progressiveStride = 0;
     PlotSettings plots;               // --incidence, --from-inside: the Plots section's starting controls
     std::optional<std::vector<std::string>> panelSections;  // --panel-sections: exactly these open at start
+    std::optional<glm::ivec2> probe;  // --probe X,Y: start with the pixel probe set at this 3D-view pixel
+    int selectedLight = -1;           // --select-light N: start with light N selected in the panel
     bool verbose = false;
 };
 
@@ -67,13 +73,21 @@ private:
     void handleKeys();
     void apply(const PanelRequests& requests);
     void uploadGeometryIfChanged();
-    Image renderView(const FrameLayout& layout, bool capture, bool last);
+    Image renderView(const FrameLayout& layout, bool capture, bool last, const std::vector<OverlayArrow>& arrows);
     void renderScene(const RenderTarget& view, bool complete);
     void saveScreenshot(const Image& view);
     void writeLastFrameFiles(const FrameLayout& layout, const Image& view);
     void loadFile(const std::string& path);
     void reloadShaders();
     void setStatus(std::string message, bool isError);
+    // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
+    // the same surface point with the scene as it is then.
+    void setProbe(int x, int y);
+    void evaluateProbe();
+    const SceneRayCaster& rayCaster();
+    // This frame's probe arrows (their labels go on ImGui's list now; renderView draws the arrows),
+    // and the selected light's sample markers switched on.
+    std::vector<OverlayArrow> probeOverlays(const FrameLayout& layout);
 
     ViewerOptions options_;
     GlfwWindow window_;   // before every GL user: the context outlives them
@@ -92,6 +106,17 @@ private:
     bool passDrawnLastFrame_ = false;
     bool progressiveComplete_ = false;
     std::chrono::steady_clock::time_point lastFrameStart_;
+    std::optional<ProbeAnchor> probeAnchor_;
+    // The meshes probeAnchor_'s triangle is in, and those caster_ was built from. Weak: a rebuilt
+    // geometry may reuse a freed one's address, an expired pointer cannot be mistaken for it.
+    std::weak_ptr<const SceneGeometry> probeGeometry_;
+    std::optional<ProbeResult> probe_;         // this frame's evaluation of probeAnchor_
+    std::optional<glm::ivec2> pendingProbe_;   // --probe: set on the first frame, once the view has its size
+    // Rebuilt when the geometry or an object's transform changes (what it was built from is kept).
+    std::unique_ptr<SceneRayCaster> caster_;
+    std::weak_ptr<const SceneGeometry> casterGeometry_;
+    std::vector<Transform> casterTransforms_;
+    const SceneRayCaster noTriangles_;         // what probeAnchor() gets when shadows are off (it is not used)
 };
 
 }  // namespace shadelab

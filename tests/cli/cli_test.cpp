@@ -299,6 +299,28 @@ TEST_F(Cli, HelpAndVersion) {
     EXPECT_EQ(version.out.rfind("shadelab ", 0), 0u);
 }
 
+// --probe with --output: the PNG and, on stdout, the JSON of that pixel, whose 8-bit total is the
+// written pixel (phong: 1/255 for GPU and CPU rounding the same formula differently; the background
+// exactly).
+TEST_F(Cli, ProbePrintsThePixelItWrote) {
+    const RunResult r = run({"--layout", "compare", "--size", "240x80", "--probe", "200,35", "--output", path("p.png")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image img = readPng(path("p.png"));
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("mode"), "phong");  // the third pane
+    EXPECT_EQ(j.at("miss"), false);
+    EXPECT_EQ(j.at("evaluations").size(), 1u);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_LE(std::abs(j.at("output_8bit")[std::size_t(k)].get<int>() - int(img.pixel(200, 35)[k])), 1) << r.out;
+
+    const RunResult miss = run({"--size", "240x80", "--probe", "0,0", "--output", path("m.png")});
+    ASSERT_EQ(miss.exitCode, 0) << miss.err;
+    const auto m = nlohmann::json::parse(miss.out);
+    EXPECT_EQ(m.at("miss"), true);
+    const std::uint8_t* corner = readPng(path("m.png")).pixel(0, 0);
+    EXPECT_EQ(m.at("output_8bit"), nlohmann::json::array({corner[0], corner[1], corner[2]}));
+}
+
 // A real model made by others, from ../shared (skipped where the folder is absent).
 TEST_F(Cli, RendersASharedGltfModel) {
     const fs::path box = fs::path(SHADELAB_SHARED_DIR) / "assets/gltf/sample-assets/Box/glTF-Binary/Box.glb";
@@ -310,4 +332,12 @@ TEST_F(Cli, RendersASharedGltfModel) {
     for (int y = 0; y < 96; ++y)
         for (int x = 0; x < 96; ++x) lit += img.pixel(x, y)[0] > 60;
     EXPECT_GT(lit, 500) << "auto-framed model should fill a good part of the image";
+
+    // The probe sees the auto-framed camera and the model's own base colour.
+    const RunResult probe = run({box.string(), "--size", "96x96", "--probe", "48,48", "--output", path("probe.png")});
+    ASSERT_EQ(probe.exitCode, 0) << probe.err;
+    const auto j = nlohmann::json::parse(probe.out);
+    ASSERT_EQ(j.at("miss"), false);
+    const std::uint8_t* centre = readPng(path("probe.png")).pixel(48, 48);
+    for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(j.at("output_8bit")[std::size_t(k)].get<int>() - int(centre[k])), 1);
 }

@@ -34,30 +34,13 @@ Hit intersect(const Ray& r, const glm::vec3& a, const glm::vec3& b, const glm::v
     return h;
 }
 
-// Three lights of every kind the format has, so the GPU loop over lights is checked, not just one.
+// A UV sphere under threeLightScene()'s lights.
 Scene litSphereScene(int slices, int stacks) {
-    Scene s;
+    Scene s = threeLightScene();
     s.objects[0].mesh = MeshSpec{};
     s.objects[0].mesh.slices = slices;
     s.objects[0].mesh.stacks = stacks;
     s.objects[0].material.ke = 32.0f;
-    Light key;
-    key.position = {2.0f, 3.0f, 4.0f};
-    Light fill;
-    fill.position = {-2.5f, 0.5f, 1.5f};
-    fill.color = {0.3f, 0.5f, 1.0f};
-    fill.intensity = 6.0f;
-    fill.attenuation = Attenuation::InverseSquare;
-    Light rim;
-    rim.type = LightType::Directional;
-    rim.direction = {0.5f, -0.2f, -1.0f};
-    rim.color = {1.0f, 0.9f, 0.6f};
-    rim.intensity = 0.4f;
-    s.lights = {key, fill, rim};
-    s.ambient = {0.6f, 0.6f, 0.7f};
-    s.camera.eye = {0.3f, 0.8f, 3.2f};
-    s.camera.target = {0.0f, 0.0f, 0.0f};
-    s.cameraGiven = true;
     s.width = 128;
     s.height = 128;
     return s;

@@ -17,6 +17,28 @@ HeadlessBackend backendUnderTest() {
     return (b && std::string(b) == "egl") ? HeadlessBackend::Egl : HeadlessBackend::OsMesa;
 }
 
+Scene threeLightScene() {
+    Scene s;
+    Light key;
+    key.position = {2.0f, 3.0f, 4.0f};
+    Light fill;
+    fill.position = {-2.5f, 0.5f, 1.5f};
+    fill.color = {0.3f, 0.5f, 1.0f};
+    fill.intensity = 6.0f;
+    fill.attenuation = Attenuation::InverseSquare;
+    Light rim;
+    rim.type = LightType::Directional;
+    rim.direction = {0.5f, -0.2f, -1.0f};
+    rim.color = {1.0f, 0.9f, 0.6f};
+    rim.intensity = 0.4f;
+    s.lights = {key, fill, rim};
+    s.ambient = {0.6f, 0.6f, 0.7f};
+    s.camera.eye = {0.3f, 0.8f, 3.2f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    s.cameraGiven = true;
+    return s;
+}
+
 Rendered renderScene(const Scene& scene) {
     Rendered r;
     r.scene = scene;

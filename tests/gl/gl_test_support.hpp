@@ -19,6 +19,11 @@ namespace shadelab::test {
 // tests once for each), OSMesa when unset.
 HeadlessBackend backendUnderTest();
 
+// The default object at the origin under three lights of the kinds a scene can mix, so the GPU loop
+// over lights is checked, not just one: a white point light, a blue inverse-square one and a warm
+// directional one; a bluish ambient; the camera at (0.3, 0.8, 3.2) looking at the origin.
+Scene threeLightScene();
+
 struct Rendered {
     Scene scene;
     std::shared_ptr<SceneGeometry> geometry;

@@ -85,6 +85,26 @@ TEST(CliOptions, BadFlagsNameTheFlag) {
     EXPECT_NE(errorOf({"--help=yes"}).find("takes no value"), std::string::npos);
 }
 
+TEST(CliOptions, Probe) {
+    const Options o = parseOptions({"--probe", "12,34", "--output", "x.png", "--layout", "compare"});
+    ASSERT_TRUE(o.probe);
+    EXPECT_EQ(*o.probe, glm::ivec2(12, 34));
+    EXPECT_EQ(parseOptions({"--probe=0,0"}).probe, glm::ivec2(0, 0));  // the viewer's
+    EXPECT_NE(errorOf({"--probe", "12"}).find("--probe: expected the pixel as X,Y"), std::string::npos);
+    EXPECT_NE(errorOf({"--probe", "1,x"}).find("--probe: \"x\" is not an integer"), std::string::npos);
+    EXPECT_NE(errorOf({"--probe", "-1,0"}).find("--probe: -1 is out of range"), std::string::npos);
+    EXPECT_NE(errorOf({"--probe", "1,1", "--benchmark", "3"}).find("not with --benchmark"), std::string::npos);
+    EXPECT_NE(errorOf({"--probe", "1,1", "--info"}).find("not with --info"), std::string::npos);
+    EXPECT_NE(errorOf({"--select-light", "16"}).find("--select-light: 16 is out of range"), std::string::npos);
+    // A light that does not exist is found once the scene is known (the default scene has one).
+    try {
+        sceneFromOptions(parseOptions({"--select-light", "1"}));
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--select-light: light 1 does not exist"), std::string::npos) << e.what();
+    }
+}
+
 TEST(CliOptions, OverridesApplyToTheScene) {
     Options o = parseOptions({"--ka", "0.5", "--shading", "gouraud", "--mesh", "cube", "--size", "10x20"});
     const Scene s = sceneFromOptions(o);

@@ -41,6 +41,11 @@ button(1, True)           # a drag that starts on the panel moves no camera
 for i in range(1, 11):
     move(1000 - 30 * i, 590)
 button(1, False)
+move(400, 300, 0.3)
+button(1, True)           # a click on the sphere sets the pixel probe ...
+button(1, False)
+key("Escape")             # ... and Esc clears it instead of quitting
+key("F12")                # so this second screenshot is taken
 key("q")
 try:
     proc.communicate(timeout=60)
@@ -66,7 +71,7 @@ if os.path.exists(saved):
     check(abs(yaw + 0.8) < 0.05, f"orbit: yaw {yaw:.3f} rad, expected -0.8 (the panel drag must not orbit)")
     check(abs(eye[1] - 0.81 * 1.5) < 0.01, f"orbit: height {eye[1]:.3f} changed by a horizontal drag")
 shots = glob.glob(os.path.join(out, "shadelab-*.png"))
-check(len(shots) == 1, f"F12: {len(shots)} screenshots in the working folder")
+check(len(shots) == 2, f"F12: {len(shots)} screenshots in the working folder (2: Esc with a probe set must not quit)")
 if failures:
     sys.exit("; ".join(failures))
 print("keys, orbit, zoom, panel capture and F12 work")

@@ -245,5 +245,50 @@ TEST(Window, Plots) {
     EXPECT_GT(flat.meanX, steep.meanX + 20.0) << "the lobe does not follow the incidence angle";
 }
 
+// --probe X,Y opens the viewer with the pixel probe set: its arrows are drawn in the probed pane (and
+// only there), and the panel lists the terms. The images are kept for a person to look at.
+TEST(Window, Probe) {
+    const std::string dir = outDir();
+    const std::string base = "--layout compare --mesh icosphere:1 --size 600x300 --light point:-3,3,2 --frames 4 ";
+    const RunResult plain = shadelab(base + "--screenshot-view " + dir + "/plain.png", dir);
+    ASSERT_EQ(plain.status, 0) << plain.output;
+    // Pixel 300,150 is the middle of the gouraud pane (x 200..399).
+    const RunResult probed =
+        shadelab(base + "--probe 300,150 --screenshot-view " + dir + "/probe.png --screenshot " + dir + "/window.png", dir);
+    ASSERT_EQ(probed.status, 0) << probed.output;
+    const Image a = readPng(dir + "/plain.png"), b = readPng(dir + "/probe.png");
+    ASSERT_EQ(a.width, 600);
+    // The gouraud pane changes around the probed point; the flat and phong panes are untouched.
+    EXPECT_GT(compareImages(crop(b, 200, 50, 200, 200), crop(a, 200, 50, 200, 200), 8).failingPixels, 300u)
+        << "no arrows at the probed point";
+    EXPECT_EQ(compareImages(crop(b, 0, 0, 200, 300), crop(a, 0, 0, 200, 300), 0).maxDifference, 0) << "flat pane";
+    EXPECT_EQ(compareImages(crop(b, 400, 0, 200, 300), crop(a, 400, 0, 200, 300), 0).maxDifference, 0) << "phong pane";
+    // The panel holds the probe's section: it has text and tables where a bare strip would not.
+    const Image window = readPng(dir + "/window.png");
+    EXPECT_GT(distinctColours(crop(window, 600, 0, window.width - 600, 300)), 40u);
+}
+
+// --select-light 1 selects the area light: its rectangle, its 4 x 3 cells and a marker at each sample
+// position are drawn where the light is (upper right of the view), and nothing else changes.
+TEST(Window, AreaLightSamples) {
+    const std::string dir = outDir();
+    const std::string base = "--size 600x300 --light point:-3,3,2 "
+                             "--light area:2.2,0.9,1.0:normal=-1,-0.3,0.6:size=1.0,0.7:samples=4x3 --frames 3 ";
+    const RunResult plain = shadelab(base + "--screenshot-view " + dir + "/plain.png", dir);
+    ASSERT_EQ(plain.status, 0) << plain.output;
+    const RunResult selected = shadelab(base + "--select-light 1 --screenshot-view " + dir + "/samples.png", dir);
+    ASSERT_EQ(selected.status, 0) << selected.output;
+    const Image a = readPng(dir + "/plain.png"), b = readPng(dir + "/samples.png");
+    int changed = 0, elsewhere = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            if (std::equal(a.pixel(x, y), a.pixel(x, y) + 3, b.pixel(x, y))) continue;
+            ++changed;
+            elsewhere += x < 420 || y > 180;  // the light projects to about x 460..570, y 60..140
+        }
+    EXPECT_GT(changed, 300) << "no sample markers";
+    EXPECT_EQ(elsewhere, 0);
+}
+
 }  // namespace
 }  // namespace shadelab

@@ -1,0 +1,231 @@
+#include "viewer/probe_view.hpp"
+
+#include "core/camera.hpp"
+#include "viewer/panel.hpp"
+
+#include <glm/geometric.hpp>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace shadelab {
+namespace {
+
+// Arrow colours (linear RGB, drawn as is): the lecture's vectors, told apart at a glance.
+const glm::vec4 kNormalColor{1.0f, 1.0f, 1.0f, 1.0f};
+const glm::vec4 kViewColor{0.35f, 0.85f, 1.0f, 1.0f};
+const glm::vec4 kLightColor{1.0f, 0.85f, 0.25f, 1.0f};
+const glm::vec4 kReflectedColor{1.0f, 0.45f, 0.35f, 1.0f};
+const glm::vec4 kHalfwayColor{0.55f, 1.0f, 0.45f, 1.0f};
+const glm::vec4 kMarkerColor{1.0f, 0.3f, 1.0f, 1.0f};
+// Arrow length as a share of the distance to the eye: about a quarter of the view's height at 45 degrees.
+constexpr float kArrowShare = 0.2f;
+
+ImU32 imColor(const glm::vec4& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
+
+// What the screen shows for a linear colour: the scene's output encoding applied (swatches are drawn as is).
+glm::vec3 displayed(const Scene& scene, const glm::vec3& linear) {
+    if (scene.outputEncoding != OutputEncoding::Srgb) return linear;
+    const glm::vec3 c = glm::clamp(linear, 0.0f, 1.0f);
+    return {encodeSrgb(c.r), encodeSrgb(c.g), encodeSrgb(c.b)};
+}
+
+void swatch(const char* id, const glm::vec3& shown) {
+    const float side = ImGui::GetFrameHeight();
+    ImGui::ColorButton(id, ImVec4(shown.r, shown.g, shown.b, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(side, side));
+}
+
+void rgbRow(const char* term, const glm::vec3& v) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(term);
+    for (int k = 0; k < 3; ++k) {
+        ImGui::TableNextColumn();
+        // A tiny share (a dull lobe's 0.64^32 = 6e-7) is not shown as zero.
+        const double x = double(v[k]);
+        ImGui::Text(x != 0.0 && std::fabs(x) < 1e-3 ? "%.1e" : "%.4f", x);
+    }
+}
+
+const char* modeExplanation(ShadingMode mode) {
+    switch (mode) {
+    case ShadingMode::Flat: return "flat: once per triangle, at its centroid with the face normal";
+    case ShadingMode::Gouraud: return "gouraud: at the triangle's three corners; their colours are interpolated";
+    case ShadingMode::Phong: return "phong: at the point, with the interpolated normal";
+    }
+    return "";
+}
+
+// The vectors and dot products per light, then every addend of the formula by channel.
+void evaluationTables(const Scene& scene, const ProbeEvaluation& e) {
+    const glm::vec3 &n = e.nrmWorld, &v = e.viewWorld;
+    ImGui::Text("N (%.3f, %.3f, %.3f)", double(n.x), double(n.y), double(n.z));
+    ImGui::Text("V (%.3f, %.3f, %.3f)", double(v.x), double(v.y), double(v.z));
+    const bool shadows = scene.shadows.enabled;
+    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+    if (!e.lights.empty() && ImGui::BeginTable("vectors", shadows ? 5 : 4, flags)) {
+        ImGui::TableSetupColumn("light");
+        ImGui::TableSetupColumn("N·I");
+        ImGui::TableSetupColumn(scene.reflection == ReflectionModel::Phong ? "R·V (lobe)" : "R·V");
+        ImGui::TableSetupColumn(scene.reflection == ReflectionModel::BlinnPhong ? "H·N (lobe)" : "H·N");
+        if (shadows) ImGui::TableSetupColumn("v");
+        ImGui::TableHeadersRow();
+        for (std::size_t l = 0; l < e.lights.size(); ++l) {
+            const ProbeLight& p = e.lights[l];
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::Text("%zu %s", l, toString(scene.lights[l].type));
+            ImGui::TableNextColumn();
+            // N.I <= 0: the light is behind the surface and adds nothing; its lobe values do not count.
+            if (p.nDotI <= 0.0f) ImGui::TextDisabled("%.3f", double(p.nDotI));
+            else ImGui::Text("%.3f", double(p.nDotI));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", double(p.rDotV));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", double(p.hDotN));
+            if (shadows) {
+                ImGui::TableNextColumn();
+                ImGui::Text("%d/%d", p.samplesVisible, p.samplesTested);
+            }
+        }
+        ImGui::EndTable();
+    }
+    if (ImGui::BeginTable("terms", 4, flags)) {
+        ImGui::TableSetupColumn("term", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        for (const char* channel : {"R", "G", "B"}) ImGui::TableSetupColumn(channel, ImGuiTableColumnFlags_WidthStretch, 1.0f);
+        ImGui::TableHeadersRow();
+        rgbRow("ambient k_a A C", e.terms.ambient);
+        char label[48];
+        for (std::size_t l = 0; l < e.lights.size(); ++l) {
+            std::snprintf(label, sizeof label, "light %zu diffuse", l);
+            rgbRow(label, e.lights[l].diffuse);
+            std::snprintf(label, sizeof label, "light %zu specular", l);
+            rgbRow(label, e.lights[l].specular);
+        }
+        rgbRow(scene.show.term == ShowTerm::All ? "sum" : ("sum (show " + toString(scene.show) + ")").c_str(), e.terms.shown);
+        rgbRow("clamped to [0, 1]", e.terms.total);
+        ImGui::EndTable();
+    }
+}
+
+void modeSection(const Scene& scene, const ProbeResult& probe, const ModeProbe& m) {
+    ImGui::TextWrapped("%s", modeExplanation(m.mode));
+    if (m.mode == ShadingMode::Gouraud) {
+        // The lecture's L_p = l1 L_a + l2 L_b + l3 L_c, as colours.
+        for (int k = 0; k < 3; ++k) {
+            ImGui::PushID(k);
+            swatch("##corner", displayed(scene, m.evaluations[std::size_t(k)].terms.total));
+            ImGui::SameLine();
+            ImGui::Text("%.3f%s", double(probe.anchor.barycentric[k]), k < 2 ? " +" : " =");
+            ImGui::SameLine();
+            ImGui::PopID();
+        }
+        swatch("##interpolated", m.output);
+    }
+    static const char* const kCorners[] = {"a", "b", "c"};
+    for (std::size_t k = 0; k < m.evaluations.size(); ++k) {
+        const ProbeEvaluation& e = m.evaluations[k];
+        char title[96];
+        if (e.site == ProbeEvaluation::Site::Vertex)
+            std::snprintf(title, sizeof title, "corner %s (vertex %u), weight %.3f", kCorners[k], e.vertex,
+                          double(probe.anchor.barycentric[int(k)]));
+        else
+            std::snprintf(title, sizeof title, "%s", e.site == ProbeEvaluation::Site::Centroid ? "at the centroid" : "at the point");
+        ImGui::PushID(int(k));
+        const ImGuiTreeNodeFlags open = k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+        if (ImGui::TreeNodeEx("evaluation", open, "%s", title)) {
+            const glm::vec3& p = e.posWorld;
+            ImGui::Text("at (%.3f, %.3f, %.3f)", double(p.x), double(p.y), double(p.z));
+            evaluationTables(scene, e);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    swatch("##output", m.output);
+    ImGui::SameLine();
+    ImGui::Text("%s %.3f %.3f %.3f -> %d %d %d", scene.outputEncoding == OutputEncoding::Srgb ? "sRGB" : "linear",
+                double(m.output.r), double(m.output.g), double(m.output.b), m.output8.r, m.output8.g, m.output8.b);
+}
+
+}  // namespace
+
+std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight) {
+    std::vector<ProbeArrow> arrows;
+    if (probe.miss) return arrows;
+    // Only in the probed pane: the other panes of a compare layout evaluate the formula elsewhere.
+    const int pane = probe.pane;
+    arrows.push_back({OverlayArrow{probe.posWorld, probe.posWorld, kMarkerColor, pane}, ""});
+    const bool oneLight = selectedLight >= 0 && std::size_t(selectedLight) < scene.lights.size();
+    for (const ModeProbe& m : probe.modes)
+        for (const ProbeEvaluation& e : m.evaluations) {
+            const glm::vec3 from = e.posWorld;
+            const float length = kArrowShare * glm::length(scene.camera.eye - from);
+            auto add = [&](const glm::vec3& dir, const glm::vec4& color, const std::string& label) {
+                arrows.push_back({OverlayArrow{from, from + length * dir, color, pane}, label});
+            };
+            add(e.nrmWorld, kNormalColor, "N");
+            add(e.viewWorld, kViewColor, "V");
+            for (std::size_t l = 0; l < e.lights.size(); ++l) {
+                if (oneLight && l != std::size_t(selectedLight)) continue;
+                const std::string index = scene.lights.size() > 1 ? std::to_string(l) : "";
+                const ProbeLight& p = e.lights[l];
+                add(p.towardLight, kLightColor, "I" + index);
+                add(glm::normalize(p.reflected), kReflectedColor, "R" + index);
+                add(p.halfway, kHalfwayColor, "H" + index);
+            }
+        }
+    return arrows;
+}
+
+void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, const UiRect& view,
+                     float framebufferScale) {
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    draw->PushClipRect(ImVec2(view.x, view.y), ImVec2(view.x + view.width, view.y + view.height), true);
+    const float pad = 2.0f;
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
+    for (std::size_t p = 0; p < panes.size(); ++p)
+        for (const ProbeArrow& a : arrows) {
+            const Pane& pane = panes[p];
+            if (a.label.empty() || (a.arrow.pane >= 0 && std::size_t(a.arrow.pane) != p)) continue;
+            const glm::vec3 tip = projectToImage(scene.camera, pane, a.arrow.toWorld);
+            if (!(tip.z > 0.0f) || tip.x < float(pane.x) || tip.x >= float(pane.x + pane.width) || tip.y < float(pane.y) ||
+                tip.y >= float(pane.y + pane.height))
+                continue;
+            const ImVec2 at(view.x + tip.x / framebufferScale + 4.0f, view.y + tip.y / framebufferScale - 14.0f);
+            const ImVec2 size = ImGui::CalcTextSize(a.label.c_str());
+            draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad), ImVec2(at.x + size.x + pad, at.y + size.y + pad),
+                                IM_COL32(0, 0, 0, 160), pad);
+            draw->AddText(at, imColor(a.arrow.color), a.label.c_str());
+        }
+    draw->PopClipRect();
+}
+
+bool probeSection(const Scene& scene, const ProbeResult& probe) {
+    const bool clear = ImGui::Button("clear probe (Esc)");
+    ImGui::SameLine();
+    ImGui::TextDisabled("click the view to probe");
+    ImGui::Text("pixel %d,%d, pane %d: object %zu, triangle %zu", probe.x, probe.y, probe.pane, probe.anchor.object,
+                probe.anchor.triangle);
+    const glm::vec3& p = probe.posWorld;
+    ImGui::Text("P (%.3f, %.3f, %.3f)", double(p.x), double(p.y), double(p.z));
+    const bool difference = probe.modes.size() == 2;
+    for (std::size_t k = 0; k < probe.modes.size(); ++k) {
+        ImGui::PushID(int(k));
+        if (difference) {
+            ImGui::Separator();
+            ImGui::Text("%s: %s", k == 0 ? "A" : "B", toString(probe.modes[k].mode));
+        }
+        modeSection(scene, probe, probe.modes[k]);
+        ImGui::PopID();
+    }
+    if (difference) {
+        ImGui::Separator();
+        ImGui::Text("|A - B| x %.1f -> %d %d %d", double(scene.diff.factor), probe.output8.r, probe.output8.g,
+                    probe.output8.b);
+    }
+    return clear;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,35 @@
+#pragma once
+// The pixel probe in the viewer (core/probe.hpp computes it): the labelled arrows N, V, I_l, R(I_l),
+// H_l drawn in the 3D view where the probed mode evaluates the formula, and the panel's "Probe"
+// section listing every term. Immediate mode, like panel.hpp: called every frame, no state.
+#include "core/probe.hpp"
+#include "core/scene.hpp"
+#include "render/overlay_renderer.hpp"
+
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+struct UiRect;
+
+struct ProbeArrow {
+    OverlayArrow arrow;
+    std::string label;  // drawn at the tip; empty for the marker at the probed point
+};
+
+// At each evaluation of the probe (phong: the point; flat: the centroid; gouraud: the three corners)
+// N and V, and for each light (only `selectedLight` when it names one) I, R(I) and H, as unit vectors
+// drawn at a length that looks the same wherever the point is; plus a cross at the probed point. All
+// in the probed pane only: the other panes of a compare layout evaluate the formula elsewhere.
+std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight);
+
+// The arrows' labels at their tips, in the arrows' pane, on ImGui's foreground draw list, clipped to the
+// 3D view. `framebufferScale` converts the renderer's pixels to ImGui units.
+void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, const UiRect& view,
+                     float framebufferScale);
+
+// The panel's "Probe" section (inside the panel window). Returns true when "clear probe" is pressed.
+bool probeSection(const Scene& scene, const ProbeResult& probe);
+
+}  // namespace shadelab
