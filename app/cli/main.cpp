@@ -5,6 +5,7 @@
 #include "core/file_io.hpp"
 #include "core/gltf_import.hpp"
 #include "core/image.hpp"
+#include "core/playlist.hpp"
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
 #include "render/program.hpp"
@@ -12,6 +13,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -27,6 +29,47 @@ struct Stopwatch {
     double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
 };
 
+ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir) {
+    ViewerOptions viewer;
+    viewer.shaderDir = shaderDir;
+    viewer.frames = options.frames;
+    viewer.screenshotPath = options.screenshot.value_or("");
+    viewer.viewScreenshotPath = options.screenshotView.value_or("");
+    viewer.saveScenePath = options.saveScene.value_or("");
+    viewer.hidePanel = options.hidePanel;
+    for (const std::string& o : options.overlays) {
+        viewer.overlays.wireframe |= o == "wireframe";
+        viewer.overlays.vertexNormals |= o == "vertex-normals";
+        viewer.overlays.faceNormals |= o == "face-normals";
+        viewer.overlays.lightMarkers |= o == "lights";
+    }
+    viewer.verbose = options.verbose;
+    return viewer;
+}
+
+// --playlist DIR: every preset loaded first (one bad file fails the run before anything is written),
+// then one PNG per preset into the --output folder.
+int runPlaylist(const Options& options, const std::string& shaderDir, const ShaderLibrary& shaders,
+                HeadlessBackend backend) {
+    if (options.output) checkOutputFolder(*options.output, "--output");
+    const SceneAdjust adjust = [&options](Scene& s) { applyOverrides(s, options); };
+    std::vector<Preset> presets = loadPlaylist(*options.playlist, adjust);
+    if (options.output) {
+        createOutputFolder(*options.output, "--output");
+        std::vector<Scene> scenes;
+        for (const Preset& p : presets) scenes.push_back(p.scene);
+        renderScenesHeadless(scenes, shaders, backend, [&](std::size_t i, Image image) {
+            const Preset& p = presets[i];
+            const std::string path = (std::filesystem::path(*options.output) / (p.name + ".png")).string();
+            writePng(path, options.captions ? withCaptionStrip(image, presetTitle(p), p.scene.caption) : image);
+            if (options.verbose) std::cerr << "shadelab: wrote " << path << "\n";
+        });
+        return 0;
+    }
+    (void)shaderDir;
+    throw InputError("--playlist: give --output FOLDER/ (the viewer cannot show playlists yet)");
+}
+
 int run(const std::vector<std::string>& args) {
     const Options options = parseOptions(args);
     if (options.help) {
@@ -37,17 +80,18 @@ int run(const std::vector<std::string>& args) {
         std::cout << "shadelab " << SHADELAB_VERSION << "\n";
         return 0;
     }
-    if (options.output) checkOutputPath(*options.output, "--output");
+    if (options.output && !options.playlist) checkOutputPath(*options.output, "--output");
     if (options.screenshot) checkOutputPath(*options.screenshot, "--screenshot");
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
-    Scene scene = sceneFromOptions(options);
     // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
     const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
     const ShaderLibrary shaders(shaderDir);
     const HeadlessBackend backend = options.backend == "egl"      ? HeadlessBackend::Egl
                                     : options.backend == "osmesa" ? HeadlessBackend::OsMesa
                                                                   : HeadlessBackend::Auto;
+    if (options.playlist) return runPlaylist(options, shaderDir, shaders, backend);
+    Scene scene = sceneFromOptions(options);
     auto report = [&](const Scene& drawn, const std::vector<GltfInfo>& gltfInfo, std::size_t triangles) {
         for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
             const GltfInfo& info = gltfInfo[i];
@@ -78,7 +122,8 @@ int run(const std::vector<std::string>& args) {
         const HeadlessFrame frame = renderSceneHeadless(std::move(scene), shaders, backend);
         report(frame.scene, frame.gltfInfo, frame.triangles);
         const double renderedMs = clock.ms();
-        writePng(*options.output, frame.image);
+        writePng(*options.output, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption)
+                                                   : frame.image);
         if (options.verbose)
             std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
                       << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
@@ -110,21 +155,7 @@ int run(const std::vector<std::string>& args) {
             std::cout << toJson(r) << std::endl;
         return 0;
     }
-    ViewerOptions viewer;
-    viewer.shaderDir = shaderDir;
-    viewer.frames = options.frames;
-    viewer.screenshotPath = options.screenshot.value_or("");
-    viewer.viewScreenshotPath = options.screenshotView.value_or("");
-    viewer.saveScenePath = options.saveScene.value_or("");
-    viewer.hidePanel = options.hidePanel;
-    for (const std::string& o : options.overlays) {
-        viewer.overlays.wireframe |= o == "wireframe";
-        viewer.overlays.vertexNormals |= o == "vertex-normals";
-        viewer.overlays.faceNormals |= o == "face-normals";
-        viewer.overlays.lightMarkers |= o == "lights";
-    }
-    viewer.verbose = options.verbose;
-    Viewer(std::move(scene), std::move(geometry), viewer).run();
+    Viewer(std::move(scene), std::move(geometry), viewerOptions(options, shaderDir)).run();
     return 0;
 }
 
