@@ -48,7 +48,7 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
 }
 
 // --playlist DIR: every preset loaded first (one bad file fails the run before anything is written),
-// then one PNG per preset into the --output folder.
+// then either one PNG per preset into the --output folder, or the viewer stepping through them.
 int runPlaylist(const Options& options, const std::string& shaderDir, const ShaderLibrary& shaders,
                 HeadlessBackend backend) {
     if (options.output) checkOutputFolder(*options.output, "--output");
@@ -66,8 +66,14 @@ int runPlaylist(const Options& options, const std::string& shaderDir, const Shad
         });
         return 0;
     }
-    (void)shaderDir;
-    throw InputError("--playlist: give --output FOLDER/ (the viewer cannot show playlists yet)");
+    Scene first = presets.front().scene;
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(first));
+    frameIfNeeded(first, *geometry);
+    ViewerOptions viewer = viewerOptions(options, shaderDir);
+    viewer.playlist = std::move(presets);
+    viewer.adjustPreset = adjust;
+    Viewer(std::move(first), std::move(geometry), viewer).run();
+    return 0;
 }
 
 int run(const std::vector<std::string>& args) {

@@ -4,6 +4,7 @@
 // all of it; run() loops over frame(), which is the whole per-frame story:
 //   poll -> ImGui frame -> keys/mouse/drops -> panel -> apply requests -> renderer -> ImGui -> swap.
 #include "core/image.hpp"
+#include "core/playlist.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
@@ -11,6 +12,7 @@
 #include "viewer/glfw_window.hpp"
 #include "viewer/imgui_layer.hpp"
 #include "viewer/panel.hpp"
+#include "viewer/playlist_navigator.hpp"
 #include "viewer/scene_document.hpp"
 
 #include <memory>
@@ -28,6 +30,10 @@ struct ViewerOptions {
     std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes)
     bool hidePanel = false;           // --hide-panel: start as if Tab had been pressed
     OverlayOptions overlays;          // --overlays: which overlays start switched on
+    // --playlist: the presets, the first of which is the scene the viewer starts with; `adjustPreset`
+    // is applied again when "reset preset" reloads one from its file (the command line's overrides).
+    std::vector<Preset> playlist;
+    SceneAdjust adjustPreset;
     bool verbose = false;
 };
 
@@ -63,6 +69,9 @@ private:
     void saveScreenshot(const Image& view);
     void writeLastFrameFiles(const FrameLayout& layout, const Image& view);
     void loadFile(const std::string& path);
+    void goToPreset(std::size_t index);
+    void resetPreset();
+    void showingPreset(const std::string& what);
     void reloadShaders();
     void setStatus(std::string message, bool isError);
 
@@ -73,6 +82,7 @@ private:
     std::unique_ptr<OverlayRenderer> overlays_;
     const SceneGeometry* uploaded_ = nullptr;  // what the renderers were last given
     SceneDocument document_;
+    PlaylistNavigator playlist_;
     ViewSettings settings_;
     PanelStatus status_;
     bool screenshotRequested_ = false;

@@ -8,9 +8,9 @@ Exits 77 (skipped) when libX11/libXtst cannot be loaded (Debian: libx11-6, libxt
 Mouse deltas and wheel steps are summed by ImGui
 over frames, so the camera's end position does not depend on the frame rate.
 """
-import glob, json, math, os, subprocess, sys
+import glob, json, math, os, sys
 
-from xinput import start_viewer
+from xinput import quit_viewer, start_viewer
 
 shadelab, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
@@ -41,12 +41,7 @@ button(1, True)           # a drag that starts on the panel moves no camera
 for i in range(1, 11):
     move(1000 - 30 * i, 590)
 button(1, False)
-key("q")
-try:
-    proc.communicate(timeout=60)
-except subprocess.TimeoutExpired:
-    proc.kill()
-    sys.exit("the viewer did not quit on Q")
+quit_viewer(proc, display)
 
 failures = []
 def check(ok, what):
