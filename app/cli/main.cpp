@@ -8,6 +8,7 @@
 #include "core/plot_image.hpp"
 #include "core/probe.hpp"
 #include "core/ray_cast.hpp"
+#include "core/playlist.hpp"
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
 #include "render/program.hpp"
@@ -15,6 +16,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -30,6 +32,58 @@ struct Stopwatch {
     double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
 };
 
+ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir) {
+    ViewerOptions viewer;
+    viewer.shaderDir = shaderDir;
+    viewer.frames = options.frames;
+    viewer.screenshotPath = options.screenshot.value_or("");
+    viewer.viewScreenshotPath = options.screenshotView.value_or("");
+    viewer.saveScenePath = options.saveScene.value_or("");
+    viewer.hidePanel = options.hidePanel;
+    viewer.progressiveStride = options.progressiveStride;
+    for (const std::string& o : options.overlays) {
+        viewer.overlays.wireframe |= o == "wireframe";
+        viewer.overlays.vertexNormals |= o == "vertex-normals";
+        viewer.overlays.faceNormals |= o == "face-normals";
+        viewer.overlays.lightMarkers |= o == "lights";
+    }
+    viewer.plots = plotSettings(options);
+    viewer.panelSections = options.panelSections;
+    if (options.probe) viewer.probe = *options.probe;
+    viewer.selectedLight = options.selectLight.value_or(-1);
+    viewer.verbose = options.verbose;
+    return viewer;
+}
+
+// --playlist DIR: every preset loaded first (one bad file fails the run before anything is written),
+// then either one PNG per preset into the --output folder, or the viewer stepping through them.
+int runPlaylist(const Options& options, const std::string& shaderDir, const ShaderLibrary& shaders,
+                HeadlessBackend backend) {
+    if (options.output) checkOutputFolder(*options.output, "--output");
+    const SceneAdjust adjust = [&options](Scene& s) { applyOverrides(s, options); };
+    std::vector<Preset> presets = loadPlaylist(*options.playlist, adjust);
+    if (options.output) {
+        createOutputFolder(*options.output, "--output");
+        std::vector<Scene> scenes;
+        for (const Preset& p : presets) scenes.push_back(p.scene);
+        renderScenesHeadless(scenes, shaders, backend, [&](std::size_t i, Image image) {
+            const Preset& p = presets[i];
+            const std::string path = (std::filesystem::path(*options.output) / (p.name + ".png")).string();
+            writePng(path, options.captions ? withCaptionStrip(image, presetTitle(p), p.scene.caption) : image);
+            if (options.verbose) std::cerr << "shadelab: wrote " << path << "\n";
+        });
+        return 0;
+    }
+    Scene first = presets.front().scene;
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(first));
+    frameIfNeeded(first, *geometry);
+    ViewerOptions viewer = viewerOptions(options, shaderDir);
+    viewer.playlist = std::move(presets);
+    viewer.adjustPreset = adjust;
+    Viewer(std::move(first), std::move(geometry), viewer).run();
+    return 0;
+}
+
 int run(const std::vector<std::string>& args) {
     const Options options = parseOptions(args);
     if (options.help) {
@@ -40,10 +94,17 @@ int run(const std::vector<std::string>& args) {
         std::cout << "shadelab " << SHADELAB_VERSION << "\n";
         return 0;
     }
-    if (options.output) checkOutputPath(*options.output, "--output");
+    if (options.output && !options.playlist) checkOutputPath(*options.output, "--output");
     if (options.screenshot) checkOutputPath(*options.screenshot, "--screenshot");
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
+    // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
+    const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
+    const ShaderLibrary shaders(shaderDir);
+    const HeadlessBackend backend = options.backend == "egl"      ? HeadlessBackend::Egl
+                                    : options.backend == "osmesa" ? HeadlessBackend::OsMesa
+                                                                  : HeadlessBackend::Auto;
+    if (options.playlist) return runPlaylist(options, shaderDir, shaders, backend);
     Scene scene = sceneFromOptions(options);
     if (options.plot && !options.info) {
         // Drawn on the CPU from core/lighting's formulas: no GL, no context, no shaders.
@@ -56,12 +117,6 @@ int run(const std::vector<std::string>& args) {
         return 0;
     }
     if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
-    // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
-    const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
-    const ShaderLibrary shaders(shaderDir);
-    const HeadlessBackend backend = options.backend == "egl"      ? HeadlessBackend::Egl
-                                    : options.backend == "osmesa" ? HeadlessBackend::OsMesa
-                                                                  : HeadlessBackend::Auto;
     auto report = [&](const Scene& drawn, const std::vector<GltfInfo>& gltfInfo, std::size_t triangles) {
         for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
             const GltfInfo& info = gltfInfo[i];
@@ -104,7 +159,8 @@ int run(const std::vector<std::string>& args) {
         const HeadlessFrame frame = renderSceneHeadless(std::move(scene), shaders, backend);
         report(frame.scene, frame.gltfInfo, frame.triangles);
         const double renderedMs = clock.ms();
-        writePng(*options.output, frame.image);
+        writePng(*options.output, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption)
+                                                   : frame.image);
         if (options.verbose)
             std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
                       << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
@@ -137,26 +193,7 @@ int run(const std::vector<std::string>& args) {
             std::cout << toJson(r) << std::endl;
         return 0;
     }
-    ViewerOptions viewer;
-    viewer.shaderDir = shaderDir;
-    viewer.frames = options.frames;
-    viewer.screenshotPath = options.screenshot.value_or("");
-    viewer.viewScreenshotPath = options.screenshotView.value_or("");
-    viewer.saveScenePath = options.saveScene.value_or("");
-    viewer.hidePanel = options.hidePanel;
-    viewer.progressiveStride = options.progressiveStride;
-    for (const std::string& o : options.overlays) {
-        viewer.overlays.wireframe |= o == "wireframe";
-        viewer.overlays.vertexNormals |= o == "vertex-normals";
-        viewer.overlays.faceNormals |= o == "face-normals";
-        viewer.overlays.lightMarkers |= o == "lights";
-    }
-    viewer.plots = plotSettings(options);
-    viewer.panelSections = options.panelSections;
-    viewer.verbose = options.verbose;
-    if (options.probe) viewer.probe = *options.probe;
-    viewer.selectedLight = options.selectLight.value_or(-1);
-    Viewer(std::move(scene), std::move(geometry), viewer).run();
+    Viewer(std::move(scene), std::move(geometry), viewerOptions(options, shaderDir)).run();
     return 0;
 }
 

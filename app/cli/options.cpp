@@ -80,6 +80,11 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--verbose" || arg == "-v") noValue(), o.verbose = true;
         else if (arg == "--info") noValue(), o.info = true;
         else if (arg == "--output" || arg == "-o") o.output = next();
+        else if (arg == "--playlist") {
+            o.playlist = next();
+            if (o.playlist->empty()) throw InputError(arg + ": empty folder name");
+        }
+        else if (arg == "--captions") noValue(), o.captions = true;
         else if (arg == "--shading") o.shading = parseChoice(arg, next(), kShading);
         else if (arg == "--layout") o.layout = parseChoice(arg, next(), kLayout);
         else if (arg == "--reflection") o.reflection = parseChoice(arg, next(), kRefl);
@@ -198,7 +203,18 @@ Options parseOptions(const std::vector<std::string>& args) {
             o.input = arg;
         }
     }
-    if (o.output && !hasExtension(*o.output, ".png"))
+    if (o.playlist) {
+        if (!o.input.empty())
+            throw InputError("--playlist: shows the scene files of a folder; give no scene file (" + o.input + ") with it");
+        if (!o.sweeps.empty()) throw InputError("--sweep: not with --playlist (sweep one preset file instead)");
+        if (o.benchmarkFrames) throw InputError("--benchmark: not with --playlist (benchmark one preset file instead)");
+        if (o.info) throw InputError("--info: not with --playlist");
+        if (o.plot) throw InputError("--plot: not with --playlist (a plot is of one scene)");
+        if (o.probe) throw InputError("--probe: not with --playlist (probe one preset file instead)");
+    }
+    if (o.captions && (!o.output || !o.sweeps.empty()))
+        throw InputError("--captions: adds a title strip to --output images (not to sweep sheets); give --output");
+    if (o.output && !o.playlist && !hasExtension(*o.output, ".png"))
         throw InputError("--output: " + *o.output + ": only .png output is supported");
     if (o.screenshot && !hasExtension(*o.screenshot, ".png"))
         throw InputError("--screenshot: " + *o.screenshot + ": only .png is supported");
@@ -241,6 +257,11 @@ Scene sceneFromOptions(const Options& o) {
     if (o.input.empty()) s = defaultScene();
     else if (hasModelExtension(o.input)) s = sceneForModel(o.input);
     else s = loadSceneFile(o.input);
+    applyOverrides(s, o);
+    return s;
+}
+
+void applyOverrides(Scene& s, const Options& o) {
     if (o.shading) s.shading = *o.shading;
     if (o.layout) s.layout = *o.layout;
     if (o.reflection) s.reflection = *o.reflection;
@@ -273,7 +294,6 @@ Scene sceneFromOptions(const Options& o) {
     if (o.selectLight && *o.selectLight >= int(s.lights.size()))
         throw InputError("--select-light: light " + std::to_string(*o.selectLight) + " does not exist (the scene has " +
                          std::to_string(s.lights.size()) + " light(s))");
-    return s;
 }
 
 PlotSettings plotSettings(const Options& o) {
@@ -285,11 +305,18 @@ PlotSettings plotSettings(const Options& o) {
 
 std::string usage() {
     return R"(usage: shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]
+       shadelab --playlist DIR [options]
 
 Shows flat, Gouraud and Phong shading side by side. With no file, the built-in default scene.
 Without --output (or --benchmark) it opens the interactive viewer.
 
   -o, --output FILE.png   render one frame offscreen (OSMesa, no display needed) and write it
+  --playlist DIR          the lecture presets: every DIR/*.json in file-name order (e.g.
+                          assets/scenes/lecture). In the viewer Page Down / Page Up step through them;
+                          with --output OUT/ one PNG per preset, OUT/NAME.png (OUT is created when
+                          it ends in / and is missing). Every other option applies to each preset.
+  --captions              with --output: a strip under each image with the scene's title (a preset's
+                          file name when it has none) and caption
   --shading MODE          flat | gouraud | phong
   --layout LAYOUT         single | compare (three panes: flat | gouraud | phong) | diff (A | B | |A-B| x factor)
   --diff A,B              the two shading modes of layout diff (default gouraud,phong)

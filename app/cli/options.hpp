@@ -15,7 +15,9 @@ namespace shadelab {
 
 struct Options {
     std::string input;                      // scene or model file; empty: the built-in default scene
-    std::optional<std::string> output;      // --output FILE.png: render one frame headless
+    std::optional<std::string> output;      // --output FILE.png: render one frame headless (a folder with --playlist)
+    std::optional<std::string> playlist;    // --playlist DIR: the lecture presets in DIR (core/playlist.hpp)
+    bool captions = false;                  // --captions: --output PNGs get a strip with the title and caption
     std::optional<ShadingMode> shading;
     std::optional<Layout> layout;
     std::optional<ReflectionModel> reflection;
@@ -62,6 +64,10 @@ Options parseOptions(const std::vector<std::string>& args);
 // Loads the input named by the options (scene file, model, or the default scene) and applies every
 // override. Throws InputError.
 Scene sceneFromOptions(const Options& options);
+// The overrides alone (--shading, --size, --ke, --light, ...), as applied to a scene file's scene and
+// to every preset of a playlist. Throws InputError (e.g. --show light:N for a scene with fewer lights).
+void applyOverrides(Scene& scene, const Options& options);
+
 
 // The plot --plot asks for, from the scene and --incidence/--from-inside (see scenePlot).
 PlotSettings plotSettings(const Options& options);

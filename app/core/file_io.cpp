@@ -57,6 +57,26 @@ void checkOutputPath(const std::string& path, const std::string& option) {
         throw InputError(option + ": " + path + ": the folder " + parent.string() + " does not exist");
 }
 
+void checkOutputFolder(const std::string& path, const std::string& option) {
+    if (path.empty()) throw InputError(option + ": empty path");
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return;
+    if (fs::exists(path, ec)) throw InputError(option + ": " + path + " is a file, not a folder");
+    if (path.back() != '/')
+        throw InputError(option + ": " + path + ": names a folder here: an existing one, or end the name with / to have "
+                         "it created");
+    const fs::path parent = fs::path(path).parent_path().parent_path();  // "a/b/" -> "a/b" -> "a"
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        throw InputError(option + ": " + path + ": the folder " + parent.string() + " does not exist");
+}
+
+void createOutputFolder(const std::string& path, const std::string& option) {
+    checkOutputFolder(path, option);
+    std::error_code ec;
+    fs::create_directory(path, ec);
+    if (ec) throw InputError(option + ": " + path + ": cannot create the folder: " + ec.message());
+}
+
 void writeFileAtomic(const std::string& path, const std::function<bool(std::FILE*)>& write) {
     const fs::path target(path);
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();

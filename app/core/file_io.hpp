@@ -21,6 +21,12 @@ bool hasExtension(const std::string& path, const std::string& ext);
 // not itself a folder. Throws InputError naming `option` and the path.
 void checkOutputPath(const std::string& path, const std::string& option);
 
+// The same for an output folder (--playlist --output DIR/): an existing folder, or a name ending in
+// '/' whose parent folder exists, so a typo never creates a tree of folders. Throws InputError.
+void checkOutputFolder(const std::string& path, const std::string& option);
+// Checks as above and creates the folder when it is missing. Throws InputError.
+void createOutputFolder(const std::string& path, const std::string& option);
+
 // Creates `path` atomically: `write` gets a FILE* to a temporary file beside it; on success the
 // temporary is renamed over `path`, on any failure (write returns false or throws) it is removed.
 void writeFileAtomic(const std::string& path, const std::function<bool(std::FILE*)>& write);

@@ -61,6 +61,29 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     return frame;
 }
 
+void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
+                          const std::function<void(std::size_t, Image)>& done) {
+    if (scenes.empty()) return;
+    const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
+    Renderer renderer(context->getProcAddress(), shaders);
+    std::shared_ptr<SceneGeometry> geometry;
+    const Scene* built = nullptr;
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        Scene& s = scenes[i];
+        bool same = built && built->objects.size() == s.objects.size();
+        for (std::size_t o = 0; same && o < s.objects.size(); ++o) same = built->objects[o].mesh == s.objects[o].mesh;
+        if (!same) {
+            geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
+            renderer.setGeometry(geometry);
+            built = &s;
+        }
+        frameIfNeeded(s, *geometry);
+        if (context->target().width != s.width || context->target().height != s.height) context->resize(s.width, s.height);
+        renderer.render(s, context->target());
+        done(i, readPixels(context->target()));
+    }
+}
+
 Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, const ShaderLibrary& shaders,
                           HeadlessBackend backend, const std::string& flag) {
     const std::size_t columns = sweeps.empty() ? 1 : sweeps[0].values.size();
@@ -78,23 +101,8 @@ Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, c
             scenes.push_back(std::move(s));
             labels.push_back(std::move(label));
         }
-    const auto context = makeHeadlessContext(backend, base.width, base.height);
-    Renderer renderer(context->getProcAddress(), shaders);
     std::vector<Image> tiles;
-    std::shared_ptr<SceneGeometry> geometry;
-    const Scene* built = nullptr;
-    for (Scene& s : scenes) {
-        bool same = built && built->objects.size() == s.objects.size();
-        for (std::size_t o = 0; same && o < s.objects.size(); ++o) same = built->objects[o].mesh == s.objects[o].mesh;
-        if (!same) {
-            geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-            renderer.setGeometry(geometry);
-            built = &s;
-        }
-        frameIfNeeded(s, *geometry);
-        renderer.render(s, context->target());
-        tiles.push_back(readPixels(context->target()));
-    }
+    renderScenesHeadless(scenes, shaders, backend, [&](std::size_t, Image tile) { tiles.push_back(std::move(tile)); });
     return contactSheet(tiles, labels, int(columns));
 }
 

@@ -7,6 +7,7 @@
 #include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,13 @@ struct HeadlessFrame {
     std::size_t triangles = 0;
 };
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend);
+
+// Renders each scene in turn on one context (resized when a scene's size differs from the previous
+// one's; programs are kept, geometry is rebuilt only when the meshes differ from the previous scene's)
+// and hands each image to `done` with its index as soon as it is read back, so a long playlist never
+// holds more than one image. A glTF scene without a camera is framed as for --output.
+void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
+                          const std::function<void(std::size_t, Image)>& done);
 
 // A sweep sheet (core/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
 // with two sweeps, per value of sweeps[1] (rows), each labelled, rendered on one context. Geometry is

@@ -52,11 +52,15 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
         throw std::runtime_error("could not open a window with an OpenGL 3.3 core context: " + reason);
     }
     glfwMakeContextCurrent(window_);
-    // The drop callback finds this object through the window's user pointer.
+    // The callbacks find this object through the window's user pointer. Dear ImGui's GLFW backend,
+    // initialised after this, installs its own callbacks and calls these from them.
     glfwSetWindowUserPointer(window_, this);
     glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
         auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));
         for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+    });
+    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+        if (action == GLFW_PRESS) static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->pressed_.push_back(key);
     });
 }
 
@@ -81,5 +85,6 @@ void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
 void GlfwWindow::setSwapInterval(int interval) { glfwSwapInterval(interval); }
 
 std::vector<std::string> GlfwWindow::takeDroppedPaths() { return std::exchange(dropped_, {}); }
+std::vector<int> GlfwWindow::takePressedKeys() { return std::exchange(pressed_, {}); }
 
 }  // namespace shadelab

@@ -33,10 +33,15 @@ public:
 
     // Paths of files dropped on the window since the last call.
     std::vector<std::string> takeDroppedPaths();
+    // GLFW key codes pressed since the last call, in order (presses, not repeats). Dear ImGui 1.86
+    // only sees a key that is still down when a frame starts, so a key pressed and released during
+    // one slow frame (an 8x8 area light takes seconds on a software renderer) would be lost.
+    std::vector<int> takePressedKeys();
 
 private:
     GLFWwindow* window_ = nullptr;
     std::vector<std::string> dropped_;
+    std::vector<int> pressed_;
 };
 
 }  // namespace shadelab

@@ -310,19 +310,52 @@ void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requ
     ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
 }
 
+void sectionPlaylist(ViewSettings& settings, const PanelStatus& status, PanelRequests& requests) {
+    const int count = int(status.presetTitles.size());
+    const int current = status.currentPreset;
+    ImGui::BeginDisabled(current <= 0);
+    if (ImGui::Button("< previous (PgUp)")) requests.gotoPreset = current - 1;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(current + 1 >= count);
+    if (ImGui::Button("next (PgDn) >")) requests.gotoPreset = current + 1;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::Text("%d / %d", current + 1, count);
+    requests.resetPreset |= ImGui::Button("reset preset (Backspace)");
+    ImGui::SameLine();
+    ImGui::Checkbox("title on view", &settings.showCaption);
+    // At most eight rows: the lecture's list without pushing the scene's sections off the panel.
+    const float rows = float(std::min(count, 8)) + 0.25f;
+    if (ImGui::BeginListBox("##presets", ImVec2(-1.0f, ImGui::GetTextLineHeightWithSpacing() * rows))) {
+        for (int i = 0; i < count; ++i) {
+            ImGui::PushID(i);
+            const bool selected = i == current;
+            if (ImGui::Selectable(status.presetTitles[std::size_t(i)].c_str(), selected) && !selected)
+                requests.gotoPreset = i;
+            if (selected && status.scrollToPreset) ImGui::SetScrollHereY();
+            ImGui::PopID();
+        }
+        ImGui::EndListBox();
+    }
+}
+
 void sectionKeys() {
     ImGui::TextUnformatted(
-        "1 2 3    flat / gouraud / phong (single pane)\n"
-        "C        compare flat | gouraud | phong\n"
-        "W        wireframe\n"
-        "N        vertex normals   Shift+N face normals\n"
-        "L        light markers\n"
-        "click    probe the pixel: N, I, V, R, H and every term\n"
-        "Esc      clear the probe (with none: quit)\n"
-        "R        reset camera     F  frame model\n"
-        "F12      screenshot of the 3D view\n"
-        "Tab      hide / show the panel\n"
-        "Q        quit");
+        "PgDn PgUp   next / previous preset (or Right / Left)\n"
+        "Home End    first / last preset\n"
+        "Backspace   reset the preset (reload its file)\n"
+        "1 2 3       flat / gouraud / phong (single pane)\n"
+        "C           compare flat | gouraud | phong\n"
+        "W           wireframe\n"
+        "N           vertex normals   Shift+N face normals\n"
+        "L           light markers\n"
+        "click       probe the pixel: N, I, V, R, H and every term\n"
+        "R           reset camera     F  frame model\n"
+        "F12         screenshot of the 3D view\n"
+        "Tab         hide / show the panel\n"
+        "Esc         clear the probe (with none: quit)\n"
+        "Q           quit");
 }
 
 }  // namespace
@@ -346,6 +379,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         if (status.isError) ImGui::PopStyleColor();
         ImGui::Separator();
     }
+    if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
+        sectionPlaylist(settings, status, requests);
     // The probe's terms come first: a click on the view is a question the panel answers at once.
     if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
         requests.clearProbe |= probeSection(scene, *probe);
@@ -398,6 +433,37 @@ void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSca
                             IM_COL32(0, 0, 0, 150), pad);
         draw->AddText(ImGui::GetFont(), fontSize, pos, IM_COL32(255, 255, 255, 235), text);
     }
+}
+
+float drawCaption(const Scene& scene, const std::string& counter, const UiRect& view) {
+    if (scene.title.empty() && scene.caption.empty()) return 0.0f;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    ImFont* font = ImGui::GetFont();
+    // Sizes follow the view's width (a 1000-unit view gets 1.75 times the panel's font for the title,
+    // 1.35 for the caption), so the band reads from the back of the room yet covers only the bottom
+    // ~15% of a 16:9 view, and a small window's view is not all caption.
+    const float zoom = std::clamp(view.width / 1000.0f, 0.6f, 1.25f);
+    const float titleSize = ImGui::GetFontSize() * 1.75f * zoom;
+    const float captionSize = ImGui::GetFontSize() * 1.35f * zoom;
+    const float pad = captionSize * 0.5f;
+    const float counterWidth = counter.empty() ? 0.0f : font->CalcTextSizeA(captionSize, 1e9f, 0.0f, counter.c_str()).x + pad;
+    const float wrap = std::max(view.width - 2.0f * pad - counterWidth, 1.0f);
+    const char* title = scene.title.c_str();
+    const char* caption = scene.caption.c_str();
+    const float titleHeight = scene.title.empty() ? 0.0f : font->CalcTextSizeA(titleSize, 1e9f, wrap, title).y;
+    const float captionHeight = scene.caption.empty() ? 0.0f : font->CalcTextSizeA(captionSize, 1e9f, wrap, caption).y;
+    const float gap = titleHeight > 0.0f && captionHeight > 0.0f ? pad * 0.5f : 0.0f;
+    const float band = titleHeight + gap + captionHeight + 2.0f * pad;
+    const float top = view.y + view.height - band;
+    draw->AddRectFilled(ImVec2(view.x, top), ImVec2(view.x + view.width, view.y + view.height), IM_COL32(0, 0, 0, 150));
+    const ImVec2 titlePos(std::round(view.x + pad), std::round(top + pad));
+    draw->AddText(font, titleSize, titlePos, IM_COL32(255, 255, 255, 255), title, nullptr, wrap);
+    draw->AddText(font, captionSize, ImVec2(titlePos.x, std::round(titlePos.y + titleHeight + gap)),
+                  IM_COL32(225, 225, 225, 255), caption, nullptr, wrap);
+    if (!counter.empty())
+        draw->AddText(font, captionSize, ImVec2(std::round(view.x + view.width - counterWidth), titlePos.y),
+                      IM_COL32(200, 200, 200, 255), counter.c_str());
+    return band;
 }
 
 void drawHud(const PanelStatus& status, const UiRect& view) {

@@ -21,6 +21,7 @@ struct ViewSettings {
     bool showPanel = true;         // Tab
     bool paneLabels = true;        // "flat" / "gouraud" / "phong" over each pane
     bool showHud = true;           // frame time, FPS, triangles, GL renderer
+    bool showCaption = true;       // a scene's title and caption over the bottom of the 3D view
     std::string scenePath;         // the Save / Load field
     int selectedObject = 0;        // whose material, mesh and transform the panel shows
     PlotSettings plots;            // the Plots section's incidence angle and side of the surface
@@ -40,6 +41,11 @@ struct PanelStatus {
     std::size_t frameTriangles = 0;   // drawn per frame, all panes
     std::size_t objectTriangles = 0;  // of the selected object's mesh
     std::string progress;             // progressive area-light sampling: "pass k of n"; empty when off
+    // --playlist: every preset's title (empty: no playlist), which one is shown, and whether the list
+    // should scroll to it (once, after a step).
+    std::vector<std::string> presetTitles;
+    int currentPreset = 0;
+    bool scrollToPreset = false;
 };
 
 // Buttons pressed this frame.
@@ -47,6 +53,8 @@ struct PanelRequests {
     bool save = false, load = false, screenshot = false;
     bool resetCamera = false, frameModel = false, reloadShaders = false, quit = false;
     bool clearProbe = false;
+    int gotoPreset = -1;          // a preset clicked in the list, or the previous / next button
+    bool resetPreset = false;     // reload the current preset from its file
 };
 
 // A rectangle in ImGui's coordinates (window screen units, origin top-left).
@@ -61,6 +69,11 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
 // Labels each pane of the 3D view with its shading mode. `view` is the 3D view; `framebufferScale`
 // converts the renderer's pixel panes to ImGui units.
 void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
+
+// The scene's title and caption (lecture presets) in a band across the bottom of the 3D view, large
+// enough for a projector, with `counter` ("3 / 20") at the right; drawn on ImGui's foreground draw
+// list, so it shows with the panel hidden too. Returns the band's height in ImGui units (0: no text).
+float drawCaption(const Scene& scene, const std::string& counter, const UiRect& view);
 
 // Frame time, FPS, triangle count and GL renderer in the 3D view's bottom-left corner.
 void drawHud(const PanelStatus& status, const UiRect& view);

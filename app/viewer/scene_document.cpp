@@ -39,7 +39,10 @@ bool SceneDocument::syncGeometry() {
 }
 
 void SceneDocument::load(const std::string& path) {
-    Scene next = hasModelExtension(path) ? sceneForModel(path) : loadSceneFile(path);
+    replace(hasModelExtension(path) ? sceneForModel(path) : loadSceneFile(path));
+}
+
+void SceneDocument::replace(Scene next) {
     const int fileWidth = next.width, fileHeight = next.height;
     next.width = scene_.width;
     next.height = scene_.height;
@@ -50,6 +53,15 @@ void SceneDocument::load(const std::string& path) {
     geometry_ = std::move(geometry);
     home_ = scene_.camera;
     fitToView(fileWidth, fileHeight);
+}
+
+void SceneDocument::restore(Scene scene, const Camera& home) {
+    scene.width = scene_.width;
+    scene.height = scene_.height;
+    auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(scene));
+    scene_ = std::move(scene);
+    geometry_ = std::move(geometry);
+    home_ = home;
 }
 
 void SceneDocument::save(const std::string& path) const {

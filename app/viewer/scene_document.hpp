@@ -31,6 +31,12 @@ public:
     // (scene().width/height, the viewer keeps them at the 3D view's size) is kept and used to frame a
     // model. Throws InputError (or another exception) and changes nothing on failure.
     void load(const std::string& path);
+    // The same for a scene already read (a playlist preset): geometry built, a model without a camera
+    // framed, the home camera set, the view's size kept. Throws and changes nothing on failure.
+    void replace(Scene next);
+    // Puts back a scene and home camera this document showed before (a preset the lecturer left with
+    // edits): the camera is left as it was, the view's size kept. Throws and changes nothing on failure.
+    void restore(Scene scene, const Camera& home);
 
     // Writes the scene as JSON, atomically. The text is parsed back before anything is written, so a
     // file that would not load again is never saved (throws InputError naming the field).

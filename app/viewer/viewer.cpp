@@ -78,7 +78,8 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
       imgui_(window_.handle(), window_.contentScale()),
       renderer_(std::make_unique<Renderer>(glfwGetProcAddress, ShaderLibrary(options_.shaderDir))),
       overlays_(std::make_unique<OverlayRenderer>(ShaderLibrary(options_.shaderDir))),
-      document_(std::move(scene), std::move(geometry)) {
+      document_(std::move(scene), std::move(geometry)),
+      playlist_(std::move(options_.playlist), options_.adjustPreset) {
     settings_.showPanel = !options_.hidePanel;
     settings_.overlays = options_.overlays;
     settings_.plots = options_.plots;
@@ -104,6 +105,7 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
         setStatus("The screen has no room for the scene's " + std::to_string(sceneWidth) + "x" +
                       std::to_string(sceneHeight) + " beside the panel: framed the model to fit (F; Tab hides the panel).",
                   false);
+    if (playlist_.active()) settings_.scenePath = playlist_.preset(0).path;
     if (options_.verbose) std::cerr << "shadelab: viewer on " << status_.glRenderer << "\n";
 }
 
@@ -126,17 +128,28 @@ bool Viewer::frame(bool last) {
     if (pendingProbe_) setProbe(pendingProbe_->x, pendingProbe_->y), pendingProbe_.reset();
     handleInput(l);
     evaluateProbe();
+    status_.presetTitles.clear();
+    for (std::size_t i = 0; i < playlist_.size(); ++i) status_.presetTitles.push_back(presetTitle(playlist_.preset(i)));
+    status_.currentPreset = int(playlist_.current());
     const PanelRequests requests = settings_.showPanel ? drawPanel(document_.scene(), settings_, status_, l.panel,
                                                                    probe_ ? &*probe_ : nullptr)
                                                        : PanelRequests{};
+    if (settings_.showPanel) status_.scrollToPreset = false;  // the list has scrolled to it
     apply(requests);
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
     if (settings_.paneLabels) drawPaneLabels(document_.scene(), l.view, l.scale);
+    UiRect aboveCaption = l.view;
+    if (settings_.showCaption) {
+        const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
+                                                             std::to_string(playlist_.size())
+                                                       : std::string();
+        aboveCaption.height -= drawCaption(document_.scene(), counter, l.view);
+    }
     const std::vector<OverlayArrow> arrows = probeOverlays(l);
     const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
     const Image view = renderView(l, captureView, last, arrows);
-    if (settings_.showHud && settings_.showPanel) drawHud(status_, l.view);  // after: it shows this frame's pass
+    if (settings_.showHud && settings_.showPanel) drawHud(status_, aboveCaption);  // after: it shows this frame's pass
     imgui_.render();
     if (screenshotRequested_) saveScreenshot(view);
     if (last) writeLastFrameFiles(l, view);
@@ -180,6 +193,15 @@ void Viewer::handleInput(const FrameLayout& l) {
 
 void Viewer::handleKeys() {
     const ImGuiIO& io = ImGui::GetIO();
+    // Taken every frame, also while ImGui has the keyboard, so no press is acted on later.
+    const std::vector<int> keys = window_.takePressedKeys();
+    for (int key : keys) {
+        // A presenter's remote sends Page Down / Page Up: they step the playlist unless text is typed.
+        if (playlist_.active() && !io.WantTextInput) {
+            if (key == GLFW_KEY_PAGE_DOWN) goToPreset(playlist_.current() + 1);
+            if (key == GLFW_KEY_PAGE_UP && playlist_.current() > 0) goToPreset(playlist_.current() - 1);
+        }
+    }
     if (io.WantCaptureKeyboard) return;  // typing in a field or dragging a slider
     Scene& scene = document_.scene();
     OverlayOptions& overlays = settings_.overlays;
@@ -203,15 +225,30 @@ void Viewer::handleKeys() {
         default: break;
         }
     }
-    // ImGui 1.86 indexes keys by the backend's key codes (GLFW's).
-    if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) settings_.showPanel = !settings_.showPanel;
-    // Esc clears the probe first; with none set it quits.
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
-        if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
-        else window_.requestClose();
+    // Keys without characters, by GLFW key code.
+    for (int key : keys) {
+        switch (key) {
+        case GLFW_KEY_TAB: settings_.showPanel = !settings_.showPanel; break;
+        case GLFW_KEY_ESCAPE:  // clears the probe first; with none set it quits
+            if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
+            else window_.requestClose();
+            break;
+        case GLFW_KEY_F12: screenshotRequested_ = true; break;
+        case GLFW_KEY_F5: reloadShaders(); break;
+        default: break;
+        }
+        if (!playlist_.active()) continue;
+        switch (key) {
+        case GLFW_KEY_RIGHT: goToPreset(playlist_.current() + 1); break;
+        case GLFW_KEY_LEFT:
+            if (playlist_.current() > 0) goToPreset(playlist_.current() - 1);
+            break;
+        case GLFW_KEY_HOME: goToPreset(0); break;
+        case GLFW_KEY_END: goToPreset(playlist_.size() - 1); break;
+        case GLFW_KEY_BACKSPACE: resetPreset(); break;
+        default: break;
+        }
     }
-    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) screenshotRequested_ = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) reloadShaders();
 }
 
 void Viewer::apply(const PanelRequests& r) {
@@ -219,6 +256,8 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.frameModel) document_.frameModel();
     if (r.screenshot) screenshotRequested_ = true;  // taken after this frame's render
     if (r.load) loadFile(settings_.scenePath);
+    if (r.gotoPreset >= 0) goToPreset(std::size_t(r.gotoPreset));
+    if (r.resetPreset) resetPreset();
     if (r.reloadShaders) reloadShaders();
     if (r.quit) window_.requestClose();
     if (r.clearProbe) probeAnchor_.reset(), probe_.reset();
@@ -239,12 +278,44 @@ void Viewer::loadFile(const std::string& path) {
     }
     try {
         document_.load(path);
+        playlist_.detach();  // the next step must not keep this file as the preset's edits
         settings_.scenePath = hasExtension(path, ".json") ? path : "scene.json";
         settings_.selectedObject = 0;
         setStatus("loaded " + path, false);
     } catch (const std::exception& e) {
         setStatus(std::string(e.what()) + " (kept the current scene)", true);
     }
+}
+
+void Viewer::goToPreset(std::size_t index) {
+    try {
+        if (!playlist_.goTo(index, document_)) return;
+    } catch (const std::exception& e) {
+        setStatus(std::string(e.what()) + " (stayed on this preset)", true);
+        return;
+    }
+    status_.scrollToPreset = true;
+    showingPreset("preset " + std::to_string(playlist_.current() + 1) + "/" + std::to_string(playlist_.size()) + ": ");
+}
+
+void Viewer::resetPreset() {
+    try {
+        playlist_.reset(document_);
+    } catch (const std::exception& e) {
+        setStatus(std::string(e.what()) + " (the preset was not reset)", true);
+        return;
+    }
+    showingPreset("reset preset " + std::to_string(playlist_.current() + 1) + " from ");
+}
+
+// The document shows the current preset now: the panel's File path is its file, and the status line
+// (and with -v the terminal, which the viewer tests read) says so: `what` followed by the path.
+void Viewer::showingPreset(const std::string& what) {
+    const Preset& p = playlist_.preset(playlist_.current());
+    settings_.scenePath = p.path;
+    settings_.selectedObject = 0;
+    setStatus(what + p.path, false);
+    if (options_.verbose) std::cerr << "shadelab: " << status_.message << "\n";
 }
 
 // Mesh edits in the panel rebuild geometry here, once per change; every other frame only compares specs.

@@ -6,6 +6,7 @@
 #include "core/image.hpp"
 #include "core/probe.hpp"
 #include "core/ray_cast.hpp"
+#include "core/playlist.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
@@ -13,6 +14,7 @@
 #include "viewer/glfw_window.hpp"
 #include "viewer/imgui_layer.hpp"
 #include "viewer/panel.hpp"
+#include "viewer/playlist_navigator.hpp"
 #include "viewer/scene_document.hpp"
 
 #include <chrono>
@@ -42,6 +44,10 @@ struct ViewerOptions {
     std::optional<std::vector<std::string>> panelSections;  // --panel-sections: exactly these open at start
     std::optional<glm::ivec2> probe;  // --probe X,Y: start with the pixel probe set at this 3D-view pixel
     int selectedLight = -1;           // --select-light N: start with light N selected in the panel
+    // --playlist: the presets, the first of which is the scene the viewer starts with; `adjustPreset`
+    // is applied again when "reset preset" reloads one from its file (the command line's overrides).
+    std::vector<Preset> playlist;
+    SceneAdjust adjustPreset;
     bool verbose = false;
 };
 
@@ -78,6 +84,9 @@ private:
     void saveScreenshot(const Image& view);
     void writeLastFrameFiles(const FrameLayout& layout, const Image& view);
     void loadFile(const std::string& path);
+    void goToPreset(std::size_t index);
+    void resetPreset();
+    void showingPreset(const std::string& what);
     void reloadShaders();
     void setStatus(std::string message, bool isError);
     // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
@@ -96,6 +105,7 @@ private:
     std::unique_ptr<OverlayRenderer> overlays_;
     const SceneGeometry* uploaded_ = nullptr;  // what the renderers were last given
     SceneDocument document_;
+    PlaylistNavigator playlist_;
     ViewSettings settings_;
     PanelStatus status_;
     bool screenshotRequested_ = false;

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace shadelab;
@@ -340,4 +341,77 @@ TEST_F(Cli, RendersASharedGltfModel) {
     ASSERT_EQ(j.at("miss"), false);
     const std::uint8_t* centre = readPng(path("probe.png")).pixel(48, 48);
     for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(j.at("output_8bit")[std::size_t(k)].get<int>() - int(centre[k])), 1);
+}
+
+// --playlist DIR --output OUT/: exactly one PNG per preset, named after its file, at the --size given
+// (an override every preset takes), none of them blank; each is the image the preset file renders on
+// its own. The output folder is created (its parent exists).
+TEST_F(Cli, PlaylistWritesOnePngPerPreset) {
+    const fs::path lecture = fs::path(SHADELAB_SOURCE_DIR) / "assets" / "scenes" / "lecture";
+    std::set<std::string> expected;
+    for (const auto& e : fs::directory_iterator(lecture))
+        if (e.path().extension() == ".json") expected.insert(e.path().stem().string() + ".png");
+    ASSERT_GE(expected.size(), 20u);
+
+    const std::string out = path("slides") + "/";
+    const RunResult r = run({"--playlist", lecture.string(), "--output", out, "--size", "96x54"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::set<std::string> written;
+    for (const auto& e : fs::directory_iterator(out)) written.insert(e.path().filename().string());
+    EXPECT_EQ(written, expected);  // nothing else: no temporary file left behind
+    for (const std::string& name : written) {
+        const Image img = readPng(path("slides/" + name));
+        ASSERT_EQ(img.width, 96) << name;
+        ASSERT_EQ(img.height, 54) << name;
+        // Not blank: some pixels differ clearly from the background in the top-left corner (the
+        // darkest preset, a floor seen at a grazing angle, has ~5% such pixels at this size).
+        const std::uint8_t* corner = img.pixel(0, 0);
+        int drawn = 0;
+        for (int y = 0; y < 54; ++y)
+            for (int x = 0; x < 96; ++x) {
+                const std::uint8_t* p = img.pixel(x, y);
+                drawn += std::abs(p[0] - corner[0]) + std::abs(p[1] - corner[1]) + std::abs(p[2] - corner[2]) > 24;
+            }
+        EXPECT_GT(drawn, 96 * 54 / 50) << name << " looks blank";
+    }
+    // The playlist's image of a preset is that preset rendered on its own: the last one, drawn after
+    // every other preset on the same context, so no state is carried over from them.
+    const std::string last = *expected.rbegin();
+    const fs::path preset = lecture / (last.substr(0, last.size() - 4) + ".json");
+    ASSERT_EQ(run({preset.string(), "--size", "96x54", "--output", path("single.png")}).exitCode, 0);
+    EXPECT_EQ(compareImages(readPng(path("slides/" + last)), readPng(path("single.png")), 0).maxDifference, 0) << preset;
+}
+
+// --captions: each image gets a strip with its title (or file name) and caption below the unchanged
+// render; without a trailing '/' a folder that does not exist is refused, and a broken preset stops
+// the run before anything is created.
+TEST_F(Cli, PlaylistCaptionsAndOutputFolder) {
+    fs::create_directories(dir_ / "mini");
+    file("mini/01-titled.json", R"({"title": "Titled", "caption": "With a caption.", "mesh": {"type": "cube"}})");
+    file("mini/02-bare.json", R"({"mesh": {"type": "torus"}})");
+    const std::string mini = path("mini");
+    ASSERT_EQ(run({"--playlist", mini, "--output", path("plain") + "/", "--size", "160x90"}).exitCode, 0);
+    const RunResult r = run({"--playlist", mini, "--output", path("captioned") + "/", "--size", "160x90", "--captions"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* name : {"01-titled.png", "02-bare.png"}) {
+        const Image plain = readPng(path(std::string("plain/") + name));
+        const Image captioned = readPng(path(std::string("captioned/") + name));
+        ASSERT_EQ(plain.height, 90);
+        ASSERT_GT(captioned.height, 90 + 10) << name;
+        Image top(160, 90);
+        std::copy_n(captioned.rgba.begin(), top.rgba.size(), top.rgba.begin());
+        EXPECT_EQ(compareImages(top, plain, 0).maxDifference, 0) << name;
+    }
+    // A title and a caption take more room than a file name alone.
+    EXPECT_GT(readPng(path("captioned/01-titled.png")).height, readPng(path("captioned/02-bare.png")).height);
+
+    const RunResult noSlash = run({"--playlist", mini, "--output", path("new")});
+    EXPECT_EQ(noSlash.exitCode, 2);
+    EXPECT_NE(noSlash.err.find("end the name with /"), std::string::npos) << noSlash.err;
+    EXPECT_FALSE(fs::exists(path("new")));
+    file("mini/03-broken.json", R"({"shading": "toon"})");
+    const RunResult broken = run({"--playlist", mini, "--output", path("never") + "/"});
+    EXPECT_EQ(broken.exitCode, 2);
+    EXPECT_NE(broken.err.find("03-broken.json: shading: unknown value \"toon\""), std::string::npos) << broken.err;
+    EXPECT_FALSE(fs::exists(path("never")));
 }

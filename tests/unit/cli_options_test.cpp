@@ -196,3 +196,42 @@ TEST(CliOptions, Plots) {
     EXPECT_NE(errorOf({"--from-inside=1"}).find("--from-inside: takes no value"), std::string::npos);
     EXPECT_NE(errorOf({"--incidence", "30", "-o", "x.png"}).find("--incidence: sets up the plots"), std::string::npos);
 }
+
+TEST(CliOptions, PlaylistFlags) {
+    const Options o = parseOptions({"--playlist", "lecture", "--output", "handout/", "--captions", "--size", "640x360",
+                                    "--shading=gouraud"});
+    EXPECT_EQ(o.playlist.value_or(""), "lecture");
+    EXPECT_EQ(o.output.value_or(""), "handout/");  // a folder: no .png needed
+    EXPECT_TRUE(o.captions);
+    EXPECT_TRUE(parseOptions({"--playlist", "lecture", "--frames", "3"}).playlist.has_value());  // the viewer
+    EXPECT_NE(errorOf({"scene.json", "--playlist", "lecture"}).find("--playlist: "), std::string::npos);
+    EXPECT_NE(errorOf({"--playlist", "lecture", "--sweep", "ke=1,2", "--output", "d/"}).find("--sweep: not with --playlist"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--playlist", "lecture", "--benchmark", "3"}).find("--benchmark: not with --playlist"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--playlist", "lecture", "--info"}).find("--info: not with --playlist"), std::string::npos);
+    EXPECT_NE(errorOf({"--playlist", ""}).find("--playlist: empty folder name"), std::string::npos);
+    EXPECT_NE(errorOf({"--playlist"}).find("--playlist: needs a value"), std::string::npos);
+    EXPECT_NE(errorOf({"--captions"}).find("--captions: "), std::string::npos);
+    EXPECT_NE(errorOf({"--captions=yes", "--output", "x.png"}).find("--captions: takes no value"), std::string::npos);
+    EXPECT_NE(errorOf({"--output", "x.png", "--sweep", "ke=1,2", "--captions"}).find("--captions: "), std::string::npos);
+    EXPECT_NO_THROW(parseOptions({"scene.json", "--output", "x.png", "--captions"}));
+    EXPECT_NE(errorOf({"--output", "dir/"}).find("only .png output"), std::string::npos);  // a folder only with --playlist
+}
+
+// The overrides a playlist applies to each preset are the ones a scene file gets.
+TEST(CliOptions, OverridesApplyToAnyScene) {
+    const Options o = parseOptions({"--size", "96x54", "--shading", "flat", "--ke", "7", "--no-shadows"});
+    Scene s;
+    s.objects.resize(2);
+    s.shadows.enabled = true;
+    applyOverrides(s, o);
+    EXPECT_EQ(s.width, 96);
+    EXPECT_EQ(s.height, 54);
+    EXPECT_EQ(s.shading, ShadingMode::Flat);
+    EXPECT_FLOAT_EQ(s.objects[0].material.ke, 7.0f);
+    EXPECT_FLOAT_EQ(s.objects[1].material.ke, 7.0f);
+    EXPECT_FALSE(s.shadows.enabled);
+    s.lights.clear();
+    EXPECT_THROW(applyOverrides(s, parseOptions({"--show", "light:0"})), InputError);
+}

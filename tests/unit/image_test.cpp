@@ -6,6 +6,8 @@
 
 #include <filesystem>
 
+#include <unistd.h>
+
 using namespace shadelab;
 namespace fs = std::filesystem;
 
@@ -19,8 +21,12 @@ Image gradient(int w, int h) {
         }
     return img;
 }
+// One folder per test and process: CTest runs the tests of this file in parallel processes, and /tmp
+// is shared with other users of the machine.
 struct TempDir {
-    fs::path path = fs::temp_directory_path() / ("shadelab-image-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    fs::path path = fs::temp_directory_path() /
+                    ("shadelab-image-test-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                     "-" + std::to_string(::getpid()));
     TempDir() { fs::create_directories(path); }
     ~TempDir() { fs::remove_all(path); }
 };
@@ -89,4 +95,34 @@ TEST(FileIo, OutputPathChecks) {
     EXPECT_TRUE(hasExtension("A.PNG", ".png"));
     EXPECT_TRUE(hasModelExtension("m.GlB"));
     EXPECT_FALSE(hasModelExtension("m.json"));
+}
+
+// --playlist --output DIR/: an existing folder, or a new one named with a trailing '/' inside an
+// existing folder; never a file, never a tree of missing folders.
+TEST(FileIo, OutputFolderChecks) {
+    TempDir dir;
+    const std::string existing = dir.path.string();
+    EXPECT_NO_THROW(checkOutputFolder(existing, "--output"));
+    EXPECT_NO_THROW(checkOutputFolder(existing + "/", "--output"));
+    writePng((dir.path / "x.png").string(), gradient(2, 2));
+    auto message = [](const std::string& path) {
+        try {
+            checkOutputFolder(path, "--output");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(message((dir.path / "x.png").string()).find("--output: "), std::string::npos);
+    EXPECT_NE(message((dir.path / "x.png").string()).find("is a file"), std::string::npos);
+    EXPECT_NE(message((dir.path / "new").string()).find("end the name with /"), std::string::npos);
+    EXPECT_NE(message((dir.path / "no" / "new/").string()).find("does not exist"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir.path / "new"));
+    EXPECT_FALSE(fs::exists(dir.path / "no"));
+
+    createOutputFolder((dir.path / "new/").string(), "--output");
+    EXPECT_TRUE(fs::is_directory(dir.path / "new"));
+    EXPECT_NO_THROW(createOutputFolder((dir.path / "new/").string(), "--output"));  // already there: fine
+    EXPECT_THROW(createOutputFolder((dir.path / "no" / "new/").string(), "--output"), InputError);
+    EXPECT_FALSE(fs::exists(dir.path / "no"));
 }

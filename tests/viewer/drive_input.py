@@ -8,9 +8,9 @@ Exits 77 (skipped) when libX11/libXtst cannot be loaded (Debian: libx11-6, libxt
 Mouse deltas and wheel steps are summed by ImGui
 over frames, so the camera's end position does not depend on the frame rate.
 """
-import glob, json, math, os, subprocess, sys
+import glob, json, math, os, sys
 
-from xinput import start_viewer
+from xinput import quit_viewer, start_viewer
 
 shadelab, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
@@ -46,12 +46,7 @@ button(1, True)           # a click on the sphere sets the pixel probe ...
 button(1, False)
 key("Escape")             # ... and Esc clears it instead of quitting
 key("F12")                # so this second screenshot is taken
-key("q")
-try:
-    proc.communicate(timeout=60)
-except subprocess.TimeoutExpired:
-    proc.kill()
-    sys.exit("the viewer did not quit on Q")
+quit_viewer(proc, display)
 
 failures = []
 def check(ok, what):

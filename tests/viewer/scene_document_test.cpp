@@ -4,6 +4,8 @@
 #include "core/scene_json.hpp"
 #include "viewer/scene_document.hpp"
 
+#include "test_files.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,14 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string outDir(const std::string& name) {
-    const fs::path dir = fs::path(VIEWER_TEST_OUT) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir.string();
-}
-
-void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+using test::outDir;
+using test::writeText;
 
 SceneDocument defaultDocument() {
     Scene s = defaultScene();

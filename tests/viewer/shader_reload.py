@@ -4,9 +4,9 @@ the picture stays; once the file is fixed, F5 reloads it.
 
 usage: shader_reload.py SHADELAB SHADER_SOURCE_DIR OUTDIR     (inside an X server: see xvfb_run.sh)
 """
-import glob, os, shutil, subprocess, sys, time
+import os, shutil, sys
 
-from xinput import start_viewer
+from xinput import quit_viewer, screenshot, start_viewer
 
 shadelab, shader_src, out = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(out, ignore_errors=True)
@@ -14,32 +14,20 @@ shaders = os.path.join(out, "shaders")
 shutil.copytree(shader_src, shaders)
 proc, display = start_viewer([shadelab, "--shader-dir", shaders, "--size", "400x300", "--layout", "compare"], out)
 
-def screenshot():
-    before = set(glob.glob(os.path.join(out, "shadelab-*.png")))
-    display.key("F12")
-    time.sleep(0.3)
-    new = set(glob.glob(os.path.join(out, "shadelab-*.png"))) - before
-    return open(new.pop(), "rb").read() if new else None
-
-first = screenshot()
+first = screenshot(display, out)
 phong = os.path.join(shaders, "phong.frag")
 good = open(phong).read()
 with open(phong, "a") as f:
     f.write("this is not GLSL;\n")
 broken_line = good.count("\n") + 1
 display.key("F5")                       # reload: must fail and keep the running programs
-after_broken = screenshot()
+after_broken = screenshot(display, out)
 display.key("2")                        # switching mode must not pick up the broken file either
 display.key("c")
-after_switch = screenshot()
+after_switch = screenshot(display, out)
 open(phong, "w").write(good)
 display.key("F5")                       # fixed: reloads
-display.key("q")
-try:
-    _, err = proc.communicate(timeout=60)
-except subprocess.TimeoutExpired:
-    proc.kill()
-    sys.exit("the viewer did not quit on Q")
+err = quit_viewer(proc, display)
 
 failures = []
 if proc.returncode != 0:

@@ -290,5 +290,32 @@ TEST(Window, AreaLightSamples) {
     EXPECT_EQ(elsewhere, 0);
 }
 
+// A preset's title and caption are drawn over the bottom of the 3D view, with the panel hidden too
+// (a projector), and not into the 3D view's own pixels (F12, --screenshot-view). A scene without them
+// gets no band.
+TEST(Window, TitleAndCaptionOverTheView) {
+    const std::string dir = outDir();
+    const std::string base = " --hide-panel --frames 3 --screenshot " + dir + "/window.png --screenshot-view " + dir + "/view.png";
+    const RunResult r = shadelab("--playlist " + scene("playlist") + base, dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image window = readPng(dir + "/window.png"), view = readPng(dir + "/view.png");
+    ASSERT_EQ(window.width, 400);
+    ASSERT_EQ(window.height, 300);
+    // Between the pane label and the band the window is the 3D view.
+    expectSameImage(crop(window, 0, 60, 400, 150), crop(view, 0, 60, 400, 150), "above the caption band");
+    // The band: the view darkened behind light text along the bottom rows.
+    const Image band = crop(window, 0, 260, 400, 40), under = crop(view, 0, 260, 400, 40);
+    std::size_t text = 0;
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < 400; ++x) text += band.pixel(x, y)[0] > 200 && band.pixel(x, y)[1] > 200 && band.pixel(x, y)[2] > 200;
+    EXPECT_GT(text, 150u) << "no caption text at the bottom of the window";
+    EXPECT_GT(compareImages(band, under, 8).failingShare, 0.1) << "no band over the view";
+
+    const RunResult plain = shadelab(scene("playlist/03-untitled.json") + base, dir);
+    ASSERT_EQ(plain.status, 0) << plain.output;
+    const Image plainWindow = readPng(dir + "/window.png"), plainView = readPng(dir + "/view.png");
+    expectSameImage(crop(plainWindow, 0, 200, 400, 100), crop(plainView, 0, 200, 400, 100), "no title: no band");
+}
+
 }  // namespace
 }  // namespace shadelab

@@ -5,6 +5,8 @@ several frames even on a loaded 2-core CI machine. Importing this module exits 7
 when libX11/libXtst cannot be loaded (Debian: libx11-6, libxtst6).
 """
 import ctypes
+import glob
+import os
 import subprocess
 import sys
 import time
@@ -33,6 +35,30 @@ def start_viewer(args, cwd):
         if "viewer on" in line:
             break
     return proc, Display()
+
+
+def quit_viewer(proc, display):
+    """Presses Q and returns the viewer's stderr once it has exited; ends the test if it does not quit."""
+    display.key("q")
+    try:
+        _, err = proc.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        sys.exit("the viewer did not quit on Q")
+    return err
+
+
+def screenshot(display, folder):
+    """Presses F12 and returns the bytes of the PNG the viewer wrote into `folder` (its working folder),
+    or None when none appeared within 2 s."""
+    before = set(glob.glob(os.path.join(folder, "shadelab-*.png")))
+    display.key("F12")
+    for _ in range(20):
+        new = set(glob.glob(os.path.join(folder, "shadelab-*.png"))) - before
+        if new:
+            return open(new.pop(), "rb").read()
+        time.sleep(0.1)
+    return None
 
 
 class Display:
