@@ -43,7 +43,8 @@ ProbeEvaluation evaluate(const TriangleContext& c, const glm::vec3& posWorld, co
     Visibility visibility;
     if (c.scene.shadows.enabled) {
         const float offset = kShadowRayOffset * std::max(c.caster.radius(), 1e-3f);
-        visibility = [&](const glm::vec3& p, const LightRay& ray) {
+        // `offset` by value: the lambda outlives this block (shadeTerms calls it below).
+        visibility = [&, offset](const glm::vec3& p, const LightRay& ray) {
             ProbeLight& light = e.lights[ray.light];
             ++light.samplesTested;
             const bool hidden = c.caster.occluded(p + offset * nrmWorld, ray.towardLight, 0.0f, ray.distance - offset);

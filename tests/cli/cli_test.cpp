@@ -318,7 +318,8 @@ TEST_F(Cli, ProbePrintsThePixelItWrote) {
     ASSERT_EQ(miss.exitCode, 0) << miss.err;
     const auto m = nlohmann::json::parse(miss.out);
     EXPECT_EQ(m.at("miss"), true);
-    const std::uint8_t* corner = readPng(path("m.png")).pixel(0, 0);
+    const Image missImage = readPng(path("m.png"));  // kept alive: `corner` points into it
+    const std::uint8_t* corner = missImage.pixel(0, 0);
     EXPECT_EQ(m.at("output_8bit"), nlohmann::json::array({corner[0], corner[1], corner[2]}));
 }
 
@@ -339,7 +340,8 @@ TEST_F(Cli, RendersASharedGltfModel) {
     ASSERT_EQ(probe.exitCode, 0) << probe.err;
     const auto j = nlohmann::json::parse(probe.out);
     ASSERT_EQ(j.at("miss"), false);
-    const std::uint8_t* centre = readPng(path("probe.png")).pixel(48, 48);
+    const Image probeImage = readPng(path("probe.png"));  // kept alive: `centre` points into it
+    const std::uint8_t* centre = probeImage.pixel(48, 48);
     for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(j.at("output_8bit")[std::size_t(k)].get<int>() - int(centre[k])), 1);
 }
 
