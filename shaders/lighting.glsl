@@ -81,8 +81,9 @@ float fresnelWeight(float cosVH) {
 }
 #endif
 
-// k_d C (N.I) + k_s S spec for one light direction with N.I > 0.
-vec3 reflected(vec3 I, float NdotI, vec3 N, vec3 V) {
+// L_l (k_d C (N.I) + k_s S spec) for light l from direction I with N.I > 0 (the products with L_l,
+// k_d C and k_s S come folded from the ObjectBlock).
+vec3 reflected(int l, vec3 I, float NdotI, vec3 N, vec3 V) {
 #if SL_REFLECTION == SL_REFLECTION_PHONG
     vec3 R = 2.0 * NdotI * N - I;
     float cosLobe = dot(R, V);
@@ -101,13 +102,13 @@ vec3 reflected(vec3 I, float NdotI, vec3 N, vec3 V) {
 #if SL_FRESNEL != SL_FRESNEL_NONE
     spec *= fresnelWeight(dot(V, normalize(I + V)));
 #endif
-    float kd = u_coefficients.y, ks = u_coefficients.z;
 #if SL_SHOW == SL_SHOW_DIFFUSE
-    ks = 0.0;
+    return u_lightDiffuse[l].rgb * NdotI;                      // L_l k_d C (N.I)
 #elif SL_SHOW == SL_SHOW_SPECULAR
-    kd = 0.0;
+    return u_lightSpecular[l].rgb * spec;                      // L_l k_s S spec
+#else
+    return u_lightDiffuse[l].rgb * NdotI + u_lightSpecular[l].rgb * spec;
 #endif
-    return kd * u_color.rgb * NdotI + ks * u_specularColor.rgb * spec;
 }
 
 // The distance falloff at squared distance r2 (core/lighting.cpp, attenuationFactor).
@@ -205,7 +206,7 @@ vec3 lightTerm(int l, int kind, int attenuation, SL_SHADOW_PARAM vec3 posWorld, 
     falloff *= kind == SL_LIGHT_DIRECTIONAL ? directionalVisibility(shadowMap, l, posWorld, N)
                                             : pointVisibility(shadowMap, l, posWorld, N);
 #endif
-    return u_lights[l].radiance.rgb * falloff * reflected(I, NdotI, N, V);
+    return falloff * reflected(l, I, NdotI, N, V);
 }
 
 // Area light l: nx * ny point-light samples, each weighted by its share of the area (1 / (nx ny))
@@ -246,12 +247,12 @@ vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 
             vec3 c = clip.xyz / clip.w * 0.5 + 0.5;
             weight *= texture(shadowMap, vec4(c.xy, float(j * nx + i), c.z));
 #endif
-            sum += weight * reflected(I, NdotI, N, V);
+            sum += weight * reflected(l, I, NdotI, N, V);
         }
 #if SL_ACCUMULATE
     sum *= float(u_areaPass.z * u_areaPass.w);
 #endif
-    return u_lights[l].radiance.rgb / float(nx * ny) * sum;
+    return sum / float(nx * ny);
 }
 
 // posWorld: the point being shaded; nrmWorld: its unit normal. Returns linear RGB before the clamp
@@ -263,7 +264,7 @@ vec3 shadeLectureUnclamped(vec3 posWorld, vec3 nrmWorld) {
     return clamp(u_color.rgb, 0.0, 1.0);
 #endif
 #if SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_AMBIENT
-    vec3 L = u_coefficients.x * u_ambient.rgb * u_color.rgb;
+    vec3 L = u_ambientTerm.rgb;  // k_a A C
 #else
     vec3 L = vec3(0.0);
 #endif

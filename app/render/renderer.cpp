@@ -70,18 +70,26 @@ gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
     return b;
 }
 
-gpu::ObjectBlock objectBlock(const SceneObject& o) {
+// `color` is the draw's C: the material's, or a glTF part's base colour.
+gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, const Scene& scene) {
     gpu::ObjectBlock b{};
     const glm::mat4 world = worldFromObject(o.transform);
     const glm::mat4 normal = glm::mat4(normalWorldFromObject(world));
     std::memcpy(b.worldFromObject, glm::value_ptr(world), sizeof b.worldFromObject);
     std::memcpy(b.normalWorldFromObject, glm::value_ptr(normal), sizeof b.normalWorldFromObject);
-    copyVec(b.color, o.material.color);
+    copyVec(b.color, color);
     copyVec(b.specularColor, o.material.specularColor);
     b.coefficients[0] = o.material.ka;
     b.coefficients[1] = o.material.kd;
     b.coefficients[2] = o.material.ks;
     b.coefficients[3] = o.material.ke;
+    copyVec(b.ambientTerm, o.material.ka * scene.ambient * color);
+    const std::size_t count = std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS);
+    for (std::size_t l = 0; l < count; ++l) {
+        const glm::vec3 radiance = scene.lights[l].color * scene.lights[l].intensity;
+        copyVec(b.lightDiffuse[l], radiance * o.material.kd * color);
+        copyVec(b.lightSpecular[l], radiance * o.material.ks * o.material.specularColor);
+    }
     return b;
 }
 
@@ -335,8 +343,7 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
     }
     for (std::size_t d = 0; d < draws.size(); ++d) {
-        gpu::ObjectBlock b = objectBlock(scene.objects[draws[d].object]);
-        copyVec(b.color, draws[d].color);
+        const gpu::ObjectBlock b = objectBlock(scene.objects[draws[d].object], draws[d].color, scene);
         std::memcpy(staging.data() + objectsOffset + d * objectStride, &b, sizeof b);
     }
     glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.get());
