@@ -459,7 +459,6 @@ Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, cons
         glUseProgram(resolve.get());
         glUniform1i(glGetUniformLocation(resolve.get(), "u_sum"), 0);
         glUniform1i(glGetUniformLocation(resolve.get(), "u_depth"), 1);
-        if (!emptyVao_) emptyVao_ = gl::makeVertexArray();
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     glViewport(0, 0, w, h);
@@ -485,6 +484,7 @@ Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, cons
 }
 
 void Renderer::drawFullscreen(GLuint program) {
+    if (!emptyVao_) emptyVao_ = gl::makeVertexArray();
     glDisable(GL_CULL_FACE);
     glUseProgram(program);
     glBindVertexArray(emptyVao_.get());
@@ -497,21 +497,13 @@ void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, fl
     if (pane.width <= 0 || pane.height <= 0) return;
     if (!diffProgram_) {
         diffProgram_ = buildProgram("difference", shaders_, {}, kFullscreenVertex);
-        emptyVao_ = gl::makeVertexArray();
         glUseProgram(diffProgram_.get());
         glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceA"), 0);
         glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceB"), 1);
     }
     if (!diffSources_[0] || diffWidth_ != pane.width || diffHeight_ != pane.height) {
-        for (gl::Texture& t : diffSources_) {
-            GLuint id = 0;
-            glGenTextures(1, &id);
-            t = gl::Texture(id);
-            glBindTexture(GL_TEXTURE_2D, id);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, pane.width, pane.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        }
+        for (gl::Texture& t : diffSources_)
+            t = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, pane.width, pane.height);
         diffWidth_ = pane.width, diffHeight_ = pane.height;
     }
     // Copy both source panes out of the target (GL's rows run bottom-up: y flips).
@@ -527,16 +519,12 @@ void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, fl
     const int originY = target.height - pane.y - pane.height;
     glViewport(pane.x, originY, pane.width, pane.height);
     glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
     glUseProgram(diffProgram_.get());
     glUniform2i(glGetUniformLocation(diffProgram_.get(), "u_paneOrigin"), pane.x, originY);
     glUniform1f(glGetUniformLocation(diffProgram_.get(), "u_factor"), factor);
-    glBindVertexArray(emptyVao_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
+    drawFullscreen(diffProgram_.get());
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);
 }
 
 Image readPixels(const RenderTarget& target) {

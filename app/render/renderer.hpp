@@ -110,6 +110,7 @@ private:
         int done = 0;
         std::array<gl::Program, 2> resolve;              // by output encoding (linear, sRGB)
     } progressive_;
+    // One triangle over the viewport with `program` (shaders/fullscreen.vert): the image passes.
     void drawFullscreen(GLuint program);
 };
 
