@@ -2,6 +2,7 @@
 """shadelab's benchmark: every figure in bench/README.md comes from this script.
 
   python3 bench/run.py [--shadelab build/shadelab] [--rounds 5] [--frames 40] [--parts frames,compare,process,startup]
+                       [--backend auto|osmesa|egl]
 
 frames   shadelab --benchmark vs the bare OSMesa program of ../shared/bench (probe.cpp) on the same UV
          sphere (stacks s, slices 2s) at 1280x720, per mode, for s in --stacks.
@@ -14,7 +15,9 @@ startup  process start to the first frame in the viewer window (Xvfb), default s
 
 The machine is noisy, so the programs run alternately, --rounds times, and the tables give medians
 over rounds (min-max) and the median of the per-round ratios. Results also go to
-build/bench/results.json for bench/plot.py.
+build/bench/results.json for bench/plot.py. --backend is passed to shadelab --benchmark (frames and
+compare; the probe is always OSMesa): `--backend egl --parts compare` runs the same benchmark on a GPU
+through EGL, and the first line names the renderer shadelab reports.
 """
 import argparse
 import json
@@ -55,9 +58,20 @@ def sphere_scene(out_dir, stacks, width=1280, height=720, layout="single"):
     return path
 
 
+BACKEND = ["--backend", "auto"]
+
+
 def shadelab_frames(exe, scene, frames, extra=()):
-    out = subprocess.check_output([exe, scene, "--benchmark", str(frames)] + list(extra), text=True)
+    out = subprocess.check_output([exe, scene, "--benchmark", str(frames)] + BACKEND + list(extra), text=True)
     return {j["shading"]: j["median_ms"] for j in map(json.loads, out.splitlines())}
+
+
+def renderer(exe, work):
+    """The backend and GL renderer shadelab reports for this machine, e.g. 'osmesa: llvmpipe (...)'."""
+    out = subprocess.check_output([exe, sphere_scene(work, 8, 64, 64), "--benchmark", "1", "--shading", "flat"] +
+                                  BACKEND, text=True)
+    j = json.loads(out.splitlines()[0])
+    return "%s: %s" % (j["backend"], j["gl_renderer"])
 
 
 def probe_frames(exe, stacks, frames):
@@ -159,7 +173,7 @@ def part_process(a, work, results):
             out = os.path.join(work, "out.png")
             st, sm, ft, fm = [], [], [], []
             for _ in range(a.rounds):
-                w, m = timed([a.shadelab, path, "--size", "1280x720", "--output", out])
+                w, m = timed([a.shadelab, path, "--size", "1280x720", "--output", out] + BACKEND)
                 st.append(w), sm.append(m)
                 if f3d:
                     w, m = timed([f3d, "--resolution=1280,720", "--output=" + out, path], env=x.env)
@@ -191,13 +205,15 @@ def main():
     ap.add_argument("--frames", type=int, default=40)
     ap.add_argument("--stacks", default="23,224,708")
     ap.add_argument("--parts", default="frames,compare,process,startup")
+    ap.add_argument("--backend", default="auto", choices=["auto", "osmesa", "egl"])
     a = ap.parse_args()
+    BACKEND[1] = a.backend
     work = os.path.join(ROOT, "build", "bench")
     os.makedirs(work, exist_ok=True)
     results = {}
     parts = a.parts.split(",")
-    print("Machine: %d cores, %s; %s" % (os.cpu_count(), subprocess.check_output(["uname", "-sr"], text=True).strip(),
-                                         "llvmpipe via OSMesa"))
+    print("Machine: %d cores, %s; shadelab renders with %s" % (
+        os.cpu_count(), subprocess.check_output(["uname", "-sr"], text=True).strip(), renderer(a.shadelab, work)))
     if "frames" in parts:
         part_frames(a, work, build_probe(work), results)
     if "compare" in parts:

@@ -16,6 +16,7 @@ struct EglApi {
     PFNEGLQUERYSTRINGPROC queryString = nullptr;
     PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay = nullptr;
     PFNEGLQUERYDEVICESEXTPROC queryDevices = nullptr;
+    PFNEGLQUERYDEVICESTRINGEXTPROC queryDeviceString = nullptr;
     PFNEGLINITIALIZEPROC initialize = nullptr;
     PFNEGLTERMINATEPROC terminate = nullptr;
     PFNEGLBINDAPIPROC bindApi = nullptr;
@@ -37,6 +38,7 @@ const EglApi& api() {
         a.queryString = reinterpret_cast<PFNEGLQUERYSTRINGPROC>(get("eglQueryString"));
         a.getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(get("eglGetPlatformDisplayEXT"));
         a.queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(get("eglQueryDevicesEXT"));
+        a.queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(get("eglQueryDeviceStringEXT"));
         a.initialize = reinterpret_cast<PFNEGLINITIALIZEPROC>(get("eglInitialize"));
         a.terminate = reinterpret_cast<PFNEGLTERMINATEPROC>(get("eglTerminate"));
         a.bindApi = reinterpret_cast<PFNEGLBINDAPIPROC>(get("eglBindAPI"));
@@ -74,20 +76,35 @@ std::string eglError(const char* what) {
 EglContext::EglContext(int width, int height) {
     const EglApi& egl = api();
     const char* clientExtensions = egl.queryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    EGLDisplay display = EGL_NO_DISPLAY;
-    // Mesa's surfaceless platform needs no window system and no GPU (llvmpipe when there is none).
-    if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
-        display = egl.getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    // Other drivers (NVIDIA's) offer their GPUs as EGL devices.
-    if (display == EGL_NO_DISPLAY && hasExtension(clientExtensions, "EGL_EXT_platform_device") && egl.queryDevices) {
-        EGLDeviceEXT devices[8];
-        EGLint count = 0;
-        if (egl.queryDevices(8, devices, &count) && count > 0)
-            display = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[0], nullptr);
-    }
-    if (display == EGL_NO_DISPLAY) throw std::runtime_error("EGL: no surfaceless platform and no EGL device");
+    // An initialised display: a hardware EGL device first (NVIDIA's driver offers its GPUs only this
+    // way, and with Mesa installed beside it the surfaceless platform would quietly be llvmpipe), then
+    // Mesa's surfaceless platform (Mesa's GPU driver if it has one, else llvmpipe), then any device.
     EGLint major = 0, minor = 0;
-    if (!egl.initialize(display, &major, &minor)) throw std::runtime_error(eglError("eglInitialize"));
+    auto initialised = [&](EGLDisplay d) { return d != EGL_NO_DISPLAY && egl.initialize(d, &major, &minor); };
+    EGLDeviceEXT devices[16];
+    EGLint deviceCount = 0;
+    if (hasExtension(clientExtensions, "EGL_EXT_platform_device") && egl.queryDevices &&
+        !egl.queryDevices(16, devices, &deviceCount))
+        deviceCount = 0;
+    EGLDisplay display = EGL_NO_DISPLAY;
+    for (EGLint i = 0; i < deviceCount && display == EGL_NO_DISPLAY; ++i) {
+        const char* deviceExtensions = egl.queryDeviceString ? egl.queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
+        if (hasExtension(deviceExtensions, "EGL_MESA_device_software")) continue;
+        const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        if (initialised(d)) display = d;
+    }
+    if (display == EGL_NO_DISPLAY && hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
+        const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (initialised(d)) display = d;
+    }
+    for (EGLint i = 0; i < deviceCount && display == EGL_NO_DISPLAY; ++i) {
+        const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        if (initialised(d)) display = d;
+    }
+    if (display == EGL_NO_DISPLAY)
+        throw std::runtime_error(deviceCount == 0 && !hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")
+                                     ? "EGL: no surfaceless platform and no EGL device"
+                                     : eglError("eglInitialize (every EGL device and the surfaceless platform)"));
     display_ = display;
     if (!egl.bindApi(EGL_OPENGL_API)) throw std::runtime_error(eglError("eglBindAPI(OpenGL)"));
     // No config and no surface (EGL_KHR_no_config_context, EGL_KHR_surfaceless_context): the
