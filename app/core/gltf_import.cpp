@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <glm/common.hpp>
@@ -12,11 +13,13 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <memory>
 
 namespace shadelab {
 namespace {
@@ -449,29 +452,108 @@ Mesh GltfReader::read() {
 
 }  // namespace
 
-Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": cannot read: no such file");
-    const fs::path folder = fs::absolute(fs::path(path), ec).parent_path().lexically_normal();
-    return loadGltfFromMemory(readTextFile(path, std::uint64_t(1) << 31), path, folder.string(), infoOut);
+namespace {
+
+// A .glb: a 12-byte header, a JSON chunk and an optional BIN chunk that holds buffer 0. tinygltf's own
+// .glb loader copies the BIN chunk out of the file's bytes, so a large model was in memory twice; here
+// the chunks are found first, tinygltf parses the JSON, and buffer 0 is read from its range of the file
+// (or of the bytes in memory) straight into tinygltf's buffer, once.
+struct GlbLayout {
+    std::string json;
+    bool hasBin = false;
+    std::uint64_t binOffset = 0, binLength = 0;
+};
+
+using ByteReader = std::function<void(std::uint64_t offset, std::size_t length, unsigned char* out)>;
+
+std::uint32_t readU32(const unsigned char* b) {
+    return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
 }
 
-Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::string& folderName,
-                        GltfInfo* infoOut) {
-    const std::string& path = label;
-    GltfInfo info;
-    const fs::path folder(folderName);
+GlbLayout splitGlb(std::uint64_t available, const ByteReader& read, const std::string& label) {
+    auto bad = [&](const std::string& why) { return InputError(label + ": not a valid .glb: " + why); };
+    if (available < 20) throw bad("shorter than its 12-byte header and first chunk header");
+    unsigned char head[20];
+    read(0, sizeof head, head);
+    const std::uint32_t version = readU32(head + 4), total = readU32(head + 8);
+    const std::uint32_t jsonLength = readU32(head + 12), jsonType = readU32(head + 16);
+    if (version != 2) throw bad("version " + std::to_string(version) + " (only glTF 2.0 is read)");
+    if (total > available)
+        throw bad("the header says " + std::to_string(total) + " bytes, the file has " + std::to_string(available));
+    if (jsonType != 0x4E4F534Au) throw bad("the first chunk is not JSON");
+    if (std::uint64_t(jsonLength) > std::uint64_t(total) - 20)
+        throw bad("the JSON chunk's length " + std::to_string(jsonLength) + " runs past the end");
+    GlbLayout g;
+    g.json.resize(jsonLength);
+    read(20, jsonLength, reinterpret_cast<unsigned char*>(g.json.data()));
+    const std::uint64_t next = 20 + std::uint64_t(jsonLength);
+    if (next + 8 <= total) {
+        unsigned char chunk[8];
+        read(next, sizeof chunk, chunk);
+        const std::uint32_t binLength = readU32(chunk), binType = readU32(chunk + 4);
+        if (binType == 0x004E4942u) {
+            if (std::uint64_t(binLength) > total - next - 8)
+                throw bad("the BIN chunk's length " + std::to_string(binLength) + " runs past the end");
+            g.hasBin = true;
+            g.binOffset = next + 8;
+            g.binLength = binLength;
+        }
+    }
+    return g;
+}
 
+// What the file-system callbacks need: the folder URIs are confined to and, for a .glb, where buffer 0
+// is (tinygltf asks for it by a URI that names no file: kGlbBinUri joined onto the folder).
+constexpr const char* kGlbBinUri = "<GLB BIN chunk>";
+struct LoadContext {
+    fs::path folder;
+    std::string binPath;  // folder / kGlbBinUri; empty unless a .glb's buffer 0 is its BIN chunk
+    std::uint64_t binOffset = 0, binLength = 0;
+    const ByteReader* read = nullptr;
+    std::string* release = nullptr;  // bytes to free once tinygltf has parsed (it keeps what it needs)
+};
+
+// The JSON of a .glb with buffer 0 pointed at the BIN chunk (kGlbBinUri) when it is stored there.
+std::string pointBufferAtBin(const GlbLayout& g, const std::string& label, bool* pointed, std::uint64_t* binLength) {
+    nlohmann::json doc = nlohmann::json::parse(g.json, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) throw InputError(label + ": the .glb's JSON chunk is not a JSON object");
+    const auto buffers = doc.find("buffers");
+    if (buffers == doc.end() || !buffers->is_array() || buffers->empty() || !(*buffers)[0].is_object() ||
+        (*buffers)[0].contains("uri"))
+        return g.json;  // buffer 0 is external or embedded as a data: URI, or there is none
+    nlohmann::json& buffer = (*buffers)[0];
+    if (!g.hasBin) throw InputError(label + ": buffer 0 has no uri and the .glb has no BIN chunk");
+    const auto length = buffer.find("byteLength");
+    if (length == buffer.end() || !length->is_number_unsigned())
+        throw InputError(label + ": buffer 0: byteLength is missing or not a non-negative integer");
+    if (length->get<std::uint64_t>() > g.binLength)
+        throw InputError(label + ": buffer 0: byteLength " + std::to_string(length->get<std::uint64_t>()) +
+                         " is more than the BIN chunk's " + std::to_string(g.binLength) + " bytes");
+    *binLength = length->get<std::uint64_t>();
+    *pointed = true;
+    buffer["uri"] = kGlbBinUri;
+    return doc.dump();
+}
+
+Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, GltfInfo* infoOut) {
+    GltfInfo info;
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks fsc{};
     // FileExists answers "yes" for a path outside the folder so that tinygltf goes on to read it and
     // ReadWholeFile can refuse it with a message that says why (rather than "file not found").
     fsc.FileExists = [](const std::string& p, void* user) {
-        return !insideFolder(p, *static_cast<const fs::path*>(user)) || fs::is_regular_file(fs::path(p));
+        const LoadContext& c = *static_cast<const LoadContext*>(user);
+        return p == c.binPath || !insideFolder(p, c.folder) || fs::is_regular_file(fs::path(p));
     };
     fsc.ExpandFilePath = [](const std::string& p, void*) { return p; };
     fsc.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
-        if (!insideFolder(p, *static_cast<const fs::path*>(user))) {
+        const LoadContext& c = *static_cast<const LoadContext*>(user);
+        if (!c.binPath.empty() && p == c.binPath) {
+            out->resize(std::size_t(c.binLength));
+            (*c.read)(c.binOffset, out->size(), out->data());
+            return true;
+        }
+        if (!insideFolder(p, c.folder)) {
             if (err) *err += "refused URI outside the model's folder: " + p;
             return false;
         }
@@ -494,7 +576,7 @@ Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::
         return ok;
     };
     fsc.WriteWholeFile = nullptr;
-    fsc.user_data = const_cast<fs::path*>(&folder);
+    fsc.user_data = &context;
     loader.SetFsCallbacks(fsc);
     // Textures are not used: skip decoding them (and the warnings about missing ones stay warnings).
     loader.SetImageLoader(
@@ -505,14 +587,11 @@ Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::
 
     tinygltf::Model model;
     std::string err, warn;
-    // A .glb starts with the magic "glTF"; anything else is read as JSON.
-    const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
-    const auto length = static_cast<unsigned int>(bytes.size());
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                                         reinterpret_cast<const unsigned char*>(bytes.data()), length,
-                                                         folder.string())
-                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), length, folder.string());
-    std::string().swap(bytes);  // tinygltf copied what it needs: a large file's bytes need not stay
+    const bool ok = loader.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned int>(json.size()),
+                                               context.folder.string());
+    // tinygltf copied what it needs: a large file's bytes (a .gltf's data: URIs) need not stay.
+    std::string().swap(json);
+    if (context.release) std::string().swap(*context.release);
     if (!ok || !err.empty()) {
         std::string msg = err.empty() ? "not a valid glTF file" : err;
         while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
@@ -525,6 +604,66 @@ Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::
     return mesh;
 }
 
+// A .glb through a reader of its bytes (a file or memory).
+Mesh parseGlb(std::uint64_t size, const ByteReader& read, const std::string& path, const fs::path& folder,
+              GltfInfo* infoOut, std::string* release = nullptr) {
+    const GlbLayout layout = splitGlb(size, read, path);
+    LoadContext context;
+    context.folder = folder;
+    std::uint64_t binLength = 0;
+    bool pointed = false;
+    std::string json = pointBufferAtBin(layout, path, &pointed, &binLength);
+    if (json.size() > std::uint64_t(~0u)) throw InputError(path + ": the JSON chunk is too large");
+    if (pointed) {
+        context.binPath = (folder / kGlbBinUri).string();
+        context.binOffset = layout.binOffset;
+        context.binLength = binLength;
+        context.read = &read;
+    }
+    context.release = release;
+    return parseGltf(std::move(json), context, path, infoOut);
+}
+
+}  // namespace
+
+Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": cannot read: no such file");
+    const fs::path folder = fs::absolute(fs::path(path), ec).parent_path().lexically_normal();
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) throw InputError(path + ": cannot read: " + ec.message());
+    if (size > (std::uintmax_t(1) << 31)) throw InputError(path + ": cannot read: larger than 2048 MiB");
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
+    char magic[4] = {};
+    const bool glb = std::fread(magic, 1, 4, file.get()) == 4 && std::memcmp(magic, "glTF", 4) == 0;
+    if (!glb) {
+        file.reset();
+        return loadGltfFromMemory(readTextFile(path, std::uint64_t(1) << 31), path, folder.string(), infoOut);
+    }
+    // A .glb is read a chunk at a time: the JSON, then buffer 0 straight into tinygltf's buffer.
+    const ByteReader read = [&](std::uint64_t offset, std::size_t length, unsigned char* out) {
+        if (std::fseek(file.get(), long(offset), SEEK_SET) != 0 || std::fread(out, 1, length, file.get()) != length)
+            throw InputError(path + ": cannot read: I/O error");
+    };
+    return parseGlb(size, read, path, folder, infoOut);
+}
+
+Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::string& folderName,
+                        GltfInfo* infoOut) {
+    const fs::path folder(folderName);
+    // A .glb starts with the magic "glTF"; anything else is read as JSON.
+    if (bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0) {
+        const ByteReader read = [&](std::uint64_t offset, std::size_t length, unsigned char* out) {
+            std::memcpy(out, bytes.data() + offset, length);  // splitGlb checked every range against the size
+        };
+        return parseGlb(bytes.size(), read, label, folder, infoOut, &bytes);
+    }
+    if (bytes.size() > std::uint64_t(~0u)) throw InputError(label + ": larger than 4 GiB");
+    LoadContext context;
+    context.folder = folder;
+    return parseGltf(std::move(bytes), context, label, infoOut);
+}
 std::string describe(const std::string& path, const GltfInfo& i) {
     auto vec = [](const glm::vec3& v) {
         char b[96];

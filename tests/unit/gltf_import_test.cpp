@@ -81,17 +81,23 @@ protected:
         std::ofstream(p) << d.j.dump();
         return p.string();
     }
-    std::string writeGlb(const std::string& name, const Doc& d) const {
+    // Writes the document as model/NAME.glb: its buffer in the BIN chunk (padded by `padding` zero
+    // bytes past byteLength), or with withBin = false no BIN chunk at all.
+    std::string writeGlb(const std::string& name, const Doc& d, bool withBin = true, std::size_t padding = 0) const {
         std::string js = d.j.dump();
         while (js.size() % 4) js += ' ';
         std::vector<unsigned char> bin = d.bin;
+        bin.resize(bin.size() + padding, 0);
         while (bin.size() % 4) bin.push_back(0);
         std::vector<unsigned char> out;
-        append<std::uint32_t>(out, {0x46546C67u, 2u, std::uint32_t(12 + 8 + js.size() + 8 + bin.size())});
+        const std::size_t binBytes = withBin ? 8 + bin.size() : 0;
+        append<std::uint32_t>(out, {0x46546C67u, 2u, std::uint32_t(12 + 8 + js.size() + binBytes)});
         append<std::uint32_t>(out, {std::uint32_t(js.size()), 0x4E4F534Au});
         out.insert(out.end(), js.begin(), js.end());
-        append<std::uint32_t>(out, {std::uint32_t(bin.size()), 0x004E4942u});
-        out.insert(out.end(), bin.begin(), bin.end());
+        if (withBin) {
+            append<std::uint32_t>(out, {std::uint32_t(bin.size()), 0x004E4942u});
+            out.insert(out.end(), bin.begin(), bin.end());
+        }
         const fs::path p = dir_ / "model" / (name + ".glb");
         std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(out.data()), std::streamsize(out.size()));
         return p.string();
@@ -121,6 +127,41 @@ TEST_F(Gltf, ValidQuadLoadsFromGltfAndGlb) {
         EXPECT_EQ(info.fileTriangles, 2u);
         EXPECT_EQ(info.generatedNormals, 4u);  // the file has none
         for (const auto& n : m.normals) EXPECT_NEAR(glm::distance(n, glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+    }
+}
+
+// shadelab splits a .glb itself and reads buffer 0 from the BIN chunk straight into tinygltf's buffer
+// (from the file, or from memory): the chunk layouts the spec allows load, the broken ones are refused.
+TEST_F(Gltf, GlbChunksAreSplitAndBufferZeroReadFromTheBinChunk) {
+    const std::string padded = writeGlb("padded", Doc(), true, 7);  // byteLength < the chunk's length
+    const Mesh fromFile = loadGltf(padded);
+    EXPECT_EQ(fromFile.triangleCount(), 2u);
+    std::ifstream in(padded, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const Mesh fromMemory = loadGltfFromMemory(bytes, "padded.glb", (dir_ / "model").string());
+    EXPECT_EQ(fromMemory.positions, fromFile.positions);
+    EXPECT_EQ(fromMemory.indices, fromFile.indices);
+    {
+        Doc d;  // buffer 0 in an external file: a .glb with no BIN chunk
+        std::ofstream(dir_ / "model" / "quad.bin", std::ios::binary)
+            .write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
+        d.j["buffers"][0]["uri"] = "quad.bin";
+        EXPECT_EQ(loadGltf(writeGlb("external", d, false)).indices, fromFile.indices);
+    }
+    expectRefused(writeGlb("no_bin", Doc(), false), {"buffer 0", "no BIN chunk"});
+    {
+        Doc d;
+        d.j["buffers"][0]["byteLength"] = d.bin.size() + 64;
+        expectRefused(writeGlb("long_buffer", d), {"buffer 0", "byteLength"});
+    }
+    {
+        const std::string v1 = writeGlb("version1", Doc());
+        std::fstream f(v1, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(4);
+        const std::uint32_t one = 1;
+        f.write(reinterpret_cast<const char*>(&one), 4);
+        f.close();
+        expectRefused(v1, {"version 1"});
     }
 }
 
