@@ -50,6 +50,29 @@
 // Shadows (SL_SHADOWS = 1) are the lecture's occlusion term v(p, I): each light has a depth texture
 // array (core/shadow_projection.hpp says what its layers see), and v multiplies that light's (or
 // sample's) share. Without shadows the macros below are empty and the code is what it was before.
+// Where the per-object products and the vectors to the eye and the lights come from: the fragment
+// inputs of shaders/phong_interface.glsl when the including stage has them, else the uniform blocks.
+#ifdef SL_INTERPOLATED_INPUTS
+#define SL_AMBIENT_TERM v_ambientTermExponent.rgb
+#define SL_EXPONENT v_ambientTermExponent.w
+#define SL_TO_EYE(posWorld) v_toEyeWorld
+#else
+#define SL_AMBIENT_TERM u_ambientTerm.rgb
+#define SL_EXPONENT u_coefficients.w
+#define SL_TO_EYE(posWorld) (u_eyeWorld.xyz - (posWorld))
+#endif
+#if defined(SL_INTERPOLATED_INPUTS) && SL_LIGHT_COUNT > 0
+#define SL_LIGHT_DIFFUSE(l) v_lightDiffuse[l]
+#define SL_LIGHT_SPECULAR(l) v_lightSpecular[l]
+#define SL_TO_LIGHT(l, posWorld) v_toLightWorld[l]
+#define SL_DIRECTION_TO_LIGHT(l) v_toLightWorld[l]
+#else
+#define SL_LIGHT_DIFFUSE(l) u_lightDiffuse[l].rgb
+#define SL_LIGHT_SPECULAR(l) u_lightSpecular[l].rgb
+#define SL_TO_LIGHT(l, posWorld) (u_lights[l].positionOrDirection.xyz - (posWorld))
+#define SL_DIRECTION_TO_LIGHT(l) (-u_lights[l].positionOrDirection.xyz)
+#endif
+
 #if SL_SHADOWS && SL_LIGHT_COUNT > 0
 uniform sampler2DArrayShadow u_shadowMaps[SL_LIGHT_COUNT];  // unit SL_TEXTURE_SHADOW_BASE + l
 #define SL_SHADOW_PARAM sampler2DArrayShadow shadowMap,
@@ -90,24 +113,24 @@ vec3 reflected(int l, vec3 I, float NdotI, vec3 N, vec3 V) {
 #else
     float cosLobe = dot(normalize(I + V), N);
 #endif
-    float spec = pow(max(cosLobe, 0.0), u_coefficients.w);
+    float spec = pow(max(cosLobe, 0.0), SL_EXPONENT);
 #if SL_SPECULAR_NORMALIZATION == SL_NORMALIZATION_ENERGY
     // n(k_e) / n(32): constant reflected energy, the same look as "none" at k_e = 32.
 #if SL_REFLECTION == SL_REFLECTION_PHONG
-    spec *= (u_coefficients.w + 2.0) / (SL_ENERGY_REFERENCE_EXPONENT + 2.0);
+    spec *= (SL_EXPONENT + 2.0) / (SL_ENERGY_REFERENCE_EXPONENT + 2.0);
 #else
-    spec *= (u_coefficients.w + 8.0) / (SL_ENERGY_REFERENCE_EXPONENT + 8.0);
+    spec *= (SL_EXPONENT + 8.0) / (SL_ENERGY_REFERENCE_EXPONENT + 8.0);
 #endif
 #endif
 #if SL_FRESNEL != SL_FRESNEL_NONE
     spec *= fresnelWeight(dot(V, normalize(I + V)));
 #endif
 #if SL_SHOW == SL_SHOW_DIFFUSE
-    return u_lightDiffuse[l].rgb * NdotI;                      // L_l k_d C (N.I)
+    return SL_LIGHT_DIFFUSE(l) * NdotI;                       // L_l k_d C (N.I)
 #elif SL_SHOW == SL_SHOW_SPECULAR
-    return u_lightSpecular[l].rgb * spec;                      // L_l k_s S spec
+    return SL_LIGHT_SPECULAR(l) * spec;                       // L_l k_s S spec
 #else
-    return u_lightDiffuse[l].rgb * NdotI + u_lightSpecular[l].rgb * spec;
+    return SL_LIGHT_DIFFUSE(l) * NdotI + SL_LIGHT_SPECULAR(l) * spec;
 #endif
 }
 
@@ -193,9 +216,9 @@ vec3 lightTerm(int l, int kind, int attenuation, SL_SHADOW_PARAM vec3 posWorld, 
     vec3 I;
     float falloff = 1.0;
     if (kind == SL_LIGHT_DIRECTIONAL) {
-        I = normalize(-u_lights[l].positionOrDirection.xyz);
+        I = normalize(SL_DIRECTION_TO_LIGHT(l));
     } else {
-        vec3 toLight = u_lights[l].positionOrDirection.xyz - posWorld;
+        vec3 toLight = SL_TO_LIGHT(l, posWorld);
         float r2 = dot(toLight, toLight);
         I = toLight * inversesqrt(r2);
         falloff = distanceFalloff(l, attenuation, r2);
@@ -259,12 +282,12 @@ vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 
 // (progressive Phong sums these over passes and clamps the mean; everything else uses shadeLecture).
 vec3 shadeLectureUnclamped(vec3 posWorld, vec3 nrmWorld) {
     vec3 N = nrmWorld;
-    vec3 V = normalize(u_eyeWorld.xyz - posWorld);
+    vec3 V = normalize(SL_TO_EYE(posWorld));
 #if SL_SHOW == SL_SHOW_UNLIT
     return clamp(u_color.rgb, 0.0, 1.0);
 #endif
 #if SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_AMBIENT
-    vec3 L = u_ambientTerm.rgb;  // k_a A C
+    vec3 L = SL_AMBIENT_TERM;  // k_a A C
 #else
     vec3 L = vec3(0.0);
 #endif

@@ -1,8 +1,8 @@
 // The interpolated normal is renormalised here, per fragment, before the model is evaluated.
+#define SL_STAGE_IO in
+#include "phong_interface.glsl"
 #include "lighting.glsl"
 
-in vec3 v_posWorld;
-in vec3 v_nrmWorld;
 out vec4 o_color;
 
 void main() {

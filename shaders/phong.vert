@@ -1,15 +1,25 @@
 // Phong shading: position and normal are interpolated; the fragment shader evaluates the colour.
-#include "uniforms.glsl"
+#define SL_STAGE_IO out
+#include "phong_interface.glsl"
 
 layout(location = SL_ATTRIB_POSITION) in vec3 a_posObject;
 layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
-
-out vec3 v_posWorld;
-out vec3 v_nrmWorld;
 
 void main() {
     vec4 posWorld = u_worldFromObject * vec4(a_posObject, 1.0);
     v_posWorld = posWorld.xyz;
     v_nrmWorld = mat3(u_normalWorldFromObject) * a_nrmObject;
     gl_Position = u_clipFromWorld * posWorld;
+#ifdef SL_INTERPOLATED_INPUTS
+    v_toEyeWorld = u_eyeWorld.xyz - posWorld.xyz;
+    v_ambientTermExponent = vec4(u_ambientTerm.rgb, u_coefficients.w);
+#if SL_LIGHT_COUNT > 0
+    for (int l = 0; l < SL_LIGHT_COUNT; ++l) {
+        vec3 p = u_lights[l].positionOrDirection.xyz;
+        v_toLightWorld[l] = u_lights[l].kind.x == SL_LIGHT_DIRECTIONAL ? -p : p - posWorld.xyz;
+        v_lightDiffuse[l] = u_lightDiffuse[l].rgb;
+        v_lightSpecular[l] = u_lightSpecular[l].rgb;
+    }
+#endif
+#endif
 }

@@ -11,6 +11,7 @@
 #define SL_BINDING_OBJECT 1        // ObjectBlock: transform and material, one per object
 
 #define SL_MAX_LIGHTS 16
+#define SL_MAX_INTERPOLATED_LIGHTS 3  // Phong's interpolated inputs fit GL 3.3's 60 varying components (phong_interface.glsl)
 #define SL_TEXTURE_SHADOW_BASE 0   // light l's shadow map (a 2D array texture) is on texture unit BASE + l
 
 #define SL_LIGHT_POINT 0

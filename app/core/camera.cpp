@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadelab {
 
@@ -61,6 +62,20 @@ glm::vec3 projectToImage(const Camera& c, const Pane& pane, const glm::vec3& pos
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return {float(pane.x) + (ndc.x + 1.0f) * 0.5f * float(pane.width),
             float(pane.y) + (1.0f - ndc.y) * 0.5f * float(pane.height), clip.w};
+}
+
+float projectedBoxPixels(const Camera& c, const Pane& pane, const glm::vec3& lo, const glm::vec3& hi) {
+    const float paneArea = float(pane.width) * float(pane.height);
+    glm::vec2 a(std::numeric_limits<float>::max()), b(-std::numeric_limits<float>::max());
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+        const glm::vec3 image = projectToImage(c, pane, corner);
+        if (!(image.z > 0.0f)) return paneArea;
+        a = glm::min(a, glm::vec2(image)), b = glm::max(b, glm::vec2(image));
+    }
+    a = glm::max(a, glm::vec2(float(pane.x), float(pane.y)));
+    b = glm::min(b, glm::vec2(float(pane.x + pane.width), float(pane.y + pane.height)));
+    return std::min(paneArea, std::max(0.0f, b.x - a.x) * std::max(0.0f, b.y - a.y));
 }
 
 void frameBounds(Scene& scene, const BoundingSphere& b, float paneAspect) {

@@ -36,6 +36,9 @@ glm::vec3 pixelDirectionWorld(const Camera& camera, const Pane& pane, float px, 
 // Where a world point lands in the image: continuous pixel coordinates (y down) in x, y, and the
 // clip-space w in z (positive in front of the eye).
 glm::vec3 projectToImage(const Camera& camera, const Pane& pane, const glm::vec3& posWorld);
+// How many of a pane's pixels a world-space box [lo, hi] can cover: the rectangle around its eight
+// projected corners, clipped to the pane; the whole pane when a corner is at or behind the eye.
+float projectedBoxPixels(const Camera& camera, const Pane& pane, const glm::vec3& lo, const glm::vec3& hi);
 
 // Places the camera so a bounding sphere fills most of a pane of the given aspect, looking from the
 // default camera's direction; when the scene gave no lights, moves the default light with it.

@@ -211,6 +211,7 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
     objectParts_.clear();
     objectBoxes_.clear();
+    objectTriangles_.clear();
     shadowMaps_.invalidate();
     if (!geometry_) return;
     for (const Mesh& mesh : geometry_->meshes) {
@@ -220,6 +221,7 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
         for (const glm::vec3& p : mesh.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
         if (mesh.positions.empty()) box = Aabb{};
         objectBoxes_.push_back(box);
+        objectTriangles_.push_back(mesh.triangleCount());
     }
 }
 
@@ -233,9 +235,10 @@ void Renderer::preparePrograms(const Scene& scene) {
     for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene);
 }
 
-GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate) {
+GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, bool interpolatedInputs) {
     std::vector<std::string> defines = programDefines(scene);
     if (accumulate) defines.push_back("SL_ACCUMULATE 1");
+    if (interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
     std::string key = kProgramNames[std::size_t(mode)];
     for (const std::string& d : defines) key += ";" + d;
     gl::Program& p = programs_[key];
@@ -285,6 +288,19 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     g.indexCount = GLsizei(indices.size());
     checkGl("mesh upload");
     return g;
+}
+
+bool Renderer::interpolatesInputs(std::size_t object, const Pane& pane, const Scene& scene) const {
+    if (pane.mode != ShadingMode::Phong || scene.lights.size() > SL_MAX_INTERPOLATED_LIGHTS ||
+        phongInputs_ == PhongInputs::Uniform)
+        return false;
+    if (phongInputs_ == PhongInputs::Interpolated) return true;
+    // Each input costs llvmpipe set-up work per triangle, each uniform read work per fragment: the
+    // inputs pay off where the triangles are large on screen (measured break-even ~6 pixels per
+    // front-facing triangle on the benchmark sphere; 16 leaves a margin for the box's overestimate).
+    const Aabb box = transformAabb(objectBoxes_[object], worldFromObject(scene.objects[object].transform));
+    const float frontTriangles = std::max(1.0f, 0.5f * float(objectTriangles_[object]));
+    return projectedBoxPixels(scene.camera, pane, box.lo, box.hi) >= kInputsMinPixelsPerTriangle * frontTriangles;
 }
 
 void Renderer::render(const Scene& scene, const RenderTarget& target) {
@@ -381,12 +397,20 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         const Pane& pane = panes[p];
         if (pane.difference) continue;  // drawn below, from the other two panes
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
-        glUseProgram(program(pane.mode, scene, pass != nullptr));
         glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
                           sizeof(gpu::FrameBlock));
+        // Per object: does this pane's Phong program take interpolated inputs (see interpolatesInputs)?
+        std::vector<char> inputs(objects, 0);
+        for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
+        const GLuint programs[2] = {program(pane.mode, scene, pass != nullptr, false),
+                                    std::count(inputs.begin(), inputs.end(), 1) > 0
+                                        ? program(pane.mode, scene, pass != nullptr, true) : 0u};
+        GLuint current = 0;
         for (std::size_t d = 0; d < draws.size(); ++d) {
             const Draw& draw = draws[d];
             if (draw.count == 0) continue;
+            const GLuint use = programs[inputs[draw.object] ? 1 : 0];
+            if (use != current) glUseProgram(current = use);
             const GpuMesh& mesh = gpuMesh(draw.object, pane.mode);
             glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
                               GLintptr(objectsOffset + d * objectStride), sizeof(gpu::ObjectBlock));

@@ -59,6 +59,17 @@ public:
     // otherwise compiles each on first use). Throws ShaderError.
     void preparePrograms(const Scene& scene);
 
+    // Where Phong draws read the per-object products and the vectors to the eye and the lights
+    // (shaders/phong_interface.glsl): Auto picks interpolated inputs for a draw whose triangles
+    // cover at least kInputsMinPixelsPerTriangle pixels each (bounding box on screen / front-facing
+    // triangles), the uniform blocks otherwise. The other two force one path (tests compare them).
+    enum class PhongInputs { Auto, Interpolated, Uniform };
+    void setPhongInputs(PhongInputs p) { phongInputs_ = p; }
+    static constexpr float kInputsMinPixelsPerTriangle = 16.0f;
+    // Whether `object`'s Phong draws in `pane` take interpolated inputs (always false for flat and
+    // Gouraud panes, and past SL_MAX_INTERPOLATED_LIGHTS lights).
+    bool interpolatesInputs(std::size_t object, const Pane& pane, const Scene& scene) const;
+
     std::string glRenderer() const;
     // Depth views drawn by the last render() for shadows (0: none, or the maps were still valid).
     int shadowViewsRendered() const { return shadowMaps_.viewsRendered(); }
@@ -72,7 +83,7 @@ private:
         GLsizei indexCount = 0;
     };
     const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
-    GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false);
+    GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false, bool interpolatedInputs = false);
     // The samples one progressive pass evaluates: i = first.x + k stride.x, j = first.y + m stride.y.
     struct AreaSamplePass {
         glm::ivec2 first{0};
@@ -91,7 +102,9 @@ private:
     std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
     gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
     GLint uniformAlignment_ = 256;
-    std::vector<Aabb> objectBoxes_;                       // per object, object space (for shadow maps)
+    std::vector<Aabb> objectBoxes_;                       // per object, object space (shadow maps, Phong inputs)
+    std::vector<std::size_t> objectTriangles_;            // per object, all parts
+    PhongInputs phongInputs_ = PhongInputs::Auto;
     ShadowMaps shadowMaps_;
     // Layout diff: copies of the two source panes and the program that subtracts them.
     void drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target);
