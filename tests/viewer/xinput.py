@@ -69,17 +69,19 @@ class Display:
         _x11.XFlush(self.handle)
         time.sleep(pause)
 
-    def key(self, name, shift=False):
+    def key(self, name, shift=False, hold=0.4, after=0.3):
+        """Presses and releases a key; `hold` and `after` are the pauses after the press and the release
+        (the viewer queues presses, so shorter pauses lose none; they only leave it less time to draw)."""
         code = _x11.XKeysymToKeycode(self.handle, _x11.XStringToKeysym(name.encode()))
         shift_code = _x11.XKeysymToKeycode(self.handle, _x11.XStringToKeysym(b"Shift_L"))
         if shift:
             _xtst.XTestFakeKeyEvent(self.handle, shift_code, 1, 0)
         _xtst.XTestFakeKeyEvent(self.handle, code, 1, 0)
-        self.flush(0.4)
+        self.flush(hold)
         _xtst.XTestFakeKeyEvent(self.handle, code, 0, 0)
         if shift:
             _xtst.XTestFakeKeyEvent(self.handle, shift_code, 0, 0)
-        self.flush(0.3)
+        self.flush(after)
 
     def move(self, x, y, pause=0.05):
         _xtst.XTestFakeMotionEvent(self.handle, -1, x, y, 0)
