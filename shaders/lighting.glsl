@@ -46,10 +46,7 @@
 // With SL_LIGHT_COUNT = n the renderer also defines SL_LIGHT_KIND_l and SL_LIGHT_ATTENUATION_l for
 // l < n, and SL_LIGHT_SAMPLES_X_l, SL_LIGHT_SAMPLES_Y_l for area lights; blocks for lights past the
 // count are skipped by the preprocessor and never expanded.
-//
-// Shadows (SL_SHADOWS = 1) are the lecture's occlusion term v(p, I): each light has a depth texture
-// array (core/shadow_projection.hpp says what its layers see), and v multiplies that light's (or
-// sample's) share. Without shadows the macros below are empty and the code is what it was before.
+
 // Where the per-object products and the vectors to the eye and the lights come from: the fragment
 // inputs of shaders/phong_interface.glsl when the including stage has them, else the uniform blocks.
 #ifdef SL_INTERPOLATED_INPUTS
@@ -73,6 +70,9 @@
 #define SL_DIRECTION_TO_LIGHT(l) (-u_lights[l].positionOrDirection.xyz)
 #endif
 
+// Shadows (SL_SHADOWS = 1) are the lecture's occlusion term v(p, I): each light has a depth texture
+// array (core/shadow_projection.hpp says what its layers see), and v multiplies that light's (or
+// sample's) share. Without shadows the macros below are empty and the code is what it was before.
 #if SL_SHADOWS && SL_LIGHT_COUNT > 0
 uniform sampler2DArrayShadow u_shadowMaps[SL_LIGHT_COUNT];  // unit SL_TEXTURE_SHADOW_BASE + l
 #define SL_SHADOW_PARAM sampler2DArrayShadow shadowMap,

@@ -7,9 +7,10 @@
 // (affine in the world position, so perspective-correct interpolation reproduces them) and, as `flat`
 // inputs, the per-object products k_a A C, k_e, L_l k_d C and L_l k_s S. On llvmpipe (Mesa 22.3)
 // each scalar uniform read in a fragment shader costs ~35 instructions per 8 fragments (callgrind),
-// while an input costs set-up work per triangle: on the 2k-triangle sphere the inputs remove 43% of the fragment code's instructions, on
-// the 200k one they add 30% to the frame (bench/README.md), hence the choice per draw
-// (Renderer::drawPanes). Without the define the programs read the blocks, as flat and Gouraud do.
+// while an input costs set-up work per triangle: on the 2k-triangle sphere the inputs remove 46% of
+// the fragment code's instructions, on the 200k one they add 30% to the frame (bench/README.md),
+// hence the choice per draw (Renderer::interpolatesInputs). Without the define the programs read the
+// blocks, as flat and Gouraud do.
 #include "uniforms.glsl"
 
 #ifndef SL_LIGHT_COUNT

@@ -56,20 +56,28 @@ glm::vec3 pixelDirectionWorld(const Camera& c, const Pane& pane, float px, float
     return glm::normalize(glm::vec3(farWorld) / farWorld.w - glm::vec3(nearWorld) / nearWorld.w);
 }
 
-glm::vec3 projectToImage(const Camera& c, const Pane& pane, const glm::vec3& posWorld) {
-    const float aspect = float(pane.width) / float(std::max(pane.height, 1));
-    const glm::vec4 clip = clipFromView(c, aspect) * viewFromWorld(c) * glm::vec4(posWorld, 1.0f);
+namespace {
+glm::mat4 paneClipFromWorld(const Camera& c, const Pane& pane) {
+    return clipFromView(c, float(pane.width) / float(std::max(pane.height, 1))) * viewFromWorld(c);
+}
+glm::vec3 imageFromClip(const Pane& pane, const glm::vec4& clip) {
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return {float(pane.x) + (ndc.x + 1.0f) * 0.5f * float(pane.width),
             float(pane.y) + (1.0f - ndc.y) * 0.5f * float(pane.height), clip.w};
 }
+}  // namespace
+
+glm::vec3 projectToImage(const Camera& c, const Pane& pane, const glm::vec3& posWorld) {
+    return imageFromClip(pane, paneClipFromWorld(c, pane) * glm::vec4(posWorld, 1.0f));
+}
 
 float projectedBoxPixels(const Camera& c, const Pane& pane, const glm::vec3& lo, const glm::vec3& hi) {
     const float paneArea = float(pane.width) * float(pane.height);
+    const glm::mat4 clipFromWorld = paneClipFromWorld(c, pane);
     glm::vec2 a(std::numeric_limits<float>::max()), b(-std::numeric_limits<float>::max());
     for (int k = 0; k < 8; ++k) {
         const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-        const glm::vec3 image = projectToImage(c, pane, corner);
+        const glm::vec3 image = imageFromClip(pane, clipFromWorld * glm::vec4(corner, 1.0f));
         if (!(image.z > 0.0f)) return paneArea;
         a = glm::min(a, glm::vec2(image)), b = glm::max(b, glm::vec2(image));
     }

@@ -86,21 +86,21 @@ EglContext::EglContext(int width, int height) {
     if (hasExtension(clientExtensions, "EGL_EXT_platform_device") && egl.queryDevices &&
         !egl.queryDevices(16, devices, &deviceCount))
         deviceCount = 0;
-    EGLDisplay display = EGL_NO_DISPLAY;
-    for (EGLint i = 0; i < deviceCount && display == EGL_NO_DISPLAY; ++i) {
-        const char* deviceExtensions = egl.queryDeviceString ? egl.queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
-        if (hasExtension(deviceExtensions, "EGL_MESA_device_software")) continue;
-        const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-        if (initialised(d)) display = d;
-    }
+    auto firstDevice = [&](bool hardwareOnly) {
+        for (EGLint i = 0; i < deviceCount; ++i) {
+            const char* extensions = egl.queryDeviceString ? egl.queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
+            if (hardwareOnly && hasExtension(extensions, "EGL_MESA_device_software")) continue;
+            const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+            if (initialised(d)) return d;
+        }
+        return EGLDisplay(EGL_NO_DISPLAY);
+    };
+    EGLDisplay display = firstDevice(true);
     if (display == EGL_NO_DISPLAY && hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
         const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (initialised(d)) display = d;
     }
-    for (EGLint i = 0; i < deviceCount && display == EGL_NO_DISPLAY; ++i) {
-        const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-        if (initialised(d)) display = d;
-    }
+    if (display == EGL_NO_DISPLAY) display = firstDevice(false);
     if (display == EGL_NO_DISPLAY)
         throw std::runtime_error(deviceCount == 0 && !hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")
                                      ? "EGL: no surfaceless platform and no EGL device"

@@ -233,6 +233,9 @@ void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
 
 void Renderer::preparePrograms(const Scene& scene) {
     for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene);
+    // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
+    if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && phongInputs_ != PhongInputs::Uniform)
+        program(ShadingMode::Phong, scene, false, true);
 }
 
 GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, bool interpolatedInputs) {
@@ -400,17 +403,16 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
                           sizeof(gpu::FrameBlock));
         // Per object: does this pane's Phong program take interpolated inputs (see interpolatesInputs)?
+        // Only the variants some draw uses are built (each is an LLVM compile on first use).
         std::vector<char> inputs(objects, 0);
         for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
-        const GLuint programs[2] = {program(pane.mode, scene, pass != nullptr, false),
-                                    std::count(inputs.begin(), inputs.end(), 1) > 0
-                                        ? program(pane.mode, scene, pass != nullptr, true) : 0u};
-        GLuint current = 0;
+        GLuint programs[2] = {0, 0}, current = 0;
         for (std::size_t d = 0; d < draws.size(); ++d) {
             const Draw& draw = draws[d];
             if (draw.count == 0) continue;
-            const GLuint use = programs[inputs[draw.object] ? 1 : 0];
-            if (use != current) glUseProgram(current = use);
+            const int variant = inputs[draw.object] ? 1 : 0;
+            if (!programs[variant]) programs[variant] = program(pane.mode, scene, pass != nullptr, variant == 1);
+            if (programs[variant] != current) glUseProgram(current = programs[variant]);
             const GpuMesh& mesh = gpuMesh(draw.object, pane.mode);
             glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
                               GLintptr(objectsOffset + d * objectStride), sizeof(gpu::ObjectBlock));

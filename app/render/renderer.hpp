@@ -55,8 +55,9 @@ public:
         bool complete() const { return passesDone >= passCount; }
     };
     ProgressiveStatus renderProgressive(const Scene& scene, const RenderTarget& target, int stride, bool restart);
-    // Compiles the flat, gouraud and phong programs for `scene`'s specialisation now (render()
-    // otherwise compiles each on first use). Throws ShaderError.
+    // Compiles the flat, gouraud and phong programs for `scene`'s specialisation now, Phong's
+    // interpolated-inputs variant included (render() otherwise compiles each on first use). Throws
+    // ShaderError.
     void preparePrograms(const Scene& scene);
 
     // Where Phong draws read the per-object products and the vectors to the eye and the lights
