@@ -23,6 +23,10 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
     return readPixels(target);
 }
 
+// One frame of a huge mesh: bound llvmpipe's memory for it (Renderer::setDrawChunk). 2M-triangle
+// sphere: peak 218-255 -> 187 MiB, time unchanged (bench/README.md).
+constexpr std::size_t kOneFrameDrawChunk = 250000;
+
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend) {
     // buildSceneGeometry only reads `scene`; nothing here writes it until the thread is joined.
     auto loading = std::async(std::launch::async, [&scene] { return buildSceneGeometry(scene); });
@@ -31,6 +35,7 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     try {
         context = makeHeadlessContext(backend, scene.width, scene.height);
         renderer = std::make_unique<Renderer>(context->getProcAddress(), shaders);
+        renderer->setDrawChunk(kOneFrameDrawChunk);
         // Same programs, vertex layout and GL state as the real frame, on one small triangle per object.
         auto placeholder = std::make_shared<SceneGeometry>();
         for (std::size_t o = 0; o < scene.objects.size(); ++o) {
@@ -113,6 +118,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
+    renderer.setMeshOrder(Renderer::MeshOrder::VertexCache);  // many frames of one mesh, as in the viewer
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
     std::vector<BenchmarkResult> results;

@@ -2,6 +2,7 @@
 
 #include "core/camera.hpp"
 #include "core/lighting.hpp"
+#include "core/vertex_order.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 
@@ -209,6 +210,8 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     geometry_ = std::move(geometry);
     gpuMeshes_.clear();
     gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
+    orderedMeshes_.clear();
+    orderedMeshes_.resize(gpuMeshes_.size());
     objectParts_.clear();
     objectBoxes_.clear();
     objectTriangles_.clear();
@@ -229,6 +232,7 @@ void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1, scene.diff))
         for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) gpuMesh(o, pane.mode);
     geometry_.reset();
+    orderedMeshes_.clear();
 }
 
 void Renderer::preparePrograms(const Scene& scene) {
@@ -254,7 +258,13 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
     if (g.vao) return g;
     if (!geometry_) throw std::logic_error("renderer: a shading mode that was not uploaded before the CPU geometry was released");
-    const Mesh& mesh = geometry_->meshes[object];
+    const Mesh* source = &geometry_->meshes[object];
+    if (meshOrder_ == MeshOrder::VertexCache) {
+        Mesh& ordered = orderedMeshes_[object];
+        if (ordered.indices.empty()) ordered = orderedForVertexCache(*source);
+        source = &ordered;
+    }
+    const Mesh& mesh = *source;
     g.vao = gl::makeVertexArray();
     g.indices = gl::makeBuffer();
     glBindVertexArray(g.vao.get());
@@ -264,7 +274,7 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     // one buffer per attribute), and the layout (stride, offsets) does not depend on the mesh's size,
     // so draw code llvmpipe compiled for one mesh serves the next (see renderSceneHeadless()).
     FlatMesh flatMesh;
-    if (flat) flatMesh = makeFlatMesh(mesh);
+    if (flat) flatMesh = meshOrder_ == MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
     const std::vector<std::uint32_t>& indices = flat ? flatMesh.indices : mesh.indices;
     const std::vector<glm::vec3>* arrays[3] = {flat ? &flatMesh.positions : &mesh.positions,
                                                flat ? &flatMesh.normals : &mesh.normals,
@@ -291,6 +301,31 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     g.indexCount = GLsizei(indices.size());
     checkGl("mesh upload");
     return g;
+}
+
+void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
+    const auto offset = [](std::size_t index) { return reinterpret_cast<void*>(index * sizeof(std::uint32_t)); };
+    const std::size_t chunk = 3 * drawChunkTriangles_;
+    if (chunk == 0 || std::size_t(indexCount) <= chunk) {
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, offset(std::size_t(firstIndex)));
+        return;
+    }
+    // Submit chunk i, then wait for chunk i - 1: the driver holds at most two chunks' work.
+    GLsync previous = nullptr;
+    for (std::size_t done = 0; done < std::size_t(indexCount); done += chunk) {
+        glDrawElements(GL_TRIANGLES, GLsizei(std::min(chunk, std::size_t(indexCount) - done)), GL_UNSIGNED_INT,
+                       offset(std::size_t(firstIndex) + done));
+        GLsync submitted = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        if (previous) {
+            while (glClientWaitSync(previous, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000u) == GL_TIMEOUT_EXPIRED) {
+            }
+            glDeleteSync(previous);
+        } else {
+            glFlush();  // start the first chunk while the second is submitted
+        }
+        previous = submitted;
+    }
+    glDeleteSync(previous);
 }
 
 bool Renderer::interpolatesInputs(std::size_t object, const Pane& pane, const Scene& scene) const {
@@ -420,8 +455,7 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
             const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);
             glFrontFace(glm::determinant(glm::mat3(world)) < 0.0f ? GL_CW : GL_CCW);
             glBindVertexArray(mesh.vao.get());
-            glDrawElements(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
-                           reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)));
+            drawTriangles(draw.first, draw.count);
         }
     }
     glBindVertexArray(0);

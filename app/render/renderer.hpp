@@ -67,6 +67,22 @@ public:
     enum class PhongInputs { Auto, Interpolated, Uniform };
     void setPhongInputs(PhongInputs p) { phongInputs_ = p; }
     static constexpr float kInputsMinPixelsPerTriangle = 16.0f;
+
+    // The order meshes are uploaded in. VertexCache reorders each mesh's triangles and vertices for
+    // the driver's vertex cache (core/vertex_order.hpp): the same picture with up to ~40% fewer
+    // vertex-shader runs a frame, for a one-off cost at upload (~0.1 s per million triangles). Worth
+    // it for a mesh drawn many times (the viewer, --benchmark), not for one --output frame. Takes
+    // effect at the next setGeometry().
+    enum class MeshOrder { AsGiven, VertexCache };
+    void setMeshOrder(MeshOrder order) { meshOrder_ = order; }
+
+    // Draws of more than `triangles` triangles go in chunks of that many, and after submitting a chunk
+    // the renderer waits for the one before it (a fence), so the driver never holds more than two.
+    // llvmpipe bins every triangle of what it was given before its threads rasterise, a few scenes of
+    // ~36 MiB at a time: a frame of the 2M-triangle sphere raised resident memory by ~100 MiB, in
+    // chunks of 250k by ~30 MiB. The waits cost steady frames ~9% (binning and rasterising overlap
+    // less), so it is for a one-off frame (headless --output), not the viewer. 0 (the default): off.
+    void setDrawChunk(std::size_t triangles) { drawChunkTriangles_ = triangles; }
     // Whether `object`'s Phong draws in `pane` take interpolated inputs (always false for flat and
     // Gouraud panes, and past SL_MAX_INTERPOLATED_LIGHTS lights).
     bool interpolatesInputs(std::size_t object, const Pane& pane, const Scene& scene) const;
@@ -84,6 +100,7 @@ private:
         GLsizei indexCount = 0;
     };
     const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
+    void drawTriangles(GLsizei firstIndex, GLsizei indexCount);  // from the bound vertex array, see setDrawChunk
     GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false, bool interpolatedInputs = false);
     // The samples one progressive pass evaluates: i = first.x + k stride.x, j = first.y + m stride.y.
     struct AreaSamplePass {
@@ -106,6 +123,9 @@ private:
     std::vector<Aabb> objectBoxes_;                       // per object, object space (shadow maps, Phong inputs)
     std::vector<std::size_t> objectTriangles_;            // per object, all parts
     PhongInputs phongInputs_ = PhongInputs::Auto;
+    MeshOrder meshOrder_ = MeshOrder::AsGiven;
+    std::size_t drawChunkTriangles_ = 0;
+    std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both uploads are done
     ShadowMaps shadowMaps_;
     // Layout diff: copies of the two source panes and the program that subtracts them.
     void drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target);

@@ -1,0 +1,162 @@
+#include "core/vertex_order.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace shadelab {
+
+namespace {
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+// Tipsify's cache size: 32 gave the fewest runs in Mesa's model on UV spheres (16: +6%, 64: +3%,
+// 128: +27%): it keeps the fans compact enough for a 341-triangle segment.
+constexpr std::uint32_t kCacheSize = 32;
+
+// Tipsify on `triangles` triangles whose corners are all below vertexCount, in place.
+void tipsify(std::uint32_t* in, std::size_t triangles, std::size_t vertexCount, std::uint32_t cacheSize) {
+    if (triangles < 2) return;
+
+    // Triangles around each vertex (compressed rows), and how many of them are still to be emitted.
+    std::vector<std::uint32_t> start(vertexCount + 1, 0);
+    for (std::size_t i = 0; i < 3 * triangles; ++i) ++start[in[i] + 1];
+    for (std::size_t v = 0; v < vertexCount; ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> live(vertexCount);
+    for (std::size_t v = 0; v < vertexCount; ++v) live[v] = start[v + 1] - start[v];
+    std::vector<std::uint32_t> around(3 * triangles), fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < 3 * triangles; ++i) around[fill[in[i]]++] = std::uint32_t(i / 3);
+    fill = {};
+
+    // cachedAt[v]: the time v last entered the simulated FIFO cache; it is in the cache while
+    // now - cachedAt[v] <= cacheSize. The clock starts past the cache so that nothing is in it.
+    std::vector<std::uint32_t> cachedAt(vertexCount, 0);
+    std::uint32_t now = cacheSize + 1;
+    std::vector<std::uint8_t> emitted(triangles, 0);
+    std::vector<std::uint32_t> deadEnds, candidates, out;  // deadEnds: recently used vertices, a stack
+    out.reserve(3 * triangles);
+    deadEnds.reserve(3 * triangles);
+    std::size_t cursor = 0;  // vertices below it have nothing left to emit
+
+    auto nextStart = [&]() -> std::uint32_t {
+        while (!deadEnds.empty()) {
+            const std::uint32_t v = deadEnds.back();
+            deadEnds.pop_back();
+            if (live[v] > 0) return v;
+        }
+        for (; cursor < vertexCount; ++cursor)
+            if (live[cursor] > 0) return std::uint32_t(cursor);
+        return kNone;
+    };
+
+    for (std::uint32_t fan = nextStart(); fan != kNone;) {
+        candidates.clear();
+        for (std::uint32_t k = start[fan]; k < start[fan + 1]; ++k) {
+            const std::uint32_t t = around[k];
+            if (emitted[t]) continue;
+            emitted[t] = 1;
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t v = in[3 * t + c];
+                out.push_back(v);
+                deadEnds.push_back(v);
+                candidates.push_back(v);
+                --live[v];
+                if (now - cachedAt[v] > cacheSize) cachedAt[v] = now++;
+            }
+        }
+        // The next fan: the candidate with triangles left that will still be cached once they are
+        // emitted (each costs up to two new vertices) and entered the cache earliest.
+        std::uint32_t best = kNone;
+        std::int64_t bestPriority = -1;
+        for (std::uint32_t v : candidates) {
+            if (live[v] == 0) continue;
+            std::int64_t priority = 0;
+            if (now - cachedAt[v] + 2 * std::int64_t(live[v]) <= cacheSize) priority = now - cachedAt[v];
+            if (priority > bestPriority) {
+                bestPriority = priority;
+                best = v;
+            }
+        }
+        fan = best != kNone ? best : nextStart();
+    }
+    std::copy(out.begin(), out.end(), in);
+}
+
+}  // namespace
+
+void orderTrianglesForVertexCache(std::vector<std::uint32_t>& indices, std::size_t vertexCount, std::uint32_t cacheSize) {
+    tipsify(indices.data(), indices.size() / 3, vertexCount, cacheSize);
+}
+
+std::vector<std::uint32_t> renumberVerticesByFirstUse(std::vector<std::uint32_t>& indices, std::size_t vertexCount) {
+    std::vector<std::uint32_t> newFromOld(vertexCount, kNone), oldFromNew;
+    oldFromNew.reserve(vertexCount);
+    for (std::uint32_t& i : indices) {
+        if (newFromOld[i] == kNone) {
+            newFromOld[i] = std::uint32_t(oldFromNew.size());
+            oldFromNew.push_back(i);
+        }
+        i = newFromOld[i];
+    }
+    for (std::size_t v = 0; v < vertexCount; ++v)
+        if (newFromOld[v] == kNone) oldFromNew.push_back(std::uint32_t(v));
+    return oldFromNew;
+}
+
+Mesh orderedForVertexCache(const Mesh& mesh) {
+    Mesh out = mesh;
+    const std::size_t vertexCount = mesh.positions.size();
+    if (out.parts.size() <= 1) {
+        tipsify(out.indices.data(), out.indices.size() / 3, vertexCount, kCacheSize);
+    } else {
+        // Each part on its own, its vertices numbered locally (a file can have thousands of small
+        // parts over a large vertex array: no per-part work proportional to the whole array).
+        std::vector<std::uint32_t> localFromMesh(vertexCount, kNone), meshFromLocal, local;
+        for (const MeshPart& part : out.parts) {
+            std::uint32_t* range = out.indices.data() + part.firstIndex;
+            meshFromLocal.clear();
+            local.resize(part.indexCount);
+            for (std::size_t i = 0; i < part.indexCount; ++i) {
+                std::uint32_t& l = localFromMesh[range[i]];
+                if (l == kNone) {
+                    l = std::uint32_t(meshFromLocal.size());
+                    meshFromLocal.push_back(range[i]);
+                }
+                local[i] = l;
+            }
+            tipsify(local.data(), local.size() / 3, meshFromLocal.size(), kCacheSize);
+            for (std::size_t i = 0; i < part.indexCount; ++i) range[i] = meshFromLocal[local[i]];
+            for (std::uint32_t v : meshFromLocal) localFromMesh[v] = kNone;
+        }
+    }
+    const std::vector<std::uint32_t> oldFromNew = renumberVerticesByFirstUse(out.indices, vertexCount);
+    permuteVertices(out.positions, oldFromNew);
+    permuteVertices(out.normals, oldFromNew);
+    return out;
+}
+
+FlatMesh makeOrderedFlatMesh(const Mesh& orderedMesh) {
+    FlatMesh flat = makeFlatMesh(orderedMesh);
+    const std::vector<std::uint32_t> oldFromNew = renumberVerticesByFirstUse(flat.indices, flat.positions.size());
+    permuteVertices(flat.positions, oldFromNew);
+    permuteVertices(flat.normals, oldFromNew);
+    permuteVertices(flat.centroids, oldFromNew);
+    return flat;
+}
+
+std::size_t vertexShaderRuns(const std::vector<std::uint32_t>& indices, std::size_t segmentIndices,
+                             std::size_t tableSize) {
+    std::size_t runs = 0;
+    std::vector<std::uint32_t> table(tableSize);
+    for (std::size_t s = 0; s < indices.size(); s += segmentIndices) {
+        std::fill(table.begin(), table.end(), kNone);
+        const std::size_t end = std::min(indices.size(), s + segmentIndices);
+        for (std::size_t i = s; i < end; ++i) {
+            std::uint32_t& slot = table[indices[i] % tableSize];
+            if (slot != indices[i]) {
+                slot = indices[i];
+                ++runs;
+            }
+        }
+    }
+    return runs;
+}
+
+}  // namespace shadelab
