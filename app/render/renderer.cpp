@@ -300,6 +300,7 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     glBindVertexArray(0);
     g.indexCount = GLsizei(indices.size());
     checkGl("mesh upload");
+    if (gpuMeshes_[object][0].vao && gpuMeshes_[object][1].vao) orderedMeshes_[object] = Mesh{};  // both uploaded
     return g;
 }
 

@@ -125,7 +125,7 @@ private:
     PhongInputs phongInputs_ = PhongInputs::Auto;
     MeshOrder meshOrder_ = MeshOrder::AsGiven;
     std::size_t drawChunkTriangles_ = 0;
-    std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both uploads are done
+    std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both its uploads are done
     ShadowMaps shadowMaps_;
     // Layout diff: copies of the two source panes and the program that subtracts them.
     void drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target);
