@@ -3,15 +3,25 @@
 // `flat` makes the whole triangle take that vertex's colour.
 #include "lighting.glsl"
 
-layout(location = SL_ATTRIB_POSITION) in vec3 a_posObject;
-layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
-layout(location = SL_ATTRIB_CENTROID) in vec3 a_centroidObject;
+// Nine floats in two vec4s (Renderer::gpuMesh): llvmpipe fetches each attribute of each vertex on its
+// own, and two fetches cost less than three. The face normal's z comes from its unit length, its sign
+// from y, which carries SL_FLAT_NORMAL_Z_NEGATIVE where z < 0.
+layout(location = SL_ATTRIB_POSITION) in vec4 a_posCentroidXObject;
+layout(location = SL_ATTRIB_FLAT_FACE) in vec4 a_centroidYZNormalXYObject;
 
 flat out vec3 v_color;
 
 void main() {
-    vec3 centroidWorld = (u_worldFromObject * vec4(a_centroidObject, 1.0)).xyz;
-    vec3 faceNrmWorld = normalize(mat3(u_normalWorldFromObject) * a_nrmObject);
+    vec3 posObject = a_posCentroidXObject.xyz;
+    vec3 centroidObject = vec3(a_posCentroidXObject.w, a_centroidYZNormalXYObject.xy);
+    float nx = a_centroidYZNormalXYObject.z, ny = a_centroidYZNormalXYObject.w, zSign = 1.0;
+    if (ny > 0.5 * SL_FLAT_NORMAL_Z_NEGATIVE) {
+        ny -= SL_FLAT_NORMAL_Z_NEGATIVE;
+        zSign = -1.0;
+    }
+    vec3 faceNrmObject = vec3(nx, ny, zSign * sqrt(max(1.0 - nx * nx - ny * ny, 0.0)));
+    vec3 centroidWorld = (u_worldFromObject * vec4(centroidObject, 1.0)).xyz;
+    vec3 faceNrmWorld = normalize(mat3(u_normalWorldFromObject) * faceNrmObject);
     v_color = shadeLecture(centroidWorld, faceNrmWorld);
-    gl_Position = u_clipFromWorld * (u_worldFromObject * vec4(a_posObject, 1.0));
+    gl_Position = u_clipFromWorld * (u_worldFromObject * vec4(posObject, 1.0));
 }

@@ -3,9 +3,10 @@
 #ifndef SL_SHARED_DEFS_GLSL
 #define SL_SHARED_DEFS_GLSL
 
-#define SL_ATTRIB_POSITION 0       // a_posObject
-#define SL_ATTRIB_NORMAL 1         // a_nrmObject (flat: the face normal at the provoking vertex)
-#define SL_ATTRIB_CENTROID 2       // a_centroidObject (flat only)
+#define SL_ATTRIB_POSITION 0       // a_posObject (flat: vec4, position and the centroid's x)
+#define SL_ATTRIB_NORMAL 1         // a_nrmObject (not flat)
+#define SL_ATTRIB_FLAT_FACE 2      // flat only: the rest of the provoking vertex's centroid and face normal
+#define SL_FLAT_NORMAL_Z_NEGATIVE 3.0  // added to the face normal's y where its z is negative (flat.vert)
 
 #define SL_BINDING_FRAME 0         // FrameBlock: camera and lights, one per pane
 #define SL_BINDING_OBJECT 1        // ObjectBlock: transform and material, one per object

@@ -269,31 +269,53 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     g.indices = gl::makeBuffer();
     glBindVertexArray(g.vao.get());
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.get());
-    // One interleaved buffer: position, normal (and for flat, centroid) of a vertex side by side.
-    // llvmpipe fetches interleaved attributes faster (~10% of a Phong frame at 200k triangles than
-    // one buffer per attribute), and the layout (stride, offsets) does not depend on the mesh's size,
-    // so draw code llvmpipe compiled for one mesh serves the next (see renderSceneHeadless()).
+    // One interleaved buffer: a vertex's attributes side by side. llvmpipe fetches interleaved
+    // attributes faster (~10% of a Phong frame at 200k triangles than one buffer per attribute), and
+    // the layout (stride, offsets) does not depend on the mesh's size, so draw code llvmpipe compiled
+    // for one mesh serves the next (see renderSceneHeadless()).
     FlatMesh flatMesh;
     if (flat) flatMesh = meshOrder_ == MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
     const std::vector<std::uint32_t>& indices = flat ? flatMesh.indices : mesh.indices;
-    const std::vector<glm::vec3>* arrays[3] = {flat ? &flatMesh.positions : &mesh.positions,
-                                               flat ? &flatMesh.normals : &mesh.normals,
-                                               flat ? &flatMesh.centroids : nullptr};
-    const std::size_t attributes = flat ? 3 : 2, count = arrays[0]->size();
-    {
-        std::vector<glm::vec3> interleaved(count * attributes);
-        for (std::size_t i = 0; i < count; ++i)
-            for (std::size_t a = 0; a < attributes; ++a) interleaved[i * attributes + a] = (*arrays[a])[i];
-        g.vertices = gl::makeBuffer();
-        glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data(),
-                     GL_STATIC_DRAW);
+    struct Attribute {
+        GLuint location;
+        GLint size;
+    };
+    std::vector<float> interleaved;
+    std::array<Attribute, 2> layout{};  // both layouts have two attributes
+    if (!flat) {
+        // position xyz, normal xyz
+        layout = {{{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_NORMAL, 3}}};
+        interleaved.resize(mesh.positions.size() * 6);
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            float* v = &interleaved[i * 6];
+            const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
+            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
+        }
+    } else {
+        // Flat's nine floats in two vec4s (shaders/flat.vert): position xyz and centroid x; centroid
+        // yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the shader
+        // takes z from the unit length). llvmpipe fetches each attribute of each vertex on its own:
+        // two fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
+        layout = {{{SL_ATTRIB_POSITION, 4}, {SL_ATTRIB_FLAT_FACE, 4}}};
+        interleaved.resize(flatMesh.positions.size() * 8);
+        for (std::size_t i = 0; i < flatMesh.positions.size(); ++i) {
+            float* v = &interleaved[i * 8];
+            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
+            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
+            v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
+        }
     }
-    const GLuint locations[3] = {SL_ATTRIB_POSITION, SL_ATTRIB_NORMAL, SL_ATTRIB_CENTROID};
-    const auto stride = GLsizei(attributes * sizeof(glm::vec3));
-    for (std::size_t a = 0; a < attributes; ++a) {
-        glVertexAttribPointer(locations[a], 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(a * sizeof(glm::vec3)));
-        glEnableVertexAttribArray(locations[a]);
+    g.vertices = gl::makeBuffer();
+    glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
+    interleaved = {};
+    GLsizei stride = 0;
+    for (const Attribute& a : layout) stride += GLsizei(a.size * GLint(sizeof(float)));
+    std::size_t offset = 0;
+    for (const Attribute& a : layout) {
+        glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset));
+        glEnableVertexAttribArray(a.location);
+        offset += std::size_t(a.size) * sizeof(float);
     }
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
                  GL_STATIC_DRAW);

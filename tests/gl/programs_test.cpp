@@ -116,10 +116,12 @@ TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
         SCOPED_TRACE(name);
         const gl::Program p = buildProgram(name, library, programDefines(scene));
         ASSERT_TRUE(p);
-        EXPECT_EQ(glGetAttribLocation(p.get(), "a_posObject"), SL_ATTRIB_POSITION);
-        EXPECT_EQ(glGetAttribLocation(p.get(), "a_nrmObject"), SL_ATTRIB_NORMAL);
-        if (std::string(name) == "flat") {
-            EXPECT_EQ(glGetAttribLocation(p.get(), "a_centroidObject"), SL_ATTRIB_CENTROID);
+        if (std::string(name) == "flat") {  // two packed vec4s (Renderer::gpuMesh)
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_posCentroidXObject"), SL_ATTRIB_POSITION);
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_centroidYZNormalXYObject"), SL_ATTRIB_FLAT_FACE);
+        } else {
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_posObject"), SL_ATTRIB_POSITION);
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_nrmObject"), SL_ATTRIB_NORMAL);
         }
         const GLuint frame = glGetUniformBlockIndex(p.get(), "FrameBlock");
         const GLuint object = glGetUniformBlockIndex(p.get(), "ObjectBlock");
