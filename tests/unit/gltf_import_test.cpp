@@ -242,6 +242,37 @@ TEST_F(Gltf, BrokenFilesAreRefusedWithTheirCulprit) {
 
 // A URI may only name files inside the model's folder: "..", absolute paths and network schemes are
 // refused before anything is opened.
+// shadelab decodes a .gltf's base64 buffers itself (tinygltf's decoder is slow on large files): every
+// padding, both MIME types, and one clear line for a payload that is not base64.
+TEST_F(Gltf, Base64BuffersDecodeWithEveryPadding) {
+    // The indices, a filler, then the positions, whose last byte is not zero (the last z is 0.5): with
+    // a filler of 0, 4 and 8 bytes the payload ends in no '=', "==" and "=", and a wrong decode of
+    // its last characters changes that vertex.
+    for (std::size_t filler : {0u, 4u, 8u}) {
+        for (const char* mime : {"data:application/octet-stream;base64,", "data:application/gltf-buffer;base64,"}) {
+            Doc d;
+            d.bin.clear();
+            append<std::uint16_t>(d.bin, {0, 1, 2, 0, 2, 3});
+            d.bin.resize(d.bin.size() + filler, 0xAB);
+            append<float>(d.bin, {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0.5f});
+            d.j["bufferViews"][0]["byteOffset"] = 12 + filler;
+            d.j["bufferViews"][1]["byteOffset"] = 0;
+            d.j["buffers"][0]["byteLength"] = d.bin.size();
+            d.j["buffers"][0]["uri"] = mime + base64(d.bin);
+            const Mesh m = loadGltf(writeGltf("filler" + std::to_string(filler), d));
+            ASSERT_EQ(m.triangleCount(), 2u) << filler << " " << mime;
+            EXPECT_EQ(m.positions[3], glm::vec3(0, 1, 0.5f)) << filler << " " << mime;
+            EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+        }
+    }
+    Doc d;
+    d.j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(d.bin).substr(3);  // 77 characters: 4n + 1
+    expectRefused(writeGltf("bad_length", d), {"buffer 0", "not valid base64"});
+    Doc wrongSize;
+    wrongSize.j["buffers"][0]["byteLength"] = 64;  // the payload holds 60
+    expectRefused(writeGltf("wrong_size", wrongSize), {});
+}
+
 TEST_F(Gltf, UrisThatLeaveTheModelFolderAreRefused) {
     Doc d;
     std::ofstream(dir_ / "outside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
