@@ -79,12 +79,8 @@ void tipsify(std::uint32_t* in, std::size_t triangles, std::size_t vertexCount, 
     std::copy(out.begin(), out.end(), in);
 }
 
-}  // namespace
-
-void orderTrianglesForVertexCache(std::vector<std::uint32_t>& indices, std::size_t vertexCount, std::uint32_t cacheSize) {
-    tipsify(indices.data(), indices.size() / 3, vertexCount, cacheSize);
-}
-
+// New vertex numbers in order of first use in `indices` (vertices no index uses keep their relative
+// order after them). Rewrites `indices` and returns oldFromNew, for permuted().
 std::vector<std::uint32_t> renumberVerticesByFirstUse(std::vector<std::uint32_t>& indices, std::size_t vertexCount) {
     std::vector<std::uint32_t> newFromOld(vertexCount, kNone), oldFromNew;
     oldFromNew.reserve(vertexCount);
@@ -100,10 +96,23 @@ std::vector<std::uint32_t> renumberVerticesByFirstUse(std::vector<std::uint32_t>
     return oldFromNew;
 }
 
+template <typename T>
+std::vector<T> permuted(const std::vector<T>& attribute, const std::vector<std::uint32_t>& oldFromNew) {
+    std::vector<T> out(oldFromNew.size());
+    for (std::size_t i = 0; i < oldFromNew.size(); ++i) out[i] = attribute[oldFromNew[i]];
+    return out;
+}
+
+}  // namespace
+
 Mesh orderedForVertexCache(const Mesh& mesh) {
-    Mesh out = mesh;
+    Mesh out;
+    out.indices = mesh.indices;
+    out.parts = mesh.parts;
     const std::size_t vertexCount = mesh.positions.size();
-    if (out.parts.size() <= 1) {
+    const bool onePart = out.parts.empty() || (out.parts.size() == 1 && out.parts[0].firstIndex == 0 &&
+                                               out.parts[0].indexCount == out.indices.size());
+    if (onePart) {
         tipsify(out.indices.data(), out.indices.size() / 3, vertexCount, kCacheSize);
     } else {
         // Each part on its own, its vertices numbered locally (a file can have thousands of small
@@ -127,17 +136,17 @@ Mesh orderedForVertexCache(const Mesh& mesh) {
         }
     }
     const std::vector<std::uint32_t> oldFromNew = renumberVerticesByFirstUse(out.indices, vertexCount);
-    permuteVertices(out.positions, oldFromNew);
-    permuteVertices(out.normals, oldFromNew);
+    out.positions = permuted(mesh.positions, oldFromNew);
+    out.normals = permuted(mesh.normals, oldFromNew);
     return out;
 }
 
 FlatMesh makeOrderedFlatMesh(const Mesh& orderedMesh) {
     FlatMesh flat = makeFlatMesh(orderedMesh);
     const std::vector<std::uint32_t> oldFromNew = renumberVerticesByFirstUse(flat.indices, flat.positions.size());
-    permuteVertices(flat.positions, oldFromNew);
-    permuteVertices(flat.normals, oldFromNew);
-    permuteVertices(flat.centroids, oldFromNew);
+    flat.positions = permuted(flat.positions, oldFromNew);
+    flat.normals = permuted(flat.normals, oldFromNew);
+    flat.centroids = permuted(flat.centroids, oldFromNew);
     return flat;
 }
 

@@ -20,24 +20,10 @@
 
 namespace shadelab {
 
-// The triangles of `indices` (corners below vertexCount) reordered with Tipsify (Sander, Nehab and
-// Barczak, "Fast triangle reordering for vertex locality and reduced overdraw", SIGGRAPH 2007): fans
-// around one vertex at a time, moving on to the neighbour that stays longest in a FIFO cache of
-// `cacheSize` entries. Linear in the triangle count.
-void orderTrianglesForVertexCache(std::vector<std::uint32_t>& indices, std::size_t vertexCount,
-                                  std::uint32_t cacheSize = 32);
-
-// New vertex numbers in order of first use in `indices` (vertices no index uses keep their relative
-// order after them): consecutive new vertices land in consecutive cache slots. Rewrites `indices`
-// and returns oldFromNew, so attribute arrays follow with permuteVertices().
-std::vector<std::uint32_t> renumberVerticesByFirstUse(std::vector<std::uint32_t>& indices, std::size_t vertexCount);
-
-template <typename T>
-void permuteVertices(std::vector<T>& attribute, const std::vector<std::uint32_t>& oldFromNew) {
-    std::vector<T> out(oldFromNew.size());
-    for (std::size_t i = 0; i < oldFromNew.size(); ++i) out[i] = attribute[oldFromNew[i]];
-    attribute.swap(out);
-}
+// The order: Tipsify (Sander, Nehab and Barczak, "Fast triangle reordering for vertex locality and
+// reduced overdraw", SIGGRAPH 2007) on each mesh part, which fans around one vertex at a time and moves
+// on to the neighbour that stays longest in a FIFO cache, linear in the triangle count; then vertices
+// numbered by first use, so that consecutive new vertices land in consecutive slots of the table.
 
 // `mesh` with the triangles of each part reordered for the vertex cache and its vertices renumbered
 // by first use. Draws the same picture (a closed mesh has no two triangles on one pixel at one depth).
@@ -49,8 +35,8 @@ Mesh orderedForVertexCache(const Mesh& mesh);
 FlatMesh makeOrderedFlatMesh(const Mesh& orderedMesh);
 
 // The vertex-shader runs Mesa's draw module makes for a triangle list with these indices: the model
-// above (segments of `segmentIndices`, a direct-mapped table of `tableSize` per segment). For tests and
-// bench/; the driver is the authority, this only mirrors it.
+// above (segments of `segmentIndices`, a direct-mapped table of `tableSize` per segment). For tests: the
+// driver is the authority, this only mirrors it.
 std::size_t vertexShaderRuns(const std::vector<std::uint32_t>& indices, std::size_t segmentIndices = 1023,
                              std::size_t tableSize = 256);
 

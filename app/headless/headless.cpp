@@ -24,7 +24,7 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
 }
 
 // One frame of a huge mesh: bound llvmpipe's memory for it (Renderer::setDrawChunk). 2M-triangle
-// sphere: peak 218-255 -> 187 MiB, time unchanged (bench/README.md).
+// sphere: peak 218-255 -> 192-208 MiB, time unchanged (bench/README.md).
 constexpr std::size_t kOneFrameDrawChunk = 250000;
 
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend) {

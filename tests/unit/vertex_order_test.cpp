@@ -86,6 +86,13 @@ TEST(VertexOrder, PartsKeepTheirRangesAndTheirTriangles) {
     EXPECT_EQ(o.parts[0].baseColor, glm::vec3(1, 0, 0));
     // The unused vertex is kept, after every used one.
     EXPECT_EQ(o.positions.back(), glm::vec3(9.0f));
+
+    // One part over only some of the indices: the triangles after it stay where they are.
+    m.parts.resize(1);
+    const Mesh one = orderedForVertexCache(m);
+    EXPECT_EQ(triangles(one, 0, firstCount), triangles(m, 0, firstCount));
+    for (std::size_t i = firstCount; i < m.indices.size(); ++i)
+        ASSERT_EQ(one.positions[one.indices[i]], m.positions[m.indices[i]]) << "index " << i;
 }
 
 TEST(VertexOrder, FewerVertexShaderRunsOnTheBenchmarkSphere) {
