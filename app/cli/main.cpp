@@ -35,6 +35,9 @@ struct Stopwatch {
     double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
 };
 
+// --msaa for --output and --benchmark: off unless asked for, so the golden images stay pixel-exact.
+int headlessMsaa(const Options& options) { return options.msaa.value_or(1); }
+
 ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir) {
     ViewerOptions viewer;
     viewer.shaderDir = shaderDir;
@@ -54,6 +57,10 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
     viewer.panelSections = options.panelSections;
     if (options.probe) viewer.probe = *options.probe;
     viewer.selectedLight = options.selectLight.value_or(-1);
+    viewer.uiScale = options.uiScale.value_or(1.0f);
+    viewer.fullscreen = options.fullscreen;
+    viewer.noLabels = options.noLabels;
+    viewer.msaa = options.msaa.value_or(-1);
     viewer.verbose = options.verbose;
     return viewer;
 }
@@ -74,7 +81,7 @@ int runPlaylist(const Options& options, const std::string& shaderDir, const Shad
             const std::string path = (std::filesystem::path(*options.output) / (p.name + ".png")).string();
             writePng(path, options.captions ? withCaptionStrip(image, presetTitle(p), p.scene.caption) : image);
             if (options.verbose) std::cerr << "shadelab: wrote " << path << "\n";
-        });
+        }, headlessMsaa(options));
         return 0;
     }
     Scene first = presets.front().scene;
@@ -139,7 +146,7 @@ int run(const std::vector<std::string>& args) {
     const Stopwatch clock;
 
     if (options.output && !options.sweeps.empty() && !options.info) {
-        const Image sheet = renderSweepHeadless(scene, options.sweeps, shaders, backend);
+        const Image sheet = renderSweepHeadless(scene, options.sweeps, shaders, backend, "--sweep", headlessMsaa(options));
         writePng(*options.output, sheet);
         if (options.verbose)
             std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
@@ -154,12 +161,12 @@ int run(const std::vector<std::string>& args) {
         report(scene, geometry->gltfInfo, geometry->triangleCount());
         const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
                                              options.probe->y);
-        writePng(*options.output, renderHeadless(scene, geometry, shaders, backend));
+        writePng(*options.output, renderHeadless(scene, geometry, shaders, backend, headlessMsaa(options)));
         std::cout << probeToJson(scene, probe) << std::endl;
         return 0;
     }
     if (options.output && !options.info && options.benchmarkFrames == 0) {
-        const HeadlessFrame frame = renderSceneHeadless(std::move(scene), shaders, backend);
+        const HeadlessFrame frame = renderSceneHeadless(std::move(scene), shaders, backend, headlessMsaa(options));
         report(frame.scene, frame.gltfInfo, frame.triangles);
         const double renderedMs = clock.ms();
         writePng(*options.output, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption)
@@ -192,7 +199,7 @@ int run(const std::vector<std::string>& args) {
         else if (options.shading) modes = {*options.shading};
         else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
         for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders, backend,
-                                                          options.progressiveStride))
+                                                          options.progressiveStride, headlessMsaa(options)))
             std::cout << toJson(r) << std::endl;
         return 0;
     }

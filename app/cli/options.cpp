@@ -4,6 +4,7 @@
 #include "core/file_io.hpp"
 #include "core/plot_image.hpp"
 #include "core/scene_json.hpp"
+#include "viewer/controls.hpp"
 #include "viewer/panel_sections.hpp"
 
 #include <algorithm>
@@ -174,10 +175,23 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--benchmark") o.benchmarkFrames = parseInt(arg, next(), 1, 1000000);
         else if (arg == "--frames") o.frames = parseInt(arg, next(), 1, 100000000);
         else if (arg == "--progressive") o.progressiveStride = parseInt(arg, next(), 1, kMaxAreaSamplesPerSide);
+        else if (arg == "--msaa") {
+            static const std::pair<const char*, int> kSamples[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}};
+            o.msaa = parseChoice(arg, next(), kSamples);
+        }
         else if (arg == "--screenshot") o.screenshot = next();
         else if (arg == "--screenshot-view") o.screenshotView = next();
         else if (arg == "--save-scene") o.saveScene = next();
         else if (arg == "--hide-panel") noValue(), o.hidePanel = true;
+        else if (arg == "--ui-scale") {
+            const std::string v = next();
+            const float scale = parseFloat(arg, v);
+            if (!(scale >= kMinUiScale && scale <= kMaxUiScale))
+                throw InputError(arg + ": must be between 0.75 and 4 (got " + v + ")");
+            o.uiScale = scale;
+        }
+        else if (arg == "--fullscreen") noValue(), o.fullscreen = true;
+        else if (arg == "--no-labels") noValue(), o.noLabels = true;
         else if (arg == "--overlays") {
             static const std::pair<const char*, int> kOverlays[] = {
                 {"wireframe", 0}, {"vertex-normals", 1}, {"face-normals", 2}, {"lights", 3}};
@@ -231,11 +245,13 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw InputError("--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark");
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
     const bool viewerFlags = o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel ||
-                             !o.overlays.empty() || o.panelSections || o.selectLight;
+                             !o.overlays.empty() || o.panelSections || o.selectLight || o.uiScale || o.fullscreen ||
+                             o.noLabels;
     if (viewerFlags && (o.output || o.benchmarkFrames))
         throw InputError(std::string(o.output ? "--output" : "--benchmark") +
                          ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel, --overlays, "
-                         "--panel-sections and --select-light are for the viewer, which --output/--benchmark do not open");
+                         "--panel-sections, --select-light, --ui-scale, --fullscreen and --no-labels are for the "
+                         "viewer, which --output/--benchmark do not open");
     if (o.plot) {
         if (!o.output) throw InputError("--plot: writes a PNG: give --output FILE.png");
         if (!o.sweeps.empty() || o.benchmarkFrames)
@@ -357,11 +373,19 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           viewer picks S from its frame time; --benchmark times one such frame)
   --backend NAME          headless OpenGL for --output/--benchmark: osmesa, egl, or auto (OSMesa,
                           else EGL)
+  --msaa N                multisample anti-aliasing, N samples per pixel: 0, 1, 2, 4 or 8 (0 and 1:
+                          off; the driver may round up, and caps it at its maximum). --output and
+                          --benchmark default to 1, pixel-exact with the golden images; the
+                          viewer to 4 (a software renderer: the still view only), --frames runs to 1
   --shader-dir DIR        read GLSL files from DIR when present (default: the checkout's shaders/
                           when it exists, else the built-in copies)
   --info                  print what was loaded (meshes, triangles, bounds, normals) and exit
 
-Viewer (the window; keys and mouse are listed in its panel under "Keys"):
+Viewer (the window; its keys and mouse are listed below, in its panel under "Keys" and by F1):
+  --ui-scale S            panel, captions, pane labels, HUD and probe labels S times larger (0.75..4,
+                          on top of the monitor's content scale); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer
+  --fullscreen            cover the whole monitor (F11 toggles)
+  --no-labels             start without the pane labels and light labels (a clean view for slides)
   --frames N              quit after N frames
   --screenshot FILE.png   on the last frame (N-th, or when you quit), save the whole window, panel included
   --screenshot-view FILE.png  on the last frame, save the 3D view alone (what F12 saves)
@@ -377,7 +401,9 @@ Viewer (the window; keys and mouse are listed in its panel under "Keys"):
   --version               print the version
 
 Bad input (a file, a field, a flag) prints one line and exits with status 2.
-)";
+
+Viewer keys and mouse:
+)" + controlsText();
 }
 
 }  // namespace shadelab

@@ -41,6 +41,9 @@ struct Options {
     std::optional<glm::ivec2> probe;
     int benchmarkFrames = 0;                // --benchmark N
     int progressiveStride = 0;              // --progressive S (1..16): area-light samples over S*S frames (viewer, benchmark)
+    // --msaa N (0, 1, 2, 4, 8): multisample anti-aliasing, samples per pixel (0 and 1: off). Unset, each
+    // front end picks its own default: 1 for --output/--benchmark (golden images stay pixel-exact), 4 in the viewer.
+    std::optional<int> msaa;
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context
     bool info = false;                      // --info: print what was loaded, render nothing
@@ -53,6 +56,9 @@ struct Options {
     std::vector<std::string> overlays;      // --overlays a,b: wireframe, vertex-normals, face-normals, lights
     std::optional<std::vector<std::string>> panelSections;  // --panel-sections a,b: open exactly these panel sections
     std::optional<int> selectLight;         // --select-light N: start with light N selected in the panel
+    std::optional<float> uiScale;           // --ui-scale S (0.75..4): panel, captions, labels, HUD (x the monitor's scale)
+    bool fullscreen = false;                // --fullscreen: the viewer covers the whole monitor (F11)
+    bool noLabels = false;                  // --no-labels: start without pane and light labels (a clean view)
     bool verbose = false;
     bool help = false;
     bool version = false;

@@ -1,5 +1,6 @@
 #include "headless/headless.hpp"
 
+#include "render/multisample_target.hpp"
 #include "render/renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,14 +13,26 @@
 #include <future>
 
 namespace shadelab {
+namespace {
+
+// Draws `scene` into `target`: straight, or with msaaSamples > 1 into `msaa`'s multisampled
+// framebuffer, then resolved into `target`.
+void drawFrame(Renderer& renderer, const Scene& scene, const RenderTarget& target, MultisampleTarget& msaa,
+               int msaaSamples) {
+    renderer.render(scene, msaa.begin(target, msaaSamples));
+    msaa.resolveInto(target);
+}
+
+}  // namespace
 
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders,
-                     HeadlessBackend backend) {
+                     HeadlessBackend backend, int msaaSamples) {
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
-    renderer.render(scene, target);
+    MultisampleTarget msaa;
+    drawFrame(renderer, scene, target, msaa, msaaSamples);
     return readPixels(target);
 }
 
@@ -27,11 +40,12 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
 // sphere: peak 218-255 -> 192-208 MiB, time unchanged (bench/README.md).
 constexpr std::size_t kOneFrameDrawChunk = 250000;
 
-HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend) {
+HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend, int msaaSamples) {
     // buildSceneGeometry only reads `scene`; nothing here writes it until the thread is joined.
     auto loading = std::async(std::launch::async, [&scene] { return buildSceneGeometry(scene); });
     std::unique_ptr<HeadlessContext> context;
     std::unique_ptr<Renderer> renderer;
+    MultisampleTarget msaa;  // after the context: released before it
     try {
         context = makeHeadlessContext(backend, scene.width, scene.height);
         renderer = std::make_unique<Renderer>(context->getProcAddress(), shaders);
@@ -46,7 +60,7 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
             placeholder->meshes.push_back(std::move(m));
         }
         renderer->setGeometry(placeholder);
-        renderer->render(scene, context->target());
+        drawFrame(*renderer, scene, context->target(), msaa, msaaSamples);  // multisampled too: llvmpipe's code differs
         glFinish();
     } catch (...) {
         // A broken input file is the more useful error: report it first if there is one.
@@ -60,17 +74,18 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     frame.triangles = geometry->triangleCount();
     renderer->setGeometry(std::move(geometry));
     renderer->uploadAndReleaseCpuGeometry(scene);
-    renderer->render(scene, context->target());
+    drawFrame(*renderer, scene, context->target(), msaa, msaaSamples);
     frame.image = readPixels(context->target());
     frame.scene = std::move(scene);
     return frame;
 }
 
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
-                          const std::function<void(std::size_t, Image)>& done) {
+                          const std::function<void(std::size_t, Image)>& done, int msaaSamples) {
     if (scenes.empty()) return;
     const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
     Renderer renderer(context->getProcAddress(), shaders);
+    MultisampleTarget msaa;
     std::shared_ptr<SceneGeometry> geometry;
     const Scene* built = nullptr;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -84,13 +99,13 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
         }
         frameIfNeeded(s, *geometry);
         if (context->target().width != s.width || context->target().height != s.height) context->resize(s.width, s.height);
-        renderer.render(s, context->target());
+        drawFrame(renderer, s, context->target(), msaa, msaaSamples);
         done(i, readPixels(context->target()));
     }
 }
 
 Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, const ShaderLibrary& shaders,
-                          HeadlessBackend backend, const std::string& flag) {
+                          HeadlessBackend backend, const std::string& flag, int msaaSamples) {
     const std::size_t columns = sweeps.empty() ? 1 : sweeps[0].values.size();
     const std::size_t rows = sweeps.size() > 1 ? sweeps[1].values.size() : 1;
     // Every tile's scene first: a value that does not fit the scene (tessellation of a cube) is an
@@ -107,20 +122,22 @@ Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, c
             labels.push_back(std::move(label));
         }
     std::vector<Image> tiles;
-    renderScenesHeadless(scenes, shaders, backend, [&](std::size_t, Image tile) { tiles.push_back(std::move(tile)); });
+    const auto addTile = [&](std::size_t, Image tile) { tiles.push_back(std::move(tile)); };
+    renderScenesHeadless(scenes, shaders, backend, addTile, msaaSamples);
     return contactSheet(tiles, labels, int(columns));
 }
 
 std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
                                                const ShaderLibrary& shaders, HeadlessBackend backend,
-                                               int progressiveStride) {
+                                               int progressiveStride, int msaaSamples) {
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
     renderer.setMeshOrder(Renderer::MeshOrder::VertexCache);  // many frames of one mesh, as in the viewer
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
+    MultisampleTarget msaa;
     std::vector<BenchmarkResult> results;
     for (ShadingMode mode : modes) {
         Scene s = scene;
@@ -139,8 +156,10 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                     o.transform.rotationDeg.y = scene.objects.front().transform.rotationDeg.y + glm::degrees(turn);
             }
             const auto t0 = std::chrono::steady_clock::now();
-            if (progressiveStride > 0) renderer.renderProgressive(s, target, progressiveStride, true);
-            else renderer.render(s, target);
+            const RenderTarget drawTarget = msaa.begin(target, msaaSamples);
+            if (progressiveStride > 0) renderer.renderProgressive(s, drawTarget, progressiveStride, true);
+            else renderer.render(s, drawTarget);
+            msaa.resolveInto(target);
             glFinish();
             const auto t1 = std::chrono::steady_clock::now();
             if (f >= warmup) ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
@@ -153,6 +172,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
         r.triangles = triangles;
         r.width = s.width;
         r.height = s.height;
+        r.msaa = std::max(1, msaa.samples());
         const std::size_t n = ms.size();
         r.medianMs = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
         r.p95Ms = ms[std::min(n - 1, std::size_t(std::ceil(0.95 * double(n))) - 1)];
@@ -169,10 +189,10 @@ std::string toJson(const BenchmarkResult& r) {
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "{\"frames\": %d, \"triangles\": %zu, \"size\": [%d, %d], \"shading\": \"%s\", \"layout\": \"%s\", "
-                  "\"median_ms\": %.3f, \"p95_ms\": %.3f, \"min_ms\": %.3f, \"max_ms\": %.3f, \"backend\": \"%s\", "
+                  "\"msaa\": %d, \"median_ms\": %.3f, \"p95_ms\": %.3f, \"min_ms\": %.3f, \"max_ms\": %.3f, \"backend\": \"%s\", "
                   "\"gl_renderer\": \"%s\"}",
                   r.frames, r.triangles, r.width, r.height,
-                  r.layout == Layout::Compare ? "compare" : toString(r.mode), toString(r.layout), r.medianMs, r.p95Ms,
+                  r.layout == Layout::Compare ? "compare" : toString(r.mode), toString(r.layout), r.msaa, r.medianMs, r.p95Ms,
                   r.minMs, r.maxMs, r.backend.c_str(), r.glRenderer.c_str());
     return buf;
 }

@@ -13,8 +13,12 @@
 
 namespace shadelab {
 
+// `msaaSamples` here and below: with more than 1, each frame is drawn with that many samples per
+// pixel (multisample anti-aliasing, render/multisample_target.hpp) and resolved before it is read.
+// 1 (the default) draws straight into the context's target: the golden images' pixels.
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry,
-                     const ShaderLibrary& shaders = ShaderLibrary(), HeadlessBackend backend = HeadlessBackend::Auto);
+                     const ShaderLibrary& shaders = ShaderLibrary(), HeadlessBackend backend = HeadlessBackend::Auto,
+                     int msaaSamples = 1);
 
 // One frame of a scene whose geometry is not built yet, as `shadelab --output` needs it. The geometry
 // is built (and the camera framed, frameIfNeeded) on a second thread while this one creates the
@@ -27,20 +31,21 @@ struct HeadlessFrame {
     std::vector<GltfInfo> gltfInfo;   // per object, as buildSceneGeometry() reported it
     std::size_t triangles = 0;
 };
-HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend);
+HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend,
+                                  int msaaSamples = 1);
 
 // Renders each scene in turn on one context (resized when a scene's size differs from the previous
 // one's; programs are kept, geometry is rebuilt only when the meshes differ from the previous scene's)
 // and hands each image to `done` with its index as soon as it is read back, so a long playlist never
 // holds more than one image. A glTF scene without a camera is framed as for --output.
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
-                          const std::function<void(std::size_t, Image)>& done);
+                          const std::function<void(std::size_t, Image)>& done, int msaaSamples = 1);
 
 // A sweep sheet (core/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
 // with two sweeps, per value of sweeps[1] (rows), each labelled, rendered on one context. Geometry is
 // rebuilt only when a tile's meshes differ from the previous tile's (a tessellation sweep).
 Image renderSweepHeadless(const Scene& scene, const std::vector<Sweep>& sweeps, const ShaderLibrary& shaders,
-                          HeadlessBackend backend, const std::string& flag = "--sweep");
+                          HeadlessBackend backend, const std::string& flag = "--sweep", int msaaSamples = 1);
 
 struct BenchmarkResult {
     ShadingMode mode = ShadingMode::Phong;
@@ -48,6 +53,7 @@ struct BenchmarkResult {
     int frames = 0;
     std::size_t triangles = 0;  // per frame, all panes
     int width = 0, height = 0;
+    int msaa = 1;               // samples per pixel the driver gave (1: no MSAA)
     double medianMs = 0, p95Ms = 0, minMs = 0, maxMs = 0;
     std::string glRenderer;
     std::string backend;
@@ -61,7 +67,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
                                                const ShaderLibrary& shaders = ShaderLibrary(),
                                                HeadlessBackend backend = HeadlessBackend::Auto,
-                                               int progressiveStride = 0);
+                                               int progressiveStride = 0, int msaaSamples = 1);
 std::string toJson(const BenchmarkResult& r);
 
 }  // namespace shadelab

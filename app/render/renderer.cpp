@@ -4,6 +4,7 @@
 #include "core/lighting.hpp"
 #include "core/vertex_order.hpp"
 #include "render/gpu_blocks.hpp"
+#include "render/multisample_target.hpp"
 #include "render/program.hpp"
 
 #include <glm/common.hpp>
@@ -109,7 +110,7 @@ gl::Texture makeImageTexture(GLint internalFormat, GLenum format, GLenum type, i
     return t;
 }
 
-gl::Framebuffer makeFramebuffer(GLuint color, GLuint depth) {
+gl::Framebuffer makeFramebuffer(GLuint color, GLuint depth, const char* what) {
     GLuint id = 0;
     glGenFramebuffers(1, &id);
     gl::Framebuffer f(id);
@@ -117,7 +118,7 @@ gl::Framebuffer makeFramebuffer(GLuint color, GLuint depth) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
     if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("progressive sampling: the float framebuffer is not complete on this GL");
+        throw std::runtime_error(std::string(what) + ": the framebuffer is not complete on this GL");
     return f;
 }
 
@@ -514,7 +515,7 @@ Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, cons
     if (pr.width != w || pr.height != h) {
         pr.sumColor = makeImageTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
         pr.depth = makeImageTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
-        pr.sumFbo = makeFramebuffer(pr.sumColor.get(), pr.depth.get());
+        pr.sumFbo = makeFramebuffer(pr.sumColor.get(), pr.depth.get(), "progressive sampling (float sum)");
         pr.width = w, pr.height = h;
         restart = true;
     }
@@ -585,18 +586,20 @@ void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, fl
         glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceB"), 1);
     }
     if (!diffSources_[0] || diffWidth_ != pane.width || diffHeight_ != pane.height) {
-        for (gl::Texture& t : diffSources_)
-            t = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, pane.width, pane.height);
+        for (std::size_t k = 0; k < 2; ++k) {
+            diffSources_[k] = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, pane.width, pane.height);
+            diffSourceFbos_[k] = makeFramebuffer(diffSources_[k].get(), 0, "layout diff");
+        }
         diffWidth_ = pane.width, diffHeight_ = pane.height;
     }
-    // Copy both source panes out of the target (GL's rows run bottom-up: y flips).
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer);
+    // Copy both source panes out of the target (GL's rows run bottom-up: y flips). A blit, not
+    // glCopyTexSubImage2D: it also reads a multisampled target (MSAA), resolving the panes.
     const Pane* sources[2] = {&a, &b};
-    for (int k = 0; k < 2; ++k) {
+    for (std::size_t k = 0; k < 2; ++k) {
+        blitColor(target.framebuffer, sources[k]->x, target.height - sources[k]->y - sources[k]->height,
+                  diffSourceFbos_[k].get(), 0, 0, pane.width, pane.height);
         glActiveTexture(GLenum(GL_TEXTURE0 + k));
-        glBindTexture(GL_TEXTURE_2D, diffSources_[std::size_t(k)].get());
-        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, sources[k]->x, target.height - sources[k]->y - sources[k]->height,
-                            pane.width, pane.height);
+        glBindTexture(GL_TEXTURE_2D, diffSources_[k].get());
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     const int originY = target.height - pane.y - pane.height;
@@ -612,7 +615,15 @@ void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, fl
 
 Image readPixels(const RenderTarget& target) {
     Image img(target.width, target.height);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer);
+    // glReadPixels cannot read a multisampled framebuffer (MSAA): resolve it into a plain one first.
+    gl::Framebuffer resolved;
+    gl::Texture resolvedColor;
+    if (isMultisampled(target.framebuffer)) {
+        resolvedColor = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, target.width, target.height);
+        resolved = makeFramebuffer(resolvedColor.get(), 0, "readPixels (MSAA resolve)");
+        blitColor(target.framebuffer, 0, 0, resolved.get(), 0, 0, target.width, target.height);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved ? resolved.get() : target.framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     std::vector<std::uint8_t> bottomUp(img.rgba.size());
     glReadPixels(0, 0, target.width, target.height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());

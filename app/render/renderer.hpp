@@ -127,9 +127,11 @@ private:
     std::size_t drawChunkTriangles_ = 0;
     std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both its uploads are done
     ShadowMaps shadowMaps_;
-    // Layout diff: copies of the two source panes and the program that subtracts them.
+    // Layout diff: copies of the two source panes (blitted through their framebuffers) and the
+    // program that subtracts them.
     void drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target);
     std::array<gl::Texture, 2> diffSources_;
+    std::array<gl::Framebuffer, 2> diffSourceFbos_;
     int diffWidth_ = 0, diffHeight_ = 0;
     gl::Program diffProgram_;
     gl::VertexArray emptyVao_;                            // core profile draws need a bound VAO
@@ -159,7 +161,8 @@ std::vector<glm::ivec2> progressivePassOrder(const glm::ivec2& stride);
 // Everything else is a uniform, so editing values never recompiles.
 std::vector<std::string> programDefines(const Scene& scene);
 
-// Reads the colour buffer of `target` (bottom-up in GL) into a top-down RGBA image.
+// Reads the colour buffer of `target` (bottom-up in GL) into a top-down RGBA image; a multisampled
+// target (render/multisample_target.hpp) is resolved into a temporary copy first.
 Image readPixels(const RenderTarget& target);
 
 }  // namespace shadelab

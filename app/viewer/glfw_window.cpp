@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -19,9 +20,12 @@ std::string lastGlfwError() {
     return description ? description : "unknown GLFW error";
 }
 
+GlfwWindow& self(GLFWwindow* w) { return *static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w)); }
+
 }  // namespace
 
-GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string& title) {
+GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string& title,
+                       const std::optional<WindowPlacement>& placement) {
     if (!glfwInit())
         throw InputError("no display available for the viewer (" + lastGlfwError() +
                          "); use --output FILE.png to render headless");
@@ -29,21 +33,25 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    // No multisampling: the 3D view must give the same pixels as the headless render of the scene.
+    // No multisampled default framebuffer: the viewer anti-aliases in its own multisampled target,
+    // only where asked, so the 3D view can give the same pixels as the headless render.
     glfwWindowHint(GLFW_SAMPLES, 0);
     glfwWindowHint(GLFW_DEPTH_BITS, 24);
+    int areaX = 0, areaY = 0, areaWidth = 0, areaHeight = 0;
+    float scale = 1.0f;
     if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
         float scaleX = 1.0f, scaleY = 1.0f;
         glfwGetMonitorContentScale(monitor, &scaleX, &scaleY);
-        width += int(sideWidth * std::max(1.0f, std::max(scaleX, scaleY)) + 0.5f);
-        int x = 0, y = 0, areaWidth = 0, areaHeight = 0;
-        glfwGetMonitorWorkarea(monitor, &x, &y, &areaWidth, &areaHeight);
-        if (areaWidth > 0 && areaHeight > 0) {
-            width = std::min(width, areaWidth);
-            height = std::min(height, areaHeight);
-        }
-    } else {
-        width += int(sideWidth + 0.5f);
+        scale = std::max(1.0f, std::max(scaleX, scaleY));
+        glfwGetMonitorWorkarea(monitor, &areaX, &areaY, &areaWidth, &areaHeight);
+    }
+    // The content keeps its size on the screen: at 2x, twice the pixels.
+    width = int(std::lround(float(width) * scale + sideWidth * scale));
+    height = int(std::lround(float(height) * scale));
+    if (placement && placement->width > 0 && placement->height > 0) width = placement->width, height = placement->height;
+    if (areaWidth > 0 && areaHeight > 0) {
+        width = std::min(width, areaWidth);
+        height = std::min(height, areaHeight);
     }
     window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window_) {
@@ -51,17 +59,37 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
         glfwTerminate();
         throw std::runtime_error("could not open a window with an OpenGL 3.3 core context: " + reason);
     }
+    if (placement && areaWidth > 0) {
+        // Only where the window is still on the work area (a monitor may have gone since).
+        const int x = std::clamp(placement->x, areaX, areaX + areaWidth - std::min(width, areaWidth));
+        const int y = std::clamp(placement->y, areaY, areaY + areaHeight - std::min(height, areaHeight));
+        glfwSetWindowPos(window_, x, y);
+    }
     glfwMakeContextCurrent(window_);
     // The callbacks find this object through the window's user pointer. Dear ImGui's GLFW backend,
-    // initialised after this, installs its own callbacks and calls these from them.
+    // initialised after this, installs its own key, character, mouse, wheel and focus callbacks and
+    // calls these from them.
     glfwSetWindowUserPointer(window_, this);
     glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
-        auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));
-        for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+        for (int i = 0; i < count; ++i) self(w).dropped_.emplace_back(paths[i]);
+        ++self(w).events_;
     });
-    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-        if (action == GLFW_PRESS) static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->pressed_.push_back(key);
+    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
+        if (action == GLFW_PRESS) self(w).pressed_.push_back(key), self(w).lastMods_ = mods;
+        ++self(w).events_;
     });
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) { ++self(w).events_; });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int, int) { ++self(w).events_; });
+    glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double) { ++self(w).events_; });
+    glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double, double) { ++self(w).events_; });
+    glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { ++self(w).events_; });
+    glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { ++self(w).events_; });
+    glfwSetWindowSizeCallback(window_, [](GLFWwindow* w, int, int) { ++self(w).events_; });
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { ++self(w).events_; });
+    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { ++self(w).events_; });
+    glfwSetWindowContentScaleCallback(window_, [](GLFWwindow* w, float, float) { ++self(w).events_; });
+    glfwSetWindowCloseCallback(window_, [](GLFWwindow* w) { ++self(w).events_; });
+    windowed_ = placement ? *placement : WindowPlacement{};
 }
 
 GlfwWindow::~GlfwWindow() {
@@ -80,9 +108,36 @@ float GlfwWindow::contentScale() const {
 
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+void GlfwWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 void GlfwWindow::pollEvents() { glfwPollEvents(); }
+void GlfwWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
 void GlfwWindow::setSwapInterval(int interval) { glfwSwapInterval(interval); }
+
+bool GlfwWindow::fullscreen() const { return glfwGetWindowMonitor(window_) != nullptr; }
+
+WindowPlacement GlfwWindow::placement() const {
+    if (fullscreen()) return windowed_;
+    WindowPlacement p;
+    glfwGetWindowPos(window_, &p.x, &p.y);
+    glfwGetWindowSize(window_, &p.width, &p.height);
+    return p;
+}
+
+void GlfwWindow::setFullscreen(bool on) {
+    if (on == fullscreen()) return;
+    if (on) {
+        GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+        const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+        if (!mode) return;
+        windowed_ = placement();
+        glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+    } else {
+        const WindowPlacement& p = windowed_;
+        glfwSetWindowMonitor(window_, nullptr, p.x, p.y, std::max(p.width, 320), std::max(p.height, 240), 0);
+    }
+    ++events_;
+}
 
 std::vector<std::string> GlfwWindow::takeDroppedPaths() { return std::exchange(dropped_, {}); }
 std::vector<int> GlfwWindow::takePressedKeys() { return std::exchange(pressed_, {}); }

@@ -1,7 +1,7 @@
 #pragma once
 // The viewer's window: GLFW initialised, one window with a current OpenGL 3.3 core (forward-compatible)
 // context, and both torn down again in the destructor. Nothing here draws.
-#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,13 +9,19 @@ struct GLFWwindow;
 
 namespace shadelab {
 
+// Where the window was and how large, to open it there again (viewer/view_prefs.hpp).
+struct WindowPlacement {
+    int x = 0, y = 0, width = 0, height = 0;  // screen units
+};
+
 class GlfwWindow {
 public:
-    // Opens a window of `width` + `sideWidth` * (the monitor's content scale) by `height` screen units,
-    // shrunk to fit the monitor's work area: `width` x `height` is room for the content, `sideWidth`
-    // for a side panel whose size follows the UI scale. Throws InputError "no display ..." when GLFW
-    // cannot reach a display, std::runtime_error when it gets no GL 3.3 core context.
-    GlfwWindow(int width, int height, float sideWidth, const std::string& title);
+    // Opens a window for `width` x `height` pixels of content at content scale 1 (scaled by the
+    // monitor's content scale) plus `sideWidth` screen units beside it for the panel, shrunk to fit the
+    // monitor's work area; or at `placement` when given and on a monitor. Throws InputError "no display
+    // ..." when GLFW cannot reach a display, std::runtime_error when it gets no GL 3.3 core context.
+    GlfwWindow(int width, int height, float sideWidth, const std::string& title,
+               const std::optional<WindowPlacement>& placement = std::nullopt);
     ~GlfwWindow();
     GlfwWindow(const GlfwWindow&) = delete;
     GlfwWindow& operator=(const GlfwWindow&) = delete;
@@ -26,10 +32,23 @@ public:
     float contentScale() const;                           // the monitor's UI scale (1 on a plain X server)
     bool shouldClose() const;
     void requestClose();
+    void cancelClose();
     void pollEvents();
+    // Sleeps until an event arrives or `timeoutSeconds` pass (render on demand: no CPU while idle).
+    void waitEvents(double timeoutSeconds);
     void swapBuffers();
     // 0: as fast as possible (scripted runs), 1: follow the display's refresh.
     void setSwapInterval(int interval);
+
+    // F11: the whole primary monitor, and back to where the window was.
+    void setFullscreen(bool on);
+    bool fullscreen() const;
+    // Position and size while windowed (the size it returns to from fullscreen).
+    WindowPlacement placement() const;
+
+    // Counts every input and window event (keys, characters, mouse, wheel, resize, focus, expose,
+    // drops); the viewer redraws when it changed.
+    unsigned long eventCount() const { return events_; }
 
     // Paths of files dropped on the window since the last call.
     std::vector<std::string> takeDroppedPaths();
@@ -37,11 +56,16 @@ public:
     // only sees a key that is still down when a frame starts, so a key pressed and released during
     // one slow frame (an 8x8 area light takes seconds on a software renderer) would be lost.
     std::vector<int> takePressedKeys();
+    // Whether Shift / Ctrl were down at the last key press (for keys taken with takePressedKeys).
+    int lastKeyMods() const { return lastMods_; }
 
 private:
     GLFWwindow* window_ = nullptr;
     std::vector<std::string> dropped_;
     std::vector<int> pressed_;
+    int lastMods_ = 0;
+    unsigned long events_ = 0;
+    WindowPlacement windowed_;  // before fullscreen
 };
 
 }  // namespace shadelab

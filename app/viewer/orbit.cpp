@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadelab {
 
@@ -37,13 +38,52 @@ void panCamera(Camera& c, float dx, float dy, float viewHeight) {
     c.target += move;
 }
 
-void zoomCamera(Camera& c, float wheelSteps) {
+void zoomCamera(Camera& c, float wheelSteps, float minDistance, float maxDistance) {
     const glm::vec3 offset = c.eye - c.target;
     const float dist = glm::length(offset);
     if (dist <= 0.0f) return;
-    const float lo = 2.0f * c.nearPlane, hi = std::max(lo, 0.5f * c.farPlane);
-    const float newDist = std::clamp(dist * std::pow(0.9f, wheelSteps), lo, hi);
+    const float newDist = std::clamp(dist * std::pow(0.9f, wheelSteps), minDistance, std::max(minDistance, maxDistance));
     c.eye = c.target + offset * (newDist / dist);
+}
+
+void fitClipPlanes(Camera& c, const BoundingSphere& b, const std::vector<glm::vec3>& points) {
+    const glm::vec3 forward = c.target - c.eye;
+    if (glm::length(forward) <= 0.0f) return;
+    const glm::vec3 f = glm::normalize(forward);
+    // Depths along the viewing axis: the sphere spans its centre's depth +- its radius.
+    const float centre = glm::dot(b.center - c.eye, f);
+    float farthest = centre + b.radius, nearest = centre - b.radius;
+    for (const glm::vec3& p : points) {
+        const float z = glm::dot(p - c.eye, f);
+        farthest = std::max(farthest, z);
+        if (z > 0.0f) nearest = std::min(nearest, z);
+    }
+    c.farPlane = std::max(farthest * 1.01f, 1e-3f);
+    c.nearPlane = std::max(nearest * 0.99f, c.farPlane * 1e-4f);
+}
+
+float fitDistance(const Camera& c, const BoundingSphere& b, float paneAspect, float margin) {
+    glm::vec3 dir = c.eye - c.target;
+    dir = glm::length(dir) > 0.0f ? glm::normalize(dir) : glm::vec3(0.0f, 0.0f, 1.0f);
+    const float radius = b.radius > 0.0f ? b.radius : 1.0f;
+    // Half angles shrunk by the margin: a narrower field of view to fit into.
+    Camera probe = c;
+    probe.fovYDeg = glm::degrees(2.0f * std::atan(std::tan(glm::radians(c.fovYDeg) / 2.0f) * margin));
+    const float aspect = paneAspect;
+    auto fits = [&](float d) {
+        probe.eye = c.target + d * dir;
+        probe.nearPlane = 0.0f;
+        probe.farPlane = std::numeric_limits<float>::max();
+        return sphereInView(probe, b, aspect);
+    };
+    // Far enough to fit from any target within reach, then bisect: fitting only gets easier with distance.
+    float lo = 0.0f, hi = glm::length(b.center - c.target) + radius;
+    while (!fits(hi) && hi < 1e12f) hi *= 2.0f;
+    for (int i = 0; i < 60; ++i) {
+        const float mid = 0.5f * (lo + hi);
+        (fits(mid) ? hi : lo) = mid;
+    }
+    return hi;
 }
 
 void frameCamera(Camera& c, const BoundingSphere& b, float paneAspect) {

@@ -5,6 +5,10 @@
 #include "core/mesh.hpp"
 #include "core/scene.hpp"
 
+#include <glm/vec3.hpp>
+
+#include <vector>
+
 namespace shadelab {
 
 // Turns the eye around the target: `yawRad` about the camera's up vector (positive moves the eye to
@@ -16,9 +20,20 @@ void orbitCamera(Camera& camera, float yawRad, float pitchRad);
 // are pixels (right, down) in a view `viewHeight` pixels high.
 void panCamera(Camera& camera, float dx, float dy, float viewHeight);
 
-// Moves the eye towards the target by 10% per wheel step (negative steps move away). The distance stays
-// between 2 * near and far / 2 so the model is never clipped away.
-void zoomCamera(Camera& camera, float wheelSteps);
+// Moves the eye towards the target by 10% per wheel step (negative steps move away), the same factor at
+// every distance; the distance stays within [minDistance, maxDistance] (from the model's size: close to
+// its surface, far away). Near and far are not touched: fitClipPlanes() follows the eye every frame.
+void zoomCamera(Camera& camera, float wheelSteps, float minDistance, float maxDistance);
+
+// Near and far planes around what can be seen from the eye: the bounding sphere and `points` (the
+// lights, whose markers are drawn), with a little slack; near never reaches into the sphere while the
+// eye is outside it, and stays above far / 10^4 (24-bit depth) inside it.
+void fitClipPlanes(Camera& camera, const BoundingSphere& bounds, const std::vector<glm::vec3>& points);
+
+// The eye's distance from the target, along the current viewing direction, at which the whole sphere
+// is inside a pane of this aspect with its half angles shrunk by `margin` (1: touching the borders).
+// Near and far are ignored (fitClipPlanes places them).
+float fitDistance(const Camera& camera, const BoundingSphere& bounds, float paneAspect, float margin);
 
 // Looks at the bounding sphere from the camera's current direction, from a distance at which it fills
 // 90% of the tighter side of a pane with this aspect (width / height); near and far follow.

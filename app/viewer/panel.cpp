@@ -1,6 +1,7 @@
 #include "viewer/panel.hpp"
 
 #include "core/camera.hpp"
+#include "viewer/controls.hpp"
 #include "viewer/panel_sections.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <string>
 
@@ -67,7 +69,7 @@ bool cameraValid(const Camera& c) {
 }
 
 void iorSlider(Scene& scene) {
-    ImGui::SliderFloat("ior eta2/eta1", &scene.ior, kMinIor, 4.0f, "%.3f");
+    ImGui::SliderFloat("ior \u03b7\u2082/\u03b7\u2081", &scene.ior, kMinIor, 4.0f, "%.3f");
     scene.ior = std::clamp(scene.ior, kMinIor, kMaxIor);
 }
 
@@ -134,10 +136,10 @@ void sectionMaterial(Material& m) {
 // The lecture's plots for the current parameters (core/plot.hpp): rebuilt every frame, which costs
 // about a thousand formula evaluations, so every slider in the panel moves the curves at once.
 void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
-    ImGui::SliderFloat("incidence", &plots.incidenceDeg, 0.0f, kMaxIncidenceDeg, "theta_i = %.1f deg");
+    ImGui::SliderFloat("incidence", &plots.incidenceDeg, 0.0f, kMaxIncidenceDeg, "\u03b8_i = %.1f\u00b0");
     plots.incidenceDeg = std::clamp(plots.incidenceDeg, 0.0f, kMaxIncidenceDeg);
     iorSlider(scene);
-    ImGui::Checkbox("from inside (eta_1 = ior, eta_2 = 1)", &plots.fromInside);
+    ImGui::Checkbox("from inside (\u03b7\u2081 = ior, \u03b7\u2082 = 1)", &plots.fromInside);
     // Heights that leave room for the header and legend rows at the panel's width and the plot below.
     const float width = ImGui::GetContentRegionAvail().x;
     plotWidget("##lobe", scenePlot(PlotKind::Lobe, scene, material, plots), width * 0.85f);
@@ -276,10 +278,22 @@ void sectionOverlays(ViewSettings& s) {
     ImGui::SameLine();
     ImGui::Checkbox("face normals (Shift+N)", &s.overlays.faceNormals);
     ImGui::SliderFloat("normal length", &s.overlays.normalScale, 0.02f, 0.5f, "%.2f x radius");
-    ImGui::Checkbox("light markers (L)", &s.overlays.lightMarkers);
+    ImGui::Checkbox("light labels (L)", &s.lightLabels);
+    ImGui::SameLine();
+    ImGui::Checkbox("3D light crosses", &s.overlays.lightMarkers);
     ImGui::Checkbox("pane labels", &s.paneLabels);
     ImGui::SameLine();
-    ImGui::Checkbox("HUD", &s.showHud);
+    ImGui::Checkbox("frame time", &s.showHud);
+    ImGui::SameLine();
+    ImGui::Checkbox("also when Tab hides the panel", &s.readoutWhenHidden);
+}
+
+void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
+    float scale = status.uiScale;
+    if (ImGui::SliderFloat("UI scale", &scale, kMinUiScale, kMaxUiScale, "%.2f x  (Ctrl+= / Ctrl+-)"))
+        requests.uiScale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+    requests.toggleFullscreen |= ImGui::Button("fullscreen (F11)");
+    if (!status.trueTypeFont) ImGui::TextWrapped("DejaVu Sans not found (Debian: fonts-dejavu-core): bitmap font");
 }
 
 void sectionCamera(Camera& c, PanelRequests& requests) {
@@ -290,11 +304,21 @@ void sectionCamera(Camera& c, PanelRequests& requests) {
     bool changed = ImGui::DragFloat3("eye", &edited.eye.x, 0.02f, -1e6f, 1e6f, "%.2f");
     changed |= ImGui::DragFloat3("target", &edited.target.x, 0.02f, -1e6f, 1e6f, "%.2f");
     changed |= ImGui::SliderFloat("fov y (deg)", &edited.fovYDeg, 5.0f, 120.0f, "%.1f");
-    changed |= ImGui::DragFloat("near", &edited.nearPlane, 0.001f, 1e-4f, 1e5f, "%.4f", ImGuiSliderFlags_AlwaysClamp);
-    changed |= ImGui::DragFloat("far", &edited.farPlane, 0.5f, 1e-3f, 1e6f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
     edited.fovYDeg = std::clamp(edited.fovYDeg, 1.0f, 179.0f);
     if (changed && cameraValid(edited)) c = edited;
-    ImGui::TextDisabled("left drag: orbit   right/middle drag: pan   wheel: zoom");
+    // The viewer places them every frame around the model and the lights (zoom never slices it).
+    ImGui::TextDisabled("near %.4g, far %.4g: follow the eye", double(c.nearPlane), double(c.farPlane));
+}
+
+// The widest label a widget in the panel has (measured in the current font, so it holds at any scale).
+float longestLabelWidth() {
+    static const char* const kLongLabels[] = {"lobe normalisation", "normal bias (texels)", "depth bias (slope)",
+                                              "samples (nx, ny)", "range (0: none)", "output encoding",
+                                              "major segments", "rotation (deg)", "ior \u03b7\u2082/\u03b7\u2081",
+                                              "k_e exponent"};
+    float width = 0.0f;
+    for (const char* label : kLongLabels) width = std::max(width, ImGui::CalcTextSize(label).x);
+    return width;
 }
 
 void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requests) {
@@ -308,6 +332,12 @@ void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requ
     if (!status.lastScreenshot.empty()) ImGui::TextWrapped("screenshot: %s", status.lastScreenshot.c_str());
     requests.reloadShaders |= ImGui::Button("reload shaders (F5)");
     ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
+    // The last result, also shown over the view for a while; here at the end, so nothing moves.
+    if (!status.message.empty()) {
+        if (status.isError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", status.message.c_str());
+        if (status.isError) ImGui::PopStyleColor();
+    }
 }
 
 void sectionPlaylist(ViewSettings& settings, const PanelStatus& status, PanelRequests& requests) {
@@ -341,21 +371,15 @@ void sectionPlaylist(ViewSettings& settings, const PanelStatus& status, PanelReq
 }
 
 void sectionKeys() {
-    ImGui::TextUnformatted(
-        "PgDn PgUp   next / previous preset (or Right / Left)\n"
-        "Home End    first / last preset\n"
-        "Backspace   reset the preset (reload its file)\n"
-        "1 2 3       flat / gouraud / phong (single pane)\n"
-        "C           compare flat | gouraud | phong\n"
-        "W           wireframe\n"
-        "N           vertex normals   Shift+N face normals\n"
-        "L           light markers\n"
-        "click       probe the pixel: N, I, V, R, H and every term\n"
-        "R           reset camera     F  frame model\n"
-        "F12         screenshot of the 3D view\n"
-        "Tab         hide / show the panel\n"
-        "Esc         clear the probe (with none: quit)\n"
-        "Q           quit");
+    if (!ImGui::BeginTable("##keys", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) return;
+    for (const Control& c : kControls) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(c.input);
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", c.action);
+    }
+    ImGui::EndTable();
 }
 
 }  // namespace
@@ -372,13 +396,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         ImGui::End();
         return requests;
     }
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);  // room for the labels on the right
-    if (!status.message.empty()) {
-        if (status.isError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::TextWrapped("%s", status.message.c_str());
-        if (status.isError) ImGui::PopStyleColor();
-        ImGui::Separator();
-    }
+    // Widgets leave room for the longest label on their right, so no label is clipped at any scale.
+    ImGui::PushItemWidth(-(longestLabelWidth() + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f));
     if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
         sectionPlaylist(settings, status, requests);
     // The probe's terms come first: a click on the view is a question the panel answers at once.
@@ -406,7 +425,10 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         sectionMesh(object->mesh, object->transform, status.objectTriangles);
     if (section("Lights", kPanelSections[4], true)) sectionLights(scene, settings.selectedLight);
     if (section("Shadows", kPanelSections[5], true)) sectionShadows(scene.shadows);
-    if (section("Overlays", kPanelSections[6], true)) sectionOverlays(settings);
+    if (section("Overlays", kPanelSections[6], true)) {
+        sectionOverlays(settings);
+        sectionDisplay(status, requests);
+    }
     if (section("Camera", kPanelSections[7], false)) sectionCamera(scene.camera, requests);
     if (section("Background", kPanelSections[8], false)) colorEdit("background", scene.background);
     if (section("File", kPanelSections[9], true)) sectionFile(settings, status, requests);
@@ -418,70 +440,223 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     return requests;
 }
 
+namespace {
+
+// The pane's words: what differs between panes, the way the lecture names it.
+std::string shadingName(ShadingMode m) {
+    switch (m) {
+    case ShadingMode::Flat: return "Flat";
+    case ShadingMode::Gouraud: return "Gouraud";
+    case ShadingMode::Phong: return "Phong";
+    }
+    return "";
+}
+
+const char* lobeName(ReflectionModel r) { return r == ReflectionModel::BlinnPhong ? "Blinn-Phong lobe" : "Phong lobe"; }
+
+void labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string& text, ImU32 colour) {
+    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, text.c_str());
+    const float pad = fontSize * 0.3f;
+    draw->AddRectFilled(ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad),
+                        IM_COL32(0, 0, 0, 160), pad);
+    draw->AddText(ImGui::GetFont(), fontSize, pos, colour, text.c_str());
+}
+
+}  // namespace
+
 void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const float fontSize = ImGui::GetFontSize() * 2.0f;  // read from the back of a lecture hall
+    const float fontSize = ImGui::GetFontSize() * 1.4f;  // read from the back of a lecture hall
     const float pad = fontSize * 0.3f;
-    const std::string diffLabel = "|" + std::string(toString(scene.diff.a)) + " - " + toString(scene.diff.b) + "| x " +
+    const std::string diffLabel = "|" + shadingName(scene.diff.a) + " \u2212 " + shadingName(scene.diff.b) + "| \u00d7 " +
                                   std::to_string(int(std::lround(scene.diff.factor)));
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
-        const char* text = pane.difference ? diffLabel.c_str() : toString(pane.mode);
-        const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, text);
-        const float cx = view.x + (float(pane.x) + float(pane.width) * 0.5f) / framebufferScale;
-        const ImVec2 pos(std::round(cx - size.x * 0.5f), std::round(view.y + float(pane.y) / framebufferScale + pad * 2));
-        draw->AddRectFilled(ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad),
-                            IM_COL32(0, 0, 0, 150), pad);
-        draw->AddText(ImGui::GetFont(), fontSize, pos, IM_COL32(255, 255, 255, 235), text);
+        const float x0 = view.x + float(pane.x) / framebufferScale, width = float(pane.width) / framebufferScale;
+        // One line where it fits the pane, else the mode above the lobe.
+        std::vector<std::string> lines;
+        if (pane.difference) {
+            lines = {diffLabel};
+        } else {
+            const std::string mode = shadingName(pane.mode) + " shading", lobe = lobeName(scene.reflection);
+            const std::string one = mode + " \u00b7 " + lobe;
+            if (ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, one.c_str()).x + 4 * pad <= width) lines = {one};
+            else lines = {mode, lobe};
+        }
+        float y = view.y + float(pane.y) / framebufferScale + pad * 2;
+        for (const std::string& line : lines) {
+            const float w = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, line.c_str()).x;
+            labelBox(draw, fontSize, ImVec2(std::round(x0 + (width - w) * 0.5f), std::round(y)), line, IM_COL32(255, 255, 255, 240));
+            y += fontSize + pad * 2.5f;
+        }
     }
 }
 
-float drawCaption(const Scene& scene, const std::string& counter, const UiRect& view) {
-    if (scene.title.empty() && scene.caption.empty()) return 0.0f;
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight) {
+    CaptionLayout l;
+    if (scene.title.empty() && scene.caption.empty()) return l;
+    ImFont* font = ImGui::GetFont();
+    // Sizes follow the view's width (a 1000-unit view gets 1.6 times the panel's font for the title,
+    // 1.25 for the caption); smaller in steps while the band would take more than `maxHeight`.
+    float zoom = std::clamp(width / 1000.0f, 0.7f, 1.25f);
+    for (int step = 0; step < 8; ++step, zoom *= 0.9f) {
+        l.titleSize = ImGui::GetFontSize() * 1.6f * zoom;
+        l.captionSize = ImGui::GetFontSize() * 1.25f * zoom;
+        l.pad = l.captionSize * 0.45f;
+        const float counterWidth =
+            counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;
+        const float wrap = std::max(width - 2.0f * l.pad - counterWidth, 1.0f);
+        const float title = scene.title.empty() ? 0.0f : font->CalcTextSizeA(l.titleSize, 1e9f, wrap, scene.title.c_str()).y;
+        const float caption =
+            scene.caption.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, wrap, scene.caption.c_str()).y;
+        const float gap = title > 0.0f && caption > 0.0f ? l.pad * 0.5f : 0.0f;
+        l.height = std::ceil(title + gap + caption + 2.0f * l.pad);
+        if (l.height <= maxHeight) break;
+    }
+    l.height = std::min(l.height, maxHeight);
+    return l;
+}
+
+void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& l, const UiRect& band) {
+    if (l.height <= 0.0f) return;
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     ImFont* font = ImGui::GetFont();
-    // Sizes follow the view's width (a 1000-unit view gets 1.75 times the panel's font for the title,
-    // 1.35 for the caption), so the band reads from the back of the room yet covers only the bottom
-    // ~15% of a 16:9 view, and a small window's view is not all caption.
-    const float zoom = std::clamp(view.width / 1000.0f, 0.6f, 1.25f);
-    const float titleSize = ImGui::GetFontSize() * 1.75f * zoom;
-    const float captionSize = ImGui::GetFontSize() * 1.35f * zoom;
-    const float pad = captionSize * 0.5f;
-    const float counterWidth = counter.empty() ? 0.0f : font->CalcTextSizeA(captionSize, 1e9f, 0.0f, counter.c_str()).x + pad;
-    const float wrap = std::max(view.width - 2.0f * pad - counterWidth, 1.0f);
-    const char* title = scene.title.c_str();
-    const char* caption = scene.caption.c_str();
-    const float titleHeight = scene.title.empty() ? 0.0f : font->CalcTextSizeA(titleSize, 1e9f, wrap, title).y;
-    const float captionHeight = scene.caption.empty() ? 0.0f : font->CalcTextSizeA(captionSize, 1e9f, wrap, caption).y;
-    const float gap = titleHeight > 0.0f && captionHeight > 0.0f ? pad * 0.5f : 0.0f;
-    const float band = titleHeight + gap + captionHeight + 2.0f * pad;
-    const float top = view.y + view.height - band;
-    draw->AddRectFilled(ImVec2(view.x, top), ImVec2(view.x + view.width, view.y + view.height), IM_COL32(0, 0, 0, 150));
-    const ImVec2 titlePos(std::round(view.x + pad), std::round(top + pad));
-    draw->AddText(font, titleSize, titlePos, IM_COL32(255, 255, 255, 255), title, nullptr, wrap);
-    draw->AddText(font, captionSize, ImVec2(titlePos.x, std::round(titlePos.y + titleHeight + gap)),
-                  IM_COL32(225, 225, 225, 255), caption, nullptr, wrap);
+    const float counterWidth = counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;
+    const float wrap = std::max(band.width - 2.0f * l.pad - counterWidth, 1.0f);
+    const ImVec2 lo(band.x, band.y), hi(band.x + band.width, band.y + band.height);
+    draw->PushClipRect(lo, hi, true);
+    draw->AddRectFilled(lo, hi, IM_COL32(24, 24, 30, 255));
+    const float titleHeight = scene.title.empty() ? 0.0f : font->CalcTextSizeA(l.titleSize, 1e9f, wrap, scene.title.c_str()).y;
+    const float gap = titleHeight > 0.0f && !scene.caption.empty() ? l.pad * 0.5f : 0.0f;
+    const ImVec2 titlePos(std::round(band.x + l.pad), std::round(band.y + l.pad));
+    draw->AddText(font, l.titleSize, titlePos, IM_COL32(255, 255, 255, 255), scene.title.c_str(), nullptr, wrap);
+    draw->AddText(font, l.captionSize, ImVec2(titlePos.x, std::round(titlePos.y + titleHeight + gap)),
+                  IM_COL32(225, 225, 225, 255), scene.caption.c_str(), nullptr, wrap);
     if (!counter.empty())
-        draw->AddText(font, captionSize, ImVec2(std::round(view.x + view.width - counterWidth), titlePos.y),
+        draw->AddText(font, l.captionSize, ImVec2(std::round(band.x + band.width - counterWidth), titlePos.y),
                       IM_COL32(200, 200, 200, 255), counter.c_str());
-    return band;
+    draw->PopClipRect();
 }
 
-void drawHud(const PanelStatus& status, const UiRect& view) {
-    const ImGuiIO& io = ImGui::GetIO();
-    const float margin = ImGui::GetFontSize() * 0.6f;
-    ImGui::SetNextWindowPos(ImVec2(view.x + margin, view.y + view.height - margin), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowBgAlpha(0.55f);
+float statusStripHeight() { return std::ceil(ImGui::GetFontSize() * 1.5f); }
+
+void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
+    if (strip.height <= 0.0f) return;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const ImVec2 lo(strip.x, strip.y), hi(strip.x + strip.width, strip.y + strip.height);
+    draw->PushClipRect(lo, hi, true);
+    draw->AddRectFilled(lo, hi, IM_COL32(16, 16, 20, 255));
+    char text[512];
+    const double ms = status.frameMs;
+    std::snprintf(text, sizeof text, "%.1f ms (%.0f FPS)  \u00b7  %zu triangles  \u00b7  %s%s%s", ms,
+                  ms > 0.0 ? 1000.0 / ms : 0.0, status.frameTriangles, status.glRenderer.c_str(),
+                  status.progress.empty() ? "" : "  \u00b7  ", status.progress.c_str());
+    const float pad = (strip.height - ImGui::GetFontSize()) * 0.5f;
+    draw->AddText(ImVec2(std::round(strip.x + ImGui::GetFontSize() * 0.5f), std::round(strip.y + pad)),
+                  IM_COL32(200, 200, 200, 255), text);
+    draw->PopClipRect();
+}
+
+void drawMessage(const PanelStatus& status, const UiRect& view) {
+    if (status.message.empty()) return;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const float font = ImGui::GetFontSize() * 1.1f, pad = font * 0.5f;
+    const float wrap = std::max(view.width * 0.8f, 100.0f);
+    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, wrap, status.message.c_str());
+    const ImVec2 pos(std::round(view.x + (view.width - size.x) * 0.5f), std::round(view.y + view.height - size.y - 3 * pad));
+    draw->AddRectFilled(ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad),
+                        status.isError ? IM_COL32(120, 20, 20, 235) : IM_COL32(20, 20, 24, 220), pad * 0.5f);
+    draw->AddText(ImGui::GetFont(), font, pos, IM_COL32(255, 255, 255, 255), status.message.c_str(), nullptr, wrap);
+}
+
+void drawHelpOverlay(const UiRect& view) {
+    ImGui::SetNextWindowPos(ImVec2(view.x + view.width * 0.5f, view.y + view.height * 0.5f), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(view.width * 0.95f, view.height * 0.95f));
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
-    if (ImGui::Begin("##hud", nullptr, flags)) {
-        // ImGui's Framerate is a running average over the last 120 frames.
-        const float fps = io.Framerate > 0.0f ? io.Framerate : 0.0f;
-        ImGui::Text("%.2f ms  %.1f FPS  %zu triangles", fps > 0.0f ? 1000.0f / fps : 0.0f, fps, status.frameTriangles);
-        ImGui::TextUnformatted(status.glRenderer.c_str());
-        if (!status.progress.empty()) ImGui::TextUnformatted(status.progress.c_str());
+                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+    if (ImGui::Begin("##help", nullptr, flags)) {
+        ImGui::TextUnformatted("Keys and mouse  (F1 or ? closes this)");
+        ImGui::Separator();
+        if (ImGui::BeginTable("##controls", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+            for (const Control& c : kControls) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(c.input);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(c.action);
+            }
+            ImGui::EndTable();
+        }
     }
     ImGui::End();
+}
+
+void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected) {
+    if (scene.lights.empty()) return;
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const float font = ImGui::GetFontSize();
+    const float thick = std::max(3.0f, font * 0.2f);  // 3 px at scale 1, thicker with the UI scale
+    const float ring = font * 0.6f;
+    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
+        const float x0 = view.x + float(pane.x) / framebufferScale, y0 = view.y + float(pane.y) / framebufferScale;
+        const float x1 = x0 + float(pane.width) / framebufferScale, y1 = y0 + float(pane.height) / framebufferScale;
+        draw->PushClipRect(ImVec2(x0, y0), ImVec2(x1, y1), true);
+        const ImVec2 centre((x0 + x1) * 0.5f, (y0 + y1) * 0.5f);
+        auto toUi = [&](const glm::vec3& p) { return ImVec2(x0 + p.x / framebufferScale, y0 + p.y / framebufferScale); };
+        for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+            const Light& l = scene.lights[i];
+            const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);
+            const std::string label = std::to_string(i) + " " + toString(l.type);
+            if (l.type == LightType::Directional) {
+                // An arrow along the light's travel, ending at the target (what it lights).
+                const glm::vec3 dir = glm::normalize(l.direction);
+                const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.3f;
+                const glm::vec3 a = projectToImage(scene.camera, pane, scene.camera.target - dir * reach);
+                const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.35f));
+                if (a.z <= 0.0f || b.z <= 0.0f) continue;
+                const ImVec2 pa = toUi(a), pb = toUi(b);
+                draw->AddLine(pa, pb, colour, thick);
+                const ImVec2 d(pb.x - pa.x, pb.y - pa.y);
+                const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
+                const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
+                const float head = font * 0.7f;
+                draw->AddTriangleFilled(pb, ImVec2(pb.x - u.x * head + n.x * head * 0.5f, pb.y - u.y * head + n.y * head * 0.5f),
+                                        ImVec2(pb.x - u.x * head - n.x * head * 0.5f, pb.y - u.y * head - n.y * head * 0.5f), colour);
+                labelBox(draw, font, ImVec2(pa.x + ring * 0.5f, pa.y - font * 1.4f), label, colour);
+                continue;
+            }
+            const glm::vec3 p = projectToImage(scene.camera, pane, l.position);
+            const ImVec2 at = toUi(p);
+            const bool inside = p.z > 0.0f && at.x >= x0 && at.x <= x1 && at.y >= y0 && at.y <= y1;
+            if (inside) {
+                draw->AddCircle(at, ring, colour, 24, thick);
+                draw->AddCircleFilled(at, thick, colour);
+                labelBox(draw, font, ImVec2(at.x + ring * 1.4f, at.y - font * 0.5f), label, colour);
+                continue;
+            }
+            // Outside the pane (or behind the eye): an arrow at the border, pointing toward it.
+            ImVec2 d(at.x - centre.x, at.y - centre.y);
+            if (p.z <= 0.0f) d = ImVec2(-d.x, -d.y);
+            const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
+            const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
+            const float halfW = (x1 - x0) * 0.5f - font * 1.5f, halfH = (y1 - y0) * 0.5f - font * 1.5f;
+            const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
+                                     std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
+            const ImVec2 tip(centre.x + u.x * t, centre.y + u.y * t);
+            const float head = font * 0.9f;
+            draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
+                                    ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
+            const std::string offView = label + " (off view)";
+            const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, offView.c_str());
+            const float pad = font * 0.4f;
+            const ImVec2 text(std::max(std::min(tip.x - u.x * head * 2.0f - size.x * 0.5f, x1 - size.x - pad), x0 + pad),
+                              std::max(std::min(tip.y - u.y * head * 2.0f - size.y * 0.5f, y1 - size.y - pad), y0 + pad));
+            labelBox(draw, font, text, offView, colour);
+        }
+        draw->PopClipRect();
+    }
 }
 
 }  // namespace shadelab

@@ -21,7 +21,9 @@ struct ViewSettings {
     bool showPanel = true;         // Tab
     bool paneLabels = true;        // "flat" / "gouraud" / "phong" over each pane
     bool showHud = true;           // frame time, FPS, triangles, GL renderer
-    bool showCaption = true;       // a scene's title and caption over the bottom of the 3D view
+    bool showCaption = true;       // a scene's title and caption in a band above the 3D view
+    bool lightLabels = true;       // L: each light's marker, number and kind drawn over the view
+    bool readoutWhenHidden = true; // Tab keeps the frame-time strip (a switch in the Overlays section)
     std::string scenePath;         // the Save / Load field
     int selectedObject = 0;        // whose material, mesh and transform the panel shows
     PlotSettings plots;            // the Plots section's incidence angle and side of the surface
@@ -46,6 +48,9 @@ struct PanelStatus {
     std::vector<std::string> presetTitles;
     int currentPreset = 0;
     bool scrollToPreset = false;
+    double frameMs = 0.0;             // the last frame's own time, without waiting for input
+    float uiScale = 1.0f;             // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
+    bool trueTypeFont = true;
 };
 
 // Buttons pressed this frame.
@@ -55,6 +60,8 @@ struct PanelRequests {
     bool clearProbe = false;
     int gotoPreset = -1;          // a preset clicked in the list, or the previous / next button
     bool resetPreset = false;     // reload the current preset from its file
+    float uiScale = 0.0f;         // the UI-scale slider moved: the new scale (0: unchanged)
+    bool toggleFullscreen = false;
 };
 
 // A rectangle in ImGui's coordinates (window screen units, origin top-left).
@@ -66,16 +73,33 @@ struct UiRect {
 PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
                         const ProbeResult* probe = nullptr);
 
-// Labels each pane of the 3D view with its shading mode. `view` is the 3D view; `framebufferScale`
-// converts the renderer's pixel panes to ImGui units.
+// Labels each pane of the 3D view with what differs between panes: the shading mode and the reflection
+// model ("Phong shading · Blinn-Phong lobe"), two lines where the pane is narrow. `view` is the 3D view;
+// `framebufferScale` converts the renderer's pixel panes to ImGui units.
 void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
 
-// The scene's title and caption (lecture presets) in a band across the bottom of the 3D view, large
-// enough for a projector, with `counter` ("3 / 20") at the right; drawn on ImGui's foreground draw
-// list, so it shows with the panel hidden too. Returns the band's height in ImGui units (0: no text).
-float drawCaption(const Scene& scene, const std::string& counter, const UiRect& view);
+// A preset's title and caption, sized for a projector and fitted into at most `maxHeight`: the band's
+// text sizes and height (0: no title or caption).
+struct CaptionLayout {
+    float titleSize = 0, captionSize = 0, pad = 0, height = 0;
+};
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight);
+// Draws it into `band` (above the 3D view), with `counter` ("3 / 20") at the right.
+void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 
-// Frame time, FPS, triangle count and GL renderer in the 3D view's bottom-left corner.
-void drawHud(const PanelStatus& status, const UiRect& view);
+// The status strip above the view: frame time, FPS, triangles, GL renderer, progressive passes.
+float statusStripHeight();
+void drawStatusStrip(const PanelStatus& status, const UiRect& strip);
+
+// The last message over the bottom of the 3D view (where the lecturer looks), red for an error.
+void drawMessage(const PanelStatus& status, const UiRect& view);
+
+// Every key and mouse action (viewer/controls.hpp) in a box over the view: F1 or ?.
+void drawHelpOverlay(const UiRect& view);
+
+// Each light's marker over the view: a ring with its number and kind, an arrow along a directional
+// light's travel, or an arrow at the pane's border toward a light outside it. Lines thicken with the
+// UI scale. `selected`: the panel's selected light, drawn highlighted.
+void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected);
 
 }  // namespace shadelab

@@ -16,11 +16,14 @@ bool PlaylistNavigator::goTo(std::size_t index, SceneDocument& document) {
     // Show the target first; only once that worked is the preset being left given its edits.
     Scene leaving = document.scene();
     const Camera leavingHome = document.homeCamera();
-    if (target.live) document.restore(*target.live, target.home);
+    const bool leavingFollowing = document.following();
+    if (target.live) document.restore(*target.live, target.home, target.following, target.preset.scene.width,
+                                       target.preset.scene.height);
     else document.replace(target.preset.scene);
     if (attached_ && index != current_) {
         entries_[current_].live = std::move(leaving);
         entries_[current_].home = leavingHome;
+        entries_[current_].following = leavingFollowing;
     }
     current_ = index;
     attached_ = true;

@@ -41,6 +41,7 @@ private:
         Preset preset;
         std::optional<Scene> live;  // the scene as the lecturer left it, with edits
         Camera home;                // its home camera (R) at that time
+        bool following = true;      // whether its camera followed the view (not zoomed or panned)
     };
     std::vector<Entry> entries_;
     SceneAdjust adjust_;

@@ -2,10 +2,26 @@
 
 #include <imgui.h>
 
+#include <cstring>
+#include <string>
+#include <utility>
+
 namespace shadelab {
 namespace {
 
 ImU32 imColor(Rgba8 c) { return IM_COL32(c.r, c.g, c.b, c.a); }
+
+// The plots' texts are ASCII (the PNG plots' bitmap font has nothing else); the panel's TrueType font
+// writes them as the lecture does: theta_i -> θ_i, eta_2 -> η₂, deg -> °, -> becomes an arrow.
+std::string lectureNotation(std::string text) {
+    static const std::pair<const char*, const char*> kSymbols[] = {
+        {"theta_", "\u03b8_"}, {"eta_1", "\u03b7\u2081"}, {"eta_2", "\u03b7\u2082"}, {" deg", "\u00b0"},
+        {"->", "\u2192"}, {"R_par", "R\u2225"}, {"R_perp", "R\u22a5"}};
+    for (const auto& [ascii, symbol] : kSymbols)
+        for (std::size_t at = text.find(ascii); at != std::string::npos; at = text.find(ascii, at + 1))
+            text.replace(at, std::strlen(ascii), symbol);
+    return text;
+}
 
 class ImGuiPainter final : public PlotPainter {
 public:
@@ -13,7 +29,7 @@ public:
 
     float lineHeight() const override { return ImGui::GetFontSize(); }
     glm::vec2 measure(const std::string& text) const override {
-        const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        const ImVec2 size = ImGui::CalcTextSize(lectureNotation(text).c_str());
         return {size.x, size.y};
     }
     void stroke(const std::vector<glm::vec2>& pixels, Rgba8 color, float width) override {
@@ -28,7 +44,7 @@ public:
         draw_->AddTriangleFilled(at(a), at(b), at(c), imColor(color));
     }
     void text(glm::vec2 topLeft, const std::string& text, Rgba8 color) override {
-        draw_->AddText(at(topLeft), imColor(color), text.c_str());
+        draw_->AddText(at(topLeft), imColor(color), lectureNotation(text).c_str());
     }
 
 private:

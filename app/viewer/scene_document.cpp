@@ -6,6 +6,9 @@
 #include "core/scene_json.hpp"
 #include "viewer/orbit.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -20,7 +23,9 @@ std::string folderOf(const std::string& path) {
 }  // namespace
 
 SceneDocument::SceneDocument(Scene scene, std::shared_ptr<const SceneGeometry> geometry)
-    : scene_(std::move(scene)), geometry_(std::move(geometry)), home_(scene_.camera) {}
+    : scene_(std::move(scene)), geometry_(std::move(geometry)), home_(scene_.camera) {
+    startFraming(scene_.width, scene_.height);
+}
 
 bool SceneDocument::syncGeometry() {
     bool same = geometry_ && geometry_->specs.size() == scene_.objects.size();
@@ -47,21 +52,26 @@ void SceneDocument::replace(Scene next) {
     next.width = scene_.width;
     next.height = scene_.height;
     auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(next));
-    frameIfNeeded(next, *geometry);
     // Nothing above touched the document: commit.
     scene_ = std::move(next);
     geometry_ = std::move(geometry);
     home_ = scene_.camera;
-    fitToView(fileWidth, fileHeight);
+    startFraming(fileWidth, fileHeight);
 }
 
-void SceneDocument::restore(Scene scene, const Camera& home) {
+void SceneDocument::restore(Scene scene, const Camera& home, bool following, int fileWidth, int fileHeight) {
     scene.width = scene_.width;
     scene.height = scene_.height;
     auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(scene));
     scene_ = std::move(scene);
     geometry_ = std::move(geometry);
     home_ = home;
+    // A camera that followed the view follows it again (the view may have changed size since).
+    bool model = false;
+    for (const SceneObject& o : scene_.objects) model = model || o.mesh.type == MeshSpec::Type::Gltf;
+    framing_ = !following ? Framing::Off : scene_.cameraGiven || !model ? Framing::Home : Framing::Model;
+    homeAspect_ = paneAspect(fileWidth, fileHeight);
+    homeFits_ = sphereInView(home_, bounds(), homeAspect_);
 }
 
 void SceneDocument::save(const std::string& path) const {
@@ -87,20 +97,69 @@ float SceneDocument::paneAspect(int width, int height) const {
     return float(std::max(pane.width, 1)) / float(std::max(pane.height, 1));
 }
 
+void SceneDocument::startFraming(int fileWidth, int fileHeight) {
+    homeAspect_ = paneAspect(fileWidth, fileHeight);
+    // A model without a camera of its own (what frameIfNeeded frames) is framed for whatever view shows it.
+    bool model = false;
+    for (const SceneObject& o : scene_.objects) model = model || o.mesh.type == MeshSpec::Type::Gltf;
+    framing_ = scene_.cameraGiven || !geometry_ || !model ? Framing::Home : Framing::Model;
+    if (framing_ == Framing::Model) {
+        frameCamera(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
+        home_ = scene_.camera;
+    }
+    homeFits_ = geometry_ && sphereInView(home_, bounds(), homeAspect_);
+}
+
+void SceneDocument::followView() {
+    if (!geometry_ || framing_ == Framing::Off) return;
+    const BoundingSphere b = bounds();
+    const float aspect = paneAspect(scene_.width, scene_.height);
+    if (framing_ == Framing::Model) {
+        frameCamera(scene_.camera, b, aspect);
+        return;
+    }
+    // The home camera's target and the current viewing direction (an orbit keeps following).
+    Camera& c = scene_.camera;
+    glm::vec3 dir = c.eye - c.target;
+    const float homeDistance = glm::length(home_.eye - home_.target);
+    if (glm::length(dir) <= 0.0f || homeDistance <= 0.0f) return;
+    dir = glm::normalize(dir);
+    // The same width at the target's depth as the scene's own pane showed: further back in a narrower pane.
+    float distance = homeDistance * std::max(1.0f, homeAspect_ / aspect);
+    if (homeFits_) distance = std::max(distance, fitDistance(c, b, aspect, 0.95f));
+    c.eye = c.target + distance * dir;
+}
+
 void SceneDocument::frameModel() {
     if (!geometry_) return;
     frameCamera(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
+    framing_ = Framing::Model;
 }
 
-bool SceneDocument::fitToView(int width, int height) {
-    if (!geometry_ || (scene_.width >= width && scene_.height >= height)) return false;
+void SceneDocument::resetCamera() {
+    scene_.camera = home_;
+    framing_ = Framing::Home;
+    followView();
+}
+
+void SceneDocument::stopFollowing() { framing_ = Framing::Off; }
+
+void SceneDocument::fitClipPlanes() {
+    if (!geometry_) return;
+    std::vector<glm::vec3> lights;
+    for (const Light& l : scene_.lights)
+        if (l.type != LightType::Directional) lights.push_back(l.position);
+    shadelab::fitClipPlanes(scene_.camera, bounds(), lights);
+}
+
+float SceneDocument::minZoomDistance() const {
     const BoundingSphere b = bounds();
-    if (b.radius <= 0.0f || !sphereInView(scene_.camera, b, paneAspect(width, height)) ||
-        sphereInView(scene_.camera, b, paneAspect(scene_.width, scene_.height)))
-        return false;
-    frameModel();
-    home_ = scene_.camera;
-    return true;
+    return 1e-3f * (b.radius > 0.0f ? b.radius : 1.0f);
+}
+
+float SceneDocument::maxZoomDistance() const {
+    const BoundingSphere b = bounds();
+    return 1e3f * (b.radius > 0.0f ? b.radius : 1.0f) + glm::length(scene_.camera.target - b.center);
 }
 
 }  // namespace shadelab

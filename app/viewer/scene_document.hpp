@@ -20,7 +20,6 @@ public:
     const std::shared_ptr<const SceneGeometry>& geometry() const { return geometry_; }
     // The camera the scene came with (after auto-framing a model): what `R` restores.
     const Camera& homeCamera() const { return home_; }
-    void setHomeCamera(const Camera& camera) { home_ = camera; }
 
     // Rebuilds the geometry if an object's mesh spec (or the number of objects) differs from what it
     // was built from; returns true when it did, so the renderer gets the new meshes. Cheap otherwise:
@@ -35,29 +34,49 @@ public:
     // framed, the home camera set, the view's size kept. Throws and changes nothing on failure.
     void replace(Scene next);
     // Puts back a scene and home camera this document showed before (a preset the lecturer left with
-    // edits): the camera is left as it was, the view's size kept. Throws and changes nothing on failure.
-    void restore(Scene scene, const Camera& home);
+    // edits): the camera is left as it was, and follows the view again if it did then (`following`; the
+    // home camera was made for a `fileWidth` x `fileHeight` image); the view's size kept. Throws and
+    // changes nothing on failure.
+    void restore(Scene scene, const Camera& home, bool following, int fileWidth, int fileHeight);
 
     // Writes the scene as JSON, atomically. The text is parsed back before anything is written, so a
     // file that would not load again is never saved (throws InputError naming the field).
     void save(const std::string& path) const;
 
-    // Places the camera to fit every object in the first pane, keeping the viewing direction.
-    void frameModel();
+    // Framing is a property of the view: while it is on, followView() places the camera every frame
+    // for the view's current size and layout (scene().width/height), so a resize, a layout switch, the
+    // caption or the panel appearing never crops the model. Zooming, panning or editing the camera
+    // (stopFollowing) turns it off until F, R or another scene.
+    //  - a scene's own camera ("home"): kept where its view fits this pane; where the pane is narrower
+    //    than the one the scene was made for, moved back along its viewing direction until the same
+    //    width shows, and until the whole model fits if it fitted there;
+    //  - F, or a model without a camera: the whole model, centred, filling 90% of the tighter side.
+    void followView();
+    void frameModel();     // F
+    void resetCamera();    // R: the home camera, followed
+    void stopFollowing();  // the user zoomed, panned or typed a camera
+    bool following() const { return framing_ != Framing::Off; }
 
-    // For a view smaller than the scene was made for (a 1280x720 projector, the panel beside the
-    // view): when the model fits its pane at the scene's own `width` x `height` but the view's panes
-    // crop it, frames it (as F) and makes that the home camera. Returns true when it did. A view that
-    // gives the scene its size never moves the camera, so it shows what --output renders.
-    bool fitToView(int width, int height);
+    // Near and far around the model and the lights as seen from the eye (every frame, after the
+    // camera moved): zoom never slices the model, and there is no dead range.
+    void fitClipPlanes();
+    // The wheel's range of eye-to-target distances for this model: close to its surface, far away.
+    float minZoomDistance() const;
+    float maxZoomDistance() const;
 
 private:
+    enum class Framing { Off, Home, Model };
     BoundingSphere bounds() const;
     float paneAspect(int width, int height) const;
+    // After a new scene: what the home camera is, and how the view follows it.
+    void startFraming(int fileWidth, int fileHeight);
 
     Scene scene_;
     std::shared_ptr<const SceneGeometry> geometry_;
     Camera home_;
+    Framing framing_ = Framing::Home;
+    float homeAspect_ = 1.0f;  // the pane aspect the home camera was made for (the file's size)
+    bool homeFits_ = true;     // the whole model is in view with the home camera at that aspect
 };
 
 }  // namespace shadelab

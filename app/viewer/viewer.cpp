@@ -4,6 +4,7 @@
 #include "core/file_io.hpp"
 #include "core/image.hpp"
 #include "core/scene_json.hpp"
+#include "viewer/controls.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -31,9 +32,16 @@ std::unique_ptr<Renderer> makeRenderer(const ShaderLibrary& shaders) {
     return renderer;
 }
 
-// Panel width in screen units at content scale 1: wide enough for the slider labels, narrow enough to
-// leave 3 compare panes of ~300 px in a 1280-wide window.
-constexpr float kPanelWidth = 380.0f;
+// Panel width in font heights (16 px at scale 1: 480 px): room for the widgets and their labels. It
+// grows with the UI scale up to half the window, so the view keeps at least half of it.
+constexpr float kPanelEms = 30.0f;
+constexpr float kFontPixels = 16.0f;
+// The status strip above the view, in font heights (statusStripHeight()).
+constexpr float kStripEms = 1.5f;
+// How long a message stays over the view (an error longer), in seconds.
+constexpr double kMessageSeconds = 5.0, kErrorSeconds = 12.0;
+// Render on demand: frames drawn after the last event, so ImGui's hover and click states settle.
+constexpr int kFramesAfterEvent = 3;
 // Orbit speed: dragging across ~400 screen units turns the model half way round.
 constexpr float kOrbitRadPerUnit = 0.008f;
 
@@ -81,9 +89,11 @@ Image opaque(Image image) {
 
 Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, ViewerOptions options)
     : options_(std::move(options)),
-      // Room for the scene's size beside the panel: the 3D view starts as the image --output writes.
-      window_(scene.width, scene.height, options_.hidePanel ? 0.0f : kPanelWidth, "shadelab"),
-      imgui_(window_.handle(), window_.contentScale()),
+      // Room for the scene's size beside the panel and under the status strip: at content scale 1
+      // the 3D view starts as the image --output writes.
+      window_(scene.width, scene.height + int(std::ceil(kStripEms * kFontPixels * options_.uiScale)),
+              options_.hidePanel ? 0.0f : kPanelEms * kFontPixels * options_.uiScale, "shadelab"),
+      imgui_(window_.handle(), window_.contentScale() * options_.uiScale),
       renderer_(makeRenderer(ShaderLibrary(options_.shaderDir))),
       overlays_(std::make_unique<OverlayRenderer>(ShaderLibrary(options_.shaderDir))),
       document_(std::move(scene), std::move(geometry)),
@@ -93,26 +103,18 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     settings_.plots = options_.plots;
     settings_.startSections = options_.panelSections;
     settings_.selectedLight = options_.selectedLight;
+    uiScale_ = options_.uiScale;
+    if (options_.noLabels) settings_.paneLabels = settings_.lightLabels = false;
+    msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : 4;
+    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+        softwareGl_ = softwareGl_ || status_.glRenderer.find(software) != std::string::npos;
     pendingProbe_ = options_.probe;
     settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
     status_.glRenderer = renderer_->glRenderer();
+    status_.trueTypeFont = imgui_.trueTypeFont();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
     window_.setSwapInterval(options_.frames > 0 ? 0 : 1);
-    // A model with no camera was framed by the CLI for the scene's size; frame it for the 3D view the
-    // window actually has (narrower when the panel is shown). Its home camera is that framing.
-    const FrameLayout l = layout();
-    Scene& s = document_.scene();
-    const int sceneWidth = s.width, sceneHeight = s.height;
-    s.width = std::max(l.viewWidth, 1);
-    s.height = std::max(l.framebufferHeight, 1);
-    if (!s.cameraGiven && document_.geometry()) {
-        frameIfNeeded(s, *document_.geometry());
-        document_.setHomeCamera(s.camera);
-    }
-    if (document_.fitToView(sceneWidth, sceneHeight))
-        setStatus("The screen has no room for the scene's " + std::to_string(sceneWidth) + "x" +
-                      std::to_string(sceneHeight) + " beside the panel: framed the model to fit (F; Tab hides the panel).",
-                  false);
+    if (options_.fullscreen) window_.setFullscreen(true);
     if (playlist_.active()) settings_.scenePath = playlist_.preset(0).path;
     if (options_.verbose) std::cerr << "shadelab: viewer on " << status_.glRenderer << "\n";
 }
@@ -120,48 +122,94 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
 Viewer::~Viewer() = default;
 
 void Viewer::run() {
-    for (int n = 1;; ++n)
+    for (int n = 1;; ++n) {
+        // Render on demand: with nothing to draw, sleep until an event or until a message over the view
+        // is due to go (a person's session only; scripted runs draw every frame).
+        while (options_.frames == 0 && idle()) {
+            const double untilMessageGoes =
+                std::chrono::duration<double>(messageUntil_ - std::chrono::steady_clock::now()).count();
+            if (messageShown_ && untilMessageGoes <= 0.0) break;
+            window_.waitEvents(messageShown_ ? untilMessageGoes + 0.01 : 10.0);
+        }
         if (frame(options_.frames > 0 && n >= options_.frames)) return;
+    }
+}
+
+bool Viewer::idle() const {
+    if (framesToDraw_ > 0 || window_.eventCount() != eventsSeen_) return false;
+    if (msaaSamples_ > 1 && !antiAliased_) return false;  // one more frame: the still view anti-aliased
+    if (!progressiveSignature_.empty() && !progressiveComplete_) return false;  // sampling goes on
+    const ImGuiIO& io = ImGui::GetIO();
+    for (bool down : io.MouseDown)
+        if (down) return false;
+    return true;
 }
 
 // One frame, in the order the panel's edits need: they land in the scene before it is drawn. Returns
-// true when it was the last: the frame count is reached, or the window was closed or Esc/Q pressed
+// true when it was the last: the frame count is reached, or the window was closed or Q pressed
 // (so the scripted files are also written when a person ends the session).
 bool Viewer::frame(bool last) {
+    imgui_.releaseTappedKeys();
     window_.pollEvents();
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<int> keys = window_.takePressedKeys();
+    imgui_.holdTappedKeys(keys);
+    const bool still = window_.eventCount() == eventsSeen_;
+    if (!still) eventsSeen_ = window_.eventCount(), framesToDraw_ = kFramesAfterEvent;
+    framesToDraw_ = std::max(framesToDraw_ - 1, 0);
+    imgui_.setScale(window_.contentScale() * uiScale_);  // rebuilds the font only when it changed
     imgui_.newFrame();
     const FrameLayout l = layout();
-    document_.scene().width = std::max(l.viewWidth, 1);   // the scene's size is the 3D view's, so a
-    document_.scene().height = std::max(l.framebufferHeight, 1);  // saved scene renders this image
+    Scene& scene = document_.scene();
+    scene.width = std::max(l.viewWidth, 1);   // the scene's size is the 3D view's, so a
+    scene.height = std::max(l.viewHeight, 1); // saved scene renders this image
     if (pendingProbe_) setProbe(pendingProbe_->x, pendingProbe_->y), pendingProbe_.reset();
-    handleInput(l);
+    handleInput(l, keys);
     evaluateProbe();
     status_.presetTitles.clear();
     for (std::size_t i = 0; i < playlist_.size(); ++i) status_.presetTitles.push_back(presetTitle(playlist_.preset(i)));
     status_.currentPreset = int(playlist_.current());
-    const PanelRequests requests = settings_.showPanel ? drawPanel(document_.scene(), settings_, status_, l.panel,
+    status_.uiScale = uiScale_;
+    const Camera before = scene.camera;
+    const PanelRequests requests = settings_.showPanel ? drawPanel(scene, settings_, status_, l.panel,
                                                                    probe_ ? &*probe_ : nullptr)
                                                        : PanelRequests{};
     if (settings_.showPanel) status_.scrollToPreset = false;  // the list has scrolled to it
+    const Camera& after = document_.scene().camera;
+    if (before.eye != after.eye || before.target != after.target || before.fovYDeg != after.fovYDeg)
+        document_.stopFollowing();  // typed into the Camera section
     apply(requests);
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
+    // The camera follows the view (size, layout, bands) until zoomed or panned; near and far follow the eye.
+    document_.followView();
+    document_.fitClipPlanes();
     if (settings_.paneLabels) drawPaneLabels(document_.scene(), l.view, l.scale);
-    UiRect aboveCaption = l.view;
-    if (settings_.showCaption) {
+    if (settings_.lightLabels) drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight);
+    if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
                                                              std::to_string(playlist_.size())
                                                        : std::string();
-        aboveCaption.height -= drawCaption(document_.scene(), counter, l.view);
+        drawCaption(document_.scene(), counter, l.captionText, l.caption);
     }
+    messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
+    if (messageShown_) drawMessage(status_, l.view);
+    if (showHelp_) drawHelpOverlay(l.view);
     const std::vector<OverlayArrow> arrows = probeOverlays(l);
     const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
+    // MSAA: always on a GPU; on a software rasterizer only once the view is still (and for files).
+    bool mouseDown = false;
+    for (bool down : ImGui::GetIO().MouseDown) mouseDown = mouseDown || down;
+    antiAliasThisFrame_ = msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown) || captureView || last);
     const Image view = renderView(l, captureView, last, arrows);
-    if (settings_.showHud && settings_.showPanel) drawHud(status_, aboveCaption);  // after: it shows this frame's pass
+    antiAliased_ = antiAliasThisFrame_;
+    status_.frameMs = frameMs_;
+    drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
     imgui_.render();
     if (screenshotRequested_) saveScreenshot(view);
     if (last) writeLastFrameFiles(l, view);
     window_.swapBuffers();
+    frameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return last;
 }
 
@@ -171,49 +219,80 @@ Viewer::FrameLayout Viewer::layout() const {
     int windowWidth = 0, windowHeight = 0;
     window_.windowSize(windowWidth, windowHeight);
     l.scale = windowWidth > 0 ? float(l.framebufferWidth) / float(windowWidth) : 1.0f;
-    const int panelPixels =
-        settings_.showPanel
-            ? std::min(int(std::lround(kPanelWidth * window_.contentScale() * l.scale)), l.framebufferWidth / 2)
-            : 0;
+    const float ems = ImGui::GetFontSize();  // ImGui units; follows content and UI scale
+    const int panelPixels = settings_.showPanel ? std::min(int(std::lround(kPanelEms * ems * l.scale)), l.framebufferWidth / 2) : 0;
     l.viewWidth = l.framebufferWidth - panelPixels;
-    l.view = UiRect{0.0f, 0.0f, float(l.viewWidth) / l.scale, float(windowHeight)};
-    l.panel = UiRect{l.view.width, 0.0f, float(panelPixels) / l.scale, float(windowHeight)};
+    const float viewUnits = float(l.viewWidth) / l.scale;
+    // From the top: the status strip, the caption band (at most a fifth of the window), the view.
+    const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
+    const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
+    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits,
+                                                          std::floor(float(windowHeight) / 5.0f))
+                                          : CaptionLayout{};
+    const float captionUnits = l.captionText.height;
+    const int bandPixels = std::min(int(std::lround((stripUnits + captionUnits) * l.scale)), l.framebufferHeight);
+    l.viewHeight = l.framebufferHeight - bandPixels;
+    l.strip = UiRect{0.0f, 0.0f, viewUnits, stripUnits};
+    l.caption = UiRect{0.0f, stripUnits, viewUnits, captionUnits};
+    const float top = float(bandPixels) / l.scale;
+    l.view = UiRect{0.0f, top, viewUnits, float(windowHeight) - top};
+    l.panel = UiRect{viewUnits, 0.0f, float(panelPixels) / l.scale, float(windowHeight)};
     return l;
 }
 
-void Viewer::handleInput(const FrameLayout& l) {
+void Viewer::handleInput(const FrameLayout& l, const std::vector<int>& keys) {
     for (const std::string& path : window_.takeDroppedPaths()) loadFile(path);
-    handleKeys();
+    handleKeys(keys);
     // Mouse: ImGui's view of it, so a drag that starts on the panel moves a slider, not the camera.
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
     // A click (press and release without a drag) probes the pixel it was pressed on.
     const float threshold = io.MouseDragThreshold;
     if (io.MouseReleased[0] && io.MouseDragMaxDistanceSqr[0] < threshold * threshold) {
-        const int x = int(std::floor(io.MouseClickedPos[0].x * l.scale)), y = int(std::floor(io.MouseClickedPos[0].y * l.scale));
-        if (x >= 0 && x < l.viewWidth && y >= 0 && y < l.framebufferHeight) setProbe(x, y);
+        const int x = int(std::floor(io.MouseClickedPos[0].x * l.scale));
+        const int y = int(std::floor((io.MouseClickedPos[0].y - l.view.y) * l.scale));
+        if (x >= 0 && x < l.viewWidth && y >= 0 && y < l.viewHeight) setProbe(x, y);
     }
+    // Only drags and wheel steps that start over the 3D view (not its bands) move the camera.
+    const auto inView = [&](const ImVec2& p) { return p.x >= 0.0f && p.x < l.view.width && p.y >= l.view.y; };
+    const auto dragging = [&](int button) { return io.MouseDown[button] && inView(io.MouseClickedPos[button]); };
     Camera& camera = document_.scene().camera;
-    if (io.MouseDown[0]) orbitCamera(camera, -io.MouseDelta.x * kOrbitRadPerUnit, io.MouseDelta.y * kOrbitRadPerUnit);
-    if (io.MouseDown[1] || io.MouseDown[2]) panCamera(camera, io.MouseDelta.x, io.MouseDelta.y, l.view.height);
-    if (io.MouseWheel != 0.0f) zoomCamera(camera, io.MouseWheel);
+    if (dragging(0)) orbitCamera(camera, -io.MouseDelta.x * kOrbitRadPerUnit, io.MouseDelta.y * kOrbitRadPerUnit);
+    if ((dragging(1) || dragging(2)) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+        panCamera(camera, io.MouseDelta.x, io.MouseDelta.y, l.view.height);
+        document_.stopFollowing();
+    }
+    if (io.MouseWheel != 0.0f && inView(io.MousePos)) {
+        zoomCamera(camera, io.MouseWheel, document_.minZoomDistance(), document_.maxZoomDistance());
+        document_.stopFollowing();
+    }
 }
 
-void Viewer::handleKeys() {
+void Viewer::setUiScale(float uiScale) {
+    uiScale_ = std::clamp(uiScale, kMinUiScale, kMaxUiScale);
+    setStatus("UI scale " + std::to_string(int(std::lround(uiScale_ * 100.0f))) + "%", false);
+}
+
+void Viewer::handleKeys(const std::vector<int>& keys) {
     const ImGuiIO& io = ImGui::GetIO();
-    // Taken every frame, also while ImGui has the keyboard, so no press is acted on later.
-    const std::vector<int> keys = window_.takePressedKeys();
     for (int key : keys) {
         // A presenter's remote sends Page Down / Page Up: they step the playlist unless text is typed.
         if (playlist_.active() && !io.WantTextInput) {
             if (key == GLFW_KEY_PAGE_DOWN) goToPreset(playlist_.current() + 1);
             if (key == GLFW_KEY_PAGE_UP && playlist_.current() > 0) goToPreset(playlist_.current() - 1);
         }
+        // Esc closes the help and clears the probe; a text field gives the keyboard back on it too
+        // (ImGui), and nothing quits on it: a presenter's remote sends Esc.
+        if (key == GLFW_KEY_ESCAPE && !io.WantTextInput) {
+            if (showHelp_) showHelp_ = false;
+            else if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
+        }
     }
     if (io.WantCaptureKeyboard) return;  // typing in a field or dragging a slider
     Scene& scene = document_.scene();
     OverlayOptions& overlays = settings_.overlays;
     // Letters come as characters, so they follow the keyboard layout (Q is Q on an AZERTY keyboard).
+    // With Ctrl held there are none: Ctrl+ shortcuts are read from the key codes below.
     for (int i = 0; i < io.InputQueueCharacters.Size; ++i) {
         switch (io.InputQueueCharacters[i]) {
         case '1': scene.shading = ShadingMode::Flat, scene.layout = Layout::Single; break;
@@ -226,21 +305,30 @@ void Viewer::handleKeys() {
         case 'w': case 'W': overlays.wireframe = !overlays.wireframe; break;
         case 'n': overlays.vertexNormals = !overlays.vertexNormals; break;
         case 'N': overlays.faceNormals = !overlays.faceNormals; break;
-        case 'l': case 'L': overlays.lightMarkers = !overlays.lightMarkers; break;
-        case 'r': case 'R': scene.camera = document_.homeCamera(); break;
+        case 'l': case 'L': settings_.lightLabels = !settings_.lightLabels; break;
+        case 'r': case 'R': document_.resetCamera(); break;
         case 'f': case 'F': document_.frameModel(); break;
+        case '?': showHelp_ = !showHelp_; break;
         case 'q': case 'Q': window_.requestClose(); break;
         default: break;
         }
     }
     // Keys without characters, by GLFW key code.
     for (int key : keys) {
+        if (io.KeyCtrl) {
+            switch (key) {
+            case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: setUiScale(uiScale_ * 1.25f); break;
+            case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: setUiScale(uiScale_ / 1.25f); break;
+            case GLFW_KEY_0: case GLFW_KEY_KP_0: setUiScale(1.0f); break;
+            case GLFW_KEY_Q: window_.requestClose(); break;
+            default: break;
+            }
+            continue;
+        }
         switch (key) {
         case GLFW_KEY_TAB: settings_.showPanel = !settings_.showPanel; break;
-        case GLFW_KEY_ESCAPE:  // clears the probe first; with none set it quits
-            if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
-            else window_.requestClose();
-            break;
+        case GLFW_KEY_F1: showHelp_ = !showHelp_; break;
+        case GLFW_KEY_F11: window_.setFullscreen(!window_.fullscreen()); break;
         case GLFW_KEY_F12: screenshotRequested_ = true; break;
         case GLFW_KEY_F5: reloadShaders(); break;
         default: break;
@@ -260,7 +348,9 @@ void Viewer::handleKeys() {
 }
 
 void Viewer::apply(const PanelRequests& r) {
-    if (r.resetCamera) document_.scene().camera = document_.homeCamera();
+    if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kMinUiScale, kMaxUiScale);
+    if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
+    if (r.resetCamera) document_.resetCamera();
     if (r.frameModel) document_.frameModel();
     if (r.screenshot) screenshotRequested_ = true;  // taken after this frame's render
     if (r.load) loadFile(settings_.scenePath);
@@ -351,10 +441,13 @@ void Viewer::uploadGeometryIfChanged() {
 // A capture or the last frame completes a progressive image first: a file never holds a partial one.
 Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const std::vector<OverlayArrow>& arrows) {
     if (l.viewWidth <= 0 || l.framebufferHeight <= 0) return {};  // minimised
-    const RenderTarget view{0, l.viewWidth, l.framebufferHeight};
+    if (l.viewHeight <= 0) return {};
+    const RenderTarget view{0, l.viewWidth, l.viewHeight};
     try {
-        renderScene(view, capture || last);
-        overlays_->render(document_.scene(), view, settings_.overlays, arrows);
+        const RenderTarget target = msaa_.begin(view, antiAliasThisFrame_ ? msaaSamples_ : 1);
+        renderScene(target, capture || last);
+        overlays_->render(document_.scene(), target, settings_.overlays, arrows);
+        msaa_.resolveInto(view);
         if (capture) return opaque(readPixels(view));
     } catch (const std::exception& e) {
         setStatus(e.what(), true);
@@ -521,7 +614,9 @@ void Viewer::setStatus(std::string message, bool isError) {
     if (isError && message != status_.message) std::cerr << "shadelab: " << message << "\n";
     status_.message = std::move(message);
     status_.isError = isError;
-    if (isError) settings_.showPanel = true;  // an error is never hidden behind Tab
+    // Shown over the view for a while, where the lecturer looks (and at the end of the File section).
+    messageUntil_ = std::chrono::steady_clock::now() +
+                    std::chrono::milliseconds(int((isError ? kErrorSeconds : kMessageSeconds) * 1000.0));
 }
 
 }  // namespace shadelab

@@ -9,6 +9,7 @@
 #include "core/playlist.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
+#include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
 #include "render/renderer.hpp"
 #include "viewer/glfw_window.hpp"
@@ -48,6 +49,12 @@ struct ViewerOptions {
     // is applied again when "reset preset" reloads one from its file (the command line's overrides).
     std::vector<Preset> playlist;
     SceneAdjust adjustPreset;
+    bool noLabels = false;            // --no-labels: pane and light labels start off
+    float uiScale = 1.0f;             // --ui-scale: on top of the monitor's content scale (Ctrl+= / Ctrl+-)
+    bool fullscreen = false;          // --fullscreen (F11)
+    // --msaa N: samples per pixel of the anti-aliased view; -1 (not given): 4 for a person, 1 for a
+    // scripted run (--frames), whose 3D view then equals the headless image.
+    int msaa = -1;
     bool verbose = false;
 };
 
@@ -65,18 +72,24 @@ public:
     void run();
 
 private:
-    // Pixel layout of this frame: the 3D view on the left, the panel on the right.
+    // Pixel layout of this frame: the panel on the right; on the left, from the top, the status strip
+    // (frame time), the caption band (a preset's title and caption) and the 3D view, so neither band
+    // ever covers what the camera frames.
     struct FrameLayout {
         int framebufferWidth = 0, framebufferHeight = 0;
-        int viewWidth = 0;     // pixels; the 3D view is x in [0, viewWidth)
-        float scale = 1.0f;    // framebuffer pixels per ImGui unit
-        UiRect view, panel;    // ImGui units
+        int viewWidth = 0, viewHeight = 0;  // pixels; the 3D view is the bottom-left viewWidth x viewHeight
+        float scale = 1.0f;                 // framebuffer pixels per ImGui unit
+        UiRect strip, caption, view, panel; // ImGui units
+        CaptionLayout captionText;
     };
 
     bool frame(bool last);
+    // Whether the next frame can wait for an event: nothing moves, nothing is pending.
+    bool idle() const;
     FrameLayout layout() const;
-    void handleInput(const FrameLayout& layout);
-    void handleKeys();
+    void handleInput(const FrameLayout& layout, const std::vector<int>& keys);
+    void handleKeys(const std::vector<int>& keys);
+    void setUiScale(float uiScale);
     void apply(const PanelRequests& requests);
     void uploadGeometryIfChanged();
     Image renderView(const FrameLayout& layout, bool capture, bool last, const std::vector<OverlayArrow>& arrows);
@@ -108,6 +121,23 @@ private:
     PlaylistNavigator playlist_;
     ViewSettings settings_;
     PanelStatus status_;
+    float uiScale_ = 1.0f;
+    bool showHelp_ = false;                     // F1 / ?: every key and mouse action over the view
+    std::chrono::steady_clock::time_point messageUntil_;  // the status message shows over the view until then
+    bool messageShown_ = false;                 // ... and the last frame drew it
+    // Render on demand: events seen so far, frames still to draw after the last one, the last
+    // frame's own time (not the wait before it).
+    unsigned long eventsSeen_ = 0;
+    int framesToDraw_ = 2;
+    double frameMs_ = 0.0;
+    // Anti-aliasing: the multisampled target, its samples, whether the GL is a software rasterizer
+    // (there only a still view is drawn anti-aliased: 4x costs several times a frame on llvmpipe), and
+    // whether the last frame was.
+    MultisampleTarget msaa_;
+    int msaaSamples_ = 1;
+    bool softwareGl_ = false;
+    bool antiAliased_ = false;
+    bool antiAliasThisFrame_ = false;
     bool screenshotRequested_ = false;
     // Progressive sampling: what the sum so far was drawn from, the stride, and the last pass's time.
     std::string progressiveSignature_;

@@ -291,6 +291,26 @@ TEST_F(Cli, BenchmarkReportsEachShadingMode) {
     EXPECT_EQ(modes, (std::vector<std::string>{"flat", "gouraud", "phong"}));
 }
 
+// --msaa takes a sample count GL offers (0, 1, 2, 4, 8); with 4 the image differs from the default
+// (one sample), at the sphere's edges only (tests/gl/msaa_test.cpp looks at which pixels).
+TEST_F(Cli, MsaaTakesSampleCountsAndChangesTheOutput) {
+    const RunResult bad = run({"--msaa", "3", "--output", path("bad.png")});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_NE(bad.err.find("--msaa"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("0, 1, 2, 4, 8"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(path("bad.png")));
+
+    const Image four = runToPng({"--msaa", "4", "--size", "96x64"}, "x.png");
+    const Image one = runToPng({"--size", "96x64"}, "one.png");
+    ASSERT_EQ(four.width, 96);
+    EXPECT_GT(compareImages(four, one, 2).failingPixels, 20u);
+
+    const RunResult bench = run({"--benchmark", "2", "--size", "64x48", "--shading", "phong", "--msaa", "4"});
+    ASSERT_EQ(bench.exitCode, 0) << bench.err;
+    EXPECT_GE(nlohmann::json::parse(bench.out.substr(0, bench.out.find('\n'))).at("msaa").get<int>(), 2) << bench.out;
+}
+
 TEST_F(Cli, HelpAndVersion) {
     const RunResult help = run({"--help"});
     EXPECT_EQ(help.exitCode, 0);

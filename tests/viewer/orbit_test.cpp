@@ -69,15 +69,64 @@ TEST(Pan, MovesEyeAndTargetTogetherInTheViewPlane) {
     EXPECT_NEAR(d.target.y, 2.0f * 5.0f * std::tan(glm::radians(45.0f) / 2.0f), kEps);
 }
 
-TEST(Zoom, StepsAndClamps) {
+TEST(Zoom, SameFactorAtEveryDistanceWithinItsRange) {
     Camera c;
     c.eye = {0, 0, 5};
-    zoomCamera(c, 1.0f);
+    zoomCamera(c, 1.0f, 0.001f, 1000.0f);
     EXPECT_NEAR(c.eye.z, 4.5f, kEps);
-    zoomCamera(c, 1000.0f);
-    EXPECT_NEAR(c.eye.z, 2.0f * c.nearPlane, kEps);
-    zoomCamera(c, -1000.0f);
-    EXPECT_NEAR(c.eye.z, 0.5f * c.farPlane, 1e-2f);
+    // Near and far do not limit it (they follow the eye): no dead range after framing.
+    c.nearPlane = 4.0f, c.farPlane = 5.0f;
+    float previous = c.eye.z;
+    for (int step = 0; step < 40; ++step) {
+        zoomCamera(c, 1.0f, 0.001f, 1000.0f);
+        EXPECT_NEAR(c.eye.z, 0.9f * previous, 1e-4f) << "step " << step;
+        previous = c.eye.z;
+    }
+    for (int step = 0; step < 40; ++step) {
+        zoomCamera(c, -1.0f, 0.001f, 1000.0f);
+        EXPECT_NEAR(c.eye.z, previous / 0.9f, 1e-3f) << "step " << step;
+        previous = c.eye.z;
+    }
+    zoomCamera(c, 1000.0f, 0.001f, 1000.0f);
+    EXPECT_NEAR(c.eye.z, 0.001f, 1e-6f);
+    zoomCamera(c, -1000.0f, 0.001f, 1000.0f);
+    EXPECT_NEAR(c.eye.z, 1000.0f, 1e-1f);
+}
+
+TEST(ClipPlanes, AroundTheModelAndTheLightsFromAnyDistance) {
+    const BoundingSphere unit{{0, 0, 0}, 1.0f};
+    for (float d : {1.05f, 2.0f, 5.0f, 50.0f, 5000.0f}) {
+        Camera c;
+        c.eye = {0, 0, d};
+        fitClipPlanes(c, unit, {});
+        EXPECT_LE(c.nearPlane, d - 1.0f) << d;  // never into the sphere
+        EXPECT_GE(c.farPlane, d + 1.0f) << d;   // never cuts its back
+        EXPECT_GT(c.nearPlane, 0.0f);
+    }
+    Camera inside;
+    inside.eye = {0, 0, 0.5f};
+    fitClipPlanes(inside, unit, {glm::vec3(0, 0, -10)});
+    EXPECT_GE(inside.farPlane, 10.5f);  // the light behind the model is in range for its marker
+    EXPECT_GE(inside.nearPlane, inside.farPlane * 1e-4f);
+    EXPECT_LT(inside.nearPlane, 0.01f);
+}
+
+TEST(FitDistance, ClosestDistanceAtWhichTheSphereFits) {
+    Camera c;
+    c.eye = {0, 0, 5};
+    const BoundingSphere unit{{0, 0, 0}, 1.0f};
+    for (float aspect : {0.3f, 1.0f, 16.0f / 9.0f}) {
+        const float d = fitDistance(c, unit, aspect, 1.0f);
+        Camera at = c;
+        at.nearPlane = 1e-3f, at.farPlane = 1e6f;
+        at.eye = {0, 0, d * 1.001f};
+        EXPECT_TRUE(sphereInView(at, unit, aspect)) << aspect;
+        at.eye = {0, 0, d * 0.999f};
+        EXPECT_FALSE(sphereInView(at, unit, aspect)) << aspect;
+    }
+    // A narrower pane needs more distance, a margin more still.
+    EXPECT_GT(fitDistance(c, unit, 0.3f, 1.0f), fitDistance(c, unit, 1.0f, 1.0f));
+    EXPECT_GT(fitDistance(c, unit, 1.0f, 0.9f), fitDistance(c, unit, 1.0f, 1.0f));
 }
 
 TEST(Frame, FitsTheSphereAndKeepsTheDirection) {

@@ -2,6 +2,8 @@
 // the scene untouched whenever they fail.
 #include "core/error.hpp"
 #include "core/scene_json.hpp"
+#include "core/camera.hpp"
+#include "viewer/orbit.hpp"
 #include "viewer/scene_document.hpp"
 
 #include "test_files.hpp"
@@ -86,18 +88,50 @@ TEST(SceneDocument, FailedRebuildPutsTheOldSpecBack) {
     EXPECT_FALSE(doc.syncGeometry());
 }
 
-TEST(SceneDocument, FitToViewOnlyWhenTheSmallerViewCropsTheModel) {
+// Framing follows the view: whatever size and layout the view takes, the model is whole in every pane,
+// until the user zooms or pans; F and R follow again.
+TEST(SceneDocument, FramingFollowsTheViewUntilZoomed) {
     SceneDocument doc = defaultDocument();  // 1280x720, the sphere fits
-    doc.scene().layout = Layout::Compare;
     const Camera scene = doc.scene().camera;
-    EXPECT_FALSE(doc.fitToView(1280, 720));  // the view has the scene's size
-    doc.scene().width = 1540;                // a bigger view: never moved
-    EXPECT_FALSE(doc.fitToView(1280, 720));
+    const BoundingSphere sphere{{0, 0, 0}, 1.0f};
+    auto paneAspect = [&] {
+        const Pane p = layoutPanes(doc.scene().layout, doc.scene().shading, doc.scene().width, doc.scene().height).front();
+        return float(p.width) / float(p.height);
+    };
+    doc.followView();
+    EXPECT_EQ(doc.scene().camera.eye, scene.eye);  // the scene's own size: its own camera
+    doc.scene().width = 1920;                      // wider: never moved
+    doc.followView();
     EXPECT_EQ(doc.scene().camera.eye, scene.eye);
-    doc.scene().width = 900;  // 300-pixel compare panes crop the sphere
-    EXPECT_TRUE(doc.fitToView(1280, 720));
-    EXPECT_NE(doc.scene().camera.eye, scene.eye);
-    EXPECT_EQ(doc.homeCamera().eye, doc.scene().camera.eye);
+    for (Layout layout : {Layout::Compare, Layout::Diff, Layout::Single})
+        for (auto [w, h] : {std::pair{1440, 1056}, std::pair{900, 700}, std::pair{400, 900}, std::pair{1280, 200}}) {
+            doc.scene().layout = layout;
+            doc.scene().width = w, doc.scene().height = h;
+            doc.followView();
+            EXPECT_TRUE(sphereInView(doc.scene().camera, sphere, paneAspect())) << w << "x" << h << " layout " << int(layout);
+            EXPECT_EQ(doc.scene().camera.target, scene.target);
+        }
+    // Zoomed: the camera stays where the user put it.
+    doc.scene().width = 1280, doc.scene().height = 720, doc.scene().layout = Layout::Single;
+    doc.followView();
+    doc.stopFollowing();
+    doc.scene().camera.eye *= 0.5f;
+    const glm::vec3 zoomed = doc.scene().camera.eye;
+    doc.scene().layout = Layout::Compare;
+    doc.followView();
+    EXPECT_EQ(doc.scene().camera.eye, zoomed);
+    EXPECT_FALSE(doc.following());
+    // F frames the whole model for this pane, and keeps doing so.
+    doc.frameModel();
+    EXPECT_TRUE(sphereInView(doc.scene().camera, sphere, paneAspect()));
+    doc.scene().width = 600;
+    doc.followView();
+    EXPECT_TRUE(sphereInView(doc.scene().camera, sphere, paneAspect()));
+    // R: the scene's camera again.
+    doc.scene().width = 1280, doc.scene().layout = Layout::Single;
+    doc.resetCamera();
+    EXPECT_EQ(doc.scene().camera.eye, scene.eye);
+    EXPECT_TRUE(doc.following());
 }
 
 TEST(SceneDocument, SaveWritesALoadableSceneOrNothing) {

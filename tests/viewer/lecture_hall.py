@@ -1,0 +1,214 @@
+#!/usr/bin/env python3
+"""The viewer as a lecturer uses it, with real X input (XTEST) and window resizes (xdotool):
+
+  framing   resized to the whole screen, and switched between layouts: every pane shows the whole model
+            (no pane border touches it); after wheel steps the camera stays where the user put it
+  zoom      each wheel step in makes the model larger and each step out smaller, also after F
+  idle      with nothing happening the viewer sleeps: CPU time over 4 s stays under 2% of a core
+  help      F1 puts every key over the view; Esc takes it away; Esc never quits, Q does
+  hidpi     at a 2x content scale (Xft.dpi 192) the view keeps half the window and the panes show the
+            whole model
+
+usage: lecture_hall.py SCENARIO SHADELAB ASSETS OUTDIR   (inside an X server: see xvfb_run.sh)
+Exits 77 (skipped) where libXtst or xdotool is missing. The screenshots stay in OUTDIR to be looked at.
+"""
+import os, shutil, struct, subprocess, sys, time, zlib
+
+from xinput import quit_viewer, screenshot, start_viewer
+
+scenario, shadelab, assets, out = sys.argv[1:5]
+if not shutil.which("xdotool"):
+    print("xdotool not found (Debian: xdotool): skipping")
+    sys.exit(77)
+shutil.rmtree(out, ignore_errors=True)
+os.makedirs(out)
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+
+
+def read_png(data):
+    """(width, height, rows of RGB tuples) of an 8-bit RGB or RGBA PNG, as the viewer writes them."""
+    pos, chunks, width, height, channels = 8, b"", 0, 0, 0
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
+            channels = {2: 3, 6: 4}[colour]
+        elif kind == b"IDAT":
+            chunks += body
+        pos += 12 + length
+    raw, stride, rows, prev = zlib.decompress(chunks), width * channels, [], bytearray(width * channels)
+    for y in range(height):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b, c = prev[i], prev[i - channels] if i >= channels else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[x * channels:x * channels + 3]) for x in range(width)])
+        prev = line
+    return width, height, rows
+
+
+def shot(name):
+    data = screenshot(display, out)
+    if data is None:
+        failures.append(f"{name}: F12 wrote no screenshot")
+        return None
+    open(os.path.join(out, name + ".png"), "wb").write(data)
+    return read_png(data)
+
+
+def panes(image, count):
+    """Each pane's (x0, x1) of a view `count` panes wide (compare: three equal panes)."""
+    width = image[0]
+    return [(i * (width // count), (i + 1) * (width // count)) for i in range(count)]
+
+
+def touches_border(image, x0, x1):
+    """True when the model reaches a pane border: a border pixel differs from the background (a corner)."""
+    width, height, rows = image
+    background = rows[height - 1][x0]
+    for y in range(height):
+        for x in (x0, x0 + 1, x1 - 2, x1 - 1):
+            if max(abs(a - b) for a, b in zip(rows[y][x], background)) > 6:
+                return True
+    for x in range(x0, x1):
+        for y in (0, 1, height - 2, height - 1):
+            if max(abs(a - b) for a, b in zip(rows[y][x], background)) > 6:
+                return True
+    return False
+
+
+def model_pixels(image, x0, x1):
+    width, height, rows = image
+    background = rows[height - 1][x0]
+    return sum(1 for y in range(0, height, 2) for x in range(x0, x1, 2)
+               if max(abs(a - b) for a, b in zip(rows[y][x], background)) > 6)
+
+
+def window_id():
+    return subprocess.run(["xdotool", "search", "--name", "^shadelab$"], capture_output=True, text=True).stdout.split()[0]
+
+
+def resize(width, height):
+    subprocess.run(["xdotool", "windowsize", window_id(), str(width), str(height)], check=True)
+    time.sleep(1.0)
+
+
+def wheel(button, steps):
+    for _ in range(steps):
+        display.button(button, True)
+        display.button(button, False)
+    time.sleep(0.5)
+
+
+playlist = os.path.join(assets, "scenes", "lecture")
+if scenario == "framing":
+    proc, display = start_viewer([shadelab, "--playlist", playlist], out)
+    display.move(300, 500, 0.5)
+    resize(1920, 1080)  # as if maximised on a 1920x1080 projector
+    for preset in range(3):  # compare, compare with 16,000 triangles, the diff layout
+        image = shot(f"preset{preset + 1}-1920x1080")
+        if image:
+            for x0, x1 in panes(image, 3):
+                check(not touches_border(image, x0, x1), f"preset {preset + 1} at 1920x1080: the model touches a border of pane {x0}..{x1}")
+        display.key("Next")
+    display.key("Home")
+    display.key("Tab")  # the panel hidden: wider panes
+    image = shot("panel-hidden")
+    if image:
+        for x0, x1 in panes(image, 3):
+            check(not touches_border(image, x0, x1), f"panel hidden: the model touches pane {x0}..{x1}")
+    display.key("Tab")
+    resize(900, 500)
+    image = shot("900x500")
+    if image:
+        for x0, x1 in panes(image, 3):
+            check(not touches_border(image, x0, x1), f"900x500: the model touches pane {x0}..{x1}")
+    display.key("1")  # single layout
+    image = shot("single")
+    if image:
+        check(not touches_border(image, 0, image[0]), "single layout: the model touches the border")
+    quit_viewer(proc, display)
+elif scenario == "zoom":
+    proc, display = start_viewer([shadelab, "--size", "800x600", "--mesh", "icosphere:3"], out)
+    display.move(400, 330, 0.5)
+    for when in ("start", "after F"):
+        if when == "after F":
+            display.key("f")
+        sizes = [model_pixels(shot(f"{when}-0"), 0, 800)]
+        for step in range(1, 4):
+            wheel(4, 1)  # wheel up: in
+            sizes.append(model_pixels(shot(f"{when}-in{step}"), 0, 800))
+        for step in range(1, 7):
+            wheel(5, 1)  # wheel down: out
+            sizes.append(model_pixels(shot(f"{when}-out{step}"), 0, 800))
+        ins, outs = sizes[:4], sizes[3:]
+        check(all(b > a for a, b in zip(ins, ins[1:])), f"{when}: wheel in does not grow the model: {ins}")
+        check(all(b < a for a, b in zip(outs, outs[1:])), f"{when}: wheel out does not shrink the model: {outs}")
+    quit_viewer(proc, display)
+elif scenario == "idle":
+    proc, display = start_viewer([shadelab, "--playlist", playlist], out)
+    time.sleep(2.0)
+    def cpu_seconds():
+        fields = open(f"/proc/{proc.pid}/stat").read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime + stime
+    before, start = cpu_seconds(), time.monotonic()
+    time.sleep(4.0)
+    share = (cpu_seconds() - before) / (time.monotonic() - start)
+    print(f"idle: {100 * share:.2f}% of a core")
+    check(share <= 0.02, f"idle: {100 * share:.1f}% of a core (at most 2%)")
+    display.key("Next")  # an input draws at once
+    check(proc.poll() is None, "the viewer ended")
+    quit_viewer(proc, display)
+elif scenario == "help":
+    window = os.path.join(out, "help-window.png")
+    proc, display = start_viewer([shadelab, "--size", "900x600", "--screenshot", window], out)
+    display.move(450, 330, 0.5)
+    display.key("F1")
+    display.key("Escape")  # closes the help ...
+    display.key("Escape")  # ... and a second Esc does not quit
+    check(proc.poll() is None, "Esc quit the viewer")
+    display.key("F1")      # open again for the screenshot taken on quitting
+    quit_viewer(proc, display)
+    _, height, rows = read_png(open(window, "rb").read())
+    # The help box over the view's centre: light text on a dark box, many rows of it.
+    light_rows = sum(1 for y in range(100, height - 100) if sum(1 for x in range(150, 750) if min(rows[y][x]) > 190) > 3)
+    check(light_rows > 150, f"F1: {light_rows} rows of text over the view")
+elif scenario == "hidpi":
+    if not shutil.which("xrdb"):
+        print("xrdb not found (Debian: x11-xserver-utils): skipping")
+        sys.exit(77)
+    subprocess.run(["xrdb", "-nocpp", "-merge"], input="Xft.dpi: 192\n", text=True, check=True)
+    proc, display = start_viewer([shadelab, "--playlist", playlist], out)
+    display.move(500, 900, 0.5)
+    image = shot("hidpi-start")
+    geometry = subprocess.run(["xdotool", "getwindowgeometry", window_id()], capture_output=True, text=True).stdout
+    width = int(geometry.split("Geometry: ")[1].split("x")[0])
+    if image:
+        check(image[0] * 2 >= width, f"2x: the view is {image[0]} of the window's {width} pixels")
+        for x0, x1 in panes(image, 3):
+            check(not touches_border(image, x0, x1), f"2x: the model touches pane {x0}..{x1}")
+    resize(2880, 1800)
+    image = shot("hidpi-2880x1800")
+    if image:
+        for x0, x1 in panes(image, 3):
+            check(not touches_border(image, x0, x1), f"2x maximised: the model touches pane {x0}..{x1}")
+    quit_viewer(proc, display)
+else:
+    sys.exit(f"unknown scenario {scenario}")
+
+if failures:
+    sys.exit("; ".join(failures))
+print(f"{scenario}: ok")
