@@ -445,7 +445,11 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         if (pass) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
         else glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
         glClearDepth(1.0);
+        // Only the target's rectangle: in the viewer's window the rest is the panel and the bands.
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, target.width, target.height);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
         glDepthFunc(GL_LESS);
     }
     glEnable(GL_CULL_FACE);

@@ -1,5 +1,6 @@
 #include "viewer/imgui_layer.hpp"
 
+#include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -8,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 namespace shadelab {
@@ -54,6 +56,7 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, float scale) : scale_(scale) {
 }
 
 ImGuiLayer::~ImGuiLayer() {
+    if (cacheFramebuffer_) glDeleteFramebuffers(1, &cacheFramebuffer_), glDeleteTextures(1, &cacheColor_);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -76,6 +79,10 @@ void ImGuiLayer::buildFonts() {
     ImGui::StyleColorsDark();
     ImGuiStyle& style = ImGui::GetStyle();
     style.WindowRounding = 0.0f;
+    // Opaque and borderless (a border's anti-aliased edge reaches a pixel left of the panel): the
+    // panel's pixels do not depend on what is under it, so it can be cached (see render).
+    style.Colors[ImGuiCol_WindowBg].w = 1.0f;
+    style.WindowBorderSize = 0.0f;
     style.ScaleAllSizes(scale_);
 }
 
@@ -110,9 +117,112 @@ void ImGuiLayer::newFrame() {
     ImGui::NewFrame();
 }
 
-void ImGuiLayer::render() {
+namespace {
+
+// ImGui's draw data restricted to some of its lists, for the OpenGL backend to draw.
+void renderLists(const ImDrawData& all, std::vector<ImDrawList*> lists) {
+    if (lists.empty()) return;
+    ImDrawData part = all;
+    part.CmdLists = lists.data();
+    part.CmdListsCount = int(lists.size());
+    part.TotalVtxCount = part.TotalIdxCount = 0;
+    for (const ImDrawList* l : lists) part.TotalVtxCount += l->VtxBuffer.Size, part.TotalIdxCount += l->IdxBuffer.Size;
+    ImGui_ImplOpenGL3_RenderDrawData(&part);
+}
+
+// A hash of the lists' vertices, indices and commands, 8 bytes at a step (it runs every frame over
+// tens of thousands of vertices): equal draw lists draw equal pixels.
+std::uint64_t hashLists(const std::vector<ImDrawList*>& lists) {
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](std::uint64_t word) {
+        h = (h ^ word) * 0x9E3779B97F4A7C15ull;
+        h ^= h >> 29;
+    };
+    auto add = [&mix](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        std::size_t i = 0;
+        for (; i + 8 <= size; i += 8) {
+            std::uint64_t word;
+            std::memcpy(&word, bytes + i, 8);
+            mix(word);
+        }
+        std::uint64_t tail = 0;
+        std::memcpy(&tail, bytes + i, size - i);
+        mix(tail ^ (std::uint64_t(size) << 56));
+    };
+    for (const ImDrawList* l : lists) {
+        add(l->VtxBuffer.Data, std::size_t(l->VtxBuffer.Size) * sizeof(ImDrawVert));
+        add(l->IdxBuffer.Data, std::size_t(l->IdxBuffer.Size) * sizeof(ImDrawIdx));
+        for (const ImDrawCmd& c : l->CmdBuffer) {
+            add(&c.ClipRect, sizeof c.ClipRect);
+            add(&c.TextureId, sizeof c.TextureId);
+            mix(std::uint64_t(c.VtxOffset) << 32 | c.IdxOffset);
+            mix(c.ElemCount);
+        }
+    }
+    return h;
+}
+
+}  // namespace
+
+void ImGuiLayer::render(float panelLeft) {
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    const ImDrawData& data = *ImGui::GetDrawData();
+    const ImGuiIO& io = ImGui::GetIO();
+    const int width = int(io.DisplaySize.x * io.DisplayFramebufferScale.x);
+    const int height = int(io.DisplaySize.y * io.DisplayFramebufferScale.y);
+    // Behind the windows: labels over the view; in front: the status strip, caption and messages.
+    ImDrawList* back = ImGui::GetBackgroundDrawList();
+    ImDrawList* front = ImGui::GetForegroundDrawList();
+    std::vector<ImDrawList*> windows;
+    bool insidePanel = panelLeft >= 0.0f;
+    for (int i = 0; i < data.CmdListsCount; ++i) {
+        ImDrawList* l = data.CmdLists[i];
+        if (l == back || l == front) continue;
+        windows.push_back(l);
+        // (Clip rects do not tell: a window's decorations are clipped to the whole display.)
+        for (const ImDrawVert& v : l->VtxBuffer) insidePanel = insidePanel && v.pos.x >= panelLeft - 0.5f;
+    }
+    renderLists(data, {back});
+    const int left = int(std::lround(panelLeft * io.DisplayFramebufferScale.x));
+    if (!insidePanel || !panelFromCache(windows, left, width, height)) renderLists(data, windows);
+    renderLists(data, {front});
+}
+
+// The panel's windows drawn into a texture of the framebuffer's size when they changed, and their
+// columns (x >= left) copied into the default framebuffer. The panel's background is opaque, so what
+// was under it does not matter: the copy is the pixels a direct draw gives.
+bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int left, int width, int height) {
+    if (left <= 0 || left >= width || height <= 0) return false;
+    const std::uint64_t hash = hashLists(windows);
+    if (width != cacheWidth_ || height != cacheHeight_ || !cacheFramebuffer_) {
+        if (cacheFramebuffer_) glDeleteFramebuffers(1, &cacheFramebuffer_), glDeleteTextures(1, &cacheColor_);
+        glGenTextures(1, &cacheColor_);
+        glBindTexture(GL_TEXTURE_2D, cacheColor_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glGenFramebuffers(1, &cacheFramebuffer_);
+        glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cacheColor_, 0);
+        const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (!complete) return false;
+        cacheWidth_ = width, cacheHeight_ = height;
+        hash_ = ~hash;  // not drawn yet
+    }
+    if (hash != hash_) {
+        glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_);
+        glDisable(GL_SCISSOR_TEST);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        renderLists(*ImGui::GetDrawData(), windows);
+        hash_ = hash;
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glBlitFramebuffer(left, 0, width, height, left, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return true;
 }
 
 }  // namespace shadelab

@@ -2,7 +2,10 @@
 // Dear ImGui for one GLFW window: the context, the GLFW and OpenGL 3 backends, and a TrueType font
 // (DejaVu Sans, with Greek, sub- and superscripts) rasterised at the UI's scale. Created after the
 // window's context is current; destroyed before it.
+#include <cstdint>
 #include <vector>
+
+struct ImDrawList;
 
 struct GLFWwindow;
 
@@ -32,10 +35,18 @@ public:
     void releaseTappedKeys();
 
     void newFrame();  // after polling events, before any ImGui:: call of the frame
-    void render();    // draws the frame's ImGui windows into the current framebuffer
+    // Draws the frame's ImGui output into the default framebuffer. `panelLeft` (ImGui units; < 0: none)
+    // is where the side panel starts: while every window lies right of it and their draw lists are
+    // what they were last frame, the panel is copied from a cache instead of drawn again (a software
+    // rasterizer spends more on the panel's hundreds of small draws than on the 3D view).
+    void render(float panelLeft = -1.0f);
 
 private:
     void buildFonts();
+    bool panelFromCache(const std::vector<ImDrawList*>& windows, int left, int width, int height);
+    std::uint64_t hash_ = 0;
+    int cacheWidth_ = 0, cacheHeight_ = 0;
+    unsigned cacheFramebuffer_ = 0, cacheColor_ = 0;
     float scale_ = 1.0f;
     bool trueType_ = false;
     std::vector<int> held_;

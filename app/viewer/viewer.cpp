@@ -205,11 +205,18 @@ bool Viewer::frame(bool last) {
     antiAliased_ = antiAliasThisFrame_;
     status_.frameMs = frameMs_;
     drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
-    imgui_.render();
+    imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
     if (screenshotRequested_) saveScreenshot(view);
     if (last) writeLastFrameFiles(l, view);
     window_.swapBuffers();
     frameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (frameTimes_.size() < 100000) frameTimes_.push_back(frameMs_);
+    if (last && options_.verbose && !frameTimes_.empty()) {
+        // The median frame's own time (polling to swap, no waiting): bench/README.md's panel figures.
+        std::vector<double> sorted = frameTimes_;
+        std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+        std::cerr << "shadelab: " << frameTimes_.size() << " frames, median " << sorted[sorted.size() / 2] << " ms\n";
+    }
     return last;
 }
 

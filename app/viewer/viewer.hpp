@@ -130,6 +130,7 @@ private:
     unsigned long eventsSeen_ = 0;
     int framesToDraw_ = 2;
     double frameMs_ = 0.0;
+    std::vector<double> frameTimes_;            // every frame's own time, for -v's median at the end
     // Anti-aliasing: the multisampled target, its samples, whether the GL is a software rasterizer
     // (there only a still view is drawn anti-aliased: 4x costs several times a frame on llvmpipe), and
     // whether the last frame was.
