@@ -57,9 +57,10 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
     viewer.panelSections = options.panelSections;
     if (options.probe) viewer.probe = *options.probe;
     viewer.selectedLight = options.selectLight.value_or(-1);
-    viewer.uiScale = options.uiScale.value_or(1.0f);
+    viewer.uiScale = options.uiScale.value_or(0.0f);
     viewer.fullscreen = options.fullscreen;
     viewer.noLabels = options.noLabels;
+    viewer.resetLayout = options.resetLayout;
     viewer.msaa = options.msaa.value_or(-1);
     viewer.verbose = options.verbose;
     return viewer;

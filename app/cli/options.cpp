@@ -192,6 +192,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         }
         else if (arg == "--fullscreen") noValue(), o.fullscreen = true;
         else if (arg == "--no-labels") noValue(), o.noLabels = true;
+        else if (arg == "--reset-layout") noValue(), o.resetLayout = true;
         else if (arg == "--overlays") {
             static const std::pair<const char*, int> kOverlays[] = {
                 {"wireframe", 0}, {"vertex-normals", 1}, {"face-normals", 2}, {"lights", 3}};
@@ -246,11 +247,11 @@ Options parseOptions(const std::vector<std::string>& args) {
     // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
     const bool viewerFlags = o.frames || o.screenshot || o.screenshotView || o.saveScene || o.hidePanel ||
                              !o.overlays.empty() || o.panelSections || o.selectLight || o.uiScale || o.fullscreen ||
-                             o.noLabels;
+                             o.noLabels || o.resetLayout;
     if (viewerFlags && (o.output || o.benchmarkFrames))
         throw InputError(std::string(o.output ? "--output" : "--benchmark") +
                          ": --frames, --screenshot, --screenshot-view, --save-scene, --hide-panel, --overlays, "
-                         "--panel-sections, --select-light, --ui-scale, --fullscreen and --no-labels are for the "
+                         "--panel-sections, --select-light, --ui-scale, --fullscreen, --no-labels and --reset-layout are for the "
                          "viewer, which --output/--benchmark do not open");
     if (o.plot) {
         if (!o.output) throw InputError("--plot: writes a PNG: give --output FILE.png");
@@ -386,6 +387,8 @@ Viewer (the window; its keys and mouse are listed below, in its panel under "Key
                           on top of the monitor's content scale); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer
   --fullscreen            cover the whole monitor (F11 toggles)
   --no-labels             start without the pane labels and light labels (a clean view for slides)
+  --reset-layout          forget the remembered window size and position, fullscreen, panel sections,
+                          UI scale and anti-aliasing ($XDG_CONFIG_HOME/shadelab/viewer.json)
   --frames N              quit after N frames
   --screenshot FILE.png   on the last frame (N-th, or when you quit), save the whole window, panel included
   --screenshot-view FILE.png  on the last frame, save the 3D view alone (what F12 saves)

@@ -59,6 +59,7 @@ struct Options {
     std::optional<float> uiScale;           // --ui-scale S (0.75..4): panel, captions, labels, HUD (x the monitor's scale)
     bool fullscreen = false;                // --fullscreen: the viewer covers the whole monitor (F11)
     bool noLabels = false;                  // --no-labels: start without pane and light labels (a clean view)
+    bool resetLayout = false;               // --reset-layout: forget the remembered window and panel layout
     bool verbose = false;
     bool help = false;
     bool version = false;

@@ -292,6 +292,11 @@ void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
     float scale = status.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, kMinUiScale, kMaxUiScale, "%.2f x  (Ctrl+= / Ctrl+-)"))
         requests.uiScale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+    // Anti-aliasing of the 3D view (on a software renderer only the still view is drawn with it).
+    static const char* const kMsaa[] = {"off", "2x", "4x", "8x"};
+    static const int kSamples[] = {1, 2, 4, 8};
+    int choice = status.msaa >= 8 ? 3 : status.msaa >= 4 ? 2 : status.msaa >= 2 ? 1 : 0;
+    if (ImGui::Combo("anti-aliasing", &choice, kMsaa, 4)) requests.msaa = kSamples[choice];
     requests.toggleFullscreen |= ImGui::Button("fullscreen (F11)");
     if (!status.trueTypeFont) ImGui::TextWrapped("DejaVu Sans not found (Debian: fonts-dejavu-core): bitmap font");
 }
@@ -314,7 +319,7 @@ void sectionCamera(Camera& c, PanelRequests& requests) {
 float longestLabelWidth() {
     static const char* const kLongLabels[] = {"lobe normalisation", "normal bias (texels)", "depth bias (slope)",
                                               "samples (nx, ny)", "range (0: none)", "output encoding",
-                                              "major segments", "rotation (deg)", "ior \u03b7\u2082/\u03b7\u2081",
+                                              "major segments", "rotation (deg)", "anti-aliasing", "ior \u03b7\u2082/\u03b7\u2081",
                                               "k_e exponent"};
     float width = 0.0f;
     for (const char* label : kLongLabels) width = std::max(width, ImGui::CalcTextSize(label).x);
@@ -409,8 +414,11 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
             const auto& open = *settings.startSections;
             ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
         }
-        return ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
+        const bool open = ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
+        if (open) settings.openSections.push_back(name);
+        return open;
     };
+    settings.openSections.clear();
     if (section("Shading", kPanelSections[0], true)) sectionShading(scene);
     settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
     SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
@@ -454,9 +462,13 @@ std::string shadingName(ShadingMode m) {
 
 const char* lobeName(ReflectionModel r) { return r == ReflectionModel::BlinnPhong ? "Blinn-Phong lobe" : "Phong lobe"; }
 
-void labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string& text, ImU32 colour) {
+// A label on a dark box at `pos`, moved inside [lo, hi] (a pane) when given, so it is never cut.
+void labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string& text, ImU32 colour,
+              ImVec2 lo = ImVec2(-1e9f, -1e9f), ImVec2 hi = ImVec2(1e9f, 1e9f)) {
     const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, text.c_str());
     const float pad = fontSize * 0.3f;
+    pos.x = std::max(std::min(pos.x, hi.x - size.x - pad), lo.x + pad);
+    pos.y = std::max(std::min(pos.y, hi.y - size.y - pad), lo.y + pad);
     draw->AddRectFilled(ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad),
                         IM_COL32(0, 0, 0, 160), pad);
     draw->AddText(ImGui::GetFont(), fontSize, pos, colour, text.c_str());
@@ -593,6 +605,25 @@ void drawHelpOverlay(const UiRect& view) {
     ImGui::End();
 }
 
+glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) {
+    const Light& l = scene.lights[light];
+    if (l.type != LightType::Directional) return l.position;
+    const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.3f;
+    return scene.camera.target - glm::normalize(l.direction) * reach;
+}
+
+int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float radiusPixels) {
+    int best = -1;
+    float bestDistance = radiusPixels;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const glm::vec3 p = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
+        if (!(p.z > 0.0f)) continue;
+        const float d = glm::length(glm::vec2(p) - pixel);
+        if (d <= bestDistance) best = int(i), bestDistance = d;
+    }
+    return best;
+}
+
 void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected) {
     if (scene.lights.empty()) return;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
@@ -604,16 +635,18 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
         const float x1 = x0 + float(pane.width) / framebufferScale, y1 = y0 + float(pane.height) / framebufferScale;
         draw->PushClipRect(ImVec2(x0, y0), ImVec2(x1, y1), true);
         const ImVec2 centre((x0 + x1) * 0.5f, (y0 + y1) * 0.5f);
-        auto toUi = [&](const glm::vec3& p) { return ImVec2(x0 + p.x / framebufferScale, y0 + p.y / framebufferScale); };
+        // projectToImage gives image pixels of the whole view (the pane's offset included).
+        auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& l = scene.lights[i];
             const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);
             const std::string label = std::to_string(i) + " " + toString(l.type);
             if (l.type == LightType::Directional) {
-                // An arrow along the light's travel, ending at the target (what it lights).
+                // An arrow along the light's travel toward the target (what it lights); its tail is
+                // the handle that drags the direction.
                 const glm::vec3 dir = glm::normalize(l.direction);
                 const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.3f;
-                const glm::vec3 a = projectToImage(scene.camera, pane, scene.camera.target - dir * reach);
+                const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
                 const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.35f));
                 if (a.z <= 0.0f || b.z <= 0.0f) continue;
                 const ImVec2 pa = toUi(a), pb = toUi(b);
@@ -624,7 +657,7 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
                 const float head = font * 0.7f;
                 draw->AddTriangleFilled(pb, ImVec2(pb.x - u.x * head + n.x * head * 0.5f, pb.y - u.y * head + n.y * head * 0.5f),
                                         ImVec2(pb.x - u.x * head - n.x * head * 0.5f, pb.y - u.y * head - n.y * head * 0.5f), colour);
-                labelBox(draw, font, ImVec2(pa.x + ring * 0.5f, pa.y - font * 1.4f), label, colour);
+                labelBox(draw, font, ImVec2(pa.x + ring * 0.5f, pa.y - font * 1.4f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1));
                 continue;
             }
             const glm::vec3 p = projectToImage(scene.camera, pane, l.position);
@@ -633,7 +666,7 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
             if (inside) {
                 draw->AddCircle(at, ring, colour, 24, thick);
                 draw->AddCircleFilled(at, thick, colour);
-                labelBox(draw, font, ImVec2(at.x + ring * 1.4f, at.y - font * 0.5f), label, colour);
+                labelBox(draw, font, ImVec2(at.x + ring * 1.4f, at.y - font * 0.5f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1));
                 continue;
             }
             // Outside the pane (or behind the eye): an arrow at the border, pointing toward it.
@@ -650,10 +683,8 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
                                     ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
             const std::string offView = label + " (off view)";
             const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, offView.c_str());
-            const float pad = font * 0.4f;
-            const ImVec2 text(std::max(std::min(tip.x - u.x * head * 2.0f - size.x * 0.5f, x1 - size.x - pad), x0 + pad),
-                              std::max(std::min(tip.y - u.y * head * 2.0f - size.y * 0.5f, y1 - size.y - pad), y0 + pad));
-            labelBox(draw, font, text, offView, colour);
+            labelBox(draw, font, ImVec2(tip.x - u.x * head * 2.0f - size.x * 0.5f, tip.y - u.y * head * 2.0f - size.y * 0.5f),
+                     offView, colour, ImVec2(x0, y0), ImVec2(x1, y1));
         }
         draw->PopClipRect();
     }

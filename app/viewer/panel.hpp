@@ -4,6 +4,7 @@
 // are called every frame, hold no state of their own, and report button presses as requests that the
 // viewer carries out, so file and GL work never happens inside a widget.
 #include "core/plot.hpp"
+#include "core/camera.hpp"
 #include "core/probe.hpp"
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
@@ -29,6 +30,7 @@ struct ViewSettings {
     PlotSettings plots;            // the Plots section's incidence angle and side of the surface
     // --panel-sections: on the first frame, exactly these sections (kPanelSections names) are opened.
     std::optional<std::vector<std::string>> startSections;
+    std::vector<std::string> openSections;  // those open in the last frame (remembered between sessions)
     // The light selected in the panel (-1: none): an area light shows its samples, and the probe's
     // arrows show only this light's I, R and H.
     int selectedLight = -1;
@@ -50,6 +52,7 @@ struct PanelStatus {
     bool scrollToPreset = false;
     double frameMs = 0.0;             // the last frame's own time, without waiting for input
     float uiScale = 1.0f;             // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
+    int msaa = 1;                     // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;
 };
 
@@ -61,6 +64,7 @@ struct PanelRequests {
     int gotoPreset = -1;          // a preset clicked in the list, or the previous / next button
     bool resetPreset = false;     // reload the current preset from its file
     float uiScale = 0.0f;         // the UI-scale slider moved: the new scale (0: unchanged)
+    int msaa = 0;                 // anti-aliasing chosen: samples (1: off; 0: unchanged)
     bool toggleFullscreen = false;
 };
 
@@ -101,5 +105,12 @@ void drawHelpOverlay(const UiRect& view);
 // light's travel, or an arrow at the pane's border toward a light outside it. Lines thicken with the
 // UI scale. `selected`: the panel's selected light, drawn highlighted.
 void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected);
+
+// Where light `light`'s marker is grabbed (world space): a point or area light's position; for a
+// directional light the tail of its arrow, a third of the eye's distance up-light of the target.
+glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light);
+// The light whose handle is nearest to `pixel` (image pixels of the view, in `pane`) within
+// `radiusPixels`; -1 for none.
+int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float radiusPixels);
 
 }  // namespace shadelab

@@ -179,27 +179,73 @@ std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe
     return arrows;
 }
 
+namespace {
+
+struct Box {
+    float x0, y0, x1, y1;
+    float overlap(const Box& o) const {
+        const float w = std::min(x1, o.x1) - std::max(x0, o.x0), h = std::min(y1, o.y1) - std::max(y0, o.y0);
+        return w > 0.0f && h > 0.0f ? w * h : 0.0f;
+    }
+};
+
+// Where a label of `size` goes near `tip`: the first of the places around it (nearest first) that is
+// inside the pane and clear of the labels already placed; else the place that overlaps them least.
+Box placeLabel(ImVec2 tip, ImVec2 size, const Box& pane, const std::vector<Box>& placed, float gap) {
+    const float w = size.x, h = size.y;
+    const ImVec2 offsets[] = {{gap, -h - gap * 0.5f}, {gap, gap * 0.5f},     {-w - gap, -h - gap * 0.5f},
+                              {-w - gap, gap * 0.5f}, {-w * 0.5f, -h - gap * 2}, {-w * 0.5f, gap * 2},
+                              {gap * 3, -h * 0.5f},   {-w - gap * 3, -h * 0.5f}, {gap * 2, -h * 2 - gap},
+                              {gap * 2, h + gap},     {-w - gap * 2, -h * 2 - gap}, {-w - gap * 2, h + gap}};
+    Box best{};
+    float bestCost = 1e30f;
+    for (const ImVec2& o : offsets) {
+        // Kept inside the pane: a label never runs over a pane border.
+        const float x = std::clamp(tip.x + o.x, pane.x0, std::max(pane.x0, pane.x1 - w));
+        const float y = std::clamp(tip.y + o.y, pane.y0, std::max(pane.y0, pane.y1 - h));
+        const Box b{x, y, x + w, y + h};
+        float cost = 0.0f;
+        for (const Box& q : placed) cost += q.overlap(b);
+        if (cost <= 0.0f) return b;
+        if (cost < bestCost) bestCost = cost, best = b;
+    }
+    return best;
+}
+
+}  // namespace
+
 void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, const UiRect& view,
                      float framebufferScale) {
     ImDrawList* draw = ImGui::GetForegroundDrawList();
-    draw->PushClipRect(ImVec2(view.x, view.y), ImVec2(view.x + view.width, view.y + view.height), true);
-    const float pad = 2.0f;
+    const float font = ImGui::GetFontSize();
+    const float pad = std::max(2.0f, font * 0.15f), gap = font * 0.3f;
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
-    for (std::size_t p = 0; p < panes.size(); ++p)
+    for (std::size_t p = 0; p < panes.size(); ++p) {
+        const Pane& pane = panes[p];
+        const Box paneBox{view.x + float(pane.x) / framebufferScale + pad, view.y + float(pane.y) / framebufferScale + pad,
+                          view.x + float(pane.x + pane.width) / framebufferScale - pad,
+                          view.y + float(pane.y + pane.height) / framebufferScale - pad};
+        draw->PushClipRect(ImVec2(paneBox.x0 - pad, paneBox.y0 - pad), ImVec2(paneBox.x1 + pad, paneBox.y1 + pad), true);
+        std::vector<Box> placed;
         for (const ProbeArrow& a : arrows) {
-            const Pane& pane = panes[p];
             if (a.label.empty() || (a.arrow.pane >= 0 && std::size_t(a.arrow.pane) != p)) continue;
             const glm::vec3 tip = projectToImage(scene.camera, pane, a.arrow.toWorld);
             if (!(tip.z > 0.0f) || tip.x < float(pane.x) || tip.x >= float(pane.x + pane.width) || tip.y < float(pane.y) ||
                 tip.y >= float(pane.y + pane.height))
                 continue;
-            const ImVec2 at(view.x + tip.x / framebufferScale + 4.0f, view.y + tip.y / framebufferScale - 14.0f);
-            const ImVec2 size = ImGui::CalcTextSize(a.label.c_str());
-            draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad), ImVec2(at.x + size.x + pad, at.y + size.y + pad),
-                                IM_COL32(0, 0, 0, 160), pad);
-            draw->AddText(at, imColor(a.arrow.color), a.label.c_str());
+            const ImVec2 at(view.x + tip.x / framebufferScale, view.y + tip.y / framebufferScale);
+            const ImVec2 text = ImGui::CalcTextSize(a.label.c_str());
+            const Box b = placeLabel(at, ImVec2(text.x + 2 * pad, text.y + 2 * pad), paneBox, placed, gap);
+            placed.push_back(b);
+            // A label moved away from its arrow's tip is tied to it by a thin line.
+            const float cx = std::clamp(at.x, b.x0, b.x1), cy = std::clamp(at.y, b.y0, b.y1);
+            if (std::hypot(cx - at.x, cy - at.y) > gap * 2.5f)
+                draw->AddLine(at, ImVec2(cx, cy), imColor(a.arrow.color), std::max(1.0f, font * 0.08f));
+            draw->AddRectFilled(ImVec2(b.x0, b.y0), ImVec2(b.x1, b.y1), IM_COL32(0, 0, 0, 170), pad);
+            draw->AddText(ImVec2(b.x0 + pad, b.y0 + pad), imColor(a.arrow.color), a.label.c_str());
         }
-    draw->PopClipRect();
+        draw->PopClipRect();
+    }
 }
 
 bool probeSection(const Scene& scene, const ProbeResult& probe) {

@@ -10,6 +10,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <glm/geometric.hpp>
 #include <imgui.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -85,15 +87,33 @@ Image opaque(Image image) {
     return image;
 }
 
+// A person's last layout (view_prefs.hpp), unless this is a scripted run or --reset-layout.
+ViewPrefs startPrefs(const ViewerOptions& o, const std::string& path) {
+    if (path.empty()) return {};
+    if (o.resetLayout) {
+        std::error_code ignored;
+        std::filesystem::remove(path, ignored);
+        return {};
+    }
+    return loadViewPrefs(path);
+}
+
+float startUiScale(const ViewerOptions& o, const ViewPrefs& prefs) {
+    return o.uiScale > 0.0f ? o.uiScale : prefs.uiScale.value_or(1.0f);
+}
+
 }  // namespace
 
 Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, ViewerOptions options)
     : options_(std::move(options)),
+      prefsPath_(options_.frames > 0 ? std::string() : viewPrefsPath()),
+      prefs_(startPrefs(options_, prefsPath_)),
       // Room for the scene's size beside the panel and under the status strip: at content scale 1
-      // the 3D view starts as the image --output writes.
-      window_(scene.width, scene.height + int(std::ceil(kStripEms * kFontPixels * options_.uiScale)),
-              options_.hidePanel ? 0.0f : kPanelEms * kFontPixels * options_.uiScale, "shadelab"),
-      imgui_(window_.handle(), window_.contentScale() * options_.uiScale),
+      // the 3D view starts as the image --output writes. Or where the last session left it.
+      window_(scene.width, scene.height + int(std::ceil(kStripEms * kFontPixels * startUiScale(options_, prefs_))),
+              options_.hidePanel ? 0.0f : kPanelEms * kFontPixels * startUiScale(options_, prefs_), "shadelab",
+              prefs_.window),
+      imgui_(window_.handle(), window_.contentScale() * startUiScale(options_, prefs_)),
       renderer_(makeRenderer(ShaderLibrary(options_.shaderDir))),
       overlays_(std::make_unique<OverlayRenderer>(ShaderLibrary(options_.shaderDir))),
       document_(std::move(scene), std::move(geometry)),
@@ -103,9 +123,10 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     settings_.plots = options_.plots;
     settings_.startSections = options_.panelSections;
     settings_.selectedLight = options_.selectedLight;
-    uiScale_ = options_.uiScale;
+    uiScale_ = startUiScale(options_, prefs_);
+    if (!settings_.startSections && prefs_.openSections) settings_.startSections = prefs_.openSections;
     if (options_.noLabels) settings_.paneLabels = settings_.lightLabels = false;
-    msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : 4;
+    msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : std::max(prefs_.msaa.value_or(4), 1);
     for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
         softwareGl_ = softwareGl_ || status_.glRenderer.find(software) != std::string::npos;
     pendingProbe_ = options_.probe;
@@ -114,7 +135,7 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     status_.trueTypeFont = imgui_.trueTypeFont();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
     window_.setSwapInterval(options_.frames > 0 ? 0 : 1);
-    if (options_.fullscreen) window_.setFullscreen(true);
+    if (options_.fullscreen || prefs_.fullscreen) window_.setFullscreen(true);
     if (playlist_.active()) settings_.scenePath = playlist_.preset(0).path;
     if (options_.verbose) std::cerr << "shadelab: viewer on " << status_.glRenderer << "\n";
 }
@@ -131,8 +152,21 @@ void Viewer::run() {
             if (messageShown_ && untilMessageGoes <= 0.0) break;
             window_.waitEvents(messageShown_ ? untilMessageGoes + 0.01 : 10.0);
         }
-        if (frame(options_.frames > 0 && n >= options_.frames)) return;
+        if (frame(options_.frames > 0 && n >= options_.frames)) break;
     }
+    savePrefs();
+}
+
+// The layout as the session leaves it, for the next one (a person's sessions only).
+void Viewer::savePrefs() {
+    if (prefsPath_.empty()) return;
+    ViewPrefs p;
+    p.window = window_.placement();
+    p.fullscreen = window_.fullscreen();
+    p.openSections = settings_.openSections;
+    p.uiScale = uiScale_;
+    p.msaa = msaaSamples_;
+    saveViewPrefs(prefsPath_, p);
 }
 
 bool Viewer::idle() const {
@@ -170,6 +204,7 @@ bool Viewer::frame(bool last) {
     for (std::size_t i = 0; i < playlist_.size(); ++i) status_.presetTitles.push_back(presetTitle(playlist_.preset(i)));
     status_.currentPreset = int(playlist_.current());
     status_.uiScale = uiScale_;
+    status_.msaa = msaaSamples_;
     const Camera before = scene.camera;
     const PanelRequests requests = settings_.showPanel ? drawPanel(scene, settings_, status_, l.panel,
                                                                    probe_ ? &*probe_ : nullptr)
@@ -253,6 +288,22 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<int>& keys) {
     // Mouse: ImGui's view of it, so a drag that starts on the panel moves a slider, not the camera.
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
+    // A press on a light's marker drags the light (until the release), instead of orbiting or probing.
+    const auto inView = [&](const ImVec2& p) { return p.x >= 0.0f && p.x < l.view.width && p.y >= l.view.y; };
+    if (io.MouseClicked[0] && inView(io.MousePos) && settings_.lightLabels) {
+        const Scene& scene = document_.scene();
+        const glm::vec2 pixel((io.MousePos.x - l.view.x) * l.scale, (io.MousePos.y - l.view.y) * l.scale);
+        for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
+            if (pixel.x < float(pane.x) || pixel.x >= float(pane.x + pane.width)) continue;
+            const int light = lightAtPixel(scene, pane, pixel, ImGui::GetFontSize() * l.scale);
+            if (light >= 0) lightDrag_ = LightDrag{light, pane};
+        }
+    }
+    if (lightDrag_) {
+        if (io.MouseDown[0]) dragLight(l);
+        if (!io.MouseDown[0]) lightDrag_.reset();
+        return;
+    }
     // A click (press and release without a drag) probes the pixel it was pressed on.
     const float threshold = io.MouseDragThreshold;
     if (io.MouseReleased[0] && io.MouseDragMaxDistanceSqr[0] < threshold * threshold) {
@@ -261,7 +312,6 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<int>& keys) {
         if (x >= 0 && x < l.viewWidth && y >= 0 && y < l.viewHeight) setProbe(x, y);
     }
     // Only drags and wheel steps that start over the 3D view (not its bands) move the camera.
-    const auto inView = [&](const ImVec2& p) { return p.x >= 0.0f && p.x < l.view.width && p.y >= l.view.y; };
     const auto dragging = [&](int button) { return io.MouseDown[button] && inView(io.MouseClickedPos[button]); };
     Camera& camera = document_.scene().camera;
     if (dragging(0)) orbitCamera(camera, -io.MouseDelta.x * kOrbitRadPerUnit, io.MouseDelta.y * kOrbitRadPerUnit);
@@ -273,6 +323,33 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<int>& keys) {
         zoomCamera(camera, io.MouseWheel, document_.minZoomDistance(), document_.maxZoomDistance());
         document_.stopFollowing();
     }
+}
+
+// Moves the dragged light's handle (lightHandleWorld) with the mouse: in the plane through it that
+// faces the camera, so it stays under the cursor; with Shift along the viewing axis (a view height of
+// drag moves it by twice its depth). A directional light turns to come from the handle.
+void Viewer::dragLight(const FrameLayout& l) {
+    Scene& scene = document_.scene();
+    if (lightDrag_->light >= int(scene.lights.size())) return lightDrag_.reset();
+    const ImGuiIO& io = ImGui::GetIO();
+    const Camera& c = scene.camera;
+    const Pane& pane = lightDrag_->pane;
+    const glm::vec3 handle = lightHandleWorld(scene, std::size_t(lightDrag_->light));
+    const glm::vec3 forward = glm::normalize(c.target - c.eye);
+    const float depth = glm::dot(handle - c.eye, forward);
+    glm::vec3 moved = handle;
+    if (io.KeyShift) {
+        moved += forward * (-io.MouseDelta.y * l.scale / float(std::max(pane.height, 1)) * 2.0f * std::max(depth, 1e-3f));
+    } else {
+        const glm::vec2 pixel((io.MousePos.x - l.view.x) * l.scale, (io.MousePos.y - l.view.y) * l.scale);
+        const glm::vec3 ray = pixelDirectionWorld(c, pane, pixel.x, pixel.y);
+        const float along = glm::dot(ray, forward);
+        if (depth <= 0.0f || along <= 1e-4f) return;  // behind the eye: nothing to follow
+        moved = c.eye + ray * (depth / along);
+    }
+    Light& light = scene.lights[std::size_t(lightDrag_->light)];
+    if (light.type != LightType::Directional) light.position = moved;
+    else if (glm::length(c.target - moved) > 1e-4f) light.direction = glm::normalize(c.target - moved);
 }
 
 void Viewer::setUiScale(float uiScale) {
@@ -356,6 +433,7 @@ void Viewer::handleKeys(const std::vector<int>& keys) {
 
 void Viewer::apply(const PanelRequests& r) {
     if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kMinUiScale, kMaxUiScale);
+    if (r.msaa > 0) msaaSamples_ = r.msaa;
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
     if (r.resetCamera) document_.resetCamera();
     if (r.frameModel) document_.frameModel();

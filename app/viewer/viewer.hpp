@@ -17,6 +17,7 @@
 #include "viewer/panel.hpp"
 #include "viewer/playlist_navigator.hpp"
 #include "viewer/scene_document.hpp"
+#include "viewer/view_prefs.hpp"
 
 #include <chrono>
 #include <glm/vec2.hpp>
@@ -50,7 +51,8 @@ struct ViewerOptions {
     std::vector<Preset> playlist;
     SceneAdjust adjustPreset;
     bool noLabels = false;            // --no-labels: pane and light labels start off
-    float uiScale = 1.0f;             // --ui-scale: on top of the monitor's content scale (Ctrl+= / Ctrl+-)
+    bool resetLayout = false;         // --reset-layout: forget (and overwrite) the remembered layout
+    float uiScale = 0.0f;             // --ui-scale: on top of the monitor's content scale; 0: not given
     bool fullscreen = false;          // --fullscreen (F11)
     // --msaa N: samples per pixel of the anti-aliased view; -1 (not given): 4 for a person, 1 for a
     // scripted run (--frames), whose 3D view then equals the headless image.
@@ -112,6 +114,11 @@ private:
     std::vector<OverlayArrow> probeOverlays(const FrameLayout& layout);
 
     ViewerOptions options_;
+    // What a person's last session left (view_prefs.hpp); the defaults for scripted runs. Before
+    // window_: the window opens where it was.
+    std::string prefsPath_;
+    ViewPrefs prefs_;
+    void savePrefs();
     GlfwWindow window_;   // before every GL user: the context outlives them
     ImGuiLayer imgui_;
     std::unique_ptr<Renderer> renderer_;
@@ -147,6 +154,14 @@ private:
     bool passDrawnLastFrame_ = false;
     bool progressiveComplete_ = false;
     std::chrono::steady_clock::time_point lastFrameStart_;
+    // A light marker being dragged: which light, in which pane (the plane facing the camera, or with
+    // Shift the view axis).
+    struct LightDrag {
+        int light = -1;
+        Pane pane;
+    };
+    std::optional<LightDrag> lightDrag_;
+    void dragLight(const FrameLayout& layout);
     std::optional<ProbeAnchor> probeAnchor_;
     // The meshes probeAnchor_'s triangle is in, and those caster_ was built from. Weak: a rebuilt
     // geometry may reuse a freed one's address, an expired pointer cannot be mistaken for it.

@@ -6,6 +6,9 @@
   zoom      each wheel step in makes the model larger and each step out smaller, also after F
   idle      with nothing happening the viewer sleeps: CPU time over 4 s stays under 2% of a core
   help      F1 puts every key over the view; Esc takes it away; Esc never quits, Q does
+  lightdrag dragging a light's marker moves the light in the plane facing the camera, and the highlight
+            with it (not the camera)
+  remember  window size and UI scale come back in the next session; --reset-layout forgets them
   hidpi     at a 2x content scale (Xft.dpi 192) the view keeps half the window and the panes show the
             whole model
 
@@ -212,6 +215,60 @@ elif scenario == "hidpi":
         for x0, x1 in panes(image, 3):
             check(not touches_border(image, x0, x1), f"2x maximised: the model touches pane {x0}..{x1}")
     quit_viewer(proc, display)
+elif scenario == "lightdrag":
+    # A point light on the viewing axis, between the eye (0, 1.5, 4.8) and the target: its marker is
+    # at the view's centre, (400, 300) in the view, (400, 324) on the screen under the status strip.
+    saved = os.path.join(out, "dragged.json")
+    proc, display = start_viewer([shadelab, "--size", "800x600", "--hide-panel", "--mesh", "icosphere:4",
+                                  "--light", "point:0,0.75,2.4", "--save-scene", saved], out)
+    def brightest_x(image):
+        width, height, rows = image
+        best = max(((sum(rows[y][x]), x) for y in range(0, height, 2) for x in range(0, width, 2)))
+        return best[1]
+    display.move(400, 324, 0.5)
+    before = shot("before")
+    display.button(1, True)
+    for i in range(1, 16):
+        display.move(400 + 10 * i, 324)
+    display.button(1, False)
+    display.move(700, 100, 0.3)  # away from the marker, so the screenshot shows the surface
+    after = shot("after")
+    quit_viewer(proc, display)
+    import json
+    light = json.load(open(saved))["lights"][0]["position"]
+    check(0.3 < light[0] < 0.8, f"dragged 150 px right: light x {light[0]:.3f} (about 0.53 expected)")
+    # In the plane through the light that faces the camera: its depth along the view axis is kept.
+    eye, forward = (0.0, 1.5, 4.8), (0.0, -1.5 / 5.029, -4.8 / 5.029)
+    depth = sum((light[k] - eye[k]) * forward[k] for k in range(3))
+    check(abs(depth - 2.5145) < 0.05, f"dragged light left its plane: depth {depth:.3f}")
+    check(abs(json.load(open(saved))["camera"]["eye"][0]) < 1e-6, "the drag orbited the camera")
+    if before and after:
+        check(brightest_x(after) > brightest_x(before) + 20,
+              f"the highlight did not follow the light: x {brightest_x(before)} -> {brightest_x(after)}")
+elif scenario == "remember":
+    import json
+    config = os.path.join(out, "config")
+    prefs = os.path.join(config, "shadelab", "viewer.json")
+    def geometry():
+        text = subprocess.run(["xdotool", "getwindowgeometry", window_id()], capture_output=True, text=True).stdout
+        return tuple(int(v) for v in text.split("Geometry: ")[1].split()[0].split("x"))
+    proc, display = start_viewer([shadelab, "--size", "640x360"], out, config)
+    first = geometry()
+    resize(1000, 700)
+    display.move(300, 300, 0.3)
+    display.key("equal", ctrl=True)  # UI scale 1.25
+    quit_viewer(proc, display)
+    saved = json.load(open(prefs)) if os.path.exists(prefs) else {}
+    check(saved.get("window", {}).get("width") == 1000 and saved.get("window", {}).get("height") == 700,
+          f"the window's size was not remembered: {saved}")
+    check(abs(saved.get("ui_scale", 0) - 1.25) < 1e-3, f"Ctrl+= did not give UI scale 1.25: {saved}")
+    proc, display = start_viewer([shadelab, "--size", "640x360"], out, config)
+    check(geometry() == (1000, 700), f"reopened at {geometry()}, not where it was left (1000x700)")
+    quit_viewer(proc, display)
+    proc, display = start_viewer([shadelab, "--size", "640x360", "--reset-layout"], out, config)
+    check(geometry() == first, f"--reset-layout opened at {geometry()}, not the default {first}")
+    quit_viewer(proc, display)
+    check(abs(json.load(open(prefs)).get("ui_scale", 0) - 1.0) < 1e-3, "--reset-layout kept the UI scale")
 else:
     sys.exit(f"unknown scenario {scenario}")
 

@@ -28,9 +28,12 @@ for _name in ("XTestFakeKeyEvent", "XTestFakeButtonEvent"):
 _xtst.XTestFakeMotionEvent.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_ulong]
 
 
-def start_viewer(args, cwd):
-    """Starts shadelab (args[0]) with -v and returns (process, display) once its window is mapped."""
-    proc = subprocess.Popen(list(args) + ["-v"], cwd=cwd, stderr=subprocess.PIPE, text=True)
+def start_viewer(args, cwd, config=None):
+    """Starts shadelab (args[0]) with -v and returns (process, display) once its window is mapped. The
+    viewer remembers its layout under XDG_CONFIG_HOME: `config` (default: cwd/config), so a test never
+    reads what another test or a person left."""
+    env = dict(os.environ, XDG_CONFIG_HOME=config or os.path.join(cwd, "config"))
+    proc = subprocess.Popen(list(args) + ["-v"], cwd=cwd, stderr=subprocess.PIPE, text=True, env=env)
     for line in proc.stderr:  # the window is mapped once the viewer reports its renderer
         if "viewer on" in line:
             break
@@ -69,18 +72,20 @@ class Display:
         _x11.XFlush(self.handle)
         time.sleep(pause)
 
-    def key(self, name, shift=False, hold=0.4, after=0.3):
-        """Presses and releases a key; `hold` and `after` are the pauses after the press and the release
-        (the viewer queues presses, so shorter pauses lose none; they only leave it less time to draw)."""
+    def key(self, name, shift=False, hold=0.4, after=0.3, ctrl=False):
+        """Presses and releases a key (with Shift and/or Ctrl held around it); `hold` and `after` are the
+        pauses after the press and the release (the viewer queues presses, so shorter pauses lose none;
+        they only leave it less time to draw)."""
         code = _x11.XKeysymToKeycode(self.handle, _x11.XStringToKeysym(name.encode()))
-        shift_code = _x11.XKeysymToKeycode(self.handle, _x11.XStringToKeysym(b"Shift_L"))
-        if shift:
-            _xtst.XTestFakeKeyEvent(self.handle, shift_code, 1, 0)
+        modifiers = [_x11.XKeysymToKeycode(self.handle, _x11.XStringToKeysym(m))
+                     for m, on in ((b"Shift_L", shift), (b"Control_L", ctrl)) if on]
+        for m in modifiers:
+            _xtst.XTestFakeKeyEvent(self.handle, m, 1, 0)
         _xtst.XTestFakeKeyEvent(self.handle, code, 1, 0)
         self.flush(hold)
         _xtst.XTestFakeKeyEvent(self.handle, code, 0, 0)
-        if shift:
-            _xtst.XTestFakeKeyEvent(self.handle, shift_code, 0, 0)
+        for m in modifiers:
+            _xtst.XTestFakeKeyEvent(self.handle, m, 0, 0)
         self.flush(after)
 
     def move(self, x, y, pause=0.05):

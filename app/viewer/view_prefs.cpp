@@ -1,0 +1,76 @@
+#include "viewer/view_prefs.hpp"
+
+#include "core/file_io.hpp"
+#include "viewer/controls.hpp"
+#include "viewer/panel_sections.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <iterator>
+
+namespace shadelab {
+
+std::string viewPrefsPath() {
+    namespace fs = std::filesystem;
+    const char* config = std::getenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    if (config && *config) return (fs::path(config) / "shadelab" / "viewer.json").string();
+    if (home && *home) return (fs::path(home) / ".config" / "shadelab" / "viewer.json").string();
+    return "";
+}
+
+ViewPrefs loadViewPrefs(const std::string& path) {
+    ViewPrefs p;
+    if (path.empty() || !std::filesystem::exists(path)) return p;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(readTextFile(path, 64 * 1024));
+        if (j.contains("window")) {
+            const auto& w = j.at("window");
+            WindowPlacement placement{w.at("x").get<int>(), w.at("y").get<int>(), w.at("width").get<int>(),
+                                      w.at("height").get<int>()};
+            if (placement.width >= 200 && placement.height >= 150 && placement.width <= 32768 && placement.height <= 32768)
+                p.window = placement;
+        }
+        p.fullscreen = j.value("fullscreen", false);
+        if (j.contains("open_sections")) {
+            std::vector<std::string> open;
+            for (const auto& name : j.at("open_sections")) {
+                const std::string s = name.get<std::string>();
+                if (std::find(std::begin(kPanelSections), std::end(kPanelSections), s) != std::end(kPanelSections))
+                    open.push_back(s);
+            }
+            p.openSections = open;
+        }
+        if (j.contains("ui_scale")) p.uiScale = std::clamp(j.at("ui_scale").get<float>(), kMinUiScale, kMaxUiScale);
+        if (j.contains("msaa")) p.msaa = std::clamp(j.at("msaa").get<int>(), 0, 8);
+    } catch (const std::exception& e) {
+        std::cerr << "shadelab: " << path << ": ignored (" << e.what() << ")\n";
+        return ViewPrefs{};
+    }
+    return p;
+}
+
+bool saveViewPrefs(const std::string& path, const ViewPrefs& p) {
+    if (path.empty()) return false;
+    nlohmann::json j;
+    if (p.window) j["window"] = {{"x", p.window->x}, {"y", p.window->y}, {"width", p.window->width}, {"height", p.window->height}};
+    j["fullscreen"] = p.fullscreen;
+    if (p.openSections) j["open_sections"] = *p.openSections;
+    if (p.uiScale) j["ui_scale"] = *p.uiScale;
+    if (p.msaa) j["msaa"] = *p.msaa;
+    const std::string text = j.dump(2) + "\n";
+    try {
+        std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+        writeFileAtomic(path, [&](std::FILE* f) { return std::fwrite(text.data(), 1, text.size(), f) == text.size(); });
+        return true;
+    } catch (const std::exception& e) {
+        std::cerr << "shadelab: could not remember the window layout in " << path << ": " << e.what() << "\n";
+        return false;
+    }
+}
+
+}  // namespace shadelab
