@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 
 namespace shadelab {
@@ -402,6 +403,17 @@ std::pair<glm::vec2, glm::vec2> arrowHead(glm::vec2 from, glm::vec2 tip, float l
     const glm::vec2 side(-back.y, back.x);
     const glm::vec2 base = tip - back * length;
     return {base + side * (0.45f * length), base - side * (0.45f * length)};
+}
+
+std::string lectureNotation(std::string text) {
+    static const std::pair<const char*, const char*> kSymbols[] = {
+        {"theta_", "\u03b8_"}, {"eta_1", "\u03b7\u2081"}, {"eta_2", "\u03b7\u2082"}, {" deg", "\u00b0"},
+        {"->", "\u2192"}, {"R_par", "R\u2225"}, {"R_perp", "R\u22a5"}, {"R.V", "R\u00b7V"}, {"N.H", "N\u00b7H"},
+        {"V.H", "V\u00b7H"}, {"N.I", "N\u00b7I"}};
+    for (const auto& [ascii, symbol] : kSymbols)
+        for (std::size_t at = text.find(ascii); at != std::string::npos; at = text.find(ascii, at + 1))
+            text.replace(at, std::strlen(ascii), symbol);
+    return text;
 }
 
 }  // namespace shadelab

@@ -149,6 +149,10 @@ struct PlotLayout {
 };
 PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const MeasureText& measure);
 
+// The plots' texts are written in ASCII (theta_i, eta_2, deg, ->, R_par); a TrueType font writes them as
+// the lecture does: θ_i, η₂, °, →, R∥. The bitmap font of core/text.hpp has only ASCII.
+std::string lectureNotation(std::string text);
+
 // What a plot is drawn with: the PNG rasteriser (plot_image.cpp) and the viewer's ImGui draw list each
 // implement these few primitives, and paintPlot does the rest the same way for both. Pixels are in
 // the painter's own units, origin at the plot's top-left corner, y down.

@@ -1,5 +1,7 @@
 #include "core/plot_image.hpp"
 
+#include "core/truetype_text.hpp"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -14,12 +16,15 @@ namespace {
 class ImagePainter final : public PlotPainter {
 public:
     ImagePainter(Image& image, int textScale)
-        : image_(image), textScale_(textScale), coverage_(std::size_t(image.width) * std::size_t(image.height), 0.0f) {}
+        : image_(image), textScale_(textScale), font_(TrueTypeFont::dejaVuSans()),
+          coverage_(std::size_t(image.width) * std::size_t(image.height), 0.0f) {}
 
-    // stb_easy_font draws capitals 7 font pixels tall with descenders 2 below; its own line height of
+    // DejaVu Sans at 10 pixels per text scale (capitals about 7 tall, as the bitmap font's). The
+    // bitmap fallback draws capitals 7 font pixels tall with descenders 2 below; its own line height of
     // 12 adds leading. Text boxes are the 9 pixels that hold ink, so centred labels look centred.
-    float lineHeight() const override { return 10.0f * float(textScale_); }
+    float lineHeight() const override { return font_ ? font_->height(pixels()) : 10.0f * float(textScale_); }
     glm::vec2 measure(const std::string& text) const override {
+        if (font_) return {font_->width(lectureNotation(text), pixels()), font_->height(pixels())};
         return {float(textWidth(text, textScale_)), 9.0f * float(textScale_)};
     }
     void stroke(const std::vector<glm::vec2>& pixels, Rgba8 color, float width) override {
@@ -54,6 +59,7 @@ public:
         flush(box, color);
     }
     void text(glm::vec2 topLeft, const std::string& text, Rgba8 color) override {
+        if (font_) return font_->draw(image_, topLeft.x, topLeft.y, lectureNotation(text), pixels(), color);
         drawText(image_, int(std::lround(topLeft.x)), int(std::lround(topLeft.y)), text, textScale_, color);
     }
 
@@ -100,7 +106,9 @@ private:
     }
 
     Image& image_;
+    float pixels() const { return 10.0f * float(textScale_); }
     int textScale_;
+    const TrueTypeFont* font_;
     std::vector<float> coverage_;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // The lecture's plots (core/plot.hpp) rasterised on the CPU into an image, for --plot lobe|fresnel:
 // antialiased lines (coverage from the distance to each segment), filled arrowheads, and
-// stb_easy_font text (core/text.hpp). No GL, no context.
+// DejaVu Sans text through stb_truetype (core/truetype_text.hpp; stb_easy_font, core/text.hpp, where
+// the font file is missing). No GL, no context.
 #include "core/image.hpp"
 #include "core/plot.hpp"
 

@@ -2,26 +2,11 @@
 
 #include <imgui.h>
 
-#include <cstring>
-#include <string>
-#include <utility>
 
 namespace shadelab {
 namespace {
 
 ImU32 imColor(Rgba8 c) { return IM_COL32(c.r, c.g, c.b, c.a); }
-
-// The plots' texts are ASCII (the PNG plots' bitmap font has nothing else); the panel's TrueType font
-// writes them as the lecture does: theta_i -> θ_i, eta_2 -> η₂, deg -> °, -> becomes an arrow.
-std::string lectureNotation(std::string text) {
-    static const std::pair<const char*, const char*> kSymbols[] = {
-        {"theta_", "\u03b8_"}, {"eta_1", "\u03b7\u2081"}, {"eta_2", "\u03b7\u2082"}, {" deg", "\u00b0"},
-        {"->", "\u2192"}, {"R_par", "R\u2225"}, {"R_perp", "R\u22a5"}};
-    for (const auto& [ascii, symbol] : kSymbols)
-        for (std::size_t at = text.find(ascii); at != std::string::npos; at = text.find(ascii, at + 1))
-            text.replace(at, std::strlen(ascii), symbol);
-    return text;
-}
 
 class ImGuiPainter final : public PlotPainter {
 public:
