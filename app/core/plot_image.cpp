@@ -19,12 +19,13 @@ public:
         : image_(image), textScale_(textScale), font_(TrueTypeFont::dejaVuSans()),
           coverage_(std::size_t(image.width) * std::size_t(image.height), 0.0f) {}
 
-    // DejaVu Sans at 10 pixels per text scale (capitals about 7 tall, as the bitmap font's). The
+    // DejaVu Sans at 9 pixels per text scale (capitals about 6.5 tall, the bitmap font has 7). The
     // bitmap fallback draws capitals 7 font pixels tall with descenders 2 below; its own line height of
     // 12 adds leading. Text boxes are the 9 pixels that hold ink, so centred labels look centred.
-    float lineHeight() const override { return font_ ? font_->height(pixels()) : 10.0f * float(textScale_); }
+    // Whole pixels, so the layout's lines land on pixel rows and columns and stay crisp.
+    float lineHeight() const override { return font_ ? std::round(font_->height(pixels())) : 10.0f * float(textScale_); }
     glm::vec2 measure(const std::string& text) const override {
-        if (font_) return {font_->width(lectureNotation(text), pixels()), font_->height(pixels())};
+        if (font_) return {std::ceil(font_->width(lectureNotation(text), pixels())), std::round(font_->height(pixels()))};
         return {float(textWidth(text, textScale_)), 9.0f * float(textScale_)};
     }
     void stroke(const std::vector<glm::vec2>& pixels, Rgba8 color, float width) override {
@@ -106,7 +107,7 @@ private:
     }
 
     Image& image_;
-    float pixels() const { return 10.0f * float(textScale_); }
+    float pixels() const { return 9.0f * float(textScale_); }
     int textScale_;
     const TrueTypeFont* font_;
     std::vector<float> coverage_;
