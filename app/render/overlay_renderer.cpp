@@ -92,10 +92,37 @@ std::size_t alignUp(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; 
 
 }  // namespace
 
-OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders) : program_(buildProgram("overlay", shaders)) {
-    normalLengthLoc_ = glGetUniformLocation(program_.get(), "u_normalLength");
-    depthBiasLoc_ = glGetUniformLocation(program_.get(), "u_depthBias");
-    colorLoc_ = glGetUniformLocation(program_.get(), "u_overlayColor");
+OverlayRenderer::LineProgram OverlayRenderer::lineProgram(gl::Program program) {
+    LineProgram p;
+    p.normalLength = glGetUniformLocation(program.get(), "u_normalLength");
+    p.depthBias = glGetUniformLocation(program.get(), "u_depthBias");
+    p.color = glGetUniformLocation(program.get(), "u_overlayColor");
+    p.viewportSize = glGetUniformLocation(program.get(), "u_viewportSize");
+    p.lineWidth = glGetUniformLocation(program.get(), "u_lineWidth");
+    p.program = std::move(program);
+    return p;
+}
+
+const OverlayRenderer::LineProgram& OverlayRenderer::useWidth(float pixels) {
+    const LineProgram& p = pixels > 1.01f ? wide_ : thin_;
+    if (current_ != &p) {
+        glUseProgram(p.program.get());
+        // 3e-4 of NDC depth keeps edges in front of the triangles they bound with a 24-bit depth buffer
+        // at the scene's usual near/far ratio (llvmpipe rasterises lines and triangles with different
+        // depth rounding, so a bias of 0 leaves dashed lines).
+        glUniform1f(p.depthBias, 3e-4f);
+        current_ = &p;
+    }
+    if (&p == &wide_) {
+        glUniform2f(p.viewportSize, paneWidth_, paneHeight_);
+        glUniform1f(p.lineWidth, pixels);
+    }
+    return p;
+}
+
+OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders)
+    : thin_(lineProgram(buildProgram("overlay", shaders))),
+      wide_(lineProgram(buildProgram("overlay", shaders, {}, "", "overlay_wide"))) {
     glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniformAlignment_);
     if (uniformAlignment_ <= 0) uniformAlignment_ = 256;
     uniforms_ = gl::makeBuffer();
@@ -165,23 +192,21 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glUseProgram(program_.get());
-    // 3e-4 of NDC depth keeps edges in front of the triangles they bound with a 24-bit depth buffer at
-    // the scene's usual near/far ratio (llvmpipe rasterises lines and triangles with different depth
-    // rounding, so a bias of 0 leaves dashed lines).
-    glUniform1f(depthBiasLoc_, 3e-4f);
+    current_ = nullptr;
+    lineWidth_ = options.lineWidth;
 
     const std::size_t identityOffset = objectsOffset + objects * objectStride;
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const Pane& pane = panes[p];
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
+        paneWidth_ = float(std::max(pane.width, 1)), paneHeight_ = float(std::max(pane.height, 1));
         glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
                           sizeof(gpu::FrameBlock));
         for (std::size_t o = 0; o < objects; ++o) {
             glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
                               GLintptr(objectsOffset + o * objectStride), sizeof(gpu::ObjectBlock));
             const glm::vec3 s = glm::abs(scene.objects[o].transform.scale);
-            glUniform1f(normalLengthLoc_, options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z}));
+            const float normalLength = options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z});
             const std::pair<bool, LineKind> kinds[] = {
                 {options.wireframe, Edges}, {options.vertexNormals, VertexNormals}, {options.faceNormals, FaceNormals}};
             for (const auto& [enabled, kind] : kinds) {
@@ -192,7 +217,9 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
                     {0.92f, 0.92f, 0.92f, 0.55f}, {0.25f, 0.85f, 1.0f, 1.0f}, {1.0f, 0.85f, 0.2f, 1.0f}};
                 const Lines& l = lines(o, kind);
                 if (l.vertexCount == 0) continue;
-                glUniform4fv(colorLoc_, 1, kColors[kind]);
+                const LineProgram& program = useWidth(std::max(1.0f, options.lineWidth * (kind == Edges ? 0.5f : 0.75f)));
+                glUniform1f(program.normalLength, normalLength);
+                glUniform4fv(program.color, 1, kColors[kind]);
                 glBindVertexArray(l.vao.get());
                 glDrawArrays(GL_LINES, 0, l.vertexCount);
             }
@@ -269,11 +296,12 @@ void OverlayRenderer::drawWorldLines(const std::vector<float>& data, const std::
     upload(worldLines_.vao, worldLines_.vertices, data, GL_STREAM_DRAW);
     glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(), identityObjectOffset,
                       sizeof(gpu::ObjectBlock));
-    glUniform1f(normalLengthLoc_, 0.0f);
+    const LineProgram& p = useWidth(lineWidth_);
+    glUniform1f(p.normalLength, 0.0f);
     glBindVertexArray(worldLines_.vao.get());
     for (std::size_t d = 0; d < runs.size(); ++d) {
         const GLint end = d + 1 < runs.size() ? runs[d + 1].first : GLint(data.size() / kFloatsPerVertex);
-        glUniform4fv(colorLoc_, 1, glm::value_ptr(runs[d].second));
+        glUniform4fv(p.color, 1, glm::value_ptr(runs[d].second));
         glDrawArrays(GL_LINES, runs[d].first, end - runs[d].first);
     }
 }

@@ -25,9 +25,13 @@ struct OverlayOptions {
     bool faceNormals = false;
     bool lightMarkers = false;
     float normalScale = 0.12f;  // normal line length as a share of each object's bounding radius
+    // Pixels wide: light markers, sample markers and arrows (the probe's N, I, V, R, H); normals get
+    // three quarters and the wireframe half of it, at least 1. The viewer thickens them with the UI
+    // scale; 1 draws plain one-pixel GL lines (headless frames, the golden images).
     // An area light (index into Scene::lights; -1: none) whose rectangle, stratification cells and
     // nx x ny sample positions are marked: the light selected in the viewer's panel.
     int sampleMarkersLight = -1;
+    float lineWidth = 1.0f;
     bool any() const { return wireframe || vertexNormals || faceNormals || lightMarkers || sampleMarkersLight >= 0; }
 };
 
@@ -69,8 +73,17 @@ private:
     void drawArrows(const Scene& scene, const Pane& pane, int paneIndex, const std::vector<OverlayArrow>& arrows,
                     GLintptr identityObjectOffset);
 
-    gl::Program program_;
-    GLint normalLengthLoc_ = -1, depthBiasLoc_ = -1, colorLoc_ = -1;
+    // One-pixel GL lines, and lines widened to quads by shaders/overlay_wide.geom.
+    struct LineProgram {
+        gl::Program program;
+        GLint normalLength = -1, depthBias = -1, color = -1, viewportSize = -1, lineWidth = -1;
+    };
+    static LineProgram lineProgram(gl::Program program);
+    // Makes the program for lines `pixels` wide current (and sets its width and pane size).
+    const LineProgram& useWidth(float pixels);
+    LineProgram thin_, wide_;
+    const LineProgram* current_ = nullptr;
+    float paneWidth_ = 1.0f, paneHeight_ = 1.0f, lineWidth_ = 1.0f;
     std::shared_ptr<const SceneGeometry> geometry_;
     std::vector<std::array<Lines, kLineKinds>> lines_;  // per object
     std::vector<float> objectRadius_;                   // per object, object space

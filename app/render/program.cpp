@@ -27,7 +27,8 @@ gl::Shader compileStage(GLenum stage, const std::string& programName, const std:
     if (!ok) {
         std::vector<char> log(size_t(logLength > 1 ? logLength : 1), '\0');
         glGetShaderInfoLog(shader.get(), GLsizei(log.size()), nullptr, log.data());
-        throw ShaderError("program " + programName + ", " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+        const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : stage == GL_GEOMETRY_SHADER ? "geometry" : "fragment";
+        throw ShaderError("program " + programName + ", " + stageName +
                           " stage (" + file + ", GLSL 330 core) failed to compile:\n" +
                           locateGlslLog(log.data(), src.files));
     }
@@ -37,12 +38,16 @@ gl::Shader compileStage(GLenum stage, const std::string& programName, const std:
 }  // namespace
 
 gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
-                         const std::vector<std::string>& defines, const std::string& vertexName) {
+                         const std::vector<std::string>& defines, const std::string& vertexName,
+                         const std::string& geometryName) {
     gl::Shader vs = compileStage(GL_VERTEX_SHADER, name, (vertexName.empty() ? name : vertexName) + ".vert", library,
                                  defines);
+    gl::Shader gs;
+    if (!geometryName.empty()) gs = compileStage(GL_GEOMETRY_SHADER, name, geometryName + ".geom", library, defines);
     gl::Shader fs = compileStage(GL_FRAGMENT_SHADER, name, name + ".frag", library, defines);
     gl::Program program(glCreateProgram());
     glAttachShader(program.get(), vs.get());
+    if (gs) glAttachShader(program.get(), gs.get());
     glAttachShader(program.get(), fs.get());
     glLinkProgram(program.get());
     GLint ok = GL_FALSE, logLength = 0;
@@ -54,6 +59,7 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
         throw ShaderError("program " + name + " failed to link:\n" + std::string(log.data()));
     }
     glDetachShader(program.get(), vs.get());
+    if (gs) glDetachShader(program.get(), gs.get());
     glDetachShader(program.get(), fs.get());
     // GL 3.3 has no layout(binding = N) for blocks: bind them here, from the shared definitions.
     const GLuint frame = glGetUniformBlockIndex(program.get(), "FrameBlock");

@@ -15,10 +15,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Builds `<name>.vert` (or `<vertexName>.vert`) + `<name>.frag` with `defines` ("NAME VALUE") after
-// #version, and binds the uniform blocks to their SL_BINDING_* points.
+// Builds `<name>.vert` (or `<vertexName>.vert`) + `<name>.frag`, with `<geometryName>.geom` between
+// them when given, with `defines` ("NAME VALUE") after #version, and binds the uniform blocks to their
+// SL_BINDING_* points.
 gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
-                         const std::vector<std::string>& defines = {}, const std::string& vertexName = "");
+                         const std::vector<std::string>& defines = {}, const std::string& vertexName = "",
+                         const std::string& geometryName = "");
 
 // The vertex stage of the image passes: one triangle over the viewport (shaders/fullscreen.vert).
 inline const char* const kFullscreenVertex = "fullscreen";

@@ -265,11 +265,11 @@ Viewer::FrameLayout Viewer::layout() const {
     const int panelPixels = settings_.showPanel ? std::min(int(std::lround(kPanelEms * ems * l.scale)), l.framebufferWidth / 2) : 0;
     l.viewWidth = l.framebufferWidth - panelPixels;
     const float viewUnits = float(l.viewWidth) / l.scale;
-    // From the top: the status strip, the caption band (at most a fifth of the window), the view.
+    // From the top: the status strip, the caption band (at most a fifth of the view's height), the view.
     const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
     const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
     l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits,
-                                                          std::floor(float(windowHeight) / 5.0f))
+                                                          std::floor((float(windowHeight) - stripUnits) / 6.0f))
                                           : CaptionLayout{};
     const float captionUnits = l.captionText.height;
     const int bandPixels = std::min(int(std::lround((stripUnits + captionUnits) * l.scale)), l.framebufferHeight);
@@ -531,7 +531,10 @@ Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const st
     try {
         const RenderTarget target = msaa_.begin(view, antiAliasThisFrame_ ? msaaSamples_ : 1);
         renderScene(target, capture || last);
-        overlays_->render(document_.scene(), target, settings_.overlays, arrows);
+        // Lines 2 pixels wide at scale 1, thicker with the content and UI scale.
+        OverlayOptions overlays = settings_.overlays;
+        overlays.lineWidth = 2.0f * imgui_.scale();
+        overlays_->render(document_.scene(), target, overlays, arrows);
         msaa_.resolveInto(view);
         if (capture) return opaque(readPixels(view));
     } catch (const std::exception& e) {

@@ -339,7 +339,7 @@ TEST(Window, TitleAndCaptionAboveTheView) {
     ASSERT_EQ(window.height, 300 + kStripPixels);
     const int band = window.height - kStripPixels - view.height;
     EXPECT_GT(band, 20) << "no caption band";
-    EXPECT_LE(band, window.height / 5) << "the caption band takes more than a fifth of the window";
+    EXPECT_LE(band, view.height / 5) << "the caption band is more than a fifth of the view's height";
     // Under the band the window is exactly the 3D view.
     expectSameImage(crop(window, 0, window.height - view.height, 400, view.height), view, "under the caption band");
     // The band: light text on a dark background.

@@ -9,6 +9,7 @@ import glob
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 try:
@@ -30,9 +31,9 @@ _xtst.XTestFakeMotionEvent.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_i
 
 def start_viewer(args, cwd, config=None):
     """Starts shadelab (args[0]) with -v and returns (process, display) once its window is mapped. The
-    viewer remembers its layout under XDG_CONFIG_HOME: `config` (default: cwd/config), so a test never
-    reads what another test or a person left."""
-    env = dict(os.environ, XDG_CONFIG_HOME=config or os.path.join(cwd, "config"))
+    viewer remembers its layout under XDG_CONFIG_HOME: `config` (default: a new temporary folder), so a
+    test never reads what another test or a person left."""
+    env = dict(os.environ, XDG_CONFIG_HOME=config or tempfile.mkdtemp(prefix="shadelab-test-config-"))
     proc = subprocess.Popen(list(args) + ["-v"], cwd=cwd, stderr=subprocess.PIPE, text=True, env=env)
     for line in proc.stderr:  # the window is mapped once the viewer reports its renderer
         if "viewer on" in line:
