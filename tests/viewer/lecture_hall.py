@@ -8,6 +8,8 @@
   help      F1 puts every key over the view; Esc takes it away; Esc never quits, Q does
   lightdrag dragging a light's marker moves the light in the plane facing the camera, and the highlight
             with it (not the camera)
+  textfield a click on the path field, then a click on the view (or Esc) gives the keyboard back to
+            the shortcuts (2, 3, q)
   remember  window size and UI scale come back in the next session; --reset-layout forgets them
   hidpi     at a 2x content scale (Xft.dpi 192) the view keeps half the window and the panes show the
             whole model
@@ -269,6 +271,43 @@ elif scenario == "remember":
     check(geometry() == first, f"--reset-layout opened at {geometry()}, not the default {first}")
     quit_viewer(proc, display)
     check(abs(json.load(open(prefs)).get("ui_scale", 0) - 1.0) < 1e-3, "--reset-layout kept the UI scale")
+elif scenario == "textfield":
+    import json
+    # Where the File section's path field is: a scripted run with the same layout, and the widest row
+    # of the field's colour (ImGui's frame background over the panel) in the panel.
+    args = [shadelab, "--size", "640x360", "--panel-sections", "file"]
+    first = os.path.join(out, "layout.png")
+    subprocess.run(args + ["--frames", "3", "--screenshot", first], check=True,
+                   env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(out, "config")))
+    width, height, rows = read_png(open(first, "rb").read())
+    field = lambda p: abs(p[0] - 29) <= 4 and abs(p[1] - 47) <= 4 and abs(p[2] - 74) <= 4
+    best = max(range(height), key=lambda y: sum(1 for x in range(640, width) if field(rows[y][x])))
+    xs = [x for x in range(640, width) if field(rows[best][x])]
+    check(len(xs) > (width - 640) // 2, f"no path field found in the panel (row {best}: {len(xs)} pixels)")
+    fx, fy = (xs[0] + xs[-1]) // 2 if xs else 0, best
+    for leave, mode in (("click", "gouraud"), ("Escape", "phong")):
+        saved = os.path.join(out, f"after-{leave}.json")
+        proc, display = start_viewer(args + ["--save-scene", saved], out)
+        display.move(fx, fy, 0.3)
+        display.button(1, True)
+        display.button(1, False)
+        display.key("x")       # typed into the field
+        if leave == "click":
+            display.move(320, 200, 0.3)  # a click on the view elsewhere takes the keyboard back
+            display.button(1, True)
+            display.button(1, False)
+        else:
+            display.key("Escape")
+        display.key("2" if mode == "gouraud" else "3")  # a shortcut again, not a character in the field
+        display.key("q")
+        try:
+            proc.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            check(False, f"after {leave}: q did not quit (the field kept the keyboard)")
+            continue
+        shading = json.load(open(saved))["shading"] if os.path.exists(saved) else None
+        check(shading == mode, f"after {leave}: the key went to the field, shading is {shading}")
 else:
     sys.exit(f"unknown scenario {scenario}")
 
