@@ -75,7 +75,7 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
         ++self(w).events_;
     });
     glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
-        if (action == GLFW_PRESS) self(w).pressed_.push_back(key), self(w).lastMods_ = mods;
+        if (action == GLFW_PRESS) self(w).pressed_.push_back(KeyPress{key, mods});
         ++self(w).events_;
     });
     glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) { ++self(w).events_; });
@@ -140,6 +140,6 @@ void GlfwWindow::setFullscreen(bool on) {
 }
 
 std::vector<std::string> GlfwWindow::takeDroppedPaths() { return std::exchange(dropped_, {}); }
-std::vector<int> GlfwWindow::takePressedKeys() { return std::exchange(pressed_, {}); }
+std::vector<KeyPress> GlfwWindow::takePressedKeys() { return std::exchange(pressed_, {}); }
 
 }  // namespace shadelab

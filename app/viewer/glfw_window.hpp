@@ -9,6 +9,13 @@ struct GLFWwindow;
 
 namespace shadelab {
 
+// A key pressed, with the modifiers (GLFW_MOD_*) held at that moment: a quick Ctrl+= can be released
+// before the frame that reads it, so the Ctrl must travel with the key.
+struct KeyPress {
+    int key = 0;
+    int mods = 0;
+};
+
 // Where the window was and how large, to open it there again (viewer/view_prefs.hpp).
 struct WindowPlacement {
     int x = 0, y = 0, width = 0, height = 0;  // screen units
@@ -55,15 +62,12 @@ public:
     // GLFW key codes pressed since the last call, in order (presses, not repeats). Dear ImGui 1.86
     // only sees a key that is still down when a frame starts, so a key pressed and released during
     // one slow frame (an 8x8 area light takes seconds on a software renderer) would be lost.
-    std::vector<int> takePressedKeys();
-    // Whether Shift / Ctrl were down at the last key press (for keys taken with takePressedKeys).
-    int lastKeyMods() const { return lastMods_; }
+    std::vector<KeyPress> takePressedKeys();
 
 private:
     GLFWwindow* window_ = nullptr;
     std::vector<std::string> dropped_;
-    std::vector<int> pressed_;
-    int lastMods_ = 0;
+    std::vector<KeyPress> pressed_;
     unsigned long events_ = 0;
     WindowPlacement windowed_;  // before fullscreen
 };

@@ -94,12 +94,19 @@ void ImGuiLayer::setScale(float scale) {
     ImGui_ImplOpenGL3_CreateFontsTexture();
 }
 
-void ImGuiLayer::holdTappedKeys(const std::vector<int>& pressed) {
+void ImGuiLayer::holdTappedKeys(const std::vector<KeyPress>& pressed) {
     ImGuiIO& io = ImGui::GetIO();
-    for (int key : pressed) {
-        if (key < 0 || key >= int(IM_ARRAYSIZE(io.KeysDown)) || io.KeysDown[key]) continue;
+    const auto hold = [&](int key) {
+        if (key < 0 || key >= int(IM_ARRAYSIZE(io.KeysDown)) || io.KeysDown[key]) return;
         io.KeysDown[key] = true;
         held_.push_back(key);
+    };
+    for (const KeyPress& p : pressed) {
+        hold(p.key);
+        if (p.mods & GLFW_MOD_CONTROL) hold(GLFW_KEY_LEFT_CONTROL);
+        if (p.mods & GLFW_MOD_SHIFT) hold(GLFW_KEY_LEFT_SHIFT);
+        if (p.mods & GLFW_MOD_ALT) hold(GLFW_KEY_LEFT_ALT);
+        if (p.mods & GLFW_MOD_SUPER) hold(GLFW_KEY_LEFT_SUPER);
     }
     updateModifiers(io);
 }

@@ -2,6 +2,8 @@
 // Dear ImGui for one GLFW window: the context, the GLFW and OpenGL 3 backends, and a TrueType font
 // (DejaVu Sans, with Greek, sub- and superscripts) rasterised at the UI's scale. Created after the
 // window's context is current; destroyed before it.
+#include "viewer/glfw_window.hpp"
+
 #include <cstdint>
 #include <vector>
 
@@ -29,9 +31,10 @@ public:
 
     // Dear ImGui 1.86 reads key state once a frame: a key pressed and released within one frame (a
     // short tap at a low frame rate) would never be seen down. `pressed` are the keys pressed since the
-    // last frame; those already released again are held down for this one frame. Call after polling
-    // events and before newFrame(); releaseTappedKeys() before the next poll.
-    void holdTappedKeys(const std::vector<int>& pressed);
+    // last frame; those already released again are held down for this one frame, with the modifiers
+    // that were down when they were pressed. Call after polling events and before newFrame();
+    // releaseTappedKeys() before the next poll.
+    void holdTappedKeys(const std::vector<KeyPress>& pressed);
     void releaseTappedKeys();
 
     void newFrame();  // after polling events, before any ImGui:: call of the frame

@@ -58,8 +58,10 @@ void fitClipPlanes(Camera& c, const BoundingSphere& b, const std::vector<glm::ve
         farthest = std::max(farthest, z);
         if (z > 0.0f) nearest = std::min(nearest, z);
     }
-    c.farPlane = std::max(farthest * 1.01f, 1e-3f);
-    c.nearPlane = std::max(nearest * 0.99f, c.farPlane * 1e-4f);
+    // Slack for what is drawn beyond the surfaces: the probe's arrows (a share of the distance to the
+    // eye, toward it or away), normals, markers.
+    c.farPlane = std::max(farthest * 1.5f, 1e-3f);
+    c.nearPlane = std::max(nearest * 0.5f, c.farPlane * 1e-4f);
 }
 
 float fitDistance(const Camera& c, const BoundingSphere& b, float paneAspect, float margin) {

@@ -26,8 +26,9 @@ void panCamera(Camera& camera, float dx, float dy, float viewHeight);
 void zoomCamera(Camera& camera, float wheelSteps, float minDistance, float maxDistance);
 
 // Near and far planes around what can be seen from the eye: the bounding sphere and `points` (the
-// lights, whose markers are drawn), with a little slack; near never reaches into the sphere while the
-// eye is outside it, and stays above far / 10^4 (24-bit depth) inside it.
+// lights, whose markers are drawn), with room for the probe's arrows (near at half the nearest depth,
+// far at 1.5 times the farthest); near never reaches into the sphere while the eye is outside it, and
+// stays above far / 10^4 (24-bit depth) inside it.
 void fitClipPlanes(Camera& camera, const BoundingSphere& bounds, const std::vector<glm::vec3>& points);
 
 // The eye's distance from the target, along the current viewing direction, at which the whole sphere

@@ -463,8 +463,8 @@ std::string shadingName(ShadingMode m) {
 const char* lobeName(ReflectionModel r) { return r == ReflectionModel::BlinnPhong ? "Blinn-Phong lobe" : "Phong lobe"; }
 
 // A label on a dark box at `pos`, moved inside [lo, hi] (a pane) when given, so it is never cut.
-void labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string& text, ImU32 colour,
-              ImVec2 lo = ImVec2(-1e9f, -1e9f), ImVec2 hi = ImVec2(1e9f, 1e9f)) {
+UiRect labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string& text, ImU32 colour,
+                ImVec2 lo = ImVec2(-1e9f, -1e9f), ImVec2 hi = ImVec2(1e9f, 1e9f)) {
     const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, text.c_str());
     const float pad = fontSize * 0.3f;
     pos.x = std::max(std::min(pos.x, hi.x - size.x - pad), lo.x + pad);
@@ -472,12 +472,14 @@ void labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string& t
     draw->AddRectFilled(ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad),
                         IM_COL32(0, 0, 0, 160), pad);
     draw->AddText(ImGui::GetFont(), fontSize, pos, colour, text.c_str());
+    return UiRect{pos.x - pad, pos.y - pad, size.x + 2 * pad, size.y + 2 * pad};
 }
 
 }  // namespace
 
-void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
+float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    float bottom = view.y;
     const float fontSize = ImGui::GetFontSize() * 1.4f;  // read from the back of a lecture hall
     const float pad = fontSize * 0.3f;
     const std::string diffLabel = "|" + shadingName(scene.diff.a) + " \u2212 " + shadingName(scene.diff.b) + "| \u00d7 " +
@@ -498,9 +500,11 @@ void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSca
         for (const std::string& line : lines) {
             const float w = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, line.c_str()).x;
             labelBox(draw, fontSize, ImVec2(std::round(x0 + (width - w) * 0.5f), std::round(y)), line, IM_COL32(255, 255, 255, 240));
+            bottom = std::max(bottom, y + fontSize + pad);
             y += fontSize + pad * 2.5f;
         }
     }
+    return bottom;
 }
 
 CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight) {
@@ -624,16 +628,20 @@ int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float ra
     return best;
 }
 
-void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected) {
-    if (scene.lights.empty()) return;
+std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
+                                    float top) {
+    std::vector<UiRect> boxes;
+    if (scene.lights.empty()) return boxes;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const float font = ImGui::GetFontSize();
     const float thick = std::max(3.0f, font * 0.2f);  // 3 px at scale 1, thicker with the UI scale
     const float ring = font * 0.6f;
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
-        const float x0 = view.x + float(pane.x) / framebufferScale, y0 = view.y + float(pane.y) / framebufferScale;
-        const float x1 = x0 + float(pane.width) / framebufferScale, y1 = y0 + float(pane.height) / framebufferScale;
-        draw->PushClipRect(ImVec2(x0, y0), ImVec2(x1, y1), true);
+        const float x0 = view.x + float(pane.x) / framebufferScale, paneTop = view.y + float(pane.y) / framebufferScale;
+        const float x1 = x0 + float(pane.width) / framebufferScale, y1 = paneTop + float(pane.height) / framebufferScale;
+        // Labels and border arrows stay below the pane labels (`top`).
+        const float y0 = std::min(std::max(paneTop, top), y1);
+        draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
         const ImVec2 centre((x0 + x1) * 0.5f, (y0 + y1) * 0.5f);
         // projectToImage gives image pixels of the whole view (the pane's offset included).
         auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
@@ -657,7 +665,7 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
                 const float head = font * 0.7f;
                 draw->AddTriangleFilled(pb, ImVec2(pb.x - u.x * head + n.x * head * 0.5f, pb.y - u.y * head + n.y * head * 0.5f),
                                         ImVec2(pb.x - u.x * head - n.x * head * 0.5f, pb.y - u.y * head - n.y * head * 0.5f), colour);
-                labelBox(draw, font, ImVec2(pa.x + ring * 0.5f, pa.y - font * 1.4f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1));
+                boxes.push_back(labelBox(draw, font, ImVec2(pa.x + ring * 0.5f, pa.y - font * 1.4f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
                 continue;
             }
             const glm::vec3 p = projectToImage(scene.camera, pane, l.position);
@@ -666,7 +674,7 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
             if (inside) {
                 draw->AddCircle(at, ring, colour, 24, thick);
                 draw->AddCircleFilled(at, thick, colour);
-                labelBox(draw, font, ImVec2(at.x + ring * 1.4f, at.y - font * 0.5f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1));
+                boxes.push_back(labelBox(draw, font, ImVec2(at.x + ring * 1.4f, at.y - font * 0.5f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
                 continue;
             }
             // Outside the pane (or behind the eye): an arrow at the border, pointing toward it.
@@ -674,7 +682,7 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
             if (p.z <= 0.0f) d = ImVec2(-d.x, -d.y);
             const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
             const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
-            const float halfW = (x1 - x0) * 0.5f - font * 1.5f, halfH = (y1 - y0) * 0.5f - font * 1.5f;
+            const float halfW = (x1 - x0) * 0.5f - font * 0.5f, halfH = (y1 - y0) * 0.5f - font * 0.5f;
             const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
                                      std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
             const ImVec2 tip(centre.x + u.x * t, centre.y + u.y * t);
@@ -683,11 +691,13 @@ void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferSc
                                     ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
             const std::string offView = label + " (off view)";
             const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, offView.c_str());
-            labelBox(draw, font, ImVec2(tip.x - u.x * head * 2.0f - size.x * 0.5f, tip.y - u.y * head * 2.0f - size.y * 0.5f),
-                     offView, colour, ImVec2(x0, y0), ImVec2(x1, y1));
+            boxes.push_back(labelBox(draw, font,
+                                     ImVec2(tip.x - u.x * head * 2.0f - size.x * 0.5f, tip.y - u.y * head * 2.0f - size.y * 0.5f),
+                                     offView, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
         }
         draw->PopClipRect();
     }
+    return boxes;
 }
 
 }  // namespace shadelab

@@ -80,7 +80,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
 // Labels each pane of the 3D view with what differs between panes: the shading mode and the reflection
 // model ("Phong shading · Blinn-Phong lobe"), two lines where the pane is narrow. `view` is the 3D view;
 // `framebufferScale` converts the renderer's pixel panes to ImGui units.
-void drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
+// Returns the bottom of the lowest label (ImGui units; view.y when there are none).
+float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
 
 // A preset's title and caption, sized for a projector and fitted into at most `maxHeight`: the band's
 // text sizes and height (0: no title or caption).
@@ -103,8 +104,10 @@ void drawHelpOverlay(const UiRect& view);
 
 // Each light's marker over the view: a ring with its number and kind, an arrow along a directional
 // light's travel, or an arrow at the pane's border toward a light outside it. Lines thicken with the
-// UI scale. `selected`: the panel's selected light, drawn highlighted.
-void drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected);
+// UI scale. `selected`: the panel's selected light, drawn highlighted. Labels and border arrows stay
+// below `top` (the pane labels' bottom). Returns the labels' boxes, for the probe's labels to avoid.
+std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
+                                    float top);
 
 // Where light `light`'s marker is grabbed (world space): a point or area light's position; for a
 // directional light the tail of its arrow, a third of the eye's distance up-light of the target.

@@ -3,6 +3,7 @@
 #include "core/camera.hpp"
 #include "viewer/panel.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <imgui.h>
 
@@ -215,7 +216,7 @@ Box placeLabel(ImVec2 tip, ImVec2 size, const Box& pane, const std::vector<Box>&
 }  // namespace
 
 void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, const UiRect& view,
-                     float framebufferScale) {
+                     float framebufferScale, const std::vector<UiRect>& avoid) {
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     const float font = ImGui::GetFontSize();
     const float pad = std::max(2.0f, font * 0.15f), gap = font * 0.3f;
@@ -227,12 +228,26 @@ void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, 
                           view.y + float(pane.y + pane.height) / framebufferScale - pad};
         draw->PushClipRect(ImVec2(paneBox.x0 - pad, paneBox.y0 - pad), ImVec2(paneBox.x1 + pad, paneBox.y1 + pad), true);
         std::vector<Box> placed;
+        for (const UiRect& r : avoid) placed.push_back(Box{r.x, r.y, r.x + r.width, r.y + r.height});
+        const auto inside = [&](const glm::vec3& q) {
+            return q.z > 0.0f && q.x >= float(pane.x) && q.x < float(pane.x + pane.width) && q.y >= float(pane.y) &&
+                   q.y < float(pane.y + pane.height);
+        };
         for (const ProbeArrow& a : arrows) {
             if (a.label.empty() || (a.arrow.pane >= 0 && std::size_t(a.arrow.pane) != p)) continue;
-            const glm::vec3 tip = projectToImage(scene.camera, pane, a.arrow.toWorld);
-            if (!(tip.z > 0.0f) || tip.x < float(pane.x) || tip.x >= float(pane.x + pane.width) || tip.y < float(pane.y) ||
-                tip.y >= float(pane.y + pane.height))
-                continue;
+            glm::vec3 tip = projectToImage(scene.camera, pane, a.arrow.toWorld);
+            if (!inside(tip)) {
+                // Cut at the pane's border: the last point of the arrow still inside (bisection along it
+                // in world space, so a tip behind the eye is handled too).
+                const glm::vec3 base = projectToImage(scene.camera, pane, a.arrow.fromWorld);
+                if (!inside(base)) continue;
+                float lo = 0.0f, hi = 1.0f;
+                for (int i = 0; i < 24; ++i) {
+                    const float mid = 0.5f * (lo + hi);
+                    (inside(projectToImage(scene.camera, pane, glm::mix(a.arrow.fromWorld, a.arrow.toWorld, mid))) ? lo : hi) = mid;
+                }
+                tip = projectToImage(scene.camera, pane, glm::mix(a.arrow.fromWorld, a.arrow.toWorld, lo));
+            }
             const ImVec2 at(view.x + tip.x / framebufferScale, view.y + tip.y / framebufferScale);
             const ImVec2 text = ImGui::CalcTextSize(a.label.c_str());
             const Box b = placeLabel(at, ImVec2(text.x + 2 * pad, text.y + 2 * pad), paneBox, placed, gap);

@@ -24,10 +24,11 @@ struct ProbeArrow {
 // in the probed pane only: the other panes of a compare layout evaluate the formula elsewhere.
 std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight);
 
-// The arrows' labels at their tips, in the arrows' pane, on ImGui's foreground draw list, clipped to the
-// 3D view. `framebufferScale` converts the renderer's pixels to ImGui units.
+// The arrows' labels near their tips (where an arrow leaves its pane: where it crosses the border), on
+// ImGui's foreground draw list, inside the arrows' pane, clear of each other and of `avoid` (the light
+// labels). `framebufferScale` converts the renderer's pixels to ImGui units.
 void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, const UiRect& view,
-                     float framebufferScale);
+                     float framebufferScale, const std::vector<UiRect>& avoid = {});
 
 // The panel's "Probe" section (inside the panel window). Returns true when "clear probe" is pressed.
 bool probeSection(const Scene& scene, const ProbeResult& probe);

@@ -11,9 +11,19 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 namespace shadelab {
 namespace {
+
+// Whether a camera was meant to show the whole model: it fits the view's height (a narrower image
+// than the one the camera was made for, or a --size override, cuts only the sides). A camera that
+// crops the model top and bottom too (a close-up, a floor that fills the view) was meant to crop it.
+bool framesWholeModel(Camera camera, const BoundingSphere& bounds) {
+    camera.nearPlane = 0.0f;
+    camera.farPlane = std::numeric_limits<float>::max();
+    return sphereInView(camera, bounds, 1e6f);
+}
 
 std::string folderOf(const std::string& path) {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
@@ -71,7 +81,7 @@ void SceneDocument::restore(Scene scene, const Camera& home, bool following, int
     for (const SceneObject& o : scene_.objects) model = model || o.mesh.type == MeshSpec::Type::Gltf;
     framing_ = !following ? Framing::Off : scene_.cameraGiven || !model ? Framing::Home : Framing::Model;
     homeAspect_ = paneAspect(fileWidth, fileHeight);
-    homeFits_ = sphereInView(home_, bounds(), homeAspect_);
+    homeFits_ = framesWholeModel(home_, bounds());
 }
 
 void SceneDocument::save(const std::string& path) const {
@@ -107,15 +117,25 @@ void SceneDocument::startFraming(int fileWidth, int fileHeight) {
         frameCamera(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
         home_ = scene_.camera;
     }
-    homeFits_ = geometry_ && sphereInView(home_, bounds(), homeAspect_);
+    homeFits_ = geometry_ && framesWholeModel(home_, bounds());
 }
 
 void SceneDocument::followView() {
     if (!geometry_ || framing_ == Framing::Off) return;
     const BoundingSphere b = bounds();
     const float aspect = paneAspect(scene_.width, scene_.height);
+    // A new placement only when it differs by more than rounding: recomputing the same one every frame
+    // must not creep (a progressive area-light sum restarts on any camera change).
+    const auto settle = [this](const Camera& placed) {
+        Camera& c = scene_.camera;
+        const float scale = std::max(glm::length(c.eye - c.target), 1e-6f);
+        if (glm::length(placed.eye - c.eye) > 1e-4f * scale || glm::length(placed.target - c.target) > 1e-4f * scale)
+            c = placed;
+    };
     if (framing_ == Framing::Model) {
-        frameCamera(scene_.camera, b, aspect);
+        Camera placed = scene_.camera;
+        frameCamera(placed, b, aspect);
+        settle(placed);
         return;
     }
     // The home camera's target and the current viewing direction (an orbit keeps following).
@@ -127,7 +147,9 @@ void SceneDocument::followView() {
     // The same width at the target's depth as the scene's own pane showed: further back in a narrower pane.
     float distance = homeDistance * std::max(1.0f, homeAspect_ / aspect);
     if (homeFits_) distance = std::max(distance, fitDistance(c, b, aspect, 0.95f));
-    c.eye = c.target + distance * dir;
+    Camera placed = c;
+    placed.eye = c.target + distance * dir;
+    settle(placed);
 }
 
 void SceneDocument::frameModel() {

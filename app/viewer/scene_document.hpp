@@ -49,7 +49,7 @@ public:
     // (stopFollowing) turns it off until F, R or another scene.
     //  - a scene's own camera ("home"): kept where its view fits this pane; where the pane is narrower
     //    than the one the scene was made for, moved back along its viewing direction until the same
-    //    width shows, and until the whole model fits if it fitted there;
+    //    width shows, and until the whole model fits if the camera shows its whole height;
     //  - F, or a model without a camera: the whole model, centred, filling 90% of the tighter side.
     void followView();
     void frameModel();     // F
@@ -76,7 +76,7 @@ private:
     Camera home_;
     Framing framing_ = Framing::Home;
     float homeAspect_ = 1.0f;  // the pane aspect the home camera was made for (the file's size)
-    bool homeFits_ = true;     // the whole model is in view with the home camera at that aspect
+    bool homeFits_ = true;     // the home camera shows the model's whole height (framesWholeModel)
 };
 
 }  // namespace shadelab

@@ -186,7 +186,7 @@ bool Viewer::frame(bool last) {
     imgui_.releaseTappedKeys();
     window_.pollEvents();
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<int> keys = window_.takePressedKeys();
+    const std::vector<KeyPress> keys = window_.takePressedKeys();
     imgui_.holdTappedKeys(keys);
     const bool still = window_.eventCount() == eventsSeen_;
     if (!still) eventsSeen_ = window_.eventCount(), framesToDraw_ = kFramesAfterEvent;
@@ -219,8 +219,10 @@ bool Viewer::frame(bool last) {
     // The camera follows the view (size, layout, bands) until zoomed or panned; near and far follow the eye.
     document_.followView();
     document_.fitClipPlanes();
-    if (settings_.paneLabels) drawPaneLabels(document_.scene(), l.view, l.scale);
-    if (settings_.lightLabels) drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight);
+    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
+    const std::vector<UiRect> lightBoxes =
+        settings_.lightLabels ? drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight, labelsBottom)
+                              : std::vector<UiRect>{};
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
                                                              std::to_string(playlist_.size())
@@ -230,7 +232,7 @@ bool Viewer::frame(bool last) {
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, l.view);
     if (showHelp_) drawHelpOverlay(l.view);
-    const std::vector<OverlayArrow> arrows = probeOverlays(l);
+    const std::vector<OverlayArrow> arrows = probeOverlays(l, lightBoxes);
     const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
     // MSAA: always on a GPU; on a software rasterizer only once the view is still (and for files).
     bool mouseDown = false;
@@ -282,7 +284,7 @@ Viewer::FrameLayout Viewer::layout() const {
     return l;
 }
 
-void Viewer::handleInput(const FrameLayout& l, const std::vector<int>& keys) {
+void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys) {
     for (const std::string& path : window_.takeDroppedPaths()) loadFile(path);
     handleKeys(keys);
     // Mouse: ImGui's view of it, so a drag that starts on the panel moves a slider, not the camera.
@@ -357,9 +359,9 @@ void Viewer::setUiScale(float uiScale) {
     setStatus("UI scale " + std::to_string(int(std::lround(uiScale_ * 100.0f))) + "%", false);
 }
 
-void Viewer::handleKeys(const std::vector<int>& keys) {
+void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
     const ImGuiIO& io = ImGui::GetIO();
-    for (int key : keys) {
+    for (const auto& [key, mods] : keys) {
         // A presenter's remote sends Page Down / Page Up: they step the playlist unless text is typed.
         if (playlist_.active() && !io.WantTextInput) {
             if (key == GLFW_KEY_PAGE_DOWN) goToPreset(playlist_.current() + 1);
@@ -397,9 +399,9 @@ void Viewer::handleKeys(const std::vector<int>& keys) {
         default: break;
         }
     }
-    // Keys without characters, by GLFW key code.
-    for (int key : keys) {
-        if (io.KeyCtrl) {
+    // Keys without characters, by GLFW key code; Ctrl as it was when the key went down.
+    for (const auto& [key, mods] : keys) {
+        if (mods & GLFW_MOD_CONTROL) {
             switch (key) {
             case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: setUiScale(uiScale_ * 1.25f); break;
             case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: setUiScale(uiScale_ / 1.25f); break;
@@ -686,14 +688,14 @@ void Viewer::evaluateProbe() {
     probe_ = probeAnchor(document_.scene(), *geometry, shadows ? rayCaster() : noTriangles_, *probeAnchor_);
 }
 
-std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l) {
+std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std::vector<UiRect>& avoid) {
     const Scene& scene = document_.scene();
     if (settings_.selectedLight >= int(scene.lights.size())) settings_.selectedLight = -1;  // fewer lights now
     settings_.overlays.sampleMarkersLight = settings_.selectedLight;
     std::vector<OverlayArrow> arrows;
     if (!probe_) return arrows;
     const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_, settings_.selectedLight);
-    drawProbeLabels(scene, labelled, l.view, l.scale);
+    drawProbeLabels(scene, labelled, l.view, l.scale, avoid);
     for (const ProbeArrow& a : labelled) arrows.push_back(a.arrow);
     return arrows;
 }

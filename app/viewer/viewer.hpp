@@ -89,8 +89,8 @@ private:
     // Whether the next frame can wait for an event: nothing moves, nothing is pending.
     bool idle() const;
     FrameLayout layout() const;
-    void handleInput(const FrameLayout& layout, const std::vector<int>& keys);
-    void handleKeys(const std::vector<int>& keys);
+    void handleInput(const FrameLayout& layout, const std::vector<KeyPress>& keys);
+    void handleKeys(const std::vector<KeyPress>& keys);
     void setUiScale(float uiScale);
     void apply(const PanelRequests& requests);
     void uploadGeometryIfChanged();
@@ -111,7 +111,7 @@ private:
     const SceneRayCaster& rayCaster();
     // This frame's probe arrows (their labels go on ImGui's list now; renderView draws the arrows),
     // and the selected light's sample markers switched on.
-    std::vector<OverlayArrow> probeOverlays(const FrameLayout& layout);
+    std::vector<OverlayArrow> probeOverlays(const FrameLayout& layout, const std::vector<UiRect>& avoid);
 
     ViewerOptions options_;
     // What a person's last session left (view_prefs.hpp); the defaults for scripted runs. Before
