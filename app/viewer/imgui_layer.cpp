@@ -215,6 +215,7 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
         if (!complete) return false;
         cacheWidth_ = width, cacheHeight_ = height;
         hash_ = ~hash;  // not drawn yet
+        for (std::uint64_t& h : stampHash_) h = 0;  // a new size: no copy is in the back buffer
     }
     if (hash != hash_) {
         glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_);
@@ -224,12 +225,39 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
         renderLists(*ImGui::GetDrawData(), windows);
         hash_ = hash;
     }
+    if (backBufferKept_ && panelAlreadyThere(hash, width)) return true;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glDisable(GL_SCISSOR_TEST);
     glBlitFramebuffer(left, 0, width, height, left, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (backBufferKept_) stampPanel(hash, width);
     return true;
+}
+
+// The stamp: the panel's bottom-right pixel, the window background (15, 15, 15) with blue 16 + k, k
+// the copy's number modulo 8 (invisible). Only the panel's copy writes there: when the pixel holds a
+// stamp whose copy had this hash, the back buffer already shows this panel.
+namespace {
+constexpr int kStampGrey = 15, kStampBlue = 16, kStamps = 8;
+}
+
+bool ImGuiLayer::panelAlreadyThere(std::uint64_t hash, int width) {
+    unsigned char pixel[4] = {};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadPixels(width - 1, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    const int k = int(pixel[2]) - kStampBlue;
+    return pixel[0] == kStampGrey && pixel[1] == kStampGrey && k >= 0 && k < kStamps && stampHash_[k] == hash;
+}
+
+void ImGuiLayer::stampPanel(std::uint64_t hash, int width) {
+    const int k = nextStamp_++ % kStamps;
+    stampHash_[k] = hash;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(width - 1, 0, 1, 1);
+    glClearColor(float(kStampGrey) / 255.0f, float(kStampGrey) / 255.0f, float(kStampBlue + k) / 255.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace shadelab

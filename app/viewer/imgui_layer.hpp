@@ -43,6 +43,10 @@ public:
     // what they were last frame, the panel is copied from a cache instead of drawn again (a software
     // rasterizer spends more on the panel's hundreds of small draws than on the 3D view).
     void render(float panelLeft = -1.0f);
+    // Whether the back buffer keeps its pixels from one frame to the next (Mesa's software rasterizers
+    // on X11 copy it to the window and keep it). There the cached panel is not even copied again while
+    // the back buffer still holds it; a stamp in its corner pixel says which copy is there.
+    void setBackBufferKept(bool kept) { backBufferKept_ = kept; }
 
 private:
     void buildFonts();
@@ -50,6 +54,11 @@ private:
     std::uint64_t hash_ = 0;
     int cacheWidth_ = 0, cacheHeight_ = 0;
     unsigned cacheFramebuffer_ = 0, cacheColor_ = 0;
+    bool backBufferKept_ = false;
+    std::uint64_t stampHash_[8] = {};  // the panel hash copied with stamp k (0: none)
+    int nextStamp_ = 0;
+    bool panelAlreadyThere(std::uint64_t hash, int width);
+    void stampPanel(std::uint64_t hash, int width);
     float scale_ = 1.0f;
     bool trueType_ = false;
     std::vector<int> held_;

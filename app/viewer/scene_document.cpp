@@ -144,9 +144,11 @@ void SceneDocument::followView() {
     const float homeDistance = glm::length(home_.eye - home_.target);
     if (glm::length(dir) <= 0.0f || homeDistance <= 0.0f) return;
     dir = glm::normalize(dir);
-    // The same width at the target's depth as the scene's own pane showed: further back in a narrower pane.
-    float distance = homeDistance * std::max(1.0f, homeAspect_ / aspect);
-    if (homeFits_) distance = std::max(distance, fitDistance(c, b, aspect, 0.95f));
+    // A camera that shows the whole model: back only as far as it takes to keep it whole in this pane.
+    // One that crops it (a close-up): the same width at the target's depth as the scene's own pane
+    // showed, further back in a narrower pane.
+    const float distance = homeFits_ ? std::max(homeDistance, fitDistance(c, b, aspect, 0.95f))
+                                     : homeDistance * std::max(1.0f, homeAspect_ / aspect);
     Camera placed = c;
     placed.eye = c.target + distance * dir;
     settle(placed);

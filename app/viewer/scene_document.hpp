@@ -47,9 +47,10 @@ public:
     // for the view's current size and layout (scene().width/height), so a resize, a layout switch, the
     // caption or the panel appearing never crops the model. Zooming, panning or editing the camera
     // (stopFollowing) turns it off until F, R or another scene.
-    //  - a scene's own camera ("home"): kept where its view fits this pane; where the pane is narrower
-    //    than the one the scene was made for, moved back along its viewing direction until the same
-    //    width shows, and until the whole model fits if the camera shows its whole height;
+    //  - a scene's own camera ("home") that shows the model's whole height: kept where the whole model
+    //    fits this pane, else moved back along its viewing direction until it does (5% margin);
+    //  - one that crops the model (a close-up): moved back in a pane narrower than the one the scene
+    //    was made for until the same width shows;
     //  - F, or a model without a camera: the whole model, centred, filling 90% of the tighter side.
     void followView();
     void frameModel();     // F

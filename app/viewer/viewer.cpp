@@ -126,12 +126,13 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     uiScale_ = startUiScale(options_, prefs_);
     if (!settings_.startSections && prefs_.openSections) settings_.startSections = prefs_.openSections;
     if (options_.noLabels) settings_.paneLabels = settings_.lightLabels = false;
+    status_.glRenderer = renderer_->glRenderer();
     msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : std::max(prefs_.msaa.value_or(4), 1);
     for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
         softwareGl_ = softwareGl_ || status_.glRenderer.find(software) != std::string::npos;
+    imgui_.setBackBufferKept(softwareGl_ && status_.glRenderer.find("SwiftShader") == std::string::npos);
     pendingProbe_ = options_.probe;
     settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
-    status_.glRenderer = renderer_->glRenderer();
     status_.trueTypeFont = imgui_.trueTypeFont();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
     window_.setSwapInterval(options_.frames > 0 ? 0 : 1);
