@@ -689,11 +689,19 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
             const float head = font * 0.9f;
             draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
                                     ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
-            const std::string offView = label + " (off view)";
-            const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, offView.c_str());
-            boxes.push_back(labelBox(draw, font,
-                                     ImVec2(tip.x - u.x * head * 2.0f - size.x * 0.5f, tip.y - u.y * head * 2.0f - size.y * 0.5f),
-                                     offView, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
+            // The label beside the arrow along the border, on the side away from the pane's centre
+            // (where the model is): toward the nearer corner.
+            const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, label.c_str());
+            const bool sideEdge = std::fabs(u.x) * halfH >= std::fabs(u.y) * halfW;  // left or right border
+            ImVec2 pos;
+            if (sideEdge) {
+                pos.x = u.x > 0.0f ? tip.x - head * 1.2f - size.x : tip.x + head * 1.2f;
+                pos.y = u.y < 0.0f ? tip.y - head * 0.6f - size.y : tip.y + head * 0.6f;
+            } else {
+                pos.x = u.x > 0.0f ? tip.x + head * 0.6f : tip.x - head * 0.6f - size.x;
+                pos.y = u.y > 0.0f ? tip.y - head * 1.2f - size.y : tip.y + head * 1.2f;
+            }
+            boxes.push_back(labelBox(draw, font, pos, label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
         }
         draw->PopClipRect();
     }

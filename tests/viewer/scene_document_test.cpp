@@ -110,6 +110,10 @@ TEST(SceneDocument, FramingFollowsTheViewUntilZoomed) {
             doc.followView();
             EXPECT_TRUE(sphereInView(doc.scene().camera, sphere, paneAspect())) << w << "x" << h << " layout " << int(layout);
             EXPECT_EQ(doc.scene().camera.target, scene.target);
+            // The same view again: the very same camera (no creep from frame to frame).
+            const Camera placed = doc.scene().camera;
+            for (int frame = 0; frame < 10; ++frame) doc.followView();
+            EXPECT_EQ(doc.scene().camera.eye, placed.eye);
         }
     // Zoomed: the camera stays where the user put it.
     doc.scene().width = 1280, doc.scene().height = 720, doc.scene().layout = Layout::Single;

@@ -295,6 +295,23 @@ TEST(Window, AreaLightSamples) {
     EXPECT_EQ(elsewhere, 0);
 }
 
+// --ui-scale 1.5: the window opens with a panel 1.5 times as wide (30 font heights of 16 x 1.5 pixels)
+// and a status strip 1.5 times as high.
+TEST(Window, UiScaleGrowsThePanel) {
+    const std::string dir = outDir();
+    const std::string base = "--size 640x360 --frames 3 --screenshot-view " + dir + "/view.png --screenshot ";
+    const RunResult normal = shadelab(base + dir + "/normal.png", dir);
+    ASSERT_EQ(normal.status, 0) << normal.output;
+    const RunResult large = shadelab(base + dir + "/large.png --ui-scale 1.5", dir);
+    ASSERT_EQ(large.status, 0) << large.output;
+    const Image a = readPng(dir + "/normal.png"), b = readPng(dir + "/large.png");
+    // The window opens with room for the panel at its scale; the panel never takes more than half.
+    EXPECT_EQ(a.width - 640, 480);
+    EXPECT_EQ(b.width - 640, 720);
+    EXPECT_GE(readPng(dir + "/view.png").width * 2, b.width);
+    EXPECT_EQ(b.height - a.height, 12) << "the status strip is 1.5 font heights: 24 -> 36 pixels";
+}
+
 // --msaa 4 in the window: the silhouette's pixels are blends of sphere and background, and nothing
 // away from the edges changes (a scripted run without --msaa draws the headless image's pixels).
 TEST(Window, MsaaBlendsTheSilhouette) {
