@@ -284,8 +284,7 @@ void sectionOverlays(ViewSettings& s) {
     ImGui::Checkbox("pane labels", &s.paneLabels);
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);
-    ImGui::SameLine();
-    ImGui::Checkbox("also when Tab hides the panel", &s.readoutWhenHidden);
+    ImGui::Checkbox("frame time also when Tab hides the panel", &s.readoutWhenHidden);
 }
 
 void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
@@ -376,7 +375,8 @@ void sectionPlaylist(ViewSettings& settings, const PanelStatus& status, PanelReq
 }
 
 void sectionKeys() {
-    if (!ImGui::BeginTable("##keys", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) return;
+    // Columns share the panel's width (the actions wrap), so the table never needs more than the panel.
+    if (!ImGui::BeginTable("##keys", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) return;
     for (const Control& c : kControls) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -396,13 +396,16 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height));
     // NoNavInputs: Tab belongs to the viewer (hide the panel), not to ImGui's widget tabbing.
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNavInputs;
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNavInputs |
+                                   // At a UI scale the window has no room for (the panel is at most half
+                                   // of it), a row wider than the panel scrolls instead of being cut.
+                                   ImGuiWindowFlags_HorizontalScrollbar;
     if (!ImGui::Begin("shadelab  (Tab hides this panel)", nullptr, flags)) {
         ImGui::End();
         return requests;
     }
     // Widgets leave room for the longest label on their right, so no label is clipped at any scale.
-    ImGui::PushItemWidth(-(longestLabelWidth() + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f));
+    ImGui::PushItemWidth(-(longestLabelWidth() + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f + ImGui::GetFontSize()));
     if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
         sectionPlaylist(settings, status, requests);
     // The probe's terms come first: a click on the view is a question the panel answers at once.

@@ -7,8 +7,10 @@
 #include "viewer/orbit.hpp"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
@@ -134,7 +136,7 @@ void SceneDocument::followView() {
     };
     if (framing_ == Framing::Model) {
         Camera placed = scene_.camera;
-        frameCamera(placed, b, aspect);
+        frameInsidePane(placed, b, aspect);
         settle(placed);
         return;
     }
@@ -147,7 +149,9 @@ void SceneDocument::followView() {
     // A camera that shows the whole model: back only as far as it takes to keep it whole in this pane.
     // One that crops it (a close-up): the same width at the target's depth as the scene's own pane
     // showed, further back in a narrower pane.
-    const float distance = homeFits_ ? std::max(homeDistance, fitDistance(c, b, aspect, 0.95f))
+    float fitAspect = aspect;
+    const Camera clear = clearOfLabels(c, fitAspect);
+    const float distance = homeFits_ ? std::max(homeDistance, fitDistance(clear, b, fitAspect, 0.95f))
                                      : homeDistance * std::max(1.0f, homeAspect_ / aspect);
     Camera placed = c;
     placed.eye = c.target + distance * dir;
@@ -156,8 +160,26 @@ void SceneDocument::followView() {
 
 void SceneDocument::frameModel() {
     if (!geometry_) return;
-    frameCamera(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
+    frameInsidePane(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
     framing_ = Framing::Model;
+}
+
+// The pane labels take the top `labelInset_` of each pane; a model centred in the pane keeps clear of
+// them when it fits the middle 1 - 2 * inset of the height: the same camera with a field of view that
+// much narrower vertically, and the aspect that keeps its horizontal field.
+Camera SceneDocument::clearOfLabels(const Camera& c, float& aspect) const {
+    const float keep = 1.0f - 2.0f * labelInset_;
+    Camera narrower = c;
+    narrower.fovYDeg = glm::degrees(2.0f * std::atan(std::tan(glm::radians(c.fovYDeg) / 2.0f) * keep));
+    aspect /= keep;
+    return narrower;
+}
+
+void SceneDocument::frameInsidePane(Camera& c, const BoundingSphere& b, float aspect) const {
+    Camera narrower = clearOfLabels(c, aspect);
+    frameCamera(narrower, b, aspect);
+    narrower.fovYDeg = c.fovYDeg;
+    c = narrower;
 }
 
 void SceneDocument::resetCamera() {

@@ -5,6 +5,7 @@
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -56,6 +57,9 @@ public:
     void frameModel();     // F
     void resetCamera();    // R: the home camera, followed
     void stopFollowing();  // the user zoomed, panned or typed a camera
+    // The share of each pane's height the pane labels take at its top (0..0.3): framing keeps the model
+    // clear of them.
+    void setLabelInset(float fraction) { labelInset_ = std::clamp(fraction, 0.0f, 0.3f); }
     bool following() const { return framing_ != Framing::Off; }
 
     // Near and far around the model and the lights as seen from the eye (every frame, after the
@@ -71,12 +75,15 @@ private:
     float paneAspect(int width, int height) const;
     // After a new scene: what the home camera is, and how the view follows it.
     void startFraming(int fileWidth, int fileHeight);
+    Camera clearOfLabels(const Camera& camera, float& aspect) const;
+    void frameInsidePane(Camera& camera, const BoundingSphere& bounds, float aspect) const;
 
     Scene scene_;
     std::shared_ptr<const SceneGeometry> geometry_;
     Camera home_;
     Framing framing_ = Framing::Home;
     float homeAspect_ = 1.0f;  // the pane aspect the home camera was made for (the file's size)
+    float labelInset_ = 0.0f;
     bool homeFits_ = true;     // the home camera shows the model's whole height (framesWholeModel)
 };
 

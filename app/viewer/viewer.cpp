@@ -217,10 +217,15 @@ bool Viewer::frame(bool last) {
     apply(requests);
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
-    // The camera follows the view (size, layout, bands) until zoomed or panned; near and far follow the eye.
+    // The camera follows the view (size, layout, bands, pane labels) until zoomed or panned; near and
+    // far follow the eye.
+    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
+    const auto panes = layoutPanes(document_.scene().layout, document_.scene().shading, document_.scene().width,
+                                   document_.scene().height, document_.scene().diff);
+    const float paneUnits = float(std::max(panes.front().height, 1)) / l.scale;
+    document_.setLabelInset((labelsBottom - l.view.y) / paneUnits);
     document_.followView();
     document_.fitClipPlanes();
-    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
     const std::vector<UiRect> lightBoxes =
         settings_.lightLabels ? drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight, labelsBottom)
                               : std::vector<UiRect>{};

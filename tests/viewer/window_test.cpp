@@ -129,7 +129,9 @@ TEST(Window, MatchesHeadless) {
     ASSERT_EQ(headless.status, 0) << headless.output;
     const Image expected = readPng(dir + "/headless.png");
 
-    const RunResult shown = shadelab(scene("compare_torus.json") + " --frames 3 --screenshot-view " + dir + "/view.png", dir);
+    // --no-labels: the pane labels would take the top of each pane, and framing keeps the model clear of them.
+    const RunResult shown =
+        shadelab(scene("compare_torus.json") + " --no-labels --frames 3 --screenshot-view " + dir + "/view.png", dir);
     ASSERT_EQ(shown.status, 0) << shown.output;
     expectSameImage(readPng(dir + "/view.png"), expected, "panel shown");
 
