@@ -8,6 +8,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -68,7 +69,9 @@ void ImGuiLayer::buildFonts() {
     ImFontConfig config;
     config.OversampleH = 2;  // sharper glyph edges at small sizes, cheap in atlas space
     const float pixels = std::round(kFontPixels * scale_);
-    trueType_ = io.Fonts->AddFontFromFileTTF(kFontPath, pixels, &config, kGlyphRanges) != nullptr;
+    // Checked first: Debian's Dear ImGui is built with asserts, and a missing file aborts in it.
+    trueType_ = std::filesystem::is_regular_file(kFontPath) &&
+                io.Fonts->AddFontFromFileTTF(kFontPath, pixels, &config, kGlyphRanges) != nullptr;
     if (!trueType_) {
         std::fprintf(stderr, "shadelab: %s not found (Debian: fonts-dejavu-core): using ImGui's bitmap font\n", kFontPath);
         ImFontConfig fallback;
@@ -192,7 +195,11 @@ void ImGuiLayer::render(float panelLeft) {
     }
     renderLists(data, {back});
     const int left = int(std::lround(panelLeft * io.DisplayFramebufferScale.x));
-    if (!insidePanel || !panelFromCache(windows, left, width, height)) renderLists(data, windows);
+    if (!insidePanel || !panelFromCache(windows, left, width, height)) {
+        renderLists(data, windows);
+        // Drawn directly (or no panel): whatever is in the back buffer now is no stamped copy.
+        for (std::uint64_t& h : stampHash_) h = 0;
+    }
     renderLists(data, {front});
 }
 
@@ -223,6 +230,7 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         renderLists(*ImGui::GetDrawData(), windows);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         hash_ = hash;
     }
     if (backBufferKept_ && panelAlreadyThere(hash, width)) return true;

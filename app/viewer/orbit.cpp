@@ -52,16 +52,19 @@ void fitClipPlanes(Camera& c, const BoundingSphere& b, const std::vector<glm::ve
     const glm::vec3 f = glm::normalize(forward);
     // Depths along the viewing axis: the sphere spans its centre's depth +- its radius.
     const float centre = glm::dot(b.center - c.eye, f);
-    float farthest = centre + b.radius, nearest = centre - b.radius;
+    const float modelFar = std::max((centre + b.radius) * 1.5f, 1e-3f);
+    float lightsFar = 0.0f, nearest = centre - b.radius;
     for (const glm::vec3& p : points) {
         const float z = glm::dot(p - c.eye, f);
-        farthest = std::max(farthest, z);
+        lightsFar = std::max(lightsFar, z * 1.01f);
         if (z > 0.0f) nearest = std::min(nearest, z);
     }
-    // Slack for what is drawn beyond the surfaces: the probe's arrows (a share of the distance to the
-    // eye, toward it or away), normals, markers.
-    c.farPlane = std::max(farthest * 1.5f, 1e-3f);
-    c.nearPlane = std::max(nearest * 0.5f, c.farPlane * 1e-4f);
+    // Near from the model (and lights nearer than it), with slack for what is drawn beyond the surfaces:
+    // the probe's arrows (a share of the distance to the eye), normals, markers; at least 1/10^4 of the
+    // model's far side (24-bit depth). Far takes in the lights, but a very distant light never pushes
+    // near into the model: far stops at 10^5 times near (its marker is then not drawn).
+    c.nearPlane = std::max(nearest * 0.5f, modelFar * 1e-4f);
+    c.farPlane = std::min(std::max(modelFar, lightsFar), c.nearPlane * 1e5f);
 }
 
 float fitDistance(const Camera& c, const BoundingSphere& b, float paneAspect, float margin) {

@@ -500,12 +500,17 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
             else lines = {mode, lobe};
         }
         float y = view.y + float(pane.y) / framebufferScale + pad * 2;
+        // Inside the pane, never over the next pane or the panel (a narrow pane cuts a long label).
+        const ImVec2 lo(x0, view.y + float(pane.y) / framebufferScale), hi(x0 + width, view.y + view.height);
+        draw->PushClipRect(lo, hi, true);
         for (const std::string& line : lines) {
             const float w = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, line.c_str()).x;
-            labelBox(draw, fontSize, ImVec2(std::round(x0 + (width - w) * 0.5f), std::round(y)), line, IM_COL32(255, 255, 255, 240));
+            labelBox(draw, fontSize, ImVec2(std::round(x0 + (width - w) * 0.5f), std::round(y)), line, IM_COL32(255, 255, 255, 240),
+                     lo, hi);
             bottom = std::max(bottom, y + fontSize + pad);
             y += fontSize + pad * 2.5f;
         }
+        draw->PopClipRect();
     }
     return bottom;
 }
@@ -592,9 +597,10 @@ void drawHelpOverlay(const UiRect& view) {
                             ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.92f);
     ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(view.width * 0.95f, view.height * 0.95f));
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+    // No title or resizing, but a scrollbar where the view is too small for every row at this scale.
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
     if (ImGui::Begin("##help", nullptr, flags)) {
         ImGui::TextUnformatted("Keys and mouse  (F1 or ? closes this)");
         ImGui::Separator();
@@ -615,7 +621,8 @@ void drawHelpOverlay(const UiRect& view) {
 glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) {
     const Light& l = scene.lights[light];
     if (l.type != LightType::Directional) return l.position;
-    const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.3f;
+    // Where the 3D light cross is drawn (OverlayRenderer::drawLights): 0.6 of the eye's distance.
+    const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
     return scene.camera.target - glm::normalize(l.direction) * reach;
 }
 
@@ -656,9 +663,9 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
                 // An arrow along the light's travel toward the target (what it lights); its tail is
                 // the handle that drags the direction.
                 const glm::vec3 dir = glm::normalize(l.direction);
-                const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.3f;
+                const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
                 const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
-                const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.35f));
+                const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.4f));
                 if (a.z <= 0.0f || b.z <= 0.0f) continue;
                 const ImVec2 pa = toUi(a), pb = toUi(b);
                 draw->AddLine(pa, pb, colour, thick);

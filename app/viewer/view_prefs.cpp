@@ -28,12 +28,20 @@ ViewPrefs loadViewPrefs(const std::string& path) {
     if (path.empty() || !std::filesystem::exists(path)) return p;
     try {
         const nlohmann::json j = nlohmann::json::parse(readTextFile(path, 64 * 1024));
+        // Numbers are read as doubles and range-checked before they become ints (1e30 is valid JSON).
+        const auto number = [](const nlohmann::json& v, double lo, double hi) -> std::optional<int> {
+            if (!v.is_number()) return std::nullopt;
+            const double d = v.get<double>();
+            if (!(d >= lo && d <= hi)) return std::nullopt;
+            return int(d);
+        };
         if (j.contains("window")) {
             const auto& w = j.at("window");
-            WindowPlacement placement{w.at("x").get<int>(), w.at("y").get<int>(), w.at("width").get<int>(),
-                                      w.at("height").get<int>()};
-            if (placement.width >= 200 && placement.height >= 150 && placement.width <= 32768 && placement.height <= 32768)
-                p.window = placement;
+            const auto x = number(w.value("x", nlohmann::json()), -100000, 100000);
+            const auto y = number(w.value("y", nlohmann::json()), -100000, 100000);
+            const auto width = number(w.value("width", nlohmann::json()), 200, 16384);
+            const auto height = number(w.value("height", nlohmann::json()), 150, 16384);
+            if (x && y && width && height) p.window = WindowPlacement{*x, *y, *width, *height};
         }
         p.fullscreen = j.value("fullscreen", false);
         if (j.contains("open_sections")) {
@@ -45,8 +53,11 @@ ViewPrefs loadViewPrefs(const std::string& path) {
             }
             p.openSections = open;
         }
-        if (j.contains("ui_scale")) p.uiScale = std::clamp(j.at("ui_scale").get<float>(), kMinUiScale, kMaxUiScale);
-        if (j.contains("msaa")) p.msaa = std::clamp(j.at("msaa").get<int>(), 0, 8);
+        if (j.contains("ui_scale") && j.at("ui_scale").is_number()) {
+            const double scale = j.at("ui_scale").get<double>();
+            if (scale >= kMinUiScale && scale <= kMaxUiScale) p.uiScale = float(scale);
+        }
+        if (j.contains("msaa")) p.msaa = number(j.at("msaa"), 0, 8);
     } catch (const std::exception& e) {
         std::cerr << "shadelab: " << path << ": ignored (" << e.what() << ")\n";
         return ViewPrefs{};

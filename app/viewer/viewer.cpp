@@ -8,6 +8,7 @@
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
 
+#include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <glm/geometric.hpp>
@@ -164,7 +165,8 @@ void Viewer::savePrefs() {
     ViewPrefs p;
     p.window = window_.placement();
     p.fullscreen = window_.fullscreen();
-    p.openSections = settings_.openSections;
+    // The panel's sections as last drawn; a session that never showed the panel keeps the old ones.
+    p.openSections = panelDrawn_ ? std::optional(settings_.openSections) : prefs_.openSections;
     p.uiScale = uiScale_;
     p.msaa = msaaSamples_;
     saveViewPrefs(prefsPath_, p);
@@ -207,13 +209,20 @@ bool Viewer::frame(bool last) {
     status_.uiScale = uiScale_;
     status_.msaa = msaaSamples_;
     const Camera before = scene.camera;
+    std::vector<Transform> transformsBefore;
+    for (const SceneObject& o : scene.objects) transformsBefore.push_back(o.transform);
     const PanelRequests requests = settings_.showPanel ? drawPanel(scene, settings_, status_, l.panel,
                                                                    probe_ ? &*probe_ : nullptr)
                                                        : PanelRequests{};
-    if (settings_.showPanel) status_.scrollToPreset = false;  // the list has scrolled to it
+    if (settings_.showPanel) status_.scrollToPreset = false, panelDrawn_ = true;  // the list has scrolled to it
     const Camera& after = document_.scene().camera;
     if (before.eye != after.eye || before.target != after.target || before.fovYDeg != after.fovYDeg)
         document_.stopFollowing();  // typed into the Camera section
+    // A transform edited in the Mesh section: the camera stays, so the change shows.
+    const auto& objects = document_.scene().objects;
+    bool transformed = objects.size() != transformsBefore.size();
+    for (std::size_t i = 0; !transformed && i < objects.size(); ++i) transformed = !sameTransform(objects[i].transform, transformsBefore[i]);
+    if (transformed) document_.stopFollowing();
     apply(requests);
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
@@ -295,6 +304,7 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys
     handleKeys(keys);
     // Mouse: ImGui's view of it, so a drag that starts on the panel moves a slider, not the camera.
     const ImGuiIO& io = ImGui::GetIO();
+    if (!io.MouseDown[0]) lightDrag_.reset();  // released, also over the panel
     if (io.WantCaptureMouse) return;
     // A press on a light's marker drags the light (until the release), instead of orbiting or probing.
     const auto inView = [&](const ImVec2& p) { return p.x >= 0.0f && p.x < l.view.width && p.y >= l.view.y; };
@@ -533,8 +543,10 @@ void Viewer::uploadGeometryIfChanged() {
 // before ImGui adds labels or panel (what F12 and --screenshot-view save); otherwise an empty image.
 // A capture or the last frame completes a progressive image first: a file never holds a partial one.
 Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const std::vector<OverlayArrow>& arrows) {
-    if (l.viewWidth <= 0 || l.framebufferHeight <= 0) return {};  // minimised
-    if (l.viewHeight <= 0) return {};
+    if (l.viewWidth <= 0 || l.viewHeight <= 0) {  // minimised, or no room for the view
+        progressiveComplete_ = true;                // nothing to refine: the viewer may sleep
+        return {};
+    }
     const RenderTarget view{0, l.viewWidth, l.viewHeight};
     try {
         const RenderTarget target = msaa_.begin(view, antiAliasThisFrame_ ? msaaSamples_ : 1);
@@ -546,6 +558,16 @@ Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const st
         msaa_.resolveInto(view);
         if (capture) return opaque(readPixels(view));
     } catch (const std::exception& e) {
+        // The window's framebuffer again for ImGui, the view cleared, and no pass pending: a failing
+        // program is not retried every frame (the next change of scene or shaders tries again).
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, l.viewWidth, l.viewHeight);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, l.viewWidth, l.viewHeight);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        progressiveComplete_ = true;
         setStatus(e.what(), true);
     }
     return {};
@@ -710,7 +732,9 @@ void Viewer::setStatus(std::string message, bool isError) {
     if (isError && message != status_.message) std::cerr << "shadelab: " << message << "\n";
     status_.message = std::move(message);
     status_.isError = isError;
-    // Shown over the view for a while, where the lecturer looks (and at the end of the File section).
+    // Shown over the view for a while, where the lecturer looks (and at the end of the File section);
+    // a frame is drawn to show it, also when the message comes late in a frame.
+    framesToDraw_ = std::max(framesToDraw_, 1);
     messageUntil_ = std::chrono::steady_clock::now() +
                     std::chrono::milliseconds(int((isError ? kErrorSeconds : kMessageSeconds) * 1000.0));
 }

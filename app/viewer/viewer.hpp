@@ -129,7 +129,8 @@ private:
     ViewSettings settings_;
     PanelStatus status_;
     float uiScale_ = 1.0f;
-    bool showHelp_ = false;                     // F1 / ?: every key and mouse action over the view
+    bool showHelp_ = false;
+    bool panelDrawn_ = false;                   // the panel was shown at least once this session                     // F1 / ?: every key and mouse action over the view
     std::chrono::steady_clock::time_point messageUntil_;  // the status message shows over the view until then
     bool messageShown_ = false;                 // ... and the last frame drew it
     // Render on demand: events seen so far, frames still to draw after the last one, the last

@@ -2,7 +2,7 @@
 """The viewer as a lecturer uses it, with real X input (XTEST) and window resizes (xdotool):
 
   framing   resized to the whole screen, and switched between layouts: every pane shows the whole model
-            (no pane border touches it); after wheel steps the camera stays where the user put it
+            (no pane border touches it)
   zoom      each wheel step in makes the model larger and each step out smaller, also after F
   idle      with nothing happening the viewer sleeps: CPU time over 4 s stays under 2% of a core
   help      F1 puts every key over the view; Esc takes it away; Esc never quits, Q does
@@ -230,6 +230,7 @@ elif scenario == "lightdrag":
     display.move(400, 324, 0.5)
     before = shot("before")
     display.button(1, True)
+    time.sleep(1.0)  # ImGui reads the press where the cursor is at the next frame: let it come first
     for i in range(1, 16):
         display.move(400 + 10 * i, 324)
     display.button(1, False)

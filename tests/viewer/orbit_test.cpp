@@ -107,8 +107,14 @@ TEST(ClipPlanes, AroundTheModelAndTheLightsFromAnyDistance) {
     inside.eye = {0, 0, 0.5f};
     fitClipPlanes(inside, unit, {glm::vec3(0, 0, -10)});
     EXPECT_GE(inside.farPlane, 10.5f);  // the light behind the model is in range for its marker
-    EXPECT_GE(inside.nearPlane, inside.farPlane * 1e-4f);
+    EXPECT_GE(inside.nearPlane, inside.farPlane * 1e-5f);  // depth precision
     EXPECT_LT(inside.nearPlane, 0.01f);
+    // A very distant light in front of the eye never pushes near into the model.
+    Camera outside;
+    outside.eye = {0, 0, 5};
+    fitClipPlanes(outside, unit, {glm::vec3(0, 0, -5000)});
+    EXPECT_LE(outside.nearPlane, 4.0f);
+    EXPECT_GE(outside.farPlane, 6.0f);
 }
 
 TEST(FitDistance, ClosestDistanceAtWhichTheSphereFits) {

@@ -54,13 +54,15 @@ def quit_viewer(proc, display):
 
 def screenshot(display, folder):
     """Presses F12 and returns the bytes of the PNG the viewer wrote into `folder` (its working folder),
-    or None when none appeared within 2 s."""
+    or None when none appeared within 30 s (a loaded CI machine renders and encodes slowly). The newest
+    name is taken (they are timestamped), so a late earlier file is never mistaken for this one; the
+    PNG is written atomically, so a file that exists is whole."""
     before = set(glob.glob(os.path.join(folder, "shadelab-*.png")))
     display.key("F12")
-    for _ in range(20):
+    for _ in range(300):
         new = set(glob.glob(os.path.join(folder, "shadelab-*.png"))) - before
         if new:
-            return open(new.pop(), "rb").read()
+            return open(max(new), "rb").read()
         time.sleep(0.1)
     return None
 
