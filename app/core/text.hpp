@@ -14,7 +14,8 @@ struct Rgba8 {
 };
 
 // Draws `text` with its top-left corner at (x, y), each font pixel `scale` x `scale` image pixels.
-// Clipped to the image. Characters outside printable ASCII are skipped by the font.
+// Clipped to the image. Characters outside printable ASCII (any UTF-8 character, DEL, control bytes)
+// are drawn as '?': the font has nothing else, and reading its tables with them is out of bounds.
 void drawText(Image& image, int x, int y, const std::string& text, int scale, Rgba8 color);
 // The size drawText covers, in image pixels.
 int textWidth(const std::string& text, int scale);

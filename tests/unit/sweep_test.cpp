@@ -93,3 +93,13 @@ TEST(Text, DrawsInsideTheImageOnly) {
     EXPECT_EQ(textWidth("k_e=8", 2), 2 * textWidth("k_e=8", 1));
     drawText(img, 25, 15, "clipped at the edge", 3, Rgba8{});  // must not write outside
 }
+
+// A title in any UTF-8, with DEL and control bytes, draws as '?' for each character the bitmap font
+// lacks (it read out of bounds before: UBSan in CI catches a regression).
+TEST(Text, AnyUtf8IsDrawnWithReplacementMarks) {
+    Image a(120, 20), b(120, 20);
+    drawText(a, 1, 1, "\xce\xb8_i \x7f\x01\xe2\x86\x92 \xff", 1, Rgba8{255, 255, 255, 255});
+    drawText(b, 1, 1, "?_i ??? ?", 1, Rgba8{255, 255, 255, 255});
+    EXPECT_EQ(a.rgba, b.rgba);
+    EXPECT_EQ(textWidth("\xce\xb8\x7f", 1), textWidth("??", 1));
+}
