@@ -31,10 +31,13 @@ std::string readTextFile(const std::string& path, std::uint64_t maxBytes) {
     std::string data(ec ? 0 : std::size_t(size), '\0');
     in.read(data.data(), std::streamsize(data.size()));
     if (std::size_t(in.gcount()) != data.size()) throw InputError(path + ": cannot read: I/O error");
-    if (ec) {  // size unknown (a pipe): read to the end
-        std::ostringstream s;
-        s << in.rdbuf();
-        data = s.str();
+    if (ec) {  // size unknown (a pipe, a device): read in pieces, never more than maxBytes
+        char piece[1 << 16];
+        while (in.read(piece, sizeof piece) || in.gcount() > 0) {
+            data.append(piece, std::size_t(in.gcount()));
+            if (data.size() > maxBytes)
+                throw InputError(path + ": cannot read: larger than " + std::to_string(maxBytes >> 20) + " MiB");
+        }
     }
     return data;
 }

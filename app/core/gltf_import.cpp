@@ -483,6 +483,8 @@ GlbLayout splitGlb(std::uint64_t available, const ByteReader& read, const std::s
     if (version != 2) throw bad("version " + std::to_string(version) + " (only glTF 2.0 is read)");
     if (total > available)
         throw bad("the header says " + std::to_string(total) + " bytes, the file has " + std::to_string(available));
+    // Before any length is taken from it: `total - 20` must not wrap.
+    if (total < 20) throw bad("the header says " + std::to_string(total) + " bytes, less than its own headers");
     if (jsonType != 0x4E4F534Au) throw bad("the first chunk is not JSON");
     if (std::uint64_t(jsonLength) > std::uint64_t(total) - 20)
         throw bad("the JSON chunk's length " + std::to_string(jsonLength) + " runs past the end");

@@ -150,6 +150,21 @@ TEST_F(Gltf, GlbChunksAreSplitAndBufferZeroReadFromTheBinChunk) {
     }
     expectRefused(writeGlb("no_bin", Doc(), false), {"buffer 0", "no BIN chunk"});
     {
+        // A header whose total length is 0 (less than its own 20 bytes of headers): refused, from a
+        // file and from memory (it wrapped to 4 GiB, and overflowed the buffer from memory).
+        std::string tiny = bytes.substr(0, 47);
+        tiny[8] = tiny[9] = tiny[10] = tiny[11] = '\0';
+        try {
+            loadGltfFromMemory(tiny, "tiny.glb", (dir_ / "model").string());
+            ADD_FAILURE() << "a .glb whose header says 0 bytes was loaded";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("less than its own headers"), std::string::npos) << e.what();
+        }
+        const fs::path file = dir_ / "model" / "tiny.glb";
+        std::ofstream(file, std::ios::binary).write(tiny.data(), std::streamsize(tiny.size()));
+        expectRefused(file.string(), {"less than its own headers"});
+    }
+    {
         Doc d;
         d.j["buffers"][0]["byteLength"] = d.bin.size() + 64;
         expectRefused(writeGlb("long_buffer", d), {"buffer 0", "byteLength"});
