@@ -44,6 +44,19 @@ bool insideFolder(const std::string& p, const fs::path& root) {
     return !rel.empty() && *rel.begin() != "..";
 }  // ~1.8 GB of vertex data after baking: refuse beyond
 
+// The same with symbolic links followed, in the URI and in the folder: a link inside the folder (or a
+// linked subfolder) that leads outside it is outside. A path that cannot be resolved (missing, a loop,
+// a name too long) is refused too.
+bool insideFolderResolved(const std::string& p, const fs::path& root) {
+    std::error_code ec;
+    const fs::path real = fs::canonical(fs::path(p), ec);
+    if (ec) return false;
+    const fs::path realRoot = fs::canonical(root, ec);
+    if (ec) return false;
+    const fs::path rel = real.lexically_relative(realRoot);
+    return !rel.empty() && *rel.begin() != "..";
+}
+
 class GltfReader {
 public:
     GltfReader(const std::string& path, const tinygltf::Model& model, GltfInfo& info)
@@ -618,7 +631,8 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
     // ReadWholeFile can refuse it with a message that says why (rather than "file not found").
     fsc.FileExists = [](const std::string& p, void* user) {
         const LoadContext& c = *static_cast<const LoadContext*>(user);
-        return p == c.binPath || c.decoded.count(p) || !insideFolder(p, c.folder) || fs::is_regular_file(fs::path(p));
+        std::error_code ec;  // a symlink loop or an over-long name is "no such file", never an exception
+        return p == c.binPath || c.decoded.count(p) || !insideFolder(p, c.folder) || fs::is_regular_file(fs::path(p), ec);
     };
     fsc.ExpandFilePath = [](const std::string& p, void*) { return p; };
     fsc.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
@@ -632,7 +646,7 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
             (*c.read)(c.binOffset, out->size(), out->data());
             return true;
         }
-        if (!insideFolder(p, c.folder)) {
+        if (!insideFolder(p, c.folder) || !insideFolderResolved(p, c.folder)) {
             if (err) *err += "refused URI outside the model's folder: " + p;
             return false;
         }

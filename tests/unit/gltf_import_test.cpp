@@ -297,6 +297,24 @@ TEST_F(Gltf, UrisThatLeaveTheModelFolderAreRefused) {
         bad.j["buffers"][0]["uri"] = uri;
         expectRefused(writeGltf("escape", bad), {});
     }
+    // Through a symbolic link in the folder, or a linked subfolder, to the file outside: refused too.
+    fs::remove(dir_ / "model" / "link.bin");
+    fs::create_symlink(dir_ / "outside.bin", dir_ / "model" / "link.bin");
+    fs::remove(dir_ / "model" / "linked");
+    fs::create_directory_symlink(dir_, dir_ / "model" / "linked");
+    for (const std::string& uri : {std::string("link.bin"), std::string("linked/outside.bin")}) {
+        Doc bad;
+        bad.j["buffers"][0]["uri"] = uri;
+        expectRefused(writeGltf("escape_link", bad), {});
+    }
+    // A symbolic link loop and a 300-character name are refusals (InputError), not exceptions.
+    fs::remove(dir_ / "model" / "loop.bin");
+    fs::create_symlink("loop.bin", dir_ / "model" / "loop.bin");
+    for (const std::string& uri : {std::string("loop.bin"), std::string(300, 'a') + ".bin"}) {
+        Doc bad;
+        bad.j["buffers"][0]["uri"] = uri;
+        expectRefused(writeGltf("odd_uri", bad), {});
+    }
     // The same buffer inside the folder is fine.
     std::ofstream(dir_ / "model" / "inside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
     Doc ok;
