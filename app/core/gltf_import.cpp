@@ -57,6 +57,9 @@ bool insideFolderResolved(const std::string& p, const fs::path& root) {
     return !rel.empty() && *rel.begin() != "..";
 }
 
+// At most this many vertices after every node instance is baked (about 1.2 GB of positions and normals).
+constexpr std::size_t kMaxBakedVertices = 50000000;
+
 class GltfReader {
 public:
     GltfReader(const std::string& path, const tinygltf::Model& model, GltfInfo& info)
@@ -361,8 +364,16 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         mesh_.positions = std::move(positions);
         mesh_.normals = std::move(normals);
     } else {
-        mesh_.positions.reserve(mesh_.positions.size() + positions.size());
-        mesh_.normals.reserve(mesh_.normals.size() + positions.size());
+        // Room for this primitive, growing geometrically: an exact reserve per primitive copied the
+        // whole mesh every time (quadratic in the number of node instances).
+        const std::size_t needed = mesh_.positions.size() + positions.size();
+        // Every instance is baked: the vertices the file asks for, not its size, set the memory.
+        if (needed > kMaxBakedVertices)
+            fail(where, "the scene bakes to more than " + std::to_string(kMaxBakedVertices) + " vertices");
+        if (needed > mesh_.positions.capacity()) {
+            mesh_.positions.reserve(std::max(needed, 2 * mesh_.positions.capacity()));
+            mesh_.normals.reserve(std::max(needed, 2 * mesh_.normals.capacity()));
+        }
         for (std::size_t i = 0; i < positions.size(); ++i) {
             mesh_.positions.push_back(glm::vec3(world * glm::vec4(positions[i], 1.0f)));
             const glm::vec3 n = nrmWorld * normals[i];
@@ -401,6 +412,9 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     info_.triangles += (mesh_.indices.size() - firstIndex) / 3;
 }
 
+// Every node drawn is a copy of its meshes in the baked mesh: at most this many, whatever the file's size.
+constexpr int kMaxNodeInstances = 1000000;
+
 void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
     if (ni < 0 || std::size_t(ni) >= model_.nodes.size()) fail("node " + std::to_string(ni), "does not exist");
     if (depth > 256) fail("node " + std::to_string(ni), "node hierarchy deeper than 256 (a cycle?)");
@@ -417,6 +431,10 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         if (n.scale.size() == 3) local = glm::scale(local, glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
     }
     const glm::mat4 world = parent * local;
+    // The depth limit does not bound the work: a child listed twice at each of 40 levels is 2^40 visits.
+    if (info_.nodes >= kMaxNodeInstances)
+        fail("node " + std::to_string(ni), "more than " + std::to_string(kMaxNodeInstances) +
+                                               " node instances in the scene (children listed many times?)");
     info_.nodes += 1;
     if (n.mesh >= 0) {
         if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");

@@ -288,6 +288,17 @@ TEST_F(Gltf, Base64BuffersDecodeWithEveryPadding) {
     expectRefused(writeGltf("wrong_size", wrongSize), {});
 }
 
+// Each node lists the next one twice, 40 levels deep: 2^40 instances from a file of a few kB. Refused
+// at the instance limit in well under a second (it ran for minutes under the depth limit alone).
+TEST_F(Gltf, ChildrenListedManyTimesAreBoundedByTheInstanceCount) {
+    Doc d;
+    json nodes = json::array();
+    for (int i = 0; i < 40; ++i) nodes.push_back({{"children", {i + 1, i + 1}}});
+    nodes.push_back({{"mesh", 0}});
+    d.j["nodes"] = nodes;
+    expectRefused(writeGltf("doubling", d), {"node instances"});
+}
+
 TEST_F(Gltf, UrisThatLeaveTheModelFolderAreRefused) {
     Doc d;
     std::ofstream(dir_ / "outside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
