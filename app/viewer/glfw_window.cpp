@@ -108,7 +108,6 @@ float GlfwWindow::contentScale() const {
 
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
-void GlfwWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 void GlfwWindow::pollEvents() { glfwPollEvents(); }
 void GlfwWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }

@@ -39,7 +39,6 @@ public:
     float contentScale() const;                           // the monitor's UI scale (1 on a plain X server)
     bool shouldClose() const;
     void requestClose();
-    void cancelClose();
     void pollEvents();
     // Sleeps until an event arrives or `timeoutSeconds` pass (render on demand: no CPU while idle).
     void waitEvents(double timeoutSeconds);

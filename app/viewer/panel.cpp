@@ -12,6 +12,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -455,12 +456,9 @@ namespace {
 
 // The pane's words: what differs between panes, the way the lecture names it.
 std::string shadingName(ShadingMode m) {
-    switch (m) {
-    case ShadingMode::Flat: return "Flat";
-    case ShadingMode::Gouraud: return "Gouraud";
-    case ShadingMode::Phong: return "Phong";
-    }
-    return "";
+    std::string name = toString(m);  // "flat" -> "Flat": a pane label starts a sentence
+    name[0] = char(std::toupper(static_cast<unsigned char>(name[0])));
+    return name;
 }
 
 const char* lobeName(ReflectionModel r) { return r == ReflectionModel::BlinnPhong ? "Blinn-Phong lobe" : "Phong lobe"; }
@@ -560,8 +558,6 @@ void drawCaption(const Scene& scene, const std::string& counter, const CaptionLa
                       IM_COL32(200, 200, 200, 255), counter.c_str());
     draw->PopClipRect();
 }
-
-float statusStripHeight() { return std::ceil(ImGui::GetFontSize() * 1.5f); }
 
 void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
     if (strip.height <= 0.0f) return;

@@ -93,7 +93,6 @@ CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, floa
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 
 // The status strip above the view: frame time, FPS, triangles, GL renderer, progressive passes.
-float statusStripHeight();
 void drawStatusStrip(const PanelStatus& status, const UiRect& strip);
 
 // The last message over the bottom of the 3D view (where the lecturer looks), red for an error.

@@ -94,14 +94,19 @@ void SceneDocument::save(const std::string& path) const {
     writeFileAtomic(path, [&](std::FILE* f) { return std::fwrite(text.data(), 1, text.size(), f) == text.size(); });
 }
 
+// Framing and the clip planes ask for it every frame; walking every vertex of a large model each time
+// is kept for when the geometry or an object's transform changed.
 BoundingSphere SceneDocument::bounds() const {
-    std::vector<const Mesh*> meshes;
     std::vector<glm::mat4> transforms;
-    for (std::size_t i = 0; geometry_ && i < geometry_->meshes.size() && i < scene_.objects.size(); ++i) {
-        meshes.push_back(&geometry_->meshes[i]);
+    for (std::size_t i = 0; geometry_ && i < geometry_->meshes.size() && i < scene_.objects.size(); ++i)
         transforms.push_back(worldFromObject(scene_.objects[i].transform));
-    }
-    return worldBounds(meshes, transforms);
+    if (geometry_ && boundsGeometry_.lock() == geometry_ && boundsTransforms_ == transforms) return boundsCache_;
+    std::vector<const Mesh*> meshes;
+    for (std::size_t i = 0; i < transforms.size(); ++i) meshes.push_back(&geometry_->meshes[i]);
+    boundsCache_ = worldBounds(meshes, transforms);
+    boundsGeometry_ = geometry_;
+    boundsTransforms_ = std::move(transforms);
+    return boundsCache_;
 }
 
 float SceneDocument::paneAspect(int width, int height) const {

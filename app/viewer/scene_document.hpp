@@ -84,6 +84,11 @@ private:
     Framing framing_ = Framing::Home;
     float homeAspect_ = 1.0f;  // the pane aspect the home camera was made for (the file's size)
     float labelInset_ = 0.0f;
+    // bounds() of this geometry with these transforms. Weak: a rebuilt geometry may reuse a freed one's
+    // address, an expired pointer cannot be mistaken for it.
+    mutable BoundingSphere boundsCache_;
+    mutable std::weak_ptr<const SceneGeometry> boundsGeometry_;
+    mutable std::vector<glm::mat4> boundsTransforms_;
     bool homeFits_ = true;     // the home camera shows the model's whole height (framesWholeModel)
 };
 

@@ -39,7 +39,7 @@ std::unique_ptr<Renderer> makeRenderer(const ShaderLibrary& shaders) {
 // grows with the UI scale up to half the window, so the view keeps at least half of it.
 constexpr float kPanelEms = 30.0f;
 constexpr float kFontPixels = 16.0f;
-// The status strip above the view, in font heights (statusStripHeight()).
+// The status strip above the view, in font heights.
 constexpr float kStripEms = 1.5f;
 // How long a message stays over the view (an error longer), in seconds.
 constexpr double kMessageSeconds = 5.0, kErrorSeconds = 12.0;
