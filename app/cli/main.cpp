@@ -5,6 +5,8 @@
 #include "core/file_io.hpp"
 #include "core/gltf_import.hpp"
 #include "core/image.hpp"
+#include "core/memory_budget.hpp"
+#include "core/message.hpp"
 #include "core/plot_image.hpp"
 #include "core/probe.hpp"
 #include "core/ray_cast.hpp"
@@ -74,15 +76,23 @@ int runPlaylist(const Options& options, const std::string& shaderDir, const Shad
     const SceneAdjust adjust = [&options](Scene& s) { applyOverrides(s, options); };
     std::vector<Preset> presets = loadPlaylist(*options.playlist, adjust);
     if (options.output) {
-        createOutputFolder(*options.output, "--output");
         std::vector<Scene> scenes;
         for (const Preset& p : presets) scenes.push_back(p.scene);
+        // Every preset rendered before any file is written: a model that fails to load in the last
+        // preset leaves the folder as it was (the frames wait in memory, within the budget).
+        std::vector<Image> frames(presets.size());
+        std::uint64_t kept = 0;  // every frame's pixels (a caption strip adds a little)
+        for (const Scene& s : scenes) kept += 4 * std::uint64_t(s.width) * std::uint64_t(s.height);
         renderScenesHeadless(scenes, shaders, backend, [&](std::size_t i, Image image) {
             const Preset& p = presets[i];
-            const std::string path = (std::filesystem::path(*options.output) / (p.name + ".png")).string();
-            writePng(path, options.captions ? withCaptionStrip(image, presetTitle(p), p.scene.caption) : image);
+            frames[i] = options.captions ? withCaptionStrip(image, presetTitle(p), p.scene.caption) : std::move(image);
+        }, headlessMsaa(options), kept);
+        createOutputFolder(*options.output, "--output");
+        for (std::size_t i = 0; i < presets.size(); ++i) {
+            const std::string path = (std::filesystem::path(*options.output) / (presets[i].name + ".png")).string();
+            writePng(path, frames[i]);
             if (options.verbose) std::cerr << "shadelab: wrote " << path << "\n";
-        }, headlessMsaa(options));
+        }
         return 0;
     }
     Scene first = presets.front().scene;
@@ -97,6 +107,7 @@ int runPlaylist(const Options& options, const std::string& shaderDir, const Shad
 
 int run(const std::vector<std::string>& args) {
     const Options options = parseOptions(args);
+    setMemoryBudget(options.maxMemory);
     if (options.help) {
         std::cout << usage();
         return 0;
@@ -132,7 +143,7 @@ int run(const std::vector<std::string>& args) {
         for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
             const GltfInfo& info = gltfInfo[i];
             const std::string& path = drawn.objects[i].mesh.resolvedPath;
-            for (const std::string& w : info.warnings) std::cerr << "shadelab: warning: " << path << ": " << w << "\n";
+            for (const std::string& w : info.warnings) std::cerr << oneLine("shadelab: warning: " + path + ": " + w) << "\n";
             if (options.verbose && drawn.objects[i].mesh.type == MeshSpec::Type::Gltf) {
                 std::cerr << "shadelab: " << path << ": " << info.triangles << " triangles, " << info.generatedNormals
                           << " generated normals";
@@ -234,13 +245,18 @@ int main(int argc, char** argv) {
     try {
         return shadelab::run(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const shadelab::InputError& e) {
-        std::cerr << "shadelab: " << e.what() << "\n";
+        std::cerr << "shadelab: " << shadelab::oneLine(e.what()) << "\n";
         return 2;
     } catch (const shadelab::ShaderError& e) {
-        std::cerr << "shadelab: " << e.what() << "\n";
+        // The compiler's log is lines of its own: joined with "; " (the viewer shows them as lines).
+        std::string log = e.what();
+        while (!log.empty() && log.back() == '\n') log.pop_back();
+        for (std::size_t at = 0; (at = log.find('\n', at)) != std::string::npos;)
+            log.replace(at, 1, at > 0 && log[at - 1] == ':' ? " " : "; ");
+        std::cerr << "shadelab: " << shadelab::oneLine(log) << "\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "shadelab: " << e.what() << "\n";
+        std::cerr << "shadelab: " << shadelab::oneLine(e.what()) << "\n";
         return 1;
     }
 }

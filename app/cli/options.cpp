@@ -1,6 +1,8 @@
 #include "cli/options.hpp"
 
 #include "core/error.hpp"
+#include "core/memory_budget.hpp"
+#include "core/message.hpp"
 #include "core/file_io.hpp"
 #include "core/plot_image.hpp"
 #include "core/scene_json.hpp"
@@ -20,14 +22,14 @@ float parseFloat(const std::string& flag, const std::string& v) {
     char* end = nullptr;
     const float x = std::strtof(v.c_str(), &end);
     if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(x))
-        throw InputError(flag + ": \"" + v + "\" is not a number");
+        throw InputError(flag + ": \"" + quoteInput(v) + "\" is not a number");
     return x;
 }
 
 int parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
     char* end = nullptr;
     const long x = std::strtol(v.c_str(), &end, 10);
-    if (v.empty() || end != v.c_str() + v.size()) throw InputError(flag + ": \"" + v + "\" is not an integer");
+    if (v.empty() || end != v.c_str() + v.size()) throw InputError(flag + ": \"" + quoteInput(v) + "\" is not an integer");
     if (x < lo || x > hi)
         throw InputError(flag + ": " + v + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
     return int(x);
@@ -40,7 +42,7 @@ E parseChoice(const std::string& flag, const std::string& v, const std::pair<con
         if (v == o.first) return o.second;
         allowed += std::string(allowed.empty() ? "" : ", ") + o.first;
     }
-    throw InputError(flag + ": unknown value \"" + v + "\" (expected one of " + allowed + ")");
+    throw InputError(flag + ": unknown value \"" + quoteInput(v) + "\" (expected one of " + allowed + ")");
 }
 
 }  // namespace
@@ -112,7 +114,7 @@ Options parseOptions(const std::vector<std::string>& args) {
             const std::string v = next();
             const std::size_t comma = v.find(',');
             if (comma == std::string::npos)
-                throw InputError(arg + ": expected two shading modes A,B, e.g. gouraud,phong (got \"" + v + "\")");
+                throw InputError(arg + ": expected two shading modes A,B, e.g. gouraud,phong (got \"" + quoteInput(v) + "\")");
             o.diffA = parseChoice(arg, v.substr(0, comma), kShading);
             o.diffB = parseChoice(arg, v.substr(comma + 1), kShading);
         }
@@ -149,7 +151,7 @@ Options parseOptions(const std::vector<std::string>& args) {
                                  [&](const char* s) { return name == s; }) == std::end(kPanelSections)) {
                     std::string allowed;
                     for (const char* s : kPanelSections) allowed += std::string(allowed.empty() ? "" : ", ") + s;
-                    throw InputError(arg + ": unknown section \"" + name + "\" (expected some of " + allowed + ")");
+                    throw InputError(arg + ": unknown section \"" + quoteInput(name) + "\" (expected some of " + allowed + ")");
                 }
                 sections.push_back(name);
             }
@@ -161,13 +163,13 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--backend") {
             o.backend = next();
             if (o.backend != "auto" && o.backend != "osmesa" && o.backend != "egl")
-                throw InputError(arg + ": unknown value \"" + o.backend + "\" (expected one of auto, osmesa, egl)");
+                throw InputError(arg + ": unknown value \"" + quoteInput(o.backend) + "\" (expected one of auto, osmesa, egl)");
         }
         else if (arg == "--probe") {
             const std::string v = next();
             const std::size_t comma = v.find(',');
             if (comma == std::string::npos)
-                throw InputError(arg + ": expected the pixel as X,Y, e.g. 640,360 (got \"" + v + "\")");
+                throw InputError(arg + ": expected the pixel as X,Y, e.g. 640,360 (got \"" + quoteInput(v) + "\")");
             const int x = parseInt(arg, v.substr(0, comma), 0, kMaxImageSide - 1);  // x first: it is named first
             o.probe = glm::ivec2(x, parseInt(arg, v.substr(comma + 1), 0, kMaxImageSide - 1));
         }
@@ -178,6 +180,13 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--msaa") {
             static const std::pair<const char*, int> kSamples[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}};
             o.msaa = parseChoice(arg, next(), kSamples);
+        }
+        else if (arg == "--max-memory") {
+            const std::string v = next();
+            const auto bytes = parseByteSize(v);
+            if (!bytes) throw InputError(arg + ": \"" + quoteInput(v) + "\" is not a size (e.g. 2G, 512M)");
+            if (*bytes < (std::uint64_t(64) << 20)) throw InputError(arg + ": at least 64M");
+            o.maxMemory = *bytes;
         }
         else if (arg == "--screenshot") o.screenshot = next();
         else if (arg == "--screenshot-view") o.screenshotView = next();
@@ -205,7 +214,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--size") {
             const std::string v = next();
             const std::size_t x = v.find('x');
-            if (x == std::string::npos) throw InputError(arg + ": expected WIDTHxHEIGHT, e.g. 1280x720 (got \"" + v + "\")");
+            if (x == std::string::npos) throw InputError(arg + ": expected WIDTHxHEIGHT, e.g. 1280x720 (got \"" + quoteInput(v) + "\")");
             const int w = parseInt(arg, v.substr(0, x), -1000000000, 1000000000);
             const int h = parseInt(arg, v.substr(x + 1), -1000000000, 1000000000);
             checkImageSize(w, h, arg);
@@ -378,6 +387,8 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           off; the driver may round up, and caps it at its maximum). --output and
                           --benchmark default to 1, pixel-exact with the golden images; the
                           viewer to 4 (a software renderer: the still view only), --frames runs to 1
+  --max-memory SIZE       refuse a --output, --sweep or --playlist that needs more memory than SIZE
+                          (K, M, G: e.g. 2G; default half of the machine's memory)
   --shader-dir DIR        read GLSL files from DIR when present (default: the checkout's shaders/
                           when it exists, else the built-in copies)
   --info                  print what was loaded (meshes, triangles, bounds, normals) and exit

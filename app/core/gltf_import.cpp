@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/json_depth.hpp"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -72,7 +73,7 @@ private:
         throw InputError(path_ + ": " + where + ": " + what);
     }
 
-    // A checked view of an accessor: element i, component c, as a float (normalized as the spec says).
+    // A checked view of an accessor's elements in its buffer (or materialised, when it is sparse).
     struct View {
         const unsigned char* base = nullptr;
         std::size_t stride = 0;
@@ -80,11 +81,13 @@ private:
         int components = 0;
         bool normalized = false;
         std::size_t count = 0;
-        std::vector<float> sparseValues;  // filled when the accessor is sparse: count * components floats
+        // A sparse accessor's elements, materialised in the accessor's own format (base values or
+        // zeros, the sparse ones substituted); `base` points into it. Integers stay integers.
+        std::shared_ptr<std::vector<unsigned char>> materialised;
     };
     View view(int accessorIndex, const std::string& where, const std::vector<int>& allowedTypes,
               const std::vector<int>& allowedComponentTypes) const;
-    static float component(const View& v, std::size_t i, int c);
+    static std::uint32_t unsignedInteger(const View& v, std::size_t i);  // a SCALAR of an unsigned type
     // All elements of a float VEC3 accessor (POSITION, NORMAL): memcpy per element, not per component.
     static std::vector<glm::vec3> readVec3(const View& v);
     std::vector<std::uint32_t> indices(int accessorIndex, std::size_t vertexCount, const std::string& where) const;
@@ -98,6 +101,7 @@ private:
     const tinygltf::Model& model_;
     GltfInfo& info_;
     Mesh mesh_;
+    int currentNode_ = -1;  // the node whose meshes addPrimitive is baking
 };
 
 void GltfReader::checkRange(int bvIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
@@ -150,13 +154,20 @@ GltfReader::View GltfReader::view(int ai, const std::string& where, const std::v
     } else if (!a.sparse.isSparse) {
         fail(name, "has neither a bufferView nor sparse values");
     }
+    if (a.bufferView < 0) {
+        // Sparse values over zeros: the count is backed by no bytes. It may not exceed the bytes the
+        // file's buffers hold (a real one, a morph target's deltas, matches a mesh stored beside it).
+        std::size_t present = 0;
+        for (const tinygltf::Buffer& b : model_.buffers) present += b.data.size();
+        if (v.count > std::max<std::size_t>(present, std::size_t(1) << 20))
+            fail(name, "sparse accessor of " + std::to_string(v.count) + " elements without a bufferView: more than the " +
+                           std::to_string(present) + " bytes of the file's buffers");
+    }
     if (a.sparse.isSparse) {
-        // Materialise: start from the base values (or zeros) and substitute the sparse ones.
-        std::vector<float> values(v.count * std::size_t(v.components), 0.0f);
-        if (v.base)  // read through `v` while its sparseValues is still empty, i.e. from the buffer
-            for (std::size_t i = 0; i < v.count; ++i)
-                for (int c = 0; c < v.components; ++c) values[i * std::size_t(v.components) + std::size_t(c)] = component(v, i, c);
-        v.sparseValues = std::move(values);
+        // Materialise: the base values (or zeros), then the sparse ones written over them, byte for byte.
+        auto bytes = std::make_shared<std::vector<unsigned char>>(v.count * elementSize, 0);
+        if (v.base)
+            for (std::size_t i = 0; i < v.count; ++i) std::memcpy(bytes->data() + i * elementSize, v.base + i * v.stride, elementSize);
         const std::size_t n = std::size_t(a.sparse.count);
         if (a.sparse.count < 0 || n > v.count) fail(name, "sparse count out of range");
         View idx;
@@ -169,25 +180,25 @@ GltfReader::View GltfReader::view(int ai, const std::string& where, const std::v
             fail(name, "sparse indices must be unsigned integers");
         checkRange(a.sparse.indices.bufferView, std::size_t(a.sparse.indices.byteOffset), std::size_t(idxSize),
                    std::size_t(idxSize), n, name + " sparse indices", &idx.stride, &idx.base);
-        View val = v;
-        val.sparseValues.clear();
+        std::size_t valuesStride = 0;
+        const unsigned char* values = nullptr;
         checkRange(a.sparse.values.bufferView, std::size_t(a.sparse.values.byteOffset), elementSize, elementSize, n,
-                   name + " sparse values", &val.stride, &val.base);
+                   name + " sparse values", &valuesStride, &values);
         for (std::size_t k = 0; k < n; ++k) {
-            const auto target = std::size_t(component(idx, k, 0));
+            const std::uint32_t target = unsignedInteger(idx, k);
             if (target >= v.count) fail(name, "sparse index " + std::to_string(target) + " out of range");
-            for (int c = 0; c < v.components; ++c)
-                v.sparseValues[target * std::size_t(v.components) + std::size_t(c)] = component(val, k, c);
+            std::memcpy(bytes->data() + std::size_t(target) * elementSize, values + k * valuesStride, elementSize);
         }
+        v.materialised = std::move(bytes);
+        v.base = v.materialised->data();
+        v.stride = elementSize;
     }
     return v;
 }
 
 std::vector<glm::vec3> GltfReader::readVec3(const View& v) {
     std::vector<glm::vec3> out(v.count);
-    if (!v.sparseValues.empty()) {
-        std::memcpy(out.data(), v.sparseValues.data(), v.count * sizeof(glm::vec3));
-    } else if (v.stride == sizeof(glm::vec3)) {
+    if (v.stride == sizeof(glm::vec3)) {
         if (v.count) std::memcpy(out.data(), v.base, v.count * sizeof(glm::vec3));
     } else {
         for (std::size_t i = 0; i < v.count; ++i) std::memcpy(&out[i], v.base + i * v.stride, sizeof(glm::vec3));
@@ -195,39 +206,20 @@ std::vector<glm::vec3> GltfReader::readVec3(const View& v) {
     return out;
 }
 
-float GltfReader::component(const View& v, std::size_t i, int c) {
-    if (!v.sparseValues.empty()) return v.sparseValues[i * std::size_t(v.components) + std::size_t(c)];
+std::uint32_t GltfReader::unsignedInteger(const View& v, std::size_t i) {
     const unsigned char* p = v.base + i * v.stride;
     switch (v.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-        float f;
-        std::memcpy(&f, p + 4 * c, 4);
-        return f;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-        const float x = float(p[c]);
-        return v.normalized ? x / 255.0f : x;
-    }
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-        const float x = float(static_cast<signed char>(p[c]));
-        return v.normalized ? std::max(x / 127.0f, -1.0f) : x;
-    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
         std::uint16_t u;
-        std::memcpy(&u, p + 2 * c, 2);
-        return v.normalized ? float(u) / 65535.0f : float(u);
+        std::memcpy(&u, p, 2);
+        return u;
     }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-        std::int16_t s;
-        std::memcpy(&s, p + 2 * c, 2);
-        return v.normalized ? std::max(float(s) / 32767.0f, -1.0f) : float(s);
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+    default: {
         std::uint32_t u;
-        std::memcpy(&u, p + 4 * c, 4);
-        return float(u);
+        std::memcpy(&u, p, 4);
+        return u;
     }
-    default: return 0.0f;
     }
 }
 
@@ -240,9 +232,7 @@ std::vector<std::uint32_t> GltfReader::indices(int ai, std::size_t vertexCount, 
                                   : v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 0xffffu
                                                                                               : 0xffffffffu;
     // Widen to 32 bits first (a loop per type, so the compiler vectorises it), then check.
-    if (!v.sparseValues.empty()) {
-        for (std::size_t i = 0; i < v.count; ++i) out[i] = std::uint32_t(v.sparseValues[i]);
-    } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+    if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
         for (std::size_t i = 0; i < v.count; ++i) out[i] = v.base[i * v.stride];
     } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
         for (std::size_t i = 0; i < v.count; ++i) {
@@ -346,7 +336,11 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
             fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
                  "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(pos.count));
         normals = readVec3(nv);
-        for (glm::vec3& n : normals) {
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            glm::vec3& n = normals[i];
+            if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+                fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
+                     "normal " + std::to_string(i) + " is not finite");
             n = safeNormalize(n);
         }
     } else {
@@ -375,7 +369,13 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
             mesh_.normals.reserve(std::max(needed, 2 * mesh_.normals.capacity()));
         }
         for (std::size_t i = 0; i < positions.size(); ++i) {
-            mesh_.positions.push_back(glm::vec3(world * glm::vec4(positions[i], 1.0f)));
+            const glm::vec3 baked = glm::vec3(world * glm::vec4(positions[i], 1.0f));
+            // Finite positions times a finite matrix can still overflow.
+            if (!std::isfinite(baked.x) || !std::isfinite(baked.y) || !std::isfinite(baked.z))
+                fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
+                     "vertex " + std::to_string(i) + " is not finite after node " + std::to_string(currentNode_) +
+                         "'s transform");
+            mesh_.positions.push_back(baked);
             const glm::vec3 n = nrmWorld * normals[i];
             mesh_.normals.push_back(safeNormalize(n));
         }
@@ -431,6 +431,11 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         if (n.scale.size() == 3) local = glm::scale(local, glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
     }
     const glm::mat4 world = parent * local;
+    // A translation of 1e39 is +inf as a float; finite scales can multiply past the float range.
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(world[c][r]))
+                fail("node " + std::to_string(ni), "its transform (with its parents') is not finite");
     // The depth limit does not bound the work: a child listed twice at each of 40 levels is 2^40 visits.
     if (info_.nodes >= kMaxNodeInstances)
         fail("node " + std::to_string(ni), "more than " + std::to_string(kMaxNodeInstances) +
@@ -439,6 +444,7 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
     if (n.mesh >= 0) {
         if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
         const tinygltf::Mesh& m = model_.meshes[std::size_t(n.mesh)];
+        currentNode_ = ni;
         for (std::size_t k = 0; k < m.primitives.size(); ++k)
             addPrimitive(m.primitives[k], world, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
     }
@@ -719,6 +725,7 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
 Mesh parseGlb(std::uint64_t size, const ByteReader& read, const std::string& path, const fs::path& folder,
               GltfInfo* infoOut, std::string* release = nullptr) {
     const GlbLayout layout = splitGlb(size, read, path);
+    checkJsonDepth(layout.json, path);
     LoadContext context;
     context.folder = folder;
     std::uint64_t binLength = 0;
@@ -771,6 +778,7 @@ Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::
         return parseGlb(bytes.size(), read, label, folder, infoOut, &bytes);
     }
     if (bytes.size() > std::uint64_t(~0u)) throw InputError(label + ": larger than 4 GiB");
+    checkJsonDepth(bytes, label);
     LoadContext context;
     context.folder = folder;
     std::string json = decodeDataUris(std::move(bytes), context, label);

@@ -6,20 +6,38 @@
 #include <png.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
 namespace shadelab {
 
+namespace {
+// libpng reports through these instead of printing: a refusal stays one line (a full disk was
+// "libpng error: Write Error" on stderr before shadelab's own message).
+struct PngErrors {
+    std::string message;
+};
+[[noreturn]] void pngError(png_structp png, png_const_charp message) {
+    static_cast<PngErrors*>(png_get_error_ptr(png))->message = message;
+    png_longjmp(png, 1);
+}
+void pngWarning(png_structp, png_const_charp) {}
+}  // namespace
+
 void writePng(const std::string& path, const Image& img, int level) {
     writeFileAtomic(path, [&](std::FILE* f) {
-        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+        PngErrors errors;
+        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, pngError, pngWarning);
         if (!png) return false;
         png_infop info = png_create_info_struct(png);
         if (!info || setjmp(png_jmpbuf(png))) {
             png_destroy_write_struct(&png, &info);
-            return false;
+            // A stream error (ENOSPC, EIO) says more than libpng's "Write Error".
+            throw InputError(path + ": cannot write: " +
+                             (std::ferror(f) && errno ? std::string(std::strerror(errno)) : "libpng: " + errors.message));
         }
         png_init_io(png, f);
         png_set_compression_level(png, level);

@@ -2,6 +2,8 @@
 
 #include "core/embedded.hpp"
 #include "core/error.hpp"
+#include "core/message.hpp"
+#include "core/json_depth.hpp"
 #include "core/file_io.hpp"
 
 #include <glm/geometric.hpp>
@@ -52,7 +54,7 @@ private:
         for (auto it = j.begin(); it != j.end(); ++it) {
             bool known = false;
             for (const char* a : allowed) known = known || it.key() == a;
-            if (!known) fail(join(path, it.key()), "unknown field");
+            if (!known) fail(join(path, quoteInput(it.key())), "unknown field");
         }
     }
 
@@ -140,7 +142,7 @@ private:
                 out = opt.second;
                 return;
             }
-        fail(p, "unknown value \"" + j.get<std::string>() + "\" (expected one of " + allowed + ")");
+        fail(p, "unknown value \"" + quoteInput(j.get<std::string>()) + "\" (expected one of " + allowed + ")");
     }
 
     MeshSpec mesh(const json& j, const std::string& path) const;
@@ -450,6 +452,7 @@ bool isIdentity(const Transform& t) {
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& fileLabel, const std::string& baseDir) {
+    checkJsonDepth(text, fileLabel);
     json root;
     try {
         root = json::parse(text);
@@ -570,7 +573,7 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
         } catch (const std::exception&) {
             used = 0;
         }
-        if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + p + "\" is not an integer");
+        if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + quoteInput(p) + "\" is not an integer");
         if (v < lo || v > hi)
             throw InputError(opt + ": " + p + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
         out = static_cast<int>(v);
@@ -615,7 +618,7 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
     std::vector<std::string> parts;
     std::stringstream ss(text);
     for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
-    auto fail = [&](const std::string& what) -> void { throw InputError(opt + ": " + what + " (in \"" + text + "\")"); };
+    auto fail = [&](const std::string& what) -> void { throw InputError(opt + ": " + what + " (in \"" + quoteInput(text) + "\")"); };
     if (parts.size() < 2) fail("expected TYPE:X,Y,Z[:KEY=VALUE...], e.g. point:1,2,3:intensity=2");
     auto numbers = [&](const std::string& key, const std::string& v, std::size_t count, char sep, double lo,
                        double hi) {
@@ -625,7 +628,7 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
             char* end = nullptr;
             const float x = std::strtof(item.c_str(), &end);
             if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
-                fail(key + ": \"" + item + "\" is not a number");
+                fail(key + ": \"" + quoteInput(item) + "\" is not a number");
             if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + fmtNumber(lo) + ".." + fmtNumber(hi) + ")");
             out.push_back(x);
         }
@@ -642,7 +645,7 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
     if (type == "point") l.type = LightType::Point;
     else if (type == "directional") l.type = LightType::Directional;
     else if (type == "area") l.type = LightType::Area;
-    else fail("unknown light type \"" + type + "\" (expected point, directional or area)");
+    else fail("unknown light type \"" + quoteInput(type) + "\" (expected point, directional or area)");
     const glm::vec3 where = vec3Of(type, parts[1], -1e6, 1e6);
     if (l.type == LightType::Directional) {
         if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
@@ -660,13 +663,13 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
             l.twoSided = true;
             continue;
         }
-        if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + kv + "\"");
+        if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + quoteInput(kv) + "\"");
         if (key == "color") l.color = vec3Of(key, value, 0.0, 1.0);
         else if (key == "intensity") l.intensity = numbers(key, value, 1, ',', 0.0, 1e9)[0];
         else if (key == "attenuation" && positional) {
             if (value == "none") l.attenuation = Attenuation::None;
             else if (value == "inverse-square") l.attenuation = Attenuation::InverseSquare;
-            else fail("attenuation: unknown value \"" + value + "\" (expected none or inverse-square)");
+            else fail("attenuation: unknown value \"" + quoteInput(value) + "\" (expected none or inverse-square)");
         } else if (key == "range" && positional) {
             l.range = numbers(key, value, 1, ',', 1e-4, 1e9)[0];
             rangeGiven = true;
@@ -681,7 +684,7 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
             if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
             l.samples = {int(n[0]), int(n[1])};
         } else {
-            fail("unknown key \"" + key + "\" for a " + type + " light (" +
+            fail("unknown key \"" + quoteInput(key) + "\" for a " + type + " light (" +
                  (area ? "color, intensity, attenuation, range, normal, size, samples, two-sided"
                        : positional ? "color, intensity, attenuation, range" : "color, intensity") + ")");
         }
@@ -708,7 +711,7 @@ TermView parseTermView(const std::string& text, const std::string& where) {
         char* end = nullptr;
         const long v = std::strtol(n.c_str(), &end, 10);
         if (n.empty() || end != n.c_str() + n.size() || n[0] == '-' || n[0] == '+')
-            throw InputError(prefix + "\"" + n + "\" is not a light index (light:N, N = 0.." +
+            throw InputError(prefix + "\"" + quoteInput(n) + "\" is not a light index (light:N, N = 0.." +
                              std::to_string(kMaxLights - 1) + ")");
         if (v >= kMaxLights)
             throw InputError(prefix + "light index " + n + " is out of range (0.." + std::to_string(kMaxLights - 1) + ")");

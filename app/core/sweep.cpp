@@ -1,6 +1,7 @@
 #include "core/sweep.hpp"
 
 #include "core/error.hpp"
+#include "core/message.hpp"
 #include "core/text.hpp"
 
 #include <cmath>
@@ -39,7 +40,7 @@ Sweep parseSweep(const std::string& text, const std::string& flag) {
     for (const auto& p : kNumeric) names += std::string(names.empty() ? "" : ", ") + p.name;
     for (const auto& p : kNamed) names += std::string(", ") + p.name;
     if (eq == std::string::npos)
-        throw InputError(flag + ": expected PARAMETER=V1,V2,..., e.g. ke=1,8,32,128,512 (got \"" + text + "\")");
+        throw InputError(flag + ": expected PARAMETER=V1,V2,..., e.g. ke=1,8,32,128,512 (got \"" + quoteInput(text) + "\")");
     Sweep s;
     s.parameter = text.substr(0, eq);
     std::stringstream list(text.substr(eq + 1));
@@ -54,9 +55,9 @@ Sweep parseSweep(const std::string& text, const std::string& flag) {
             char* end = nullptr;
             const double x = std::strtod(v.c_str(), &end);
             if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(x))
-                throw InputError(flag + ": " + s.parameter + ": \"" + v + "\" is not a number");
+                throw InputError(flag + ": " + s.parameter + ": \"" + quoteInput(v) + "\" is not a number");
             if (p.integer && x != std::floor(x))
-                throw InputError(flag + ": " + s.parameter + ": \"" + v + "\" is not an integer");
+                throw InputError(flag + ": " + s.parameter + ": \"" + quoteInput(v) + "\" is not an integer");
             if (x < p.lo || x > p.hi) {
                 std::ostringstream range;
                 range << p.lo << ".." << p.hi;
@@ -71,11 +72,11 @@ Sweep parseSweep(const std::string& text, const std::string& flag) {
             bool ok = false;
             std::string allowed;
             for (const std::string& a : p.allowed) ok = ok || v == a, allowed += (allowed.empty() ? "" : ", ") + a;
-            if (!ok) throw InputError(flag + ": " + s.parameter + ": unknown value \"" + v + "\" (expected " + allowed + ")");
+            if (!ok) throw InputError(flag + ": " + s.parameter + ": unknown value \"" + quoteInput(v) + "\" (expected " + allowed + ")");
         }
         return s;
     }
-    throw InputError(flag + ": unknown parameter \"" + s.parameter + "\" (expected one of " + names + ")");
+    throw InputError(flag + ": unknown parameter \"" + quoteInput(s.parameter) + "\" (expected one of " + names + ")");
 }
 
 void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::string& flag) {

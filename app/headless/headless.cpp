@@ -1,5 +1,6 @@
 #include "headless/headless.hpp"
 
+#include "core/memory_budget.hpp"
 #include "render/multisample_target.hpp"
 #include "render/renderer.hpp"
 
@@ -23,10 +24,16 @@ void drawFrame(Renderer& renderer, const Scene& scene, const RenderTarget& targe
     msaa.resolveInto(target);
 }
 
+// "a 1280x720 frame": what the memory messages call one render.
+std::string frameName(const Scene& s) {
+    return "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " frame";
+}
+
 }  // namespace
 
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders,
                      HeadlessBackend backend, int msaaSamples) {
+    checkMemory(estimateFrame(scene, msaaSamples, geometry->triangleCount()), frameName(scene));
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     renderer.setGeometry(std::move(geometry));
@@ -41,6 +48,7 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
 constexpr std::size_t kOneFrameDrawChunk = 250000;
 
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend, int msaaSamples) {
+    checkMemory(estimateFrame(scene, msaaSamples), frameName(scene));  // a model's meshes: once read
     // buildSceneGeometry only reads `scene`; nothing here writes it until the thread is joined.
     auto loading = std::async(std::launch::async, [&scene] { return buildSceneGeometry(scene); });
     std::unique_ptr<HeadlessContext> context;
@@ -68,6 +76,7 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
         throw;
     }
     auto geometry = std::make_shared<SceneGeometry>(loading.get());
+    checkMemory(estimateFrame(scene, msaaSamples, geometry->triangleCount()), frameName(scene));
     frameIfNeeded(scene, *geometry);
     HeadlessFrame frame;
     frame.gltfInfo = geometry->gltfInfo;
@@ -81,8 +90,13 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 }
 
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
-                          const std::function<void(std::size_t, Image)>& done, int msaaSamples) {
+                          const std::function<void(std::size_t, Image)>& done, int msaaSamples, std::uint64_t keptBytes) {
     if (scenes.empty()) return;
+    for (const Scene& s : scenes) {  // before any work: the procedural meshes' part is known
+        MemoryUse use = estimateFrame(s, msaaSamples);
+        use.images = keptBytes;
+        checkMemory(use, frameName(s) + (keptBytes ? " with the other frames kept" : ""));
+    }
     const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
     Renderer renderer(context->getProcAddress(), shaders);
     MultisampleTarget msaa;
@@ -93,7 +107,11 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
         bool same = built && built->objects.size() == s.objects.size();
         for (std::size_t o = 0; same && o < s.objects.size(); ++o) same = built->objects[o].mesh == s.objects[o].mesh;
         if (!same) {
+            geometry.reset();  // the previous meshes go before the next are read
             geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
+            MemoryUse use = estimateFrame(s, msaaSamples, geometry->triangleCount());
+            use.images = keptBytes;
+            checkMemory(use, frameName(s) + (keptBytes ? " with the other frames kept" : ""));
             renderer.setGeometry(geometry);
             built = &s;
         }
@@ -123,7 +141,9 @@ Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, c
         }
     std::vector<Image> tiles;
     const auto addTile = [&](std::size_t, Image tile) { tiles.push_back(std::move(tile)); };
-    renderScenesHeadless(scenes, shaders, backend, addTile, msaaSamples);
+    // The tiles are kept, then copied into the sheet: twice their pixels, 4 bytes each.
+    const std::uint64_t kept = 2 * 4 * std::uint64_t(base.width) * std::uint64_t(base.height) * scenes.size();
+    renderScenesHeadless(scenes, shaders, backend, addTile, msaaSamples, kept);
     return contactSheet(tiles, labels, int(columns));
 }
 
@@ -131,6 +151,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
                                                const ShaderLibrary& shaders, HeadlessBackend backend,
                                                int progressiveStride, int msaaSamples) {
+    checkMemory(estimateFrame(scene, msaaSamples, geometry->triangleCount()), frameName(scene));
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));

@@ -37,9 +37,12 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 // Renders each scene in turn on one context (resized when a scene's size differs from the previous
 // one's; programs are kept, geometry is rebuilt only when the meshes differ from the previous scene's)
 // and hands each image to `done` with its index as soon as it is read back, so a long playlist never
-// holds more than one image. A glTF scene without a camera is framed as for --output.
+// holds more than one image. A glTF scene without a camera is framed as for --output. Every scene is
+// checked against the memory budget (core/memory_budget.hpp) with `keptBytes` more for the images the
+// caller keeps, before anything is drawn and again once its models are read.
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
-                          const std::function<void(std::size_t, Image)>& done, int msaaSamples = 1);
+                          const std::function<void(std::size_t, Image)>& done, int msaaSamples = 1,
+                          std::uint64_t keptBytes = 0);
 
 // A sweep sheet (core/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
 // with two sweeps, per value of sweeps[1] (rows), each labelled, rendered on one context. Geometry is

@@ -1,5 +1,7 @@
 #include "render/renderer.hpp"
 
+#include "core/error.hpp"
+
 #include "core/camera.hpp"
 #include "core/lighting.hpp"
 #include "core/vertex_order.hpp"
@@ -133,6 +135,9 @@ unsigned bayerRank(unsigned x, unsigned y, int bits) {
 
 void checkGl(const char* where) {
     const GLenum e = glGetError();
+    if (e == GL_OUT_OF_MEMORY)  // the request was too big for this GL: an input error, like the budget's
+        throw InputError(std::string("the GL ran out of memory in ") + where +
+                         " (ask for less: a smaller --size, fewer shadowed lights or smaller shadow maps)");
     if (e != GL_NO_ERROR) {
         char code[16];
         std::snprintf(code, sizeof code, "0x%04x", e);

@@ -30,7 +30,9 @@ protected:
         fs::create_directories(dir_);
     }
     // Runs shadelab with no display (DISPLAY and WAYLAND_DISPLAY unset), as CI does.
-    RunResult run(const std::vector<std::string>& args) const { return test::runShadelab(args, fs::current_path(), dir_); }
+    RunResult run(const std::vector<std::string>& args, const std::vector<std::string>& env = {}) const {
+        return test::runShadelab(args, fs::current_path(), dir_, env);
+    }
     std::string file(const std::string& name, const std::string& contents) const {
         std::ofstream(dir_ / name) << contents;
         return (dir_ / name).string();
@@ -272,6 +274,68 @@ TEST_F(Cli, FailedRunLeavesAnExistingImageUntouched) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("lights[0].direction"), std::string::npos) << r.err;
     EXPECT_EQ(slurp(path("keep.png")), before);
+}
+
+// Output names of any legal length: the temporary file's name does not grow with the target's.
+TEST_F(Cli, AnOutputNameOf250BytesIsWritten) {
+    const std::string name = std::string(246, 'a') + ".png";
+    const RunResult r = run({"--size", "16x16", "--output", path(name)});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(readPng(path(name)).width, 16);
+    const RunResult again = run({"--size", "16x16", "--output", path(name)}, {"SHADELAB_NO_TMPFILE=1"});
+    EXPECT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3) << "stdout, stderr, the PNG";
+}
+
+// A run stopped by a signal while it writes leaves no temporary file, and the output is either the
+// old one or the new one, whole. With O_TMPFILE nothing has a name until it is complete (SIGKILL
+// too); without it (SHADELAB_NO_TMPFILE) SIGINT and SIGTERM remove the named temporary.
+TEST_F(Cli, ASignalDuringTheWriteLeavesNoTemporaryFile) {
+    const fs::path out = dir_ / "frames";
+    fs::create_directories(out);
+    ASSERT_EQ(run({"--size", "64x64", "--output", (out / "o.png").string()}).exitCode, 0);
+    for (const char* tmpfile : {"", "SHADELAB_NO_TMPFILE=1"})
+        for (const char* signal : {"INT", "TERM", "KILL"})
+            for (const char* after : {"0.6", "1.0", "1.4", "1.8"}) {
+                const std::string cmd = std::string("cd ") + out.string() + " && env " + (*tmpfile ? tmpfile : "") +
+                                        " timeout -s " + signal + " " + after + " " + SHADELAB_EXE +
+                                        " --size 4096x4096 --output o.png >/dev/null 2>&1";
+                std::system(cmd.c_str());
+                SCOPED_TRACE(std::string(tmpfile) + " SIG" + signal + " after " + after + " s");
+                std::vector<std::string> names;
+                for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename().string());
+                if (std::string(signal) == "KILL" && *tmpfile) {
+                    // Nothing can catch SIGKILL: a named temporary may stay; remove it for the next round.
+                    for (const auto& n : names)
+                        if (n != "o.png") fs::remove(out / n);
+                } else {
+                    EXPECT_EQ(names, std::vector<std::string>{"o.png"});
+                }
+                const Image img = readPng((out / "o.png").string());
+                EXPECT_TRUE(img.width == 64 || img.width == 4096) << img.width;
+            }
+}
+
+// A full disk is one line from shadelab (libpng's own "Write Error" line is not printed), exit 2,
+// and the file that was there stays. Needs a small tmpfs: root only.
+TEST_F(Cli, AFullDiskIsOneLineAndKeepsTheOldFile) {
+    const fs::path small = dir_ / "small";
+    fs::create_directories(small);
+    if (std::system(("mount -t tmpfs -o size=64k tmpfs " + small.string() + " 2>/dev/null").c_str()) != 0)
+        GTEST_SKIP() << "cannot mount a tmpfs here (not root?)";
+    ASSERT_EQ(run({"--size", "16x16", "--output", (small / "o.png").string()}).exitCode, 0);
+    const std::string before = slurp(small / "o.png");
+    const RunResult r = run({"--size", "1024x1024", "--output", (small / "o.png").string()});
+    const RunResult named = run({"--size", "1024x1024", "--output", (small / "o.png").string()}, {"SHADELAB_NO_TMPFILE=1"});
+    const std::string after = slurp(small / "o.png");
+    const auto entries = std::distance(fs::directory_iterator(small), fs::directory_iterator());
+    std::system(("umount " + small.string()).c_str());
+    for (const RunResult* x : {&r, &named}) {
+        EXPECT_EQ(x->exitCode, 2) << x->err;
+        EXPECT_EQ(x->err, "shadelab: " + (small / "o.png").string() + ": cannot write: No space left on device\n");
+    }
+    EXPECT_EQ(after, before);
+    EXPECT_EQ(entries, 1);
 }
 
 TEST_F(Cli, BenchmarkReportsEachShadingMode) {

@@ -1,0 +1,2 @@
+void main() { undefined_thing; }
+void other() { also_undefined; }

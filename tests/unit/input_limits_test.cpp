@@ -1,0 +1,103 @@
+// The limits that keep a refusal one short line and a small file from asking for unbounded work:
+// messages quoting the input, JSON nesting measured on the text, the memory budget's estimate.
+#include "core/error.hpp"
+#include "core/json_depth.hpp"
+#include "core/memory_budget.hpp"
+#include "core/mesh.hpp"
+#include "core/message.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace shadelab;
+
+TEST(Message, ControlCharactersAreEscapedAndUtf8Kept) {
+    EXPECT_EQ(escapeControls("a\nb\tc\x1b[31m\x07\x7f"), "a\\nb\\tc\\x1b[31m\\x07\\x7f");
+    EXPECT_EQ(escapeControls("ombr\xc3\xa9" "e \xce\xb1"), "ombr\xc3\xa9" "e \xce\xb1");  // é, α
+    EXPECT_EQ(escapeControls("\xc2\x9b" "2J"), "\\xc2\\x9b2J");  // C1 CSI, as UTF-8: a terminal command
+    EXPECT_EQ(escapeControls("\xff\xc3"), "\\xff\\xc3");             // not UTF-8
+    EXPECT_EQ(escapeControls("\xe0\x80\xaf"), "\\xe0\\x80\\xaf");    // overlong
+}
+
+TEST(Message, QuotedInputIsCutAndSaysHowLongItWas) {
+    EXPECT_EQ(quoteInput("short"), "short");
+    EXPECT_EQ(quoteInput(std::string(1000, 'x'), 10), "xxxxxxxxxx...(1000 bytes)");
+    // A cut never splits a UTF-8 sequence.
+    EXPECT_EQ(quoteInput("aaaaaaaaa\xc3\xa9" "bbb", 10), "aaaaaaaaa...(14 bytes)");
+}
+
+TEST(Message, OneLineKeepsTheStartAndTheEnd) {
+    const std::string long_ = "file.json: malformed JSON: '" + std::string(5'000'000, '7') + "' is too long";
+    const std::string line = oneLine(long_);
+    EXPECT_LE(line.size(), 400u);
+    EXPECT_EQ(line.rfind("file.json: malformed JSON: '777", 0), 0u) << line;
+    EXPECT_NE(line.find("' is too long"), std::string::npos) << line;
+    EXPECT_NE(line.find(" bytes ...] "), std::string::npos) << line;
+    EXPECT_EQ(oneLine("two\nlines"), "two\\nlines");
+}
+
+TEST(JsonDepth, MeasuredOnTheTextOutsideStrings) {
+    EXPECT_EQ(jsonNestingDepth("1"), 0u);
+    EXPECT_EQ(jsonNestingDepth(R"({"a": [1, {"b": []}]})"), 4u);
+    EXPECT_EQ(jsonNestingDepth(R"({"a": "[[[[{{{{", "b": "\"[["})"), 1u);
+    EXPECT_EQ(jsonNestingDepth("[[[[[["), 6u);  // malformed: measured as far as it goes
+    EXPECT_EQ(jsonNestingDepth("]]]}}}["), 1u);
+    const std::string deep = std::string(513, '[') + std::string(513, ']');
+    EXPECT_THROW(checkJsonDepth(deep, "x.json"), InputError);
+    EXPECT_NO_THROW(checkJsonDepth(std::string(512, '[') + std::string(512, ']'), "x.json"));
+}
+
+TEST(MemoryBudget, SizesParseWithBinaryUnits) {
+    EXPECT_EQ(parseByteSize("2G"), std::uint64_t(2) << 30);
+    EXPECT_EQ(parseByteSize("512M"), std::uint64_t(512) << 20);
+    EXPECT_EQ(parseByteSize("1.5GiB"), std::uint64_t(3) << 29);
+    EXPECT_EQ(parseByteSize("4096"), 4096u);
+    EXPECT_EQ(parseByteSize("12Q"), std::nullopt);
+    EXPECT_EQ(parseByteSize("-1G"), std::nullopt);
+    EXPECT_EQ(parseByteSize("G"), std::nullopt);
+    EXPECT_EQ(parseByteSize("1e30T"), std::nullopt);
+}
+
+TEST(MemoryBudget, ProceduralTriangleCountsMatchTheMeshes) {
+    for (const MeshSpec::Type type : {MeshSpec::Type::UvSphere, MeshSpec::Type::IcoSphere, MeshSpec::Type::Torus,
+                                      MeshSpec::Type::Cube, MeshSpec::Type::Plane}) {
+        MeshSpec spec;
+        spec.type = type;
+        spec.planeSubdivisions = 5;
+        EXPECT_EQ(proceduralTriangles(spec), makeProceduralMesh(spec).triangleCount()) << int(type);
+    }
+}
+
+TEST(MemoryBudget, EstimateCountsFramebuffersShadowMapsAndMeshes) {
+    Scene s;
+    s.width = 1000, s.height = 1000;
+    s.objects.front().mesh.type = MeshSpec::Type::Cube;
+    s.layout = Layout::Single;
+    s.shading = ShadingMode::Phong;
+    const MemoryUse plain = estimateFrame(s, 1);
+    EXPECT_EQ(plain.framebuffers, 20'000'000u);
+    EXPECT_EQ(plain.shadowMaps, 0u);
+    EXPECT_GT(estimateFrame(s, 4).framebuffers, plain.framebuffers);
+    s.shadows.enabled = true;
+    s.shadows.mapSize = 1024;
+    s.lights = {Light{}};  // a point light: six maps
+    EXPECT_EQ(estimateFrame(s, 1).shadowMaps, 6u * 1024 * 1024 * 4);
+    EXPECT_EQ(estimateFrame(s, 1, 1'000'000).meshes, 60'000'000u);
+    s.layout = Layout::Compare;  // a flat pane needs vertices of its own
+    EXPECT_GT(estimateFrame(s, 1, 1'000'000).meshes, 60'000'000u);
+
+    setMemoryBudget(std::uint64_t(64) << 20);
+    s.layout = Layout::Single;
+    s.shadows.enabled = false;
+    EXPECT_NO_THROW(checkMemory(estimateFrame(s, 1), "a frame"));
+    s.width = s.height = 4096;
+    try {
+        checkMemory(estimateFrame(s, 1), "a 4096x4096 frame");
+        ADD_FAILURE() << "not refused";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "a 4096x4096 frame needs about 320 MiB (framebuffers 320 MiB), more than the memory "
+                               "budget of 64 MiB (--max-memory)");
+    }
+    setMemoryBudget(std::nullopt);
+    EXPECT_EQ(memoryBudget(), defaultMemoryBudget());
+    EXPECT_GT(defaultMemoryBudget(), std::uint64_t(256) << 20);
+}
