@@ -4,6 +4,7 @@
 #include "core/image.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -300,7 +301,8 @@ TEST_F(Cli, ASignalDuringTheWriteLeavesNoTemporaryFile) {
                 const std::string cmd = std::string("cd ") + out.string() + " && env " + (*tmpfile ? tmpfile : "") +
                                         " timeout -s " + signal + " " + after + " " + SHADELAB_EXE +
                                         " --size 4096x4096 --output o.png >/dev/null 2>&1";
-                std::system(cmd.c_str());
+                const int stopped = std::system(cmd.c_str());  // timeout: 124, or the signal's status
+                (void)stopped;
                 SCOPED_TRACE(std::string(tmpfile) + " SIG" + signal + " after " + after + " s");
                 std::vector<std::string> names;
                 for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename().string());
@@ -319,8 +321,19 @@ TEST_F(Cli, ASignalDuringTheWriteLeavesNoTemporaryFile) {
 // A full disk is one line from shadelab (libpng's own "Write Error" line is not printed), exit 2,
 // and the file that was there stays. Needs a small tmpfs: root only.
 TEST_F(Cli, AFullDiskIsOneLineAndKeepsTheOldFile) {
-    const fs::path small = dir_ / "small";
+    // Outside the test's folder, and unmounted however the test ends: a mount left behind would stop
+    // the next run's SetUp from clearing the folder.
+    const fs::path small = fs::temp_directory_path() / ("shadelab-full-disk-" + std::to_string(::getpid()));
     fs::create_directories(small);
+    struct Unmount {
+        fs::path at;
+        ~Unmount() {
+            const int status = std::system(("umount " + at.string() + " 2>/dev/null").c_str());
+            (void)status;  // not mounted (the test skipped): nothing to undo
+            std::error_code ec;
+            fs::remove_all(at, ec);
+        }
+    } unmount{small};
     if (std::system(("mount -t tmpfs -o size=64k tmpfs " + small.string() + " 2>/dev/null").c_str()) != 0)
         GTEST_SKIP() << "cannot mount a tmpfs here (not root?)";
     ASSERT_EQ(run({"--size", "16x16", "--output", (small / "o.png").string()}).exitCode, 0);
@@ -329,7 +342,6 @@ TEST_F(Cli, AFullDiskIsOneLineAndKeepsTheOldFile) {
     const RunResult named = run({"--size", "1024x1024", "--output", (small / "o.png").string()}, {"SHADELAB_NO_TMPFILE=1"});
     const std::string after = slurp(small / "o.png");
     const auto entries = std::distance(fs::directory_iterator(small), fs::directory_iterator());
-    std::system(("umount " + small.string()).c_str());
     for (const RunResult* x : {&r, &named}) {
         EXPECT_EQ(x->exitCode, 2) << x->err;
         EXPECT_EQ(x->err, "shadelab: " + (small / "o.png").string() + ": cannot write: No space left on device\n");
