@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "core/gltf_extensions.hpp"
 #include "core/json_depth.hpp"
 
 #include <nlohmann/json.hpp>
@@ -21,8 +22,10 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 namespace shadelab {
@@ -90,6 +93,8 @@ private:
     static std::uint32_t unsignedInteger(const View& v, std::size_t i);  // a SCALAR of an unsigned type
     // All elements of a float VEC3 accessor (POSITION, NORMAL): memcpy per element, not per component.
     static std::vector<glm::vec3> readVec3(const View& v);
+    static float scalarAt(const View& v, std::size_t i, int c);  // component c of element i, dequantized
+    std::vector<glm::mat4> instances(int nodeIndex, const tinygltf::Node& n);
     std::vector<std::uint32_t> indices(int accessorIndex, std::size_t vertexCount, const std::string& where) const;
     void checkRange(int bufferViewIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
                     std::size_t count, const std::string& where, std::size_t* strideOut,
@@ -196,12 +201,42 @@ GltfReader::View GltfReader::view(int ai, const std::string& where, const std::v
     return v;
 }
 
+namespace {
+// One integer component as glTF reads it (KHR_mesh_quantization): as it is, or normalized, signed
+// types as max(c / (2^(b-1) - 1), -1) and unsigned as c / (2^b - 1) (glTF 2.0, 3.11).
+template <typename T>
+float dequantize(const unsigned char* p, bool normalized) {
+    T c;
+    std::memcpy(&c, p, sizeof c);
+    if (!normalized) return float(c);
+    constexpr float largest = float(std::numeric_limits<T>::max());
+    return std::max(float(c) / largest, -1.0f);
+}
+
+template <typename T>
+void readVec3As(const unsigned char* base, std::size_t stride, std::size_t count, bool normalized,
+                std::vector<glm::vec3>& out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const unsigned char* p = base + i * stride;
+        out[i] = glm::vec3(dequantize<T>(p, normalized), dequantize<T>(p + sizeof(T), normalized),
+                           dequantize<T>(p + 2 * sizeof(T), normalized));
+    }
+}
+}  // namespace
+
 std::vector<glm::vec3> GltfReader::readVec3(const View& v) {
     std::vector<glm::vec3> out(v.count);
-    if (v.stride == sizeof(glm::vec3)) {
-        if (v.count) std::memcpy(out.data(), v.base, v.count * sizeof(glm::vec3));
-    } else {
-        for (std::size_t i = 0; i < v.count; ++i) std::memcpy(&out[i], v.base + i * v.stride, sizeof(glm::vec3));
+    switch (v.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: readVec3As<std::int8_t>(v.base, v.stride, v.count, v.normalized, out); break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: readVec3As<std::uint8_t>(v.base, v.stride, v.count, v.normalized, out); break;
+    case TINYGLTF_COMPONENT_TYPE_SHORT: readVec3As<std::int16_t>(v.base, v.stride, v.count, v.normalized, out); break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: readVec3As<std::uint16_t>(v.base, v.stride, v.count, v.normalized, out); break;
+    default:  // FLOAT: copied as it is
+        if (v.stride == sizeof(glm::vec3)) {
+            if (v.count) std::memcpy(out.data(), v.base, v.count * sizeof(glm::vec3));
+        } else {
+            for (std::size_t i = 0; i < v.count; ++i) std::memcpy(&out[i], v.base + i * v.stride, sizeof(glm::vec3));
+        }
     }
     return out;
 }
@@ -298,7 +333,10 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     // The validator only warns about this, but a triangle primitive without positions cannot be drawn,
     // and its indices (if any) point at nothing: refuse the file rather than guess.
     if (posIt == p.attributes.end()) fail(where, "has no POSITION attribute");
-    const View pos = view(posIt->second, where + " POSITION", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    // FLOAT, or any 8- or 16-bit integer type (KHR_mesh_quantization; the node transform dequantizes).
+    const View pos = view(posIt->second, where + " POSITION", {TINYGLTF_TYPE_VEC3},
+                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
     std::vector<glm::vec3> positions = readVec3(pos);
     for (std::size_t i = 0; i < pos.count; ++i) {
         if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
@@ -331,7 +369,11 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     std::vector<glm::vec3> normals;
     const auto nrmIt = p.attributes.find("NORMAL");
     if (nrmIt != p.attributes.end()) {
-        const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+        // FLOAT, or normalized BYTE or SHORT (KHR_mesh_quantization).
+        const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
+                             {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
+        if (nv.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !nv.normalized)
+            fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")", "integer normals must be normalized");
         if (nv.count != pos.count)
             fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
                  "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(pos.count));
@@ -415,6 +457,58 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
 // Every node drawn is a copy of its meshes in the baked mesh: at most this many, whatever the file's size.
 constexpr int kMaxNodeInstances = 1000000;
 
+float GltfReader::scalarAt(const View& v, std::size_t i, int c) {
+    const unsigned char* p = v.base + i * v.stride;
+    switch (v.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return dequantize<std::int8_t>(p + c, v.normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return dequantize<std::uint8_t>(p + c, v.normalized);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return dequantize<std::int16_t>(p + 2 * c, v.normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return dequantize<std::uint16_t>(p + 2 * c, v.normalized);
+    default: {
+        float f;
+        std::memcpy(&f, p + 4 * c, 4);
+        return f;
+    }
+    }
+}
+
+// The node's own transform once, or once per instance of EXT_mesh_gpu_instancing: T * R * S from its
+// TRANSLATION, ROTATION and SCALE accessors (each optional; quantized types as the extension allows).
+std::vector<glm::mat4> GltfReader::instances(int ni, const tinygltf::Node& n) {
+    const auto ext = n.extensions.find("EXT_mesh_gpu_instancing");
+    if (ext == n.extensions.end()) return {glm::mat4(1.0f)};
+    const std::string where = "node " + std::to_string(ni) + " EXT_mesh_gpu_instancing";
+    if (!ext->second.Has("attributes") || !ext->second.Get("attributes").IsObject()) fail(where, "has no attributes");
+    const tinygltf::Value& attributes = ext->second.Get("attributes");
+    std::optional<View> translation, rotation, scale;
+    std::size_t count = 0;
+    bool counted = false;
+    const auto read = [&](const char* name, int type, const std::vector<int>& componentTypes, std::optional<View>& out) {
+        if (!attributes.Has(name)) return;
+        out = view(attributes.Get(name).GetNumberAsInt(), where + " " + name, {type}, componentTypes);
+        if (counted && out->count != count) fail(where, std::string(name) + " counts differ from the other attributes");
+        count = out->count, counted = true;
+    };
+    read("TRANSLATION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, translation);
+    read("ROTATION", TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
+         rotation);
+    read("SCALE", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, scale);
+    if (!counted) fail(where, "has none of TRANSLATION, ROTATION and SCALE");
+    if (std::size_t(info_.nodes) + count > std::size_t(kMaxNodeInstances))
+        fail(where, "more than " + std::to_string(kMaxNodeInstances) + " instances in the scene");
+    info_.nodes += int(count) - 1;  // the node itself is already counted
+    std::vector<glm::mat4> out(count, glm::mat4(1.0f));
+    for (std::size_t i = 0; i < count; ++i) {
+        glm::mat4& m = out[i];
+        if (translation) m = glm::translate(m, glm::vec3(scalarAt(*translation, i, 0), scalarAt(*translation, i, 1), scalarAt(*translation, i, 2)));
+        if (rotation)  // x, y, z, w as in a node's rotation
+            m *= glm::mat4_cast(glm::normalize(glm::quat(scalarAt(*rotation, i, 3), scalarAt(*rotation, i, 0),
+                                                         scalarAt(*rotation, i, 1), scalarAt(*rotation, i, 2))));
+        if (scale) m = glm::scale(m, glm::vec3(scalarAt(*scale, i, 0), scalarAt(*scale, i, 1), scalarAt(*scale, i, 2)));
+    }
+    return out;
+}
+
 void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
     if (ni < 0 || std::size_t(ni) >= model_.nodes.size()) fail("node " + std::to_string(ni), "does not exist");
     if (depth > 256) fail("node " + std::to_string(ni), "node hierarchy deeper than 256 (a cycle?)");
@@ -445,8 +539,15 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
         const tinygltf::Mesh& m = model_.meshes[std::size_t(n.mesh)];
         currentNode_ = ni;
-        for (std::size_t k = 0; k < m.primitives.size(); ++k)
-            addPrimitive(m.primitives[k], world, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
+        for (const glm::mat4& instance : instances(ni, n)) {
+            const glm::mat4 instanceWorld = world * instance;
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r)
+                    if (!std::isfinite(instanceWorld[c][r]))
+                        fail("node " + std::to_string(ni), "an instance's transform is not finite");
+            for (std::size_t k = 0; k < m.primitives.size(); ++k)
+                addPrimitive(m.primitives[k], instanceWorld, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
+        }
     }
     for (int child : n.children) visit(child, world, depth + 1);
 }
@@ -556,6 +657,7 @@ struct LoadContext {
     // A .gltf's base64 buffers, decoded by decodeDataUris(), by the path tinygltf asks for them by
     // (folder / "<data URI i>").
     std::map<std::string, std::vector<unsigned char>> decoded;
+    GltfPrepass extensions;  // what the JSON step found (core/gltf_extensions)
 };
 
 // Standard base64 (RFC 4648, '=' padding); false on any other character.
@@ -598,12 +700,9 @@ bool decodeBase64(std::string_view in, std::vector<unsigned char>& out) {
 // file callbacks: its own decoder takes ~15 ns a character (the 200k sphere's 6.4 MB: ~100 ms of a
 // 0.2 s --output), and its JSON parser then skips a few bytes instead of megabytes. Anything this
 // does not recognise is left as it is, for tinygltf to read or to report.
-std::string decodeDataUris(std::string json, LoadContext& context, const std::string& label) {
-    if (json.find(";base64,") == std::string::npos) return json;
-    nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
-    if (doc.is_discarded() || !doc.is_object()) return json;
+bool decodeDataUris(nlohmann::json& doc, LoadContext& context, const std::string& label) {
     const auto buffers = doc.find("buffers");
-    if (buffers == doc.end() || !buffers->is_array()) return json;
+    if (buffers == doc.end() || !buffers->is_array()) return false;
     bool changed = false;
     for (std::size_t i = 0; i < buffers->size(); ++i) {
         nlohmann::json& buffer = (*buffers)[i];
@@ -622,17 +721,16 @@ std::string decodeDataUris(std::string json, LoadContext& context, const std::st
         buffer["uri"] = sentinel;
         changed = true;
     }
-    return changed ? doc.dump() : json;
+    return changed;
 }
 
 // The JSON of a .glb with buffer 0 pointed at the BIN chunk (kGlbBinUri) when it is stored there.
-std::string pointBufferAtBin(const GlbLayout& g, const std::string& label, bool* pointed, std::uint64_t* binLength) {
-    nlohmann::json doc = nlohmann::json::parse(g.json, nullptr, false);
-    if (doc.is_discarded() || !doc.is_object()) throw InputError(label + ": the .glb's JSON chunk is not a JSON object");
+bool pointBufferAtBin(nlohmann::json& doc, const GlbLayout& g, const std::string& label, LoadContext& context,
+                      const fs::path& folder, const ByteReader& read) {
     const auto buffers = doc.find("buffers");
     if (buffers == doc.end() || !buffers->is_array() || buffers->empty() || !(*buffers)[0].is_object() ||
         (*buffers)[0].contains("uri"))
-        return g.json;  // buffer 0 is external or embedded as a data: URI, or there is none
+        return false;  // buffer 0 is external or embedded as a data: URI, or there is none
     nlohmann::json& buffer = (*buffers)[0];
     if (!g.hasBin) throw InputError(label + ": buffer 0 has no uri and the .glb has no BIN chunk");
     const auto length = buffer.find("byteLength");
@@ -641,10 +739,30 @@ std::string pointBufferAtBin(const GlbLayout& g, const std::string& label, bool*
     if (length->get<std::uint64_t>() > g.binLength)
         throw InputError(label + ": buffer 0: byteLength " + std::to_string(length->get<std::uint64_t>()) +
                          " is more than the BIN chunk's " + std::to_string(g.binLength) + " bytes");
-    *binLength = length->get<std::uint64_t>();
-    *pointed = true;
+    context.binPath = (folder / kGlbBinUri).string();
+    context.binOffset = g.binOffset;
+    context.binLength = length->get<std::uint64_t>();
+    context.read = &read;
     buffer["uri"] = kGlbBinUri;
-    return doc.dump();
+    return true;
+}
+
+// The JSON as tinygltf will read it: extensions checked and prepared (core/gltf_extensions), a .glb's
+// buffer 0 pointed at its BIN chunk, base64 buffers decoded here. Parsed once; text that does not
+// parse is handed on as it is, for tinygltf to say what is wrong with it.
+std::string prepareJson(std::string json, LoadContext& context, const std::string& label, const GlbLayout* glb,
+                        const ByteReader* read) {
+    nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) {
+        if (glb) throw InputError(label + ": the .glb's JSON chunk is not a JSON object");
+        return json;
+    }
+    bool changed = prepareGltfExtensions(doc, label, context.extensions);
+    for (int i : context.extensions.fallbackBuffers)  // stand-ins: one byte each, never read
+        context.decoded[(context.folder / doc["buffers"][std::size_t(i)]["uri"].get<std::string>()).string()] = {0};
+    if (glb) changed = pointBufferAtBin(doc, *glb, label, context, context.folder, *read) || changed;
+    if (json.find(";base64,") != std::string::npos) changed = decodeDataUris(doc, context, label) || changed;
+    return changed ? doc.dump() : json;
 }
 
 Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, GltfInfo* infoOut) {
@@ -716,6 +834,8 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
             if (c == '\n') c = ';';
         throw InputError(path + ": " + msg);
     }
+    decodeCompressedGltf(model, context.extensions, path);
+    info.warnings = context.extensions.warnings;
     Mesh mesh = GltfReader(path, model, info).read();
     if (infoOut) *infoOut = std::move(info);
     return mesh;
@@ -728,16 +848,8 @@ Mesh parseGlb(std::uint64_t size, const ByteReader& read, const std::string& pat
     checkJsonDepth(layout.json, path);
     LoadContext context;
     context.folder = folder;
-    std::uint64_t binLength = 0;
-    bool pointed = false;
-    std::string json = pointBufferAtBin(layout, path, &pointed, &binLength);
+    std::string json = prepareJson(layout.json, context, path, &layout, &read);
     if (json.size() > std::uint64_t(~0u)) throw InputError(path + ": the JSON chunk is too large");
-    if (pointed) {
-        context.binPath = (folder / kGlbBinUri).string();
-        context.binOffset = layout.binOffset;
-        context.binLength = binLength;
-        context.read = &read;
-    }
     context.release = release;
     return parseGltf(std::move(json), context, path, infoOut);
 }
@@ -781,7 +893,7 @@ Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::
     checkJsonDepth(bytes, label);
     LoadContext context;
     context.folder = folder;
-    std::string json = decodeDataUris(std::move(bytes), context, label);
+    std::string json = prepareJson(std::move(bytes), context, label, nullptr, nullptr);
     return parseGltf(std::move(json), context, label, infoOut);
 }
 std::string describe(const std::string& path, const GltfInfo& i) {

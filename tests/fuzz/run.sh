@@ -15,7 +15,7 @@ seed() {
   case $target in
     scene) find "$root/assets/scenes" "$root/tests/scenes" "$root/tests/bad-inputs" \
                 -name '*.json' -print0 ;;
-    gltf)  { find "$root/assets/models" "$root/tests/bad-inputs" \( -name '*.gltf' -o -name '*.glb' \) -print0
+    gltf)  { find "$root/assets/models" "$root/tests/bad-inputs" "$root/tests/gltf-variants" \( -name '*.gltf' -o -name '*.glb' \) -print0
              [ -d "$shared" ] && find "$shared" \( -name '*.gltf' -o -name '*.glb' \) -size -2M -print0; } ;;
     cli)   printf '' ;;
   esac | { n=0; while IFS= read -r -d '' f; do cp "$f" "$dir/$n-$(basename "$f" | tr -c 'A-Za-z0-9._-' _)"; n=$((n+1)); done; }

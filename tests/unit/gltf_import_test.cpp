@@ -214,8 +214,9 @@ TEST_F(Gltf, BrokenFilesAreRefusedWithTheirCulprit) {
     }
     {
         Doc d;
-        d.j["accessors"][0]["componentType"] = 5121;  // POSITION as unsigned bytes
-        expectRefused(writeGltf("position_type", d), {"POSITION", "accessor 0"});
+        // POSITION as 32-bit integers: not even KHR_mesh_quantization allows them (bytes and shorts it does)
+        d.j["accessors"][0]["componentType"] = 5125;
+        expectRefused(writeGltf("position_type", d), {"POSITION", "accessor 0", "unsupported type/componentType"});
     }
     {
         Doc d;
@@ -461,4 +462,113 @@ TEST(SharedModels, SparseAccessorValuesAreApplied) {
     EXPECT_EQ(m.positions[9], glm::vec3(2, 1, 0));
     EXPECT_EQ(m.positions[10], glm::vec3(3, 3, 0));
     EXPECT_EQ(m.positions[12], glm::vec3(5, 4, 0));
+}
+
+// KHR_mesh_quantization: each integer type read as glTF 2.0 (3.11) defines it, against values worked
+// out by hand: signed normalized max(c / (2^(b-1) - 1), -1), unsigned normalized c / (2^b - 1), and
+// unnormalized integers as they are.
+TEST_F(Gltf, QuantizedPositionsAndNormalsDequantizeByTheSpec) {
+    struct Case {
+        int componentType;
+        bool normalized;
+        std::vector<unsigned char> bytes;  // three VEC3 elements, each padded to 4-byte alignment
+        std::vector<float> expected;       // nine components
+    };
+    const auto pad = [](std::vector<unsigned char> b, std::size_t elementSize, std::size_t stride) {
+        std::vector<unsigned char> out;
+        for (std::size_t i = 0; i < b.size(); i += elementSize) {
+            out.insert(out.end(), b.begin() + long(i), b.begin() + long(i + elementSize));
+            out.resize(out.size() + stride - elementSize, 0);
+        }
+        return out;
+    };
+    std::vector<unsigned char> shorts, ushorts;
+    append<std::int16_t>(shorts, {-32768, -32767, 16384, 0, 32767, 1, -1, 100, 0});
+    append<std::uint16_t>(ushorts, {0, 65535, 13107, 1, 2, 3, 65535, 0, 0});
+    const std::vector<Case> cases = {
+        {5120, true, pad({0x80, 0x81, 64, 0, 127, 1, 0xff, 100, 0}, 3, 4),  // BYTE normalized
+         {-1.0f, -1.0f, 64.0f / 127, 0, 1, 1.0f / 127, -1.0f / 127, 100.0f / 127, 0}},
+        {5121, true, pad({0, 255, 51, 1, 2, 3, 255, 0, 0}, 3, 4),  // UNSIGNED_BYTE normalized
+         {0, 1, 0.2f, 1.0f / 255, 2.0f / 255, 3.0f / 255, 1, 0, 0}},
+        {5120, false, pad({0xfb, 3, 7, 0, 1, 2, 127, 0x80, 0}, 3, 4),  // BYTE as it is
+         {-5, 3, 7, 0, 1, 2, 127, -128, 0}},
+        {5122, true, pad(shorts, 6, 8),  // SHORT normalized
+         {-1, -1, 16384.0f / 32767, 0, 1, 1.0f / 32767, -1.0f / 32767, 100.0f / 32767, 0}},
+        {5123, true, pad(ushorts, 6, 8),  // UNSIGNED_SHORT normalized
+         {0, 1, 0.2f, 1.0f / 65535, 2.0f / 65535, 3.0f / 65535, 1, 0, 0}},
+        {5123, false, pad(ushorts, 6, 8),  // UNSIGNED_SHORT as it is (gltfpack's positions)
+         {0, 65535, 13107, 1, 2, 3, 65535, 0, 0}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::to_string(c.componentType) + (c.normalized ? " normalized" : ""));
+        Doc d;
+        d.bin = c.bytes;
+        d.j["buffers"][0]["byteLength"] = d.bin.size();
+        d.j["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", d.bin.size()}, {"byteStride", d.bin.size() / 3}}});
+        d.j["accessors"] = json::array({{{"bufferView", 0}, {"componentType", c.componentType}, {"normalized", c.normalized},
+                                         {"count", 3}, {"type", "VEC3"}}});
+        d.j["meshes"][0]["primitives"][0].erase("indices");
+        d.j["extensionsUsed"] = d.j["extensionsRequired"] = json::array({"KHR_mesh_quantization"});
+        const Mesh m = loadGltf(writeGltf("quantized", d));
+        ASSERT_EQ(m.positions.size(), 3u);
+        for (int v = 0; v < 3; ++v)
+            for (int k = 0; k < 3; ++k)
+                EXPECT_FLOAT_EQ(m.positions[std::size_t(v)][k], c.expected[std::size_t(3 * v + k)]) << "vertex " << v;
+    }
+}
+
+TEST_F(Gltf, IntegerNormalsMustBeNormalized) {
+    Doc d;
+    append<std::int8_t>(d.bin, {0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127});
+    d.j["buffers"][0]["byteLength"] = d.bin.size();
+    d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 12}});
+    d.j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5120}, {"count", 4}, {"type", "VEC3"}});
+    d.j["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
+    expectRefused(writeGltf("unnormalized", d), {"NORMAL (accessor 2)", "integer normals must be normalized"});
+    d.j["accessors"][2]["normalized"] = true;
+    const Mesh m = loadGltf(writeGltf("normalized", d));
+    EXPECT_FLOAT_EQ(m.normals[0].z, 1.0f);
+}
+
+// extensionsRequired is read first: one shadelab does not decode is named; one only used is a warning.
+TEST_F(Gltf, RequiredExtensionsAreNamedAndUsedOnesWarned) {
+    Doc d;
+    d.j["extensionsUsed"] = json::array({"KHR_texture_basisu", "KHR_materials_sheen", "KHR_lights_punctual"});
+    d.j["extensionsRequired"] = json::array({"KHR_texture_basisu"});
+    expectRefused(writeGltf("basisu", d), {"requires KHR_texture_basisu, which shadelab does not read"});
+    d.j.erase("extensionsRequired");
+    GltfInfo info;
+    loadGltf(writeGltf("used", d), &info);
+    ASSERT_EQ(info.warnings.size(), 3u);
+    EXPECT_NE(info.warnings[0].find("KHR_texture_basisu, which shadelab does not read: textures are not drawn"), std::string::npos);
+    EXPECT_NE(info.warnings[1].find("KHR_materials_sheen"), std::string::npos);
+    EXPECT_NE(info.warnings[2].find("the scene's lights light the model"), std::string::npos);
+}
+
+// EXT_mesh_gpu_instancing: the node's mesh once per instance, T * R * S of each, after the node's own
+// transform; instances count as nodes against the instance cap.
+TEST_F(Gltf, EveryGpuInstanceIsDrawn) {
+    Doc d;
+    append<float>(d.bin, {10, 0, 0, 0, 20, 0});                            // TRANSLATION, 2 instances
+    append<float>(d.bin, {0, 0, 0, 1, 0, 0, 0.70710678f, 0.70710678f});    // ROTATION: identity, 90° about z
+    append<float>(d.bin, {1, 1, 1, 2, 2, 2});                              // SCALE
+    d.j["buffers"][0]["byteLength"] = d.bin.size();
+    d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 24}});
+    d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 84}, {"byteLength", 32}});
+    d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 116}, {"byteLength", 24}});
+    d.j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}});
+    d.j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 2}, {"type", "VEC4"}});
+    d.j["accessors"].push_back({{"bufferView", 4}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}});
+    d.j["nodes"][0]["translation"] = {0, 0, 5};
+    d.j["nodes"][0]["extensions"] = {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", 2}, {"ROTATION", 3}, {"SCALE", 4}}}}}};
+    d.j["extensionsUsed"] = d.j["extensionsRequired"] = json::array({"EXT_mesh_gpu_instancing"});
+    GltfInfo info;
+    const Mesh m = loadGltf(writeGltf("instanced", d), &info);
+    ASSERT_EQ(m.positions.size(), 8u);
+    EXPECT_EQ(info.triangles, 4u);
+    EXPECT_EQ(info.nodes, 2);
+    // Instance 0: moved by (10, 0, 5). Instance 1: scaled 2, turned 90° about z, moved by (0, 20, 5):
+    // the quad's corner (1, 0, 0) lands at (0, 2, 0) + (0, 20, 5).
+    EXPECT_NEAR(glm::distance(m.positions[1], glm::vec3(11, 0, 5)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(m.positions[5], glm::vec3(0, 22, 5)), 0.0f, 1e-5f);
 }
