@@ -17,11 +17,12 @@
 namespace shadelab {
 
 struct MemoryUse {
+    std::uint64_t program = 0;       // shadelab and the GL driver themselves, before any request
     std::uint64_t framebuffers = 0;  // colour, depth, multisampled copies, the read-back image
     std::uint64_t shadowMaps = 0;
     std::uint64_t meshes = 0;        // CPU arrays, the driver's vertex buffers and its binned triangles
     std::uint64_t images = 0;        // frames kept for a contact sheet or a playlist
-    std::uint64_t total() const { return framebuffers + shadowMaps + meshes + images; }
+    std::uint64_t total() const { return program + framebuffers + shadowMaps + meshes + images; }
 };
 
 // Half of physical memory (sysconf), or 4 GiB where it cannot be read.
