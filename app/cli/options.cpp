@@ -181,6 +181,7 @@ Options parseOptions(const std::vector<std::string>& args) {
             static const std::pair<const char*, int> kSamples[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}};
             o.msaa = parseChoice(arg, next(), kSamples);
         }
+        else if (arg == "--camera") o.camera = parseInt(arg, next(), 0, 100000);
         else if (arg == "--max-memory") {
             const std::string v = next();
             const auto bytes = parseByteSize(v);
@@ -290,6 +291,7 @@ Scene sceneFromOptions(const Options& o) {
 void applyOverrides(Scene& s, const Options& o) {
     if (o.shading) s.shading = *o.shading;
     if (o.layout) s.layout = *o.layout;
+    if (o.camera) s.modelCamera = *o.camera;
     if (o.reflection) s.reflection = *o.reflection;
     for (SceneObject& obj : s.objects) {
         if (o.ka) obj.material.ka = *o.ka;
@@ -387,6 +389,8 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           off; the driver may round up, and caps it at its maximum). --output and
                           --benchmark default to 1, pixel-exact with the golden images; the
                           viewer to 4 (a software renderer: the still view only), --frames runs to 1
+  --camera N              look through the glTF model's camera N (--info lists them; 0 = the first the
+                          scene reaches) instead of shadelab's framing
   --max-memory SIZE       refuse a --output, --sweep or --playlist that needs more memory than SIZE
                           (K, M, G: e.g. 2G; default half of the machine's memory)
   --shader-dir DIR        read GLSL files from DIR when present (default: the checkout's shaders/

@@ -45,6 +45,7 @@ struct Options {
     // --msaa N (0, 1, 2, 4, 8): multisample anti-aliasing, samples per pixel (0 and 1: off). Unset, each
     // front end picks its own default: 1 for --output/--benchmark (golden images stay pixel-exact), 4 in the viewer.
     std::optional<int> msaa;
+    std::optional<int> camera;               // --camera N: the glTF model's camera N
     std::optional<std::uint64_t> maxMemory;  // --max-memory SIZE: the memory budget (core/memory_budget.hpp)
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context

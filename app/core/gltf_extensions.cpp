@@ -25,16 +25,28 @@ bool decoded(const std::string& name) {
     return std::find(kDecodedGltfExtensions.begin(), kDecodedGltfExtensions.end(), name) != kDecodedGltfExtensions.end();
 }
 
-// What an extension that is used but not read would have changed, in the words of the lecture.
-std::string notRead(const std::string& name) {
-    const auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
-    if (starts("KHR_materials_"))
-        return "uses " + name + ", which shadelab does not read: it shades with the lecture's model and the base colour";
-    if (starts("KHR_texture_") || starts("EXT_texture_") || name == "MSFT_texture_dds")
-        return "uses " + name + ", which shadelab does not read: textures are not drawn";
-    if (name == "KHR_lights_punctual")
-        return "uses KHR_lights_punctual, which shadelab does not read: the scene's lights light the model, not the file's";
-    return "uses " + name + ", which shadelab does not read: what it adds is not drawn";
+// What extensions that are used but not read would have changed, in the words of the lecture: one
+// warning line for all of them. Metadata (KHR_xmp) changes nothing drawn and is not mentioned.
+std::string notRead(const std::vector<std::string>& names) {
+    std::string list, effects;
+    bool textures = false, materials = false, lights = false, other = false;
+    for (const std::string& name : names) {
+        if (name.rfind("KHR_xmp", 0) == 0) continue;
+        list += (list.empty() ? "" : ", ") + name;
+        if (name.rfind("KHR_materials_", 0) == 0) materials = true;
+        else if (name.rfind("KHR_texture_", 0) == 0 || name.rfind("EXT_texture_", 0) == 0 || name == "MSFT_texture_dds") textures = true;
+        else if (name == "KHR_lights_punctual") lights = true;
+        else other = true;
+    }
+    if (list.empty()) return "";
+    const auto add = [&](bool on, const char* what) {
+        if (on) effects += std::string(effects.empty() ? "" : "; ") + what;
+    };
+    add(textures, "textures are not drawn");
+    add(materials, "the lecture's model and the base colour shade every material");
+    add(lights, "the scene's lights light the model, not the file's");
+    add(other, "what the others add is not drawn");
+    return "uses " + list + ", which shadelab does not read: " + effects;
 }
 
 const nlohmann::json* extension(const nlohmann::json& object, const char* name) {
@@ -61,8 +73,10 @@ bool prepareGltfExtensions(nlohmann::json& doc, const std::string& label, GltfPr
     for (const std::string& name : names("extensionsRequired"))
         if (!decoded(name) && name != "KHR_texture_transform")
             throw InputError(label + ": requires " + name + ", which shadelab does not read");
+    std::vector<std::string> unread;
     for (const std::string& name : names("extensionsUsed"))
-        if (!decoded(name)) out.warnings.push_back(notRead(name));
+        if (!decoded(name)) unread.push_back(name);
+    if (const std::string line = notRead(unread); !line.empty()) out.warnings.push_back(line);
 
     bool changed = false;
     // A meshopt fallback buffer holds nothing shadelab reads (every view into it is compressed

@@ -24,7 +24,7 @@ extern const std::vector<std::string> kDecodedGltfExtensions;
 
 // What the JSON step found.
 struct GltfPrepass {
-    std::vector<std::string> warnings;  // one line per extension used but not read
+    std::vector<std::string> warnings;  // one line for the extensions used but not read
     std::vector<int> fallbackBuffers;   // EXT_meshopt_compression fallback buffers (no data of their own)
     // Draco primitives' index accessors, by (mesh, primitive): taken out of the JSON for tinygltf
     // (which insists on their buffer view) and put back before decoding.

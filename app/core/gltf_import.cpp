@@ -15,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -95,6 +96,8 @@ private:
     static std::vector<glm::vec3> readVec3(const View& v);
     static float scalarAt(const View& v, std::size_t i, int c);  // component c of element i, dequantized
     std::vector<glm::mat4> instances(int nodeIndex, const tinygltf::Node& n);
+    void addCamera(int cameraIndex, const glm::mat4& world);
+    std::vector<int> cameraIndices_;  // which file camera each info_.cameras entry is
     std::vector<std::uint32_t> indices(int accessorIndex, std::size_t vertexCount, const std::string& where) const;
     void checkRange(int bufferViewIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
                     std::size_t count, const std::string& where, std::size_t* strideOut,
@@ -454,6 +457,26 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     info_.triangles += (mesh_.indices.size() - firstIndex) / 3;
 }
 
+// A glTF camera looks down its node's -Z with +Y up (glTF 2.0, 3.10.1); only the first node using it counts.
+void GltfReader::addCamera(int ci, const glm::mat4& world) {
+    if (std::find(cameraIndices_.begin(), cameraIndices_.end(), ci) != cameraIndices_.end()) return;
+    const tinygltf::Camera& c = model_.cameras[std::size_t(ci)];
+    GltfCamera cam;
+    cam.name = c.name.empty() ? "camera " + std::to_string(ci) : c.name;
+    cam.perspective = c.type != "orthographic";
+    cam.eye = glm::vec3(world[3]);
+    const glm::vec3 forward = safeNormalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    cam.target = cam.eye + forward;  // moved onto the model once its bounds are known (read())
+    cam.up = safeNormalize(glm::mat3(world) * glm::vec3(0.0f, 1.0f, 0.0f));
+    if (cam.perspective) {
+        cam.yfovDeg = float(glm::degrees(c.perspective.yfov));
+        cam.znear = float(c.perspective.znear);
+        cam.zfar = float(c.perspective.zfar);
+    }
+    cameraIndices_.push_back(ci);
+    info_.cameras.push_back(cam);
+}
+
 // Every node drawn is a copy of its meshes in the baked mesh: at most this many, whatever the file's size.
 constexpr int kMaxNodeInstances = 1000000;
 
@@ -535,6 +558,7 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         fail("node " + std::to_string(ni), "more than " + std::to_string(kMaxNodeInstances) +
                                                " node instances in the scene (children listed many times?)");
     info_.nodes += 1;
+    if (n.camera >= 0 && std::size_t(n.camera) < model_.cameras.size()) addCamera(n.camera, world);
     if (n.mesh >= 0) {
         if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
         const tinygltf::Mesh& m = model_.meshes[std::size_t(n.mesh)];
@@ -586,6 +610,13 @@ Mesh GltfReader::read() {
             info_.boundsMin = glm::min(info_.boundsMin, p);
             info_.boundsMax = glm::max(info_.boundsMax, p);
         }
+    }
+    // Each camera's target: the point of its view axis nearest the model's centre (at least its near plane
+    // ahead), so the viewer orbits about the model as the file's camera sees it.
+    const glm::vec3 centre = 0.5f * (info_.boundsMin + info_.boundsMax);
+    for (GltfCamera& c : info_.cameras) {
+        const glm::vec3 forward = c.target - c.eye;
+        c.target = c.eye + forward * std::max(glm::dot(centre - c.eye, forward), std::max(c.znear, 1e-3f) * 2.0f);
     }
     if (mesh_.indices.empty()) info_.warnings.push_back("nothing to draw: the default scene has no triangles");
     return std::move(mesh_);
@@ -912,6 +943,11 @@ std::string describe(const std::string& path, const GltfInfo& i) {
          std::to_string(i.triangles) + " drawn\n";
     s += "vertices: " + std::to_string(i.vertices) + "\n";
     s += "bounds: min " + vec(i.boundsMin) + " max " + vec(i.boundsMax) + "\n";
+    for (std::size_t c = 0; c < i.cameras.size(); ++c)
+        s += "camera " + std::to_string(c) + ": " + i.cameras[c].name +
+             (i.cameras[c].perspective ? ", perspective, " + std::to_string(int(std::lround(i.cameras[c].yfovDeg))) + " degrees"
+                                       : std::string(", orthographic (not drawn: shadelab's views are perspective)")) +
+             " (--camera " + std::to_string(c) + ")\n";
     s += "normals: " + (i.generatedNormals ? "generated for " + std::to_string(i.generatedNormals) + " vertices"
                                              : std::string("from the file")) + "\n";
     for (const std::string& w : i.warnings) s += "warning: " + w + "\n";

@@ -12,6 +12,16 @@
 
 namespace shadelab {
 
+// A camera of the file, where the drawn scene places it (the first node that uses it).
+struct GltfCamera {
+    std::string name;
+    bool perspective = true;
+    glm::vec3 eye{0.0f}, target{0.0f, 0.0f, -1.0f}, up{0.0f, 1.0f, 0.0f};  // target: on the view axis, level with the model's centre
+    float yfovDeg = 45.0f;
+    float znear = 0.1f;
+    float zfar = 0.0f;  // 0: infinite (the file gave none)
+};
+
 struct GltfInfo {
     int nodes = 0;              // nodes visited in the drawn scene
     int meshes = 0;             // meshes in the file
@@ -24,6 +34,7 @@ struct GltfInfo {
     bool texturesIgnored = false;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // of the drawn vertices, world space
     std::vector<std::string> warnings;
+    std::vector<GltfCamera> cameras;  // in the order the drawn scene reaches them (--camera N)
 };
 
 Mesh loadGltf(const std::string& path, GltfInfo* info = nullptr);

@@ -161,6 +161,7 @@ struct Scene {
 
     // Bookkeeping, not part of the file format:
     bool cameraGiven = false;     // false: a glTF model may be auto-framed
+    int modelCamera = -1;         // --camera N: the first glTF model's camera N replaces the scene's
     bool lightsGiven = false;     // false: auto-framing may move the default light with the camera
     bool usesObjectList = false;  // written back as "objects" rather than the one-object shorthand
     std::string sourcePath;       // the file it came from ("" for the built-in default)

@@ -1,6 +1,12 @@
 #include "core/scene_geometry.hpp"
 
 #include "core/camera.hpp"
+#include "core/error.hpp"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 
 namespace shadelab {
 
@@ -25,7 +31,42 @@ SceneGeometry buildSceneGeometry(const Scene& scene) {
     return g;
 }
 
+namespace {
+
+// --camera N: the model's camera N (gltf_import.hpp: GltfCamera), through the object's own transform.
+void useModelCamera(Scene& scene, const SceneGeometry& g) {
+    std::size_t object = 0;
+    while (object < scene.objects.size() && scene.objects[object].mesh.type != MeshSpec::Type::Gltf) ++object;
+    if (object >= scene.objects.size() || object >= g.gltfInfo.size())
+        throw InputError("--camera: the scene has no glTF model");
+    const std::string& path = scene.objects[object].mesh.resolvedPath;
+    const std::vector<GltfCamera>& cameras = g.gltfInfo[object].cameras;
+    const auto n = std::size_t(scene.modelCamera);
+    if (n >= cameras.size())
+        throw InputError("--camera: " + path + " has " + std::to_string(cameras.size()) + " camera" +
+                         (cameras.size() == 1 ? "" : "s") + " in its drawn scene" +
+                         (cameras.empty() ? "" : " (0.." + std::to_string(cameras.size() - 1) + ")"));
+    const GltfCamera& c = cameras[n];
+    if (!c.perspective) throw InputError("--camera: camera " + std::to_string(n) + " of " + path + " is orthographic: shadelab's views are perspective");
+    const glm::mat4 world = worldFromObject(scene.objects[object].transform);
+    Camera& cam = scene.camera;
+    cam.eye = glm::vec3(world * glm::vec4(c.eye, 1.0f));
+    cam.target = glm::vec3(world * glm::vec4(c.target, 1.0f));
+    cam.up = safeNormalize(glm::mat3(world) * c.up);
+    cam.fovYDeg = glm::clamp(c.yfovDeg, 1.0f, 179.0f);
+    // Far: the file's, or (infinite in the file) just past the model seen from the eye.
+    const glm::vec3 lo = glm::vec3(world * glm::vec4(g.gltfInfo[object].boundsMin, 1.0f));
+    const glm::vec3 hi = glm::vec3(world * glm::vec4(g.gltfInfo[object].boundsMax, 1.0f));
+    const float reach = glm::distance(cam.eye, 0.5f * (lo + hi)) + glm::distance(lo, hi);
+    cam.nearPlane = c.znear > 0.0f ? c.znear : std::max(reach * 1e-4f, 1e-4f);
+    cam.farPlane = c.zfar > cam.nearPlane ? c.zfar : std::max(reach * 1.5f, cam.nearPlane * 10.0f);
+    scene.cameraGiven = true;
+}
+
+}  // namespace
+
 void frameIfNeeded(Scene& scene, const SceneGeometry& g) {
+    if (scene.modelCamera >= 0) return useModelCamera(scene, g);
     if (scene.cameraGiven) return;
     bool hasModel = false;
     for (const SceneObject& o : scene.objects) hasModel = hasModel || o.mesh.type == MeshSpec::Type::Gltf;

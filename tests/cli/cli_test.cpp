@@ -441,6 +441,43 @@ TEST_F(Cli, RendersASharedGltfModel) {
     for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(j.at("output_8bit")[std::size_t(k)].get<int>() - int(centre[k])), 1);
 }
 
+// --camera N looks through the model's own camera: a unit quad at z = 0 seen from (0.5, 0.5, 4) with a
+// vertical field of view of 0.5 rad covers 1 / (2 * 4 * tan 0.25) = 49% of the image's height and width,
+// centred (shadelab's own framing would fill more of it).
+TEST_F(Cli, CameraFromTheModelFramesTheView) {
+    const std::string quad =
+        R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+            "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.5, 0.5, 4]}],
+            "cameras": [{"type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1, "zfar": 100}}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+            "materials": [],
+            "buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAACAPwAAgD8AAAAAAAAAAAAAgD8AAAAAAAABAAIAAAACAAMA"}],
+            "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                          {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+    const std::string model = file("quad_camera.gltf", quad);
+    const Image seen = runToPng({model, "--camera", "0", "--size", "100x100", "--shading", "flat", "--ka", "1"}, "camera.png");
+    ASSERT_EQ(seen.width, 100);
+    const std::uint8_t* bg = seen.pixel(0, 0);
+    int covered = 0, minX = 100, maxX = -1;
+    for (int y = 0; y < 100; ++y)
+        for (int x = 0; x < 100; ++x) {
+            const std::uint8_t* p = seen.pixel(x, y);
+            if (std::abs(int(p[0]) - int(bg[0])) + std::abs(int(p[1]) - int(bg[1])) + std::abs(int(p[2]) - int(bg[2])) > 30) {
+                ++covered;
+                minX = std::min(minX, x), maxX = std::max(maxX, x);
+            }
+        }
+    EXPECT_NEAR(covered, 49 * 49, 250);
+    EXPECT_NEAR(minX, 25, 2);
+    EXPECT_NEAR(maxX, 74, 2);
+    const Image framed = runToPng({model, "--size", "100x100", "--shading", "flat", "--ka", "1"}, "framed.png");
+    EXPECT_NE(framed.rgba, seen.rgba) << "--camera changed nothing";
+    const RunResult missing = run({model, "--camera", "1", "--output", path("o.png")});
+    EXPECT_EQ(missing.exitCode, 2);
+    EXPECT_NE(missing.err.find("has 1 camera in its drawn scene (0..0)"), std::string::npos) << missing.err;
+}
+
 // --playlist DIR --output OUT/: exactly one PNG per preset, named after its file, at the --size given
 // (an override every preset takes), none of them blank; each is the image the preset file renders on
 // its own. The output folder is created (its parent exists).
