@@ -90,12 +90,13 @@ namespace {
 // Temporary files that exist under a name while a write is in flight, removed by SIGINT and SIGTERM
 // (SIGKILL cannot be caught: that is what O_TMPFILE is for). The handler reads fixed buffers only.
 constexpr int kTempSlots = 8;
+enum TempSlot : int { kFree, kClaimed, kNamed };  // a slot is claimed, then its name written, then named
 char gTempPath[kTempSlots][4096];
-std::atomic<bool> gTempUsed[kTempSlots];
+std::atomic<int> gTempState[kTempSlots];
 
 extern "C" void removeTempFilesAndDie(int signal) {
     for (int i = 0; i < kTempSlots; ++i)
-        if (gTempUsed[i].load()) ::unlink(gTempPath[i]);
+        if (gTempState[i].load() == kNamed) ::unlink(gTempPath[i]);
     std::signal(signal, SIG_DFL);
     std::raise(signal);
 }
@@ -116,16 +117,17 @@ class TempName {
 public:
     explicit TempName(const std::string& path) {
         installTempCleanup();
-        if (path.size() >= sizeof gTempPath[0]) return;
+        if (path.empty() || path.size() >= sizeof gTempPath[0]) return;
         for (int i = 0; i < kTempSlots && slot_ < 0; ++i) {
-            bool expected = false;
-            if (gTempUsed[i].load() || path.empty()) continue;
+            int expected = kFree;
+            if (!gTempState[i].compare_exchange_strong(expected, kClaimed)) continue;
             std::memcpy(gTempPath[i], path.c_str(), path.size() + 1);
-            if (gTempUsed[i].compare_exchange_strong(expected, true)) slot_ = i;
+            gTempState[i].store(kNamed);
+            slot_ = i;
         }
     }
     ~TempName() {
-        if (slot_ >= 0) gTempUsed[slot_].store(false);
+        if (slot_ >= 0) gTempState[slot_].store(kFree);
     }
     TempName(const TempName&) = delete;
     TempName& operator=(const TempName&) = delete;
