@@ -301,7 +301,19 @@ void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
     if (!status.trueTypeFont) ImGui::TextWrapped("DejaVu Sans not found (Debian: fonts-dejavu-core): bitmap font");
 }
 
-void sectionCamera(Camera& c, PanelRequests& requests) {
+void sectionCamera(Camera& c, int modelCamera, const PanelStatus& status, PanelRequests& requests) {
+    if (!status.modelCameras.empty()) {  // the glTF model's own cameras (--camera N)
+        const std::string current = modelCamera >= 0 && std::size_t(modelCamera) < status.modelCameras.size()
+                                        ? status.modelCameras[std::size_t(modelCamera)]
+                                        : std::string("shadelab's framing");
+        if (ImGui::BeginCombo("camera", current.c_str())) {
+            if (ImGui::Selectable("shadelab's framing", modelCamera < 0)) requests.modelCamera = -1;
+            for (std::size_t i = 0; i < status.modelCameras.size(); ++i)
+                if (ImGui::Selectable((status.modelCameras[i] + "##" + std::to_string(i)).c_str(), int(i) == modelCamera))
+                    requests.modelCamera = int(i);
+            ImGui::EndCombo();
+        }
+    }
     requests.resetCamera |= ImGui::Button("reset (R)");
     ImGui::SameLine();
     requests.frameModel |= ImGui::Button("frame model (F)");
@@ -441,7 +453,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         sectionOverlays(settings);
         sectionDisplay(status, requests);
     }
-    if (section("Camera", kPanelSections[7], false)) sectionCamera(scene.camera, requests);
+    if (section("Camera", kPanelSections[7], false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
     if (section("Background", kPanelSections[8], false)) colorEdit("background", scene.background);
     if (section("File", kPanelSections[9], true)) sectionFile(settings, status, requests);
     if (section("Keys", kPanelSections[10], false)) sectionKeys();

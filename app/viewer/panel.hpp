@@ -54,6 +54,7 @@ struct PanelStatus {
     float uiScale = 1.0f;             // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
     int msaa = 1;                     // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;
+    std::vector<std::string> modelCameras;  // the first glTF model's cameras (GltfInfo::cameras), by name
 };
 
 // Buttons pressed this frame.
@@ -66,6 +67,7 @@ struct PanelRequests {
     float uiScale = 0.0f;         // the UI-scale slider moved: the new scale (0: unchanged)
     int msaa = 0;                 // anti-aliasing chosen: samples (1: off; 0: unchanged)
     bool toggleFullscreen = false;
+    int modelCamera = -2;         // a camera picked: the model's camera N, or -1 for shadelab's framing (-2: unchanged)
 };
 
 // A rectangle in ImGui's coordinates (window screen units, origin top-left).

@@ -165,6 +165,7 @@ void SceneDocument::followView() {
 
 void SceneDocument::frameModel() {
     if (!geometry_) return;
+    scene_.modelCamera = -1;  // framed by shadelab, not through the model's camera
     frameInsidePane(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
     framing_ = Framing::Model;
 }
@@ -189,6 +190,7 @@ void SceneDocument::frameInsidePane(Camera& c, const BoundingSphere& b, float as
 
 void SceneDocument::resetCamera() {
     scene_.camera = home_;
+    scene_.modelCamera = -1;
     framing_ = Framing::Home;
     followView();
 }

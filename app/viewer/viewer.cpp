@@ -1,6 +1,7 @@
 #include "viewer/viewer.hpp"
 
 #include "core/camera.hpp"
+#include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/image.hpp"
 #include "core/scene_json.hpp"
@@ -455,6 +456,19 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
     if (r.resetCamera) document_.resetCamera();
     if (r.frameModel) document_.frameModel();
+    if (r.modelCamera >= 0) {
+        // Through the model's camera, as --camera N: no longer framed by shadelab (F or R frame again).
+        document_.scene().modelCamera = r.modelCamera;
+        try {
+            frameIfNeeded(document_.scene(), *document_.geometry());
+            document_.stopFollowing();
+        } catch (const InputError& e) {
+            document_.scene().modelCamera = -1;
+            setStatus(e.what(), true);
+        }
+    } else if (r.modelCamera == -1) {
+        document_.frameModel();
+    }
     if (r.screenshot) screenshotRequested_ = true;  // taken after this frame's render
     if (r.load) loadFile(settings_.scenePath);
     if (r.gotoPreset >= 0) goToPreset(std::size_t(r.gotoPreset));
@@ -537,6 +551,12 @@ void Viewer::uploadGeometryIfChanged() {
     status_.frameTriangles = geometry ? geometry->triangleCount() * panes : 0;
     const auto selected = std::size_t(settings_.selectedObject);
     status_.objectTriangles = geometry && selected < geometry->meshes.size() ? geometry->meshes[selected].triangleCount() : 0;
+    status_.modelCameras.clear();
+    for (std::size_t i = 0; geometry && i < geometry->gltfInfo.size(); ++i)
+        if (!geometry->gltfInfo[i].cameras.empty()) {  // the first model's, as --camera N
+            for (const GltfCamera& c : geometry->gltfInfo[i].cameras) status_.modelCameras.push_back(c.name);
+            break;
+        }
 }
 
 // Draws the scene and the overlays into the 3D view. With `capture`, returns the view as drawn, read
