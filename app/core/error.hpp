@@ -13,4 +13,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The GL ran out of memory for what was asked: an input error too (exit 2), which the headless front
+// end names with the request ("scene.json: a 1280x720 frame: the GL ran out of memory in render ...").
+class GlOutOfMemory : public InputError {
+public:
+    using InputError::InputError;
+};
+
 }  // namespace shadelab

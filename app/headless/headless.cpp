@@ -1,5 +1,6 @@
 #include "headless/headless.hpp"
 
+#include "core/error.hpp"
 #include "core/memory_budget.hpp"
 #include "render/multisample_target.hpp"
 #include "render/renderer.hpp"
@@ -16,17 +17,22 @@
 namespace shadelab {
 namespace {
 
+// "scene.json: a 1280x720 frame": what the memory messages call one render.
+std::string frameName(const Scene& s) {
+    return (s.sourcePath.empty() ? "" : s.sourcePath + ": ") + "a " + std::to_string(s.width) + "x" +
+           std::to_string(s.height) + " frame";
+}
+
 // Draws `scene` into `target`: straight, or with msaaSamples > 1 into `msaa`'s multisampled
 // framebuffer, then resolved into `target`.
 void drawFrame(Renderer& renderer, const Scene& scene, const RenderTarget& target, MultisampleTarget& msaa,
                int msaaSamples) {
-    renderer.render(scene, msaa.begin(target, msaaSamples));
-    msaa.resolveInto(target);
-}
-
-// "a 1280x720 frame": what the memory messages call one render.
-std::string frameName(const Scene& s) {
-    return "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " frame";
+    try {
+        renderer.render(scene, msaa.begin(target, msaaSamples));
+        msaa.resolveInto(target);
+    } catch (const GlOutOfMemory& e) {
+        throw GlOutOfMemory(frameName(scene) + ": " + e.what());
+    }
 }
 
 }  // namespace

@@ -136,7 +136,7 @@ unsigned bayerRank(unsigned x, unsigned y, int bits) {
 void checkGl(const char* where) {
     const GLenum e = glGetError();
     if (e == GL_OUT_OF_MEMORY)  // the request was too big for this GL: an input error, like the budget's
-        throw InputError(std::string("the GL ran out of memory in ") + where +
+        throw GlOutOfMemory(std::string("the GL ran out of memory in ") + where +
                          " (ask for less: a smaller --size, fewer shadowed lights or smaller shadow maps)");
     if (e != GL_NO_ERROR) {
         char code[16];
