@@ -62,6 +62,14 @@ bool insideFolderResolved(const std::string& p, const fs::path& root) {
     return !rel.empty() && *rel.begin() != "..";
 }
 
+bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool isFinite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
 // At most this many vertices after every node instance is baked (about 1.2 GB of positions and normals).
 constexpr std::size_t kMaxBakedVertices = 50000000;
 
@@ -92,7 +100,7 @@ private:
     View view(int accessorIndex, const std::string& where, const std::vector<int>& allowedTypes,
               const std::vector<int>& allowedComponentTypes) const;
     static std::uint32_t unsignedInteger(const View& v, std::size_t i);  // a SCALAR of an unsigned type
-    // All elements of a float VEC3 accessor (POSITION, NORMAL): memcpy per element, not per component.
+    // All elements of a VEC3 accessor (POSITION, NORMAL): floats copied, integer types dequantized.
     static std::vector<glm::vec3> readVec3(const View& v);
     static float scalarAt(const View& v, std::size_t i, int c);  // component c of element i, dequantized
     std::vector<glm::mat4> instances(int nodeIndex, const tinygltf::Node& n);
@@ -342,7 +350,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
                            TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
     std::vector<glm::vec3> positions = readVec3(pos);
     for (std::size_t i = 0; i < pos.count; ++i) {
-        if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
+        if (!isFinite(positions[i]))
             fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
                  "vertex " + std::to_string(i) + " is not finite");
     }
@@ -383,7 +391,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         normals = readVec3(nv);
         for (std::size_t i = 0; i < normals.size(); ++i) {
             glm::vec3& n = normals[i];
-            if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+            if (!isFinite(n))
                 fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
                      "normal " + std::to_string(i) + " is not finite");
             n = safeNormalize(n);
@@ -416,7 +424,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         for (std::size_t i = 0; i < positions.size(); ++i) {
             const glm::vec3 baked = glm::vec3(world * glm::vec4(positions[i], 1.0f));
             // Finite positions times a finite matrix can still overflow.
-            if (!std::isfinite(baked.x) || !std::isfinite(baked.y) || !std::isfinite(baked.z))
+            if (!isFinite(baked))
                 fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
                      "vertex " + std::to_string(i) + " is not finite after node " + std::to_string(currentNode_) +
                          "'s transform");
@@ -517,6 +525,7 @@ std::vector<glm::mat4> GltfReader::instances(int ni, const tinygltf::Node& n) {
          rotation);
     read("SCALE", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, scale);
     if (!counted) fail(where, "has none of TRANSLATION, ROTATION and SCALE");
+    if (count == 0) fail(where, "has no instances");
     if (std::size_t(info_.nodes) + count > std::size_t(kMaxNodeInstances))
         fail(where, "more than " + std::to_string(kMaxNodeInstances) + " instances in the scene");
     info_.nodes += int(count) - 1;  // the node itself is already counted
@@ -549,10 +558,7 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
     }
     const glm::mat4 world = parent * local;
     // A translation of 1e39 is +inf as a float; finite scales can multiply past the float range.
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(world[c][r]))
-                fail("node " + std::to_string(ni), "its transform (with its parents') is not finite");
+    if (!isFinite(world)) fail("node " + std::to_string(ni), "its transform (with its parents') is not finite");
     // The depth limit does not bound the work: a child listed twice at each of 40 levels is 2^40 visits.
     if (info_.nodes >= kMaxNodeInstances)
         fail("node " + std::to_string(ni), "more than " + std::to_string(kMaxNodeInstances) +
@@ -565,10 +571,7 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         currentNode_ = ni;
         for (const glm::mat4& instance : instances(ni, n)) {
             const glm::mat4 instanceWorld = world * instance;
-            for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 4; ++r)
-                    if (!std::isfinite(instanceWorld[c][r]))
-                        fail("node " + std::to_string(ni), "an instance's transform is not finite");
+            if (!isFinite(instanceWorld)) fail("node " + std::to_string(ni), "an instance's transform is not finite");
             for (std::size_t k = 0; k < m.primitives.size(); ++k)
                 addPrimitive(m.primitives[k], instanceWorld, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
         }
@@ -757,7 +760,7 @@ bool decodeDataUris(nlohmann::json& doc, LoadContext& context, const std::string
 
 // The JSON of a .glb with buffer 0 pointed at the BIN chunk (kGlbBinUri) when it is stored there.
 bool pointBufferAtBin(nlohmann::json& doc, const GlbLayout& g, const std::string& label, LoadContext& context,
-                      const fs::path& folder, const ByteReader& read) {
+                      const ByteReader& read) {
     const auto buffers = doc.find("buffers");
     if (buffers == doc.end() || !buffers->is_array() || buffers->empty() || !(*buffers)[0].is_object() ||
         (*buffers)[0].contains("uri"))
@@ -770,7 +773,7 @@ bool pointBufferAtBin(nlohmann::json& doc, const GlbLayout& g, const std::string
     if (length->get<std::uint64_t>() > g.binLength)
         throw InputError(label + ": buffer 0: byteLength " + std::to_string(length->get<std::uint64_t>()) +
                          " is more than the BIN chunk's " + std::to_string(g.binLength) + " bytes");
-    context.binPath = (folder / kGlbBinUri).string();
+    context.binPath = (context.folder / kGlbBinUri).string();
     context.binOffset = g.binOffset;
     context.binLength = length->get<std::uint64_t>();
     context.read = &read;
@@ -791,7 +794,7 @@ std::string prepareJson(std::string json, LoadContext& context, const std::strin
     bool changed = prepareGltfExtensions(doc, label, context.extensions);
     for (int i : context.extensions.fallbackBuffers)  // stand-ins: one byte each, never read
         context.decoded[(context.folder / doc["buffers"][std::size_t(i)]["uri"].get<std::string>()).string()] = {0};
-    if (glb) changed = pointBufferAtBin(doc, *glb, label, context, context.folder, *read) || changed;
+    if (glb) changed = pointBufferAtBin(doc, *glb, label, context, *read) || changed;
     if (json.find(";base64,") != std::string::npos) changed = decodeDataUris(doc, context, label) || changed;
     return changed ? doc.dump() : json;
 }

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <future>
+#include <optional>
 
 namespace shadelab {
 namespace {
@@ -21,6 +22,14 @@ namespace {
 std::string frameName(const Scene& s) {
     return (s.sourcePath.empty() ? "" : s.sourcePath + ": ") + "a " + std::to_string(s.width) + "x" +
            std::to_string(s.height) + " frame";
+}
+
+// The memory budget (core/memory_budget.hpp) for one frame of `s`, with `kept` bytes of frames the
+// caller holds; `triangles` once the models are read (before, the procedural meshes' part).
+void checkFrameMemory(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles, std::uint64_t kept = 0) {
+    MemoryUse use = estimateFrame(s, msaaSamples, triangles);
+    use.images = kept;
+    checkMemory(use, frameName(s) + (kept ? " with the other frames kept" : ""));
 }
 
 // Draws `scene` into `target`: straight, or with msaaSamples > 1 into `msaa`'s multisampled
@@ -39,7 +48,7 @@ void drawFrame(Renderer& renderer, const Scene& scene, const RenderTarget& targe
 
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders,
                      HeadlessBackend backend, int msaaSamples) {
-    checkMemory(estimateFrame(scene, msaaSamples, geometry->triangleCount()), frameName(scene));
+    checkFrameMemory(scene, msaaSamples, geometry->triangleCount());
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     renderer.setGeometry(std::move(geometry));
@@ -54,7 +63,7 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
 constexpr std::size_t kOneFrameDrawChunk = 250000;
 
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend, int msaaSamples) {
-    checkMemory(estimateFrame(scene, msaaSamples), frameName(scene));  // a model's meshes: once read
+    checkFrameMemory(scene, msaaSamples, std::nullopt);  // a model's meshes: once read
     // buildSceneGeometry only reads `scene`; nothing here writes it until the thread is joined.
     auto loading = std::async(std::launch::async, [&scene] { return buildSceneGeometry(scene); });
     std::unique_ptr<HeadlessContext> context;
@@ -82,7 +91,7 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
         throw;
     }
     auto geometry = std::make_shared<SceneGeometry>(loading.get());
-    checkMemory(estimateFrame(scene, msaaSamples, geometry->triangleCount()), frameName(scene));
+    checkFrameMemory(scene, msaaSamples, geometry->triangleCount());
     frameIfNeeded(scene, *geometry);
     HeadlessFrame frame;
     frame.gltfInfo = geometry->gltfInfo;
@@ -98,11 +107,7 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
                           const std::function<void(std::size_t, Image)>& done, int msaaSamples, std::uint64_t keptBytes) {
     if (scenes.empty()) return;
-    for (const Scene& s : scenes) {  // before any work: the procedural meshes' part is known
-        MemoryUse use = estimateFrame(s, msaaSamples);
-        use.images = keptBytes;
-        checkMemory(use, frameName(s) + (keptBytes ? " with the other frames kept" : ""));
-    }
+    for (const Scene& s : scenes) checkFrameMemory(s, msaaSamples, std::nullopt, keptBytes);  // before any work
     const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
     Renderer renderer(context->getProcAddress(), shaders);
     MultisampleTarget msaa;
@@ -115,9 +120,7 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
         if (!same) {
             geometry.reset();  // the previous meshes go before the next are read
             geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-            MemoryUse use = estimateFrame(s, msaaSamples, geometry->triangleCount());
-            use.images = keptBytes;
-            checkMemory(use, frameName(s) + (keptBytes ? " with the other frames kept" : ""));
+            checkFrameMemory(s, msaaSamples, geometry->triangleCount(), keptBytes);
             renderer.setGeometry(geometry);
             built = &s;
         }
@@ -157,7 +160,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
                                                const ShaderLibrary& shaders, HeadlessBackend backend,
                                                int progressiveStride, int msaaSamples) {
-    checkMemory(estimateFrame(scene, msaaSamples, geometry->triangleCount()), frameName(scene));
+    checkFrameMemory(scene, msaaSamples, geometry->triangleCount());
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
