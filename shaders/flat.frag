@@ -1,8 +1,19 @@
 #include "lighting.glsl"
+#include "object_color.glsl"
 
+#if SL_TEXTURED
+flat in vec3 v_termsOfC;
+flat in vec3 v_specular;
+#else
 flat in vec3 v_color;
+#endif
 out vec4 o_color;
 
 void main() {
-    o_color = vec4(encodeOutput(v_color), 1.0);
+#if SL_TEXTURED
+    vec3 color = clamp(objectTexel() * v_termsOfC + v_specular, 0.0, 1.0);
+#else
+    vec3 color = v_color;
+#endif
+    o_color = vec4(encodeOutput(color), 1.0);
 }

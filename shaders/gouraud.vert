@@ -1,15 +1,28 @@
 // Gouraud shading: the colour is evaluated at each vertex with its vertex normal; the rasterizer
 // interpolates the colours (perspective-correct) across the triangle.
 #include "lighting.glsl"
+#include "object_color.glsl"
 
 layout(location = SL_ATTRIB_POSITION) in vec3 a_posObject;
 layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
 
+#if SL_TEXTURED
+// C varies across the triangle: the formula's two parts are interpolated and combined per fragment.
+out vec3 v_termsOfC;  // k_a A C + sum v L_l k_d C (N.I), with the material's C
+out vec3 v_specular;  // sum v L_l k_s S spec_l
+#else
 out vec3 v_color;
+#endif
 
 void main() {
     vec4 posWorld = u_worldFromObject * vec4(a_posObject, 1.0);
     vec3 nrmWorld = normalize(mat3(u_normalWorldFromObject) * a_nrmObject);
-    v_color = shadeLecture(posWorld.xyz, nrmWorld);
+#if SL_TEXTURED
+    v_termsOfC = shadeLectureTermsOfC(posWorld.xyz, nrmWorld);
+    v_specular = shadeLectureSpecular(posWorld.xyz, nrmWorld);
+    passObjectColor();
+#else
+    v_color = shadeLecture(posWorld.xyz, nrmWorld, vec3(1.0));
+#endif
     gl_Position = u_clipFromWorld * posWorld;
 }

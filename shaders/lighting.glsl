@@ -105,8 +105,8 @@ float fresnelWeight(float cosVH) {
 #endif
 
 // L_l (k_d C (N.I) + k_s S spec) for light l from direction I with N.I > 0 (the products with L_l,
-// k_d C and k_s S come folded from the ObjectBlock).
-vec3 reflected(int l, vec3 I, float NdotI, vec3 N, vec3 V) {
+// k_d C and k_s S come folded from the ObjectBlock; `texel` and `specularShare`: see sumOfTerms).
+vec3 reflected(int l, vec3 I, float NdotI, vec3 N, vec3 V, vec3 texel, float specularShare) {
 #if SL_REFLECTION == SL_REFLECTION_PHONG
     vec3 R = 2.0 * NdotI * N - I;
     float cosLobe = dot(R, V);
@@ -125,12 +125,13 @@ vec3 reflected(int l, vec3 I, float NdotI, vec3 N, vec3 V) {
 #if SL_FRESNEL != SL_FRESNEL_NONE
     spec *= fresnelWeight(dot(V, normalize(I + V)));
 #endif
+    spec *= specularShare;
 #if SL_SHOW == SL_SHOW_DIFFUSE
-    return SL_LIGHT_DIFFUSE(l) * NdotI;                       // L_l k_d C (N.I)
+    return SL_LIGHT_DIFFUSE(l) * texel * NdotI;               // L_l k_d C (N.I)
 #elif SL_SHOW == SL_SHOW_SPECULAR
     return SL_LIGHT_SPECULAR(l) * spec;                       // L_l k_s S spec
 #else
-    return SL_LIGHT_DIFFUSE(l) * NdotI + SL_LIGHT_SPECULAR(l) * spec;
+    return SL_LIGHT_DIFFUSE(l) * texel * NdotI + SL_LIGHT_SPECULAR(l) * spec;
 #endif
 }
 
@@ -212,7 +213,8 @@ float directionalVisibility(sampler2DArrayShadow map, int l, vec3 posWorld, vec3
 
 // Light l's share: L_l (k_d C (N.I) + k_s S spec). `kind` and `attenuation` are constants, so the
 // compiler drops the branches that do not apply.
-vec3 lightTerm(int l, int kind, int attenuation, SL_SHADOW_PARAM vec3 posWorld, vec3 N, vec3 V) {
+vec3 lightTerm(int l, int kind, int attenuation, SL_SHADOW_PARAM vec3 posWorld, vec3 N, vec3 V, vec3 texel,
+               float specularShare) {
     vec3 I;
     float falloff = 1.0;
     if (kind == SL_LIGHT_DIRECTIONAL) {
@@ -229,13 +231,14 @@ vec3 lightTerm(int l, int kind, int attenuation, SL_SHADOW_PARAM vec3 posWorld, 
     falloff *= kind == SL_LIGHT_DIRECTIONAL ? directionalVisibility(shadowMap, l, posWorld, N)
                                             : pointVisibility(shadowMap, l, posWorld, N);
 #endif
-    return falloff * reflected(l, I, NdotI, N, V);
+    return falloff * reflected(l, I, NdotI, N, V, texel, specularShare);
 }
 
 // Area light l: nx * ny point-light samples, each weighted by its share of the area (1 / (nx ny))
 // and the cosine at the light (|cos| when two-sided; nothing from behind the emitting side). With
 // shadows, one occlusion test per sample, in that sample's own layer of the light's map.
-vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 posWorld, vec3 N, vec3 V) {
+vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 posWorld, vec3 N, vec3 V, vec3 texel,
+                   float specularShare) {
     vec3 centre = u_lights[l].positionOrDirection.xyz;
     vec3 edgeU = u_lights[l].areaU.xyz, edgeV = u_lights[l].areaV.xyz, front = u_lights[l].areaNormal.xyz;
     float twoSided = u_lights[l].falloff.y;
@@ -270,7 +273,7 @@ vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 
             vec3 c = clip.xyz / clip.w * 0.5 + 0.5;
             weight *= texture(shadowMap, vec4(c.xy, float(j * nx + i), c.z));
 #endif
-            sum += weight * reflected(l, I, NdotI, N, V);
+            sum += weight * reflected(l, I, NdotI, N, V, texel, specularShare);
         }
 #if SL_ACCUMULATE
     sum *= float(u_areaPass.z * u_areaPass.w);
@@ -278,133 +281,145 @@ vec3 areaLightTerm(int l, int attenuation, int nx, int ny, SL_SHADOW_PARAM vec3 
     return sum / float(nx * ny);
 }
 
-// posWorld: the point being shaded; nrmWorld: its unit normal. Returns linear RGB before the clamp
-// (progressive Phong sums these over passes and clamps the mean; everything else uses shadeLecture).
-vec3 shadeLectureUnclamped(vec3 posWorld, vec3 nrmWorld) {
+// posWorld: the point being shaded; nrmWorld: its unit normal. Returns linear RGB before the clamp.
+// `texel` multiplies the material's C where it varies over the surface (a texture and vertex colours,
+// shaders/object_color.glsl; 1 elsewhere), so it scales the terms C is in, ambient and diffuse, and
+// not the specular; `specularShare` (1, or 0) keeps or drops the specular. The functions below call
+// this with constants, which the compiler folds away.
+vec3 sumOfTerms(vec3 posWorld, vec3 nrmWorld, vec3 texel, float specularShare) {
     vec3 N = nrmWorld;
     vec3 V = normalize(SL_TO_EYE(posWorld));
 #if SL_SHOW == SL_SHOW_UNLIT
-    return clamp(u_color.rgb, 0.0, 1.0);
+    return clamp(u_color.rgb * texel, 0.0, 1.0);
 #endif
 #if SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_AMBIENT
-    vec3 L = SL_AMBIENT_TERM;  // k_a A C
+    vec3 L = SL_AMBIENT_TERM * texel;  // k_a A C
 #else
     vec3 L = vec3(0.0);
 #endif
 #if SL_LIGHT_COUNT > 0 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 0)
 #if SL_LIGHT_KIND_0 == SL_LIGHT_AREA
-    L += areaLightTerm(0, SL_LIGHT_ATTENUATION_0, SL_LIGHT_SAMPLES_X_0, SL_LIGHT_SAMPLES_Y_0, SL_SHADOW_ARG(0) posWorld, N, V);
+    L += areaLightTerm(0, SL_LIGHT_ATTENUATION_0, SL_LIGHT_SAMPLES_X_0, SL_LIGHT_SAMPLES_Y_0, SL_SHADOW_ARG(0) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(0, SL_LIGHT_KIND_0, SL_LIGHT_ATTENUATION_0, SL_SHADOW_ARG(0) posWorld, N, V);
+    L += lightTerm(0, SL_LIGHT_KIND_0, SL_LIGHT_ATTENUATION_0, SL_SHADOW_ARG(0) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 1 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 1)
 #if SL_LIGHT_KIND_1 == SL_LIGHT_AREA
-    L += areaLightTerm(1, SL_LIGHT_ATTENUATION_1, SL_LIGHT_SAMPLES_X_1, SL_LIGHT_SAMPLES_Y_1, SL_SHADOW_ARG(1) posWorld, N, V);
+    L += areaLightTerm(1, SL_LIGHT_ATTENUATION_1, SL_LIGHT_SAMPLES_X_1, SL_LIGHT_SAMPLES_Y_1, SL_SHADOW_ARG(1) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(1, SL_LIGHT_KIND_1, SL_LIGHT_ATTENUATION_1, SL_SHADOW_ARG(1) posWorld, N, V);
+    L += lightTerm(1, SL_LIGHT_KIND_1, SL_LIGHT_ATTENUATION_1, SL_SHADOW_ARG(1) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 2 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 2)
 #if SL_LIGHT_KIND_2 == SL_LIGHT_AREA
-    L += areaLightTerm(2, SL_LIGHT_ATTENUATION_2, SL_LIGHT_SAMPLES_X_2, SL_LIGHT_SAMPLES_Y_2, SL_SHADOW_ARG(2) posWorld, N, V);
+    L += areaLightTerm(2, SL_LIGHT_ATTENUATION_2, SL_LIGHT_SAMPLES_X_2, SL_LIGHT_SAMPLES_Y_2, SL_SHADOW_ARG(2) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(2, SL_LIGHT_KIND_2, SL_LIGHT_ATTENUATION_2, SL_SHADOW_ARG(2) posWorld, N, V);
+    L += lightTerm(2, SL_LIGHT_KIND_2, SL_LIGHT_ATTENUATION_2, SL_SHADOW_ARG(2) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 3 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 3)
 #if SL_LIGHT_KIND_3 == SL_LIGHT_AREA
-    L += areaLightTerm(3, SL_LIGHT_ATTENUATION_3, SL_LIGHT_SAMPLES_X_3, SL_LIGHT_SAMPLES_Y_3, SL_SHADOW_ARG(3) posWorld, N, V);
+    L += areaLightTerm(3, SL_LIGHT_ATTENUATION_3, SL_LIGHT_SAMPLES_X_3, SL_LIGHT_SAMPLES_Y_3, SL_SHADOW_ARG(3) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(3, SL_LIGHT_KIND_3, SL_LIGHT_ATTENUATION_3, SL_SHADOW_ARG(3) posWorld, N, V);
+    L += lightTerm(3, SL_LIGHT_KIND_3, SL_LIGHT_ATTENUATION_3, SL_SHADOW_ARG(3) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 4 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 4)
 #if SL_LIGHT_KIND_4 == SL_LIGHT_AREA
-    L += areaLightTerm(4, SL_LIGHT_ATTENUATION_4, SL_LIGHT_SAMPLES_X_4, SL_LIGHT_SAMPLES_Y_4, SL_SHADOW_ARG(4) posWorld, N, V);
+    L += areaLightTerm(4, SL_LIGHT_ATTENUATION_4, SL_LIGHT_SAMPLES_X_4, SL_LIGHT_SAMPLES_Y_4, SL_SHADOW_ARG(4) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(4, SL_LIGHT_KIND_4, SL_LIGHT_ATTENUATION_4, SL_SHADOW_ARG(4) posWorld, N, V);
+    L += lightTerm(4, SL_LIGHT_KIND_4, SL_LIGHT_ATTENUATION_4, SL_SHADOW_ARG(4) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 5 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 5)
 #if SL_LIGHT_KIND_5 == SL_LIGHT_AREA
-    L += areaLightTerm(5, SL_LIGHT_ATTENUATION_5, SL_LIGHT_SAMPLES_X_5, SL_LIGHT_SAMPLES_Y_5, SL_SHADOW_ARG(5) posWorld, N, V);
+    L += areaLightTerm(5, SL_LIGHT_ATTENUATION_5, SL_LIGHT_SAMPLES_X_5, SL_LIGHT_SAMPLES_Y_5, SL_SHADOW_ARG(5) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(5, SL_LIGHT_KIND_5, SL_LIGHT_ATTENUATION_5, SL_SHADOW_ARG(5) posWorld, N, V);
+    L += lightTerm(5, SL_LIGHT_KIND_5, SL_LIGHT_ATTENUATION_5, SL_SHADOW_ARG(5) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 6 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 6)
 #if SL_LIGHT_KIND_6 == SL_LIGHT_AREA
-    L += areaLightTerm(6, SL_LIGHT_ATTENUATION_6, SL_LIGHT_SAMPLES_X_6, SL_LIGHT_SAMPLES_Y_6, SL_SHADOW_ARG(6) posWorld, N, V);
+    L += areaLightTerm(6, SL_LIGHT_ATTENUATION_6, SL_LIGHT_SAMPLES_X_6, SL_LIGHT_SAMPLES_Y_6, SL_SHADOW_ARG(6) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(6, SL_LIGHT_KIND_6, SL_LIGHT_ATTENUATION_6, SL_SHADOW_ARG(6) posWorld, N, V);
+    L += lightTerm(6, SL_LIGHT_KIND_6, SL_LIGHT_ATTENUATION_6, SL_SHADOW_ARG(6) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 7 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 7)
 #if SL_LIGHT_KIND_7 == SL_LIGHT_AREA
-    L += areaLightTerm(7, SL_LIGHT_ATTENUATION_7, SL_LIGHT_SAMPLES_X_7, SL_LIGHT_SAMPLES_Y_7, SL_SHADOW_ARG(7) posWorld, N, V);
+    L += areaLightTerm(7, SL_LIGHT_ATTENUATION_7, SL_LIGHT_SAMPLES_X_7, SL_LIGHT_SAMPLES_Y_7, SL_SHADOW_ARG(7) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(7, SL_LIGHT_KIND_7, SL_LIGHT_ATTENUATION_7, SL_SHADOW_ARG(7) posWorld, N, V);
+    L += lightTerm(7, SL_LIGHT_KIND_7, SL_LIGHT_ATTENUATION_7, SL_SHADOW_ARG(7) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 8 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 8)
 #if SL_LIGHT_KIND_8 == SL_LIGHT_AREA
-    L += areaLightTerm(8, SL_LIGHT_ATTENUATION_8, SL_LIGHT_SAMPLES_X_8, SL_LIGHT_SAMPLES_Y_8, SL_SHADOW_ARG(8) posWorld, N, V);
+    L += areaLightTerm(8, SL_LIGHT_ATTENUATION_8, SL_LIGHT_SAMPLES_X_8, SL_LIGHT_SAMPLES_Y_8, SL_SHADOW_ARG(8) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(8, SL_LIGHT_KIND_8, SL_LIGHT_ATTENUATION_8, SL_SHADOW_ARG(8) posWorld, N, V);
+    L += lightTerm(8, SL_LIGHT_KIND_8, SL_LIGHT_ATTENUATION_8, SL_SHADOW_ARG(8) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 9 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 9)
 #if SL_LIGHT_KIND_9 == SL_LIGHT_AREA
-    L += areaLightTerm(9, SL_LIGHT_ATTENUATION_9, SL_LIGHT_SAMPLES_X_9, SL_LIGHT_SAMPLES_Y_9, SL_SHADOW_ARG(9) posWorld, N, V);
+    L += areaLightTerm(9, SL_LIGHT_ATTENUATION_9, SL_LIGHT_SAMPLES_X_9, SL_LIGHT_SAMPLES_Y_9, SL_SHADOW_ARG(9) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(9, SL_LIGHT_KIND_9, SL_LIGHT_ATTENUATION_9, SL_SHADOW_ARG(9) posWorld, N, V);
+    L += lightTerm(9, SL_LIGHT_KIND_9, SL_LIGHT_ATTENUATION_9, SL_SHADOW_ARG(9) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 10 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 10)
 #if SL_LIGHT_KIND_10 == SL_LIGHT_AREA
-    L += areaLightTerm(10, SL_LIGHT_ATTENUATION_10, SL_LIGHT_SAMPLES_X_10, SL_LIGHT_SAMPLES_Y_10, SL_SHADOW_ARG(10) posWorld, N, V);
+    L += areaLightTerm(10, SL_LIGHT_ATTENUATION_10, SL_LIGHT_SAMPLES_X_10, SL_LIGHT_SAMPLES_Y_10, SL_SHADOW_ARG(10) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(10, SL_LIGHT_KIND_10, SL_LIGHT_ATTENUATION_10, SL_SHADOW_ARG(10) posWorld, N, V);
+    L += lightTerm(10, SL_LIGHT_KIND_10, SL_LIGHT_ATTENUATION_10, SL_SHADOW_ARG(10) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 11 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 11)
 #if SL_LIGHT_KIND_11 == SL_LIGHT_AREA
-    L += areaLightTerm(11, SL_LIGHT_ATTENUATION_11, SL_LIGHT_SAMPLES_X_11, SL_LIGHT_SAMPLES_Y_11, SL_SHADOW_ARG(11) posWorld, N, V);
+    L += areaLightTerm(11, SL_LIGHT_ATTENUATION_11, SL_LIGHT_SAMPLES_X_11, SL_LIGHT_SAMPLES_Y_11, SL_SHADOW_ARG(11) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(11, SL_LIGHT_KIND_11, SL_LIGHT_ATTENUATION_11, SL_SHADOW_ARG(11) posWorld, N, V);
+    L += lightTerm(11, SL_LIGHT_KIND_11, SL_LIGHT_ATTENUATION_11, SL_SHADOW_ARG(11) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 12 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 12)
 #if SL_LIGHT_KIND_12 == SL_LIGHT_AREA
-    L += areaLightTerm(12, SL_LIGHT_ATTENUATION_12, SL_LIGHT_SAMPLES_X_12, SL_LIGHT_SAMPLES_Y_12, SL_SHADOW_ARG(12) posWorld, N, V);
+    L += areaLightTerm(12, SL_LIGHT_ATTENUATION_12, SL_LIGHT_SAMPLES_X_12, SL_LIGHT_SAMPLES_Y_12, SL_SHADOW_ARG(12) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(12, SL_LIGHT_KIND_12, SL_LIGHT_ATTENUATION_12, SL_SHADOW_ARG(12) posWorld, N, V);
+    L += lightTerm(12, SL_LIGHT_KIND_12, SL_LIGHT_ATTENUATION_12, SL_SHADOW_ARG(12) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 13 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 13)
 #if SL_LIGHT_KIND_13 == SL_LIGHT_AREA
-    L += areaLightTerm(13, SL_LIGHT_ATTENUATION_13, SL_LIGHT_SAMPLES_X_13, SL_LIGHT_SAMPLES_Y_13, SL_SHADOW_ARG(13) posWorld, N, V);
+    L += areaLightTerm(13, SL_LIGHT_ATTENUATION_13, SL_LIGHT_SAMPLES_X_13, SL_LIGHT_SAMPLES_Y_13, SL_SHADOW_ARG(13) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(13, SL_LIGHT_KIND_13, SL_LIGHT_ATTENUATION_13, SL_SHADOW_ARG(13) posWorld, N, V);
+    L += lightTerm(13, SL_LIGHT_KIND_13, SL_LIGHT_ATTENUATION_13, SL_SHADOW_ARG(13) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 14 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 14)
 #if SL_LIGHT_KIND_14 == SL_LIGHT_AREA
-    L += areaLightTerm(14, SL_LIGHT_ATTENUATION_14, SL_LIGHT_SAMPLES_X_14, SL_LIGHT_SAMPLES_Y_14, SL_SHADOW_ARG(14) posWorld, N, V);
+    L += areaLightTerm(14, SL_LIGHT_ATTENUATION_14, SL_LIGHT_SAMPLES_X_14, SL_LIGHT_SAMPLES_Y_14, SL_SHADOW_ARG(14) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(14, SL_LIGHT_KIND_14, SL_LIGHT_ATTENUATION_14, SL_SHADOW_ARG(14) posWorld, N, V);
+    L += lightTerm(14, SL_LIGHT_KIND_14, SL_LIGHT_ATTENUATION_14, SL_SHADOW_ARG(14) posWorld, N, V, texel, specularShare);
 #endif
 #endif
 #if SL_LIGHT_COUNT > 15 && SL_SHOW != SL_SHOW_AMBIENT && SL_SHOW != SL_SHOW_UNLIT && (SL_SHOW != SL_SHOW_LIGHT || SL_SHOW_LIGHT_INDEX == 15)
 #if SL_LIGHT_KIND_15 == SL_LIGHT_AREA
-    L += areaLightTerm(15, SL_LIGHT_ATTENUATION_15, SL_LIGHT_SAMPLES_X_15, SL_LIGHT_SAMPLES_Y_15, SL_SHADOW_ARG(15) posWorld, N, V);
+    L += areaLightTerm(15, SL_LIGHT_ATTENUATION_15, SL_LIGHT_SAMPLES_X_15, SL_LIGHT_SAMPLES_Y_15, SL_SHADOW_ARG(15) posWorld, N, V, texel, specularShare);
 #else
-    L += lightTerm(15, SL_LIGHT_KIND_15, SL_LIGHT_ATTENUATION_15, SL_SHADOW_ARG(15) posWorld, N, V);
+    L += lightTerm(15, SL_LIGHT_KIND_15, SL_LIGHT_ATTENUATION_15, SL_SHADOW_ARG(15) posWorld, N, V, texel, specularShare);
 #endif
 #endif
     return L;
 }
 
+// The lecture's L before the clamp (progressive Phong sums these over passes and clamps the mean).
+vec3 shadeLectureUnclamped(vec3 posWorld, vec3 nrmWorld, vec3 texel) { return sumOfTerms(posWorld, nrmWorld, texel, 1.0); }
+
 // The lecture's L, clamped to [0, 1]: linear RGB.
-vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld) { return clamp(shadeLectureUnclamped(posWorld, nrmWorld), 0.0, 1.0); }
+vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld, vec3 texel) { return clamp(shadeLectureUnclamped(posWorld, nrmWorld, texel), 0.0, 1.0); }
+
+// The formula in two parts, for flat and Gouraud shading of a textured surface: they evaluate it per
+// face or vertex, before the fragment knows its texel, and the fragment stage combines them
+// (shaders/object_color.glsl, combineTerms):  L = clamp(texel * termsOfC + specular, 0, 1).
+vec3 shadeLectureTermsOfC(vec3 posWorld, vec3 nrmWorld) { return sumOfTerms(posWorld, nrmWorld, vec3(1.0), 0.0); }  // k_a A C + sum v L_l k_d C (N.I)
+vec3 shadeLectureSpecular(vec3 posWorld, vec3 nrmWorld) { return sumOfTerms(posWorld, nrmWorld, vec3(0.0), 1.0); }  // sum v L_l k_s S spec_l

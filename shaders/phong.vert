@@ -1,6 +1,7 @@
 // Phong shading: position and normal are interpolated; the fragment shader evaluates the colour.
 #define SL_STAGE_IO out
 #include "phong_interface.glsl"
+#include "object_color.glsl"
 
 layout(location = SL_ATTRIB_POSITION) in vec3 a_posObject;
 layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
@@ -10,6 +11,7 @@ void main() {
     v_posWorld = posWorld.xyz;
     v_nrmWorld = mat3(u_normalWorldFromObject) * a_nrmObject;
     gl_Position = u_clipFromWorld * posWorld;
+    passObjectColor();
 #ifdef SL_INTERPOLATED_INPUTS
     v_toEyeWorld = u_eyeWorld.xyz - posWorld.xyz;
     v_ambientTermExponent = vec4(u_ambientTerm.rgb, u_coefficients.w);

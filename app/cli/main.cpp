@@ -147,7 +147,7 @@ int run(const std::vector<std::string>& args) {
             if (options.verbose && drawn.objects[i].mesh.type == MeshSpec::Type::Gltf) {
                 std::cerr << "shadelab: " << path << ": " << info.triangles << " triangles, " << info.generatedNormals
                           << " generated normals";
-                if (info.texturesIgnored) std::cerr << ", textures ignored (shadelab shades with material colours only)";
+                if (info.textures) std::cerr << ", " << info.textures << " base colour texture(s)";
                 std::cerr << "\n";
             }
         }

@@ -159,6 +159,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         }
         else if (arg == "--shadows") noValue(), o.shadows = true;
         else if (arg == "--no-shadows") noValue(), o.shadows = false;
+        else if (arg == "--no-textures") noValue(), o.noTextures = true;
         else if (arg == "--shader-dir") o.shaderDir = next();
         else if (arg == "--backend") {
             o.backend = next();
@@ -309,6 +310,7 @@ void applyOverrides(Scene& s, const Options& o) {
     if (o.specularNormalization) s.specularNormalization = *o.specularNormalization;
     if (o.fresnel) s.fresnel = *o.fresnel;
     if (o.ior) s.ior = *o.ior;
+    if (o.noTextures) s.textures = false;
     if (o.diffA) s.diff.a = *o.diffA, s.diff.b = *o.diffB;
     if (o.diffFactor) s.diff.factor = *o.diffFactor;
     if (o.show) s.show = *o.show;
@@ -365,6 +367,8 @@ Without --output (or --benchmark) it opens the interactive viewer.
                           normal=X,Y,Z size=W,H samples=NXxNY two-sided (area), e.g.
                           --light area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
   --shadows, --no-shadows shadows (occlusion toward every light) on or off
+  --no-textures           glTF models without their base colour textures and vertex colours
+                          (C is each material's base colour factor alone)
   --sweep PARAM=V1,V2,... with --output: a contact sheet, one labelled tile (of --size) per value;
                           a second --sweep makes a grid (rows). PARAM: ke, ks, kd, ka, intensity (every
                           light), tessellation (first mesh), ior, shading, reflection,

@@ -27,6 +27,7 @@ struct Options {
     std::optional<MeshSpec> mesh;           // --mesh: replaces the first object's mesh
     std::vector<Light> lights;              // --light (repeatable): replace the scene's lights
     std::optional<bool> shadows;            // --shadows / --no-shadows
+    bool noTextures = false;                // --no-textures: glTF models in their base colour factors alone
     std::optional<SpecularNormalization> specularNormalization;  // --specular-normalization none|energy
     std::optional<FresnelMode> fresnel;     // --fresnel none|schlick|exact
     std::optional<float> ior;               // --ior X (1..10)

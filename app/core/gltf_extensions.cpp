@@ -17,6 +17,7 @@ const std::vector<std::string> kDecodedGltfExtensions = {
     "EXT_meshopt_compression",     // meshoptimizer's vertex and index codecs and filters
     "KHR_draco_mesh_compression",  // Draco-compressed primitives
     "EXT_mesh_gpu_instancing",     // a node drawn once per TRANSLATION / ROTATION / SCALE
+    "KHR_texture_transform",       // the base colour texture's coordinates offset, rotated, scaled
 };
 
 namespace {
@@ -42,7 +43,7 @@ std::string notRead(const std::vector<std::string>& names) {
     const auto add = [&](bool on, const char* what) {
         if (on) effects += std::string(effects.empty() ? "" : "; ") + what;
     };
-    add(textures, "textures are not drawn");
+    add(textures, "textures stored only in those formats are not drawn (a PNG or JPEG fallback is)");
     add(materials, "the lecture's model and the base colour shade every material");
     add(lights, "the scene's lights light the model, not the file's");
     add(other, "what the others add is not drawn");
@@ -68,10 +69,8 @@ bool prepareGltfExtensions(nlohmann::json& doc, const std::string& label, GltfPr
                 if (e.is_string()) list.push_back(e.get<std::string>());
         return list;
     };
-    // KHR_texture_transform only moves texture coordinates, and shadelab draws no textures yet: a file
-    // that requires it (SheenCloth) is drawn as it was, with the warning below.
     for (const std::string& name : names("extensionsRequired"))
-        if (!decoded(name) && name != "KHR_texture_transform")
+        if (!decoded(name))
             throw InputError(label + ": requires " + name + ", which shadelab does not read");
     std::vector<std::string> unread;
     for (const std::string& name : names("extensionsUsed"))

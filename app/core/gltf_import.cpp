@@ -6,6 +6,7 @@
 #include "core/json_depth.hpp"
 
 #include <nlohmann/json.hpp>
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 
 #include <glm/common.hpp>
@@ -112,6 +113,19 @@ private:
                     const unsigned char** baseOut) const;
     void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& worldFromObject, const std::string& where);
     void visit(int nodeIndex, const glm::mat4& parent, int depth);
+    // The object texture of the lecture's C: the material's baseColorTexture, decoded once per image
+    // and sampler into Mesh::textures; -1 (with a warning) where it cannot be drawn.
+    struct BaseColorTexture {
+        int slot = -1;           // index into mesh_.textures
+        int texCoord = 0;        // which TEXCOORD_n
+        glm::mat3 transform{1.0f};  // KHR_texture_transform: uv' = transform * (uv, 1)
+    };
+    BaseColorTexture baseColorTexture(int materialIndex);
+    int textureSlot(int textureIndex);
+    std::vector<glm::vec2> texcoords(const tinygltf::Primitive& p, const BaseColorTexture& t, std::size_t count,
+                                     const std::string& where) const;
+    std::vector<glm::vec3> vertexColors(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
+    std::map<std::pair<int, int>, int> textureSlots_;  // (image, sampler) -> slot, or -1
 
     const std::string& path_;
     const tinygltf::Model& model_;
@@ -332,6 +346,164 @@ void angleWeightedNormals(const std::vector<glm::vec3>& pos, const std::vector<s
     }
 }
 
+// The texture coordinate transform of KHR_texture_transform: translation * rotation * scale, with the
+// extension's rotation matrix (counter-clockwise in uv with v pointing down).
+glm::mat3 textureTransform(const tinygltf::Value& ext) {
+    const auto number = [&](const char* key, int i, double fallback) {
+        if (!ext.Has(key)) return fallback;
+        const tinygltf::Value& v = ext.Get(key);
+        if (i < 0) return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+        return v.IsArray() && v.ArrayLen() > std::size_t(i) && v.Get(i).IsNumber() ? v.Get(i).GetNumberAsDouble() : fallback;
+    };
+    const float ox = float(number("offset", 0, 0.0)), oy = float(number("offset", 1, 0.0));
+    const float r = float(number("rotation", -1, 0.0));
+    const float sx = float(number("scale", 0, 1.0)), sy = float(number("scale", 1, 1.0));
+    const glm::mat3 translation(1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, ox, oy, 1.0f);  // column-major
+    const glm::mat3 rotation(std::cos(r), -std::sin(r), 0.0f, std::sin(r), std::cos(r), 0.0f, 0.0f, 0.0f, 1.0f);
+    const glm::mat3 scale(sx, 0.0f, 0.0f, 0.0f, sy, 0.0f, 0.0f, 0.0f, 1.0f);
+    return translation * rotation * scale;
+}
+
+// A sampler's GL enum, or glTF's default where the file gives none or one GL does not have.
+int wrapMode(int mode) {
+    return mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE || mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? mode
+                                                                                                      : TINYGLTF_TEXTURE_WRAP_REPEAT;
+}
+
+// Images larger than this on a side, or with more pixels, are not decoded (a 16k texture is 1 GiB),
+// nor past kMaxModelTexturePixels in one model (a small PNG can decode to 256 MiB).
+constexpr int kMaxTextureSide = 16384;
+constexpr std::size_t kMaxTexturePixels = std::size_t(1) << 26;
+constexpr std::size_t kMaxModelTexturePixels = std::size_t(1) << 28;
+
+GltfReader::BaseColorTexture GltfReader::baseColorTexture(int mi) {
+    BaseColorTexture t;
+    if (mi < 0 || std::size_t(mi) >= model_.materials.size()) return t;
+    const tinygltf::TextureInfo& info = model_.materials[std::size_t(mi)].pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) return t;
+    t.texCoord = info.texCoord;
+    if (const auto e = info.extensions.find("KHR_texture_transform"); e != info.extensions.end()) {
+        t.transform = textureTransform(e->second);
+        if (e->second.Has("texCoord") && e->second.Get("texCoord").IsInt()) t.texCoord = e->second.Get("texCoord").GetNumberAsInt();
+    }
+    t.slot = textureSlot(info.index);
+    return t;
+}
+
+int GltfReader::textureSlot(int ti) {
+    const std::string where = "texture " + std::to_string(ti);
+    if (std::size_t(ti) >= model_.textures.size()) fail(where, "does not exist");
+    const tinygltf::Texture& texture = model_.textures[std::size_t(ti)];
+    const auto key = std::make_pair(texture.source, texture.sampler);
+    if (const auto known = textureSlots_.find(key); known != textureSlots_.end()) return known->second;
+    int& slot = textureSlots_[key];
+    slot = -1;
+    const auto skip = [&](const std::string& why) {
+        info_.warnings.push_back(where + ": " + why + "; drawn in its base colour");
+        return -1;
+    };
+    if (texture.source < 0) return skip("no PNG or JPEG image (only an extension's)");
+    if (std::size_t(texture.source) >= model_.images.size()) fail(where, "image " + std::to_string(texture.source) + " does not exist");
+    const tinygltf::Image& image = model_.images[std::size_t(texture.source)];
+    auto out = std::make_shared<TextureImage>();
+    out->name = image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "image " + std::to_string(texture.source) : image.uri;
+    const unsigned char* bytes = image.image.data();
+    std::size_t size = image.image.size();
+    if (image.bufferView >= 0) {
+        if (std::size_t(image.bufferView) >= model_.bufferViews.size())
+            fail(out->name, "bufferView " + std::to_string(image.bufferView) + " does not exist");
+        const std::size_t length = model_.bufferViews[std::size_t(image.bufferView)].byteLength;
+        std::size_t stride = 0;
+        checkRange(image.bufferView, 0, length, length, 1, out->name, &stride, &bytes);
+        size = length;
+    }
+    if (size == 0) return skip(out->name + " could not be read");
+    if (size > std::size_t(std::numeric_limits<int>::max())) return skip(out->name + " is too large");
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, int(size), &w, &h, &channels))
+        return skip(out->name + " is not an image shadelab decodes (PNG or JPEG)");
+    if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide || std::size_t(w) * std::size_t(h) > kMaxTexturePixels)
+        return skip(out->name + " is " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than shadelab reads (" +
+                    std::to_string(kMaxTextureSide) + " on a side, 64 Mpixels)");
+    std::size_t decoded = 0;
+    for (const auto& t : mesh_.textures) decoded += std::size_t(t->width) * std::size_t(t->height);
+    if (decoded + std::size_t(w) * std::size_t(h) > kMaxModelTexturePixels)
+        return skip(out->name + " would take the model's textures past 256 Mpixels");
+    std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load_from_memory(bytes, int(size), &w, &h, &channels, 4),
+                                                           &stbi_image_free);
+    if (!pixels) return skip(out->name + " does not decode (" + std::string(stbi_failure_reason()) + ")");
+    out->width = w, out->height = h;
+    out->rgba.assign(pixels.get(), pixels.get() + std::size_t(w) * std::size_t(h) * 4);
+    if (texture.sampler >= 0 && std::size_t(texture.sampler) < model_.samplers.size()) {
+        const tinygltf::Sampler& s = model_.samplers[std::size_t(texture.sampler)];
+        out->wrapS = wrapMode(s.wrapS);
+        out->wrapT = wrapMode(s.wrapT);
+        if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out->magFilter = s.magFilter;
+        switch (s.minFilter) {
+        case TINYGLTF_TEXTURE_FILTER_NEAREST:
+        case TINYGLTF_TEXTURE_FILTER_LINEAR:
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: out->minFilter = s.minFilter; break;
+        default: break;  // none given: trilinear
+        }
+    }
+    slot = int(mesh_.textures.size());
+    mesh_.textures.push_back(std::move(out));
+    return slot;
+}
+
+// The primitive's texture coordinates for its base colour texture (TEXCOORD_n, transformed): FLOAT,
+// normalized UNSIGNED_BYTE / UNSIGNED_SHORT, and with KHR_mesh_quantization every 8- and 16-bit type.
+// Empty (with a warning) when the primitive lacks that set.
+std::vector<glm::vec2> GltfReader::texcoords(const tinygltf::Primitive& p, const BaseColorTexture& t, std::size_t count,
+                                             const std::string& where) const {
+    const std::string name = "TEXCOORD_" + std::to_string(t.texCoord);
+    const auto it = p.attributes.find(name);
+    if (it == p.attributes.end()) {
+        info_.warnings.push_back(where + ": its base colour texture reads " + name + ", which it does not have; drawn in its base colour");
+        return {};
+    }
+    const View v = view(it->second, where + " " + name, {TINYGLTF_TYPE_VEC2},
+                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                         TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    if (v.count != count)
+        fail(where + " " + name + " (accessor " + std::to_string(it->second) + ")",
+             "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
+    std::vector<glm::vec2> out(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::vec3 uv = t.transform * glm::vec3(scalarAt(v, i, 0), scalarAt(v, i, 1), 1.0f);
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+            fail(where + " " + name + " (accessor " + std::to_string(it->second) + ")",
+                 "coordinate " + std::to_string(i) + " is not finite");
+        out[i] = glm::vec2(uv);
+    }
+    return out;
+}
+
+// COLOR_0 as linear RGB in [0, 1] (alpha is not drawn: shadelab's surfaces are opaque); empty when
+// the primitive has none.
+std::vector<glm::vec3> GltfReader::vertexColors(const tinygltf::Primitive& p, std::size_t count,
+                                                const std::string& where) const {
+    const auto it = p.attributes.find("COLOR_0");
+    if (it == p.attributes.end()) return {};
+    const std::string name = where + " COLOR_0 (accessor " + std::to_string(it->second) + ")";
+    const View v = view(it->second, where + " COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
+                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                         TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized) fail(name, "integer colours must be normalized");
+    if (v.count != count)
+        fail(name, "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
+    std::vector<glm::vec3> out(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::vec3 c(scalarAt(v, i, 0), scalarAt(v, i, 1), scalarAt(v, i, 2));
+        if (!isFinite(c)) fail(name, "colour " + std::to_string(i) + " is not finite");
+        out[i] = glm::clamp(c, 0.0f, 1.0f);
+    }
+    return out;
+}
+
 void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where) {
     const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -401,6 +573,13 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         info_.generatedNormals += normals.size();
     }
 
+    // C where it varies over the surface: the base colour texture's coordinates and COLOR_0.
+    const std::size_t vertexCount = positions.size();
+    const BaseColorTexture texture = baseColorTexture(p.material);
+    std::vector<glm::vec2> uvs = texture.slot >= 0 ? texcoords(p, texture, vertexCount, where) : std::vector<glm::vec2>();
+    const int textureSlot = uvs.empty() ? -1 : texture.slot;
+    const std::vector<glm::vec3> colors = vertexColors(p, vertexCount, where);
+
     // Bake the node transform. A mirroring transform (negative determinant) turns counter-clockwise
     // triangles clockwise, so their winding is flipped back.
     const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
@@ -433,6 +612,20 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
             mesh_.normals.push_back(safeNormalize(n));
         }
     }
+    if (!uvs.empty() || !colors.empty() || mesh_.variesColor()) {
+        // Defaults for the vertices before (the first primitive that varies) and for this one where
+        // it has no texture or no COLOR_0: coordinates 0 (an untextured part samples no texture) and white.
+        if (!mesh_.variesColor()) {
+            mesh_.texcoords.assign(base, glm::vec2(0.0f));
+            mesh_.colors.assign(base, glm::vec3(1.0f));
+        }
+        mesh_.texcoords.reserve(mesh_.positions.capacity());
+        mesh_.colors.reserve(mesh_.positions.capacity());
+        if (uvs.empty()) mesh_.texcoords.resize(base + vertexCount, glm::vec2(0.0f));
+        else mesh_.texcoords.insert(mesh_.texcoords.end(), uvs.begin(), uvs.end());
+        if (colors.empty()) mesh_.colors.resize(base + vertexCount, glm::vec3(1.0f));
+        else mesh_.colors.insert(mesh_.colors.end(), colors.begin(), colors.end());
+    }
     const auto firstIndex = std::uint32_t(mesh_.indices.size());
     if (firstIndex == 0 && base == 0 && !mirrored) {
         mesh_.indices = std::move(tris);  // the first primitive, winding kept: its indices as they are
@@ -456,7 +649,8 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         if (f.size() >= 3)
             part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
     }
-    if (!mesh_.parts.empty() && mesh_.parts.back().baseColor == part.baseColor &&
+    part.texture = textureSlot;
+    if (!mesh_.parts.empty() && mesh_.parts.back().baseColor == part.baseColor && mesh_.parts.back().texture == part.texture &&
         mesh_.parts.back().firstIndex + mesh_.parts.back().indexCount == part.firstIndex)
         mesh_.parts.back().indexCount += part.indexCount;
     else if (part.indexCount > 0)
@@ -598,7 +792,7 @@ Mesh GltfReader::read() {
     info_.meshes = int(model_.meshes.size());
     info_.materials = int(model_.materials.size());
     info_.vertices = mesh_.positions.size();
-    info_.texturesIgnored = !model_.textures.empty();
+    info_.textures = int(mesh_.textures.size());
     // TRIANGLES primitives of every mesh, each counted once (what the file holds, drawn or not).
     for (const tinygltf::Mesh& m : model_.meshes)
         for (const tinygltf::Primitive& p : m.primitives) {
@@ -847,9 +1041,14 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
     fsc.WriteWholeFile = nullptr;
     fsc.user_data = &context;
     loader.SetFsCallbacks(fsc);
-    // Textures are not used: skip decoding them (and the warnings about missing ones stay warnings).
+    // Images are decoded later, and only those a base colour texture uses (GltfReader::textureSlot):
+    // here a URI's bytes are kept as they are. An image in a buffer view is read from the view then,
+    // with its range checked (tinygltf hands it over unchecked).
     loader.SetImageLoader(
-        [](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+        [](tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes, int size,
+           void*) {
+            if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
+            image->as_is = true;
             return true;
         },
         nullptr);
@@ -940,7 +1139,8 @@ std::string describe(const std::string& path, const GltfInfo& i) {
     s += "model: " + path + "\n";
     s += "nodes: " + std::to_string(i.nodes) + " (in the drawn scene)\n";
     s += "meshes: " + std::to_string(i.meshes) + "\n";
-    s += "materials: " + std::to_string(i.materials) + (i.texturesIgnored ? " (textures ignored)" : "") + "\n";
+    s += "materials: " + std::to_string(i.materials) + "\n";
+    s += "textures: " + std::to_string(i.textures) + " base colour image" + (i.textures == 1 ? "" : "s") + " drawn\n";
     s += "primitives: " + std::to_string(i.primitives) + " drawn\n";
     s += "triangles: " + std::to_string(i.fileTriangles) + " in the file's TRIANGLES primitives, " +
          std::to_string(i.triangles) + " drawn\n";

@@ -31,7 +31,7 @@ struct GltfInfo {
     std::size_t triangles = 0;  // triangles drawn: every instance, strips and fans included
     std::size_t vertices = 0;   // vertices after baking
     std::size_t generatedNormals = 0;  // vertices whose normal shadelab computed (file had none)
-    bool texturesIgnored = false;
+    int textures = 0;           // base colour images decoded (each image and sampler pair once)
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // of the drawn vertices, world space
     std::vector<std::string> warnings;
     std::vector<GltfCamera> cameras;  // in the order the drawn scene reaches them (--camera N)

@@ -24,6 +24,11 @@ constexpr std::uint64_t kBytesPerTexel = 4;
 // flat pane needs its own vertices (2M-triangle sphere: single 245 MB, compare 607 MB, measured).
 constexpr std::uint64_t kBytesPerTriangle = 60, kBytesPerFlatTriangle = 85;
 
+// Per byte of a decoded base colour image: ~3.3 (a 4096 x 4096 texture, 64 MiB decoded, raised the
+// peak by 213 MB: the decoded copy, the decoder's buffer while it is copied, the GL texture and its
+// mip levels).
+constexpr std::uint64_t kTextureBytesNumerator = 10, kTextureBytesDenominator = 3;
+
 bool drawsFlat(const Scene& s) {
     return s.layout == Layout::Compare || s.shading == ShadingMode::Flat ||
            (s.layout == Layout::Diff && (s.diff.a == ShadingMode::Flat || s.diff.b == ShadingMode::Flat));
@@ -54,7 +59,7 @@ std::uint64_t proceduralTriangles(const MeshSpec& m) {
     return 0;
 }
 
-MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles) {
+MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles, std::uint64_t textureBytes) {
     MemoryUse use;
     use.program = kProgramBytes;
     const std::uint64_t pixels = std::uint64_t(std::max(s.width, 0)) * std::uint64_t(std::max(s.height, 0));
@@ -73,6 +78,7 @@ MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint
     else
         for (const SceneObject& o : s.objects) tris += proceduralTriangles(o.mesh);
     use.meshes = tris * (kBytesPerTriangle + (drawsFlat(s) ? kBytesPerFlatTriangle : 0));
+    use.textures = textureBytes * kTextureBytesNumerator / kTextureBytesDenominator;
     return use;
 }
 
@@ -94,6 +100,7 @@ void checkMemory(const MemoryUse& use, const std::string& what) {
     part("shadow maps", use.shadowMaps);
     part("meshes", use.meshes);
     part("images", use.images);
+    part("textures", use.textures);
     throw InputError(what + " needs about " + formatBytes(use.total()) + " (" + parts + "), more than the memory budget of " +
                      formatBytes(budget) + " (--max-memory)");
 }

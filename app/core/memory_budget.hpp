@@ -22,7 +22,8 @@ struct MemoryUse {
     std::uint64_t shadowMaps = 0;
     std::uint64_t meshes = 0;        // CPU arrays, the driver's vertex buffers and its binned triangles
     std::uint64_t images = 0;        // frames kept for a contact sheet or a playlist
-    std::uint64_t total() const { return program + framebuffers + shadowMaps + meshes + images; }
+    std::uint64_t textures = 0;      // glTF base colour images: decoded, and as GL textures with their mip levels
+    std::uint64_t total() const { return program + framebuffers + shadowMaps + meshes + images + textures; }
 };
 
 // Half of physical memory (sysconf), or 4 GiB where it cannot be read.
@@ -35,8 +36,10 @@ void setMemoryBudget(std::optional<std::uint64_t> bytes);
 std::uint64_t proceduralTriangles(const MeshSpec& spec);
 
 // One frame of `scene` at its size. `triangles`: the loaded meshes' total; without it, the
-// procedural meshes' (a model's are checked again after it is read).
-MemoryUse estimateFrame(const Scene& scene, int msaaSamples, std::optional<std::uint64_t> triangles = std::nullopt);
+// procedural meshes' (a model's are checked again after it is read). `textureBytes`: the loaded
+// models' decoded base colour images (SceneGeometry::textureBytes).
+MemoryUse estimateFrame(const Scene& scene, int msaaSamples, std::optional<std::uint64_t> triangles = std::nullopt,
+                        std::uint64_t textureBytes = 0);
 
 // Throws InputError "<what> needs about 5.2 GiB (...), more than the memory budget of 4.0 GiB
 // (--max-memory)" when `use` is over the budget.

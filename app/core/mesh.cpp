@@ -4,6 +4,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -180,6 +181,8 @@ FlatMesh makeFlatMesh(const Mesh& m) {
     f.positions = m.positions;
     f.normals = m.normals;
     f.centroids = m.positions;
+    f.texcoords = m.texcoords;
+    f.colors = m.colors;
     f.indices.resize(m.indices.size());
     std::vector<bool> claimed(vertexCount, false);
     for (size_t t = 0; t < triangles; ++t) {
@@ -198,6 +201,10 @@ FlatMesh makeFlatMesh(const Mesh& m) {
             f.positions.push_back(m.positions[corner[2]]);
             f.normals.push_back(n);
             f.centroids.push_back(centroid);
+            if (m.variesColor()) {
+                f.texcoords.push_back(m.texcoords[corner[2]]);
+                f.colors.push_back(m.colors[corner[2]]);
+            }
         } else {
             claimed[provoking] = true;
             f.normals[provoking] = n;
@@ -208,6 +215,53 @@ FlatMesh makeFlatMesh(const Mesh& m) {
         f.indices[3 * t + 2] = provoking;
     }
     return f;
+}
+
+namespace {
+
+// The sRGB transfer function's inverse for each 8-bit value (as GL decodes an SRGB8_ALPHA8 texel).
+const std::array<float, 256>& srgbDecodeTable() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i) {
+            const double c = i / 255.0;
+            t[std::size_t(i)] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+        }
+        return t;
+    }();
+    return table;
+}
+
+// Texel index i of `size` under a wrap mode (GL's REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE).
+int wrapTexel(int i, int size, int wrap) {
+    if (wrap == 0x812F) return std::clamp(i, 0, size - 1);  // GL_CLAMP_TO_EDGE
+    if (wrap == 0x8370) {                                   // GL_MIRRORED_REPEAT
+        const int period = 2 * size;
+        int m = ((i % period) + period) % period;
+        return m < size ? m : period - 1 - m;
+    }
+    return ((i % size) + size) % size;                      // GL_REPEAT
+}
+
+}  // namespace
+
+glm::vec3 sampleTexture(const TextureImage& t, const glm::vec2& uv) {
+    if (t.width <= 0 || t.height <= 0) return glm::vec3(1.0f);
+    const auto& decode = srgbDecodeTable();
+    const auto texel = [&](int x, int y) {
+        x = wrapTexel(x, t.width, t.wrapS);
+        y = wrapTexel(y, t.height, t.wrapT);
+        const std::uint8_t* p = &t.rgba[(std::size_t(y) * std::size_t(t.width) + std::size_t(x)) * 4];
+        return glm::vec3(decode[p[0]], decode[p[1]], decode[p[2]]);
+    };
+    // GL's texel space: texel centres at (i + 0.5) / size.
+    const float x = uv.x * float(t.width), y = uv.y * float(t.height);
+    if (t.magFilter == 0x2600)  // GL_NEAREST
+        return texel(int(std::floor(x)), int(std::floor(y)));
+    const float fx = x - 0.5f, fy = y - 0.5f;
+    const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+    const float ax = fx - float(x0), ay = fy - float(y0);
+    return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), ax), glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), ax), ay);
 }
 
 BoundingSphere worldBounds(const std::vector<const Mesh*>& meshes, const std::vector<glm::mat4>& worldFromObject) {

@@ -21,7 +21,7 @@ constexpr float kShadowRayOffset = 1e-4f;
 struct TriangleContext {
     const Scene& scene;
     const LightingEnvironment& env;
-    const Material& material;
+    const Material& material;  // C as drawn at the point: the part's base colour times the texel
     const SceneRayCaster& caster;
     glm::mat4 worldFromObject;
     glm::mat3 normalWorldFromObject;
@@ -29,11 +29,29 @@ struct TriangleContext {
     glm::vec3 nrmObject[3];
     std::uint32_t vertex[3];
     glm::vec3 barycentric;
+    // Where C varies (SL_TEXTURED): the material with the base colour alone, and the texel (texture x
+    // vertex colour) the fragment multiplies it by. Flat and Gouraud evaluate with the former and
+    // combine per fragment as shaders/object_color.glsl does; Phong evaluates with `material`.
+    const Material* baseMaterial = nullptr;
+    glm::vec3 texel{1.0f};
 };
+
+// Of what `show` selects, the part the texel does not multiply: the specular.
+glm::vec3 shownSpecular(const ShadingTerms& t, const TermView& show) {
+    switch (show.term) {
+    case ShowTerm::All:
+    case ShowTerm::Specular: return t.specular;
+    case ShowTerm::Light:
+        return show.light >= 0 && std::size_t(show.light) < t.lights.size() ? t.lights[std::size_t(show.light)].specular
+                                                                           : glm::vec3(0.0f);
+    default: return glm::vec3(0.0f);
+    }
+}
 
 // The formula at one point with one unit normal: shadeTerms with, when shadows are on, an occlusion
 // test by ray cast; then the lecture's vectors for each light.
-ProbeEvaluation evaluate(const TriangleContext& c, const glm::vec3& posWorld, const glm::vec3& nrmWorld) {
+ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, const glm::vec3& posWorld,
+                         const glm::vec3& nrmWorld) {
     ProbeEvaluation e;
     e.posWorld = posWorld;
     e.nrmWorld = nrmWorld;
@@ -52,7 +70,7 @@ ProbeEvaluation evaluate(const TriangleContext& c, const glm::vec3& posWorld, co
             return hidden ? 0.0f : 1.0f;
         };
     }
-    e.terms = shadeTerms(c.material, c.env, posWorld, nrmWorld, visibility);
+    e.terms = shadeTerms(material, c.env, posWorld, nrmWorld, visibility);
     for (std::size_t l = 0; l < lightCount; ++l) {
         const Light& light = c.env.lights[l];
         ProbeLight& out = e.lights[l];
@@ -76,6 +94,8 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
     ModeProbe m;
     m.mode = mode;
     const glm::vec3& w = c.barycentric;
+    // Phong evaluates with the sampled C; flat and Gouraud with the base colour (see TriangleContext).
+    const Material& lit = mode != ShadingMode::Phong && c.baseMaterial ? *c.baseMaterial : c.material;
     switch (mode) {
     case ShadingMode::Phong: {
         // phong.vert passes normalWorldFromObject * normal unnormalised; phong.frag normalises the
@@ -84,28 +104,39 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         const glm::vec3 nrm = w.x * (c.normalWorldFromObject * c.nrmObject[0]) +
                               w.y * (c.normalWorldFromObject * c.nrmObject[1]) +
                               w.z * (c.normalWorldFromObject * c.nrmObject[2]);
-        m.evaluations.push_back(evaluate(c, toWorld(c.worldFromObject, posObject), glm::normalize(nrm)));
+        m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), glm::normalize(nrm)));
         m.color = m.evaluations[0].terms.total;
         break;
     }
-    case ShadingMode::Gouraud:
+    case ShadingMode::Gouraud: {
+        // Textured: gouraud.vert's two parts, unclamped, interpolated; combined in gouraud.frag.
+        glm::vec3 termsOfC(0.0f), specular(0.0f);
         for (int k = 0; k < 3; ++k) {
-            ProbeEvaluation e = evaluate(c, toWorld(c.worldFromObject, c.posObject[k]),
+            ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, c.posObject[k]),
                                          glm::normalize(c.normalWorldFromObject * c.nrmObject[k]));
             e.site = ProbeEvaluation::Site::Vertex;
             e.vertex = c.vertex[k];
             m.color += w[k] * e.terms.total;
+            const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
+            termsOfC += w[k] * (e.terms.shown - s);
+            specular += w[k] * s;
             m.evaluations.push_back(std::move(e));
         }
+        if (c.baseMaterial) m.color = glm::clamp(c.texel * termsOfC + specular, 0.0f, 1.0f);
         break;
+    }
     case ShadingMode::Flat: {
         // As makeFlatMesh: the face normal of the corners in index order and the object-space centroid,
         // both taken to world space by flat.vert.
         const glm::vec3 centroid = (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f;
         const glm::vec3 face = faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
-        ProbeEvaluation e = evaluate(c, toWorld(c.worldFromObject, centroid), glm::normalize(c.normalWorldFromObject * face));
+        ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid), glm::normalize(c.normalWorldFromObject * face));
         e.site = ProbeEvaluation::Site::Centroid;
         m.color = e.terms.total;
+        if (c.baseMaterial) {
+            const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
+            m.color = glm::clamp(c.texel * (e.terms.shown - s) + s, 0.0f, 1.0f);
+        }
         m.evaluations.push_back(std::move(e));
         break;
     }
@@ -124,14 +155,20 @@ glm::ivec3 quantize(const glm::vec3& c) {
     return q;
 }
 
+// The part of the mesh a triangle belongs to (nullptr for a mesh without parts).
+const MeshPart* partOf(const Mesh& mesh, std::size_t triangle) {
+    const std::size_t index = 3 * triangle;
+    for (const MeshPart& part : mesh.parts)
+        if (index >= part.firstIndex && index < std::size_t(part.firstIndex) + part.indexCount) return &part;
+    return nullptr;
+}
+
 // The material the renderer draws a triangle with: a glTF part's base colour unless the scene set one.
 Material drawnMaterial(const Scene& scene, const Mesh& mesh, std::size_t object, std::size_t triangle) {
     Material m = scene.objects[object].material;
     if (m.colorSet) return m;
-    const std::size_t index = 3 * triangle;
-    for (const MeshPart& part : mesh.parts)
-        if (index >= part.firstIndex && index < std::size_t(part.firstIndex) + part.indexCount && part.hasBaseColor)
-            m.color = part.baseColor;
+    const MeshPart* part = partOf(mesh, triangle);
+    if (part && part->hasBaseColor) m.color = part->baseColor;
     return m;
 }
 
@@ -160,6 +197,7 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
     r.anchor.pane = r.pane;
     const Mesh& mesh = geometry.meshes[anchor.object];
     r.material = drawnMaterial(scene, mesh, anchor.object, anchor.triangle);
+    const Material baseMaterial = r.material;
     const LightingEnvironment env = lightingEnvironment(scene);
     const glm::mat4 world = worldFromObject(scene.objects[anchor.object].transform);
     TriangleContext c{scene, env, r.material, caster, world, normalWorldFromObject(world), {}, {}, {}, anchor.barycentric};
@@ -167,6 +205,21 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
         c.vertex[k] = mesh.indices[3 * anchor.triangle + std::size_t(k)];
         c.posObject[k] = mesh.positions[c.vertex[k]];
         c.nrmObject[k] = mesh.normals[c.vertex[k]];
+    }
+    // Where C varies, the sampled C: the base colour times the texture and the vertex colour at the
+    // point (object_color.glsl), with the coordinates and colours interpolated by the barycentrics.
+    if (mesh.variesColor() && scene.textures && !scene.objects[anchor.object].material.colorSet) {
+        const glm::vec3& w = anchor.barycentric;
+        r.textured = true;
+        r.texcoord = w.x * mesh.texcoords[c.vertex[0]] + w.y * mesh.texcoords[c.vertex[1]] + w.z * mesh.texcoords[c.vertex[2]];
+        r.texel = w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
+        const MeshPart* part = partOf(mesh, anchor.triangle);
+        if (part && part->texture >= 0 && std::size_t(part->texture) < mesh.textures.size())
+            r.texel *= sampleTexture(*mesh.textures[std::size_t(part->texture)], r.texcoord);
+        r.baseColor = baseMaterial.color;
+        r.material.color = baseMaterial.color * r.texel;
+        c.baseMaterial = &baseMaterial;
+        c.texel = r.texel;
     }
     r.posWorld = toWorld(world, anchor.barycentric.x * c.posObject[0] + anchor.barycentric.y * c.posObject[1] +
                                     anchor.barycentric.z * c.posObject[2]);

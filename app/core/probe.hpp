@@ -15,6 +15,7 @@
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -76,7 +77,12 @@ struct ProbeResult {
     bool miss = true;          // nothing drawn there: the pixel is the background
     ProbeAnchor anchor;        // the surface point (when not a miss)
     glm::vec3 posWorld{0.0f};  // the point the pixel's centre sees
-    Material material;         // as drawn: a glTF part's own base colour replaces `color` unless the scene set one
+    Material material;         // as drawn: a glTF part's own base colour replaces `color` unless the scene set one;
+                               // where C varies, `color` is the sampled C (base colour x texel)
+    bool textured = false;     // C varies over the surface (a glTF texture or vertex colours, drawn)
+    glm::vec2 texcoord{0.0f};  // textured: the texture coordinates at the point
+    glm::vec3 texel{1.0f};     // textured: texture(texcoord) x COLOR_0 there, linear
+    glm::vec3 baseColor{1.0f}; // textured: the part's base colour factor (C = baseColor x texel)
     // One mode; the diff layout's difference pane: its two modes (diff.a, diff.b).
     std::vector<ModeProbe> modes;
     glm::ivec3 output8{0};     // the pixel: the mode's value, the difference pane's |a - b| * factor, or the background

@@ -152,6 +152,12 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
     const Material& m = r.material;
     j["material"] = {{"C", vec(m.color)}, {"S", vec(m.specularColor)}, {"ka", number(m.ka)},
                      {"kd", number(m.kd)}, {"ks", number(m.ks)},         {"ke", number(m.ke)}};
+    if (r.textured) {
+        // C = base colour x texel: flat and Gouraud evaluate their terms with the base colour and
+        // multiply the ambient and diffuse parts by the texel per fragment; Phong evaluates with C.
+        j["material"]["C_base"] = vec(r.baseColor);
+        j["texture"] = {{"texcoord", {number(r.texcoord.x), number(r.texcoord.y)}}, {"texel", vec(r.texel)}};
+    }
     j["ambient_A"] = vec(scene.ambient);
     j["shadows"] = {{"enabled", scene.shadows.enabled}};
     if (scene.shadows.enabled)

@@ -158,6 +158,7 @@ struct Scene {
     DiffSettings diff;            // layout "diff"
     std::string title;            // lecture presets: shown by the viewer's playlist (and nothing else)
     std::string caption;          // one sentence under the title
+    bool textures = true;         // "textures": glTF models' base colour textures and vertex colours (C varies)
 
     // Bookkeeping, not part of the file format:
     bool cameraGiven = false;     // false: a glTF model may be auto-framed

@@ -10,6 +10,13 @@
 
 namespace shadelab {
 
+std::uint64_t SceneGeometry::textureBytes() const {
+    std::uint64_t n = 0;
+    for (const Mesh& m : meshes)
+        for (const auto& t : m.textures) n += t->rgba.size();
+    return n;
+}
+
 std::size_t SceneGeometry::triangleCount() const {
     std::size_t n = 0;
     for (const Mesh& m : meshes) n += m.triangleCount();

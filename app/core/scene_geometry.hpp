@@ -14,6 +14,7 @@ struct SceneGeometry {
     std::vector<MeshSpec> specs;     // what each mesh was built from
     std::vector<GltfInfo> gltfInfo;  // per object; empty for procedural meshes
     std::size_t triangleCount() const;
+    std::uint64_t textureBytes() const;  // decoded base colour images, every mesh's
 };
 
 // Builds every object's mesh. glTF failures are InputErrors naming the file.

@@ -304,7 +304,7 @@ Scene SceneReader::read(const json& root) {
     requireObject(root, "",
                   {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
                    "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
-                   "fresnel", "ior", "show", "diff", "title", "caption"});
+                   "fresnel", "ior", "show", "diff", "title", "caption", "textures"});
     if (root.contains("objects")) {
         if (root.contains("mesh") || root.contains("material"))
             fail("objects", "give either \"objects\" or the one-object shorthand \"mesh\"/\"material\", not both");
@@ -378,6 +378,7 @@ Scene SceneReader::read(const json& root) {
     }
     if (root.contains("shadow_settings")) s.shadows = shadowSettings(root["shadow_settings"], "shadow_settings");
     boolean(root, "shadows", "", s.shadows.enabled);
+    boolean(root, "textures", "", s.textures);
     if (root.contains("camera")) {
         s.camera = camera(root["camera"], "camera");
         s.cameraGiven = true;
@@ -538,6 +539,7 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
         j["lights"].push_back(lj);
     }
     j["shadows"] = s.shadows.enabled;
+    if (!s.textures) j["textures"] = false;
     j["shadow_settings"] = {{"normal_bias", s.shadows.normalBias}, {"depth_bias", s.shadows.depthBias},
                             {"pcf", s.shadows.pcf},                {"map_size", s.shadows.mapSize},
                             {"area_map_size", s.shadows.areaMapSize}};

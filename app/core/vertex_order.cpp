@@ -138,6 +138,11 @@ Mesh orderedForVertexCache(const Mesh& mesh) {
     const std::vector<std::uint32_t> oldFromNew = renumberVerticesByFirstUse(out.indices, vertexCount);
     out.positions = permuted(mesh.positions, oldFromNew);
     out.normals = permuted(mesh.normals, oldFromNew);
+    if (mesh.variesColor()) {
+        out.texcoords = permuted(mesh.texcoords, oldFromNew);
+        out.colors = permuted(mesh.colors, oldFromNew);
+    }
+    out.textures = mesh.textures;  // shared, not copied
     return out;
 }
 
@@ -147,6 +152,10 @@ FlatMesh makeOrderedFlatMesh(const Mesh& orderedMesh) {
     flat.positions = permuted(flat.positions, oldFromNew);
     flat.normals = permuted(flat.normals, oldFromNew);
     flat.centroids = permuted(flat.centroids, oldFromNew);
+    if (!flat.texcoords.empty()) {
+        flat.texcoords = permuted(flat.texcoords, oldFromNew);
+        flat.colors = permuted(flat.colors, oldFromNew);
+    }
     return flat;
 }
 

@@ -26,8 +26,9 @@ std::string frameName(const Scene& s) {
 
 // The memory budget (core/memory_budget.hpp) for one frame of `s`, with `kept` bytes of frames the
 // caller holds; `triangles` once the models are read (before, the procedural meshes' part).
-void checkFrameMemory(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles, std::uint64_t kept = 0) {
-    MemoryUse use = estimateFrame(s, msaaSamples, triangles);
+void checkFrameMemory(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles, std::uint64_t kept = 0,
+                      std::uint64_t textureBytes = 0) {
+    MemoryUse use = estimateFrame(s, msaaSamples, triangles, textureBytes);
     use.images = kept;
     checkMemory(use, frameName(s) + (kept ? " with the other frames kept" : ""));
 }
@@ -48,7 +49,7 @@ void drawFrame(Renderer& renderer, const Scene& scene, const RenderTarget& targe
 
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders,
                      HeadlessBackend backend, int msaaSamples) {
-    checkFrameMemory(scene, msaaSamples, geometry->triangleCount());
+    checkFrameMemory(scene, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     renderer.setGeometry(std::move(geometry));
@@ -91,7 +92,7 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
         throw;
     }
     auto geometry = std::make_shared<SceneGeometry>(loading.get());
-    checkFrameMemory(scene, msaaSamples, geometry->triangleCount());
+    checkFrameMemory(scene, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
     frameIfNeeded(scene, *geometry);
     HeadlessFrame frame;
     frame.gltfInfo = geometry->gltfInfo;
@@ -120,7 +121,7 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
         if (!same) {
             geometry.reset();  // the previous meshes go before the next are read
             geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-            checkFrameMemory(s, msaaSamples, geometry->triangleCount(), keptBytes);
+            checkFrameMemory(s, msaaSamples, geometry->triangleCount(), keptBytes, geometry->textureBytes());
             renderer.setGeometry(geometry);
             built = &s;
         }
@@ -160,7 +161,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                                                const std::vector<ShadingMode>& modes, int frames, int warmup,
                                                const ShaderLibrary& shaders, HeadlessBackend backend,
                                                int progressiveStride, int msaaSamples) {
-    checkFrameMemory(scene, msaaSamples, geometry->triangleCount());
+    checkFrameMemory(scene, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
     Renderer renderer(context->getProcAddress(), shaders);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));

@@ -11,9 +11,14 @@ namespace {
 
 gl::Shader compileStage(GLenum stage, const std::string& programName, const std::string& file,
                         const ShaderLibrary& library, const std::vector<std::string>& defines) {
+    // Which stage is being compiled, for files that several stages include (shaders/object_color.glsl).
+    std::vector<std::string> stageDefines = defines;
+    stageDefines.push_back(stage == GL_VERTEX_SHADER     ? "SL_VERTEX_STAGE 1"
+                           : stage == GL_GEOMETRY_SHADER ? "SL_GEOMETRY_STAGE 1"
+                                                         : "SL_FRAGMENT_STAGE 1");
     ExpandedGlsl src;
     try {
-        src = expandGlsl(file, [&](const std::string& n) { return library.load(n); }, defines);
+        src = expandGlsl(file, [&](const std::string& n) { return library.load(n); }, stageDefines);
     } catch (const std::exception& e) {
         throw ShaderError("program " + programName + ": " + e.what());
     }
@@ -66,7 +71,8 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
     const GLuint object = glGetUniformBlockIndex(program.get(), "ObjectBlock");
     if (frame != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), frame, SL_BINDING_FRAME);
     if (object != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), object, SL_BINDING_OBJECT);
-    // Nor for samplers: light l's shadow map is on unit SL_TEXTURE_SHADOW_BASE + l.
+    // Nor for samplers: light l's shadow map is on unit SL_TEXTURE_SHADOW_BASE + l, the object texture
+    // on SL_TEXTURE_BASE_COLOR.
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
     glUseProgram(program.get());
@@ -75,6 +81,8 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
         const GLint location = glGetUniformLocation(program.get(), sampler.c_str());
         if (location >= 0) glUniform1i(location, SL_TEXTURE_SHADOW_BASE + l);
     }
+    if (const GLint location = glGetUniformLocation(program.get(), "u_baseColorTexture"); location >= 0)
+        glUniform1i(location, SL_TEXTURE_BASE_COLOR);
     glUseProgram(GLuint(previous));
     return program;
 }

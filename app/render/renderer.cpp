@@ -221,11 +221,17 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     objectParts_.clear();
     objectBoxes_.clear();
     objectTriangles_.clear();
+    objectVariesColor_.clear();
+    objectImages_.clear();
+    objectTextures_.clear();
     shadowMaps_.invalidate();
     if (!geometry_) return;
     for (const Mesh& mesh : geometry_->meshes) {
+        objectVariesColor_.push_back(mesh.variesColor());
+        objectImages_.push_back(mesh.textures);
+        objectTextures_.emplace_back(mesh.textures.size());
         objectParts_.push_back(mesh.parts);
-        if (mesh.parts.empty()) objectParts_.back().push_back(MeshPart{0, std::uint32_t(mesh.indices.size()), false, {}});
+        if (mesh.parts.empty()) objectParts_.back().push_back(MeshPart{0, std::uint32_t(mesh.indices.size()), false, {}, -1});
         Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
         for (const glm::vec3& p : mesh.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
         if (mesh.positions.empty()) box = Aabb{};
@@ -237,21 +243,30 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
 void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1, scene.diff))
         for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) gpuMesh(o, pane.mode);
+    if (scene.textures)
+        for (std::size_t o = 0; o < objectImages_.size(); ++o)
+            for (std::size_t t = 0; t < objectImages_[o].size(); ++t) objectTexture(o, int(t));
     geometry_.reset();
     orderedMeshes_.clear();
 }
 
 void Renderer::preparePrograms(const Scene& scene) {
-    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene);
-    // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
-    if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && phongInputs_ != PhongInputs::Uniform)
-        program(ShadingMode::Phong, scene, false, true);
+    bool textured = false;
+    for (char v : objectVariesColor_) textured = textured || (v && scene.textures);
+    for (bool t : {false, true}) {
+        if (t && !textured) break;
+        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene, false, false, t);
+        // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
+        if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && phongInputs_ != PhongInputs::Uniform)
+            program(ShadingMode::Phong, scene, false, true, t);
+    }
 }
 
-GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, bool interpolatedInputs) {
+GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, bool interpolatedInputs, bool textured) {
     std::vector<std::string> defines = programDefines(scene);
     if (accumulate) defines.push_back("SL_ACCUMULATE 1");
     if (interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
+    if (textured) defines.push_back("SL_TEXTURED 1");
     std::string key = kProgramNames[std::size_t(mode)];
     for (const std::string& d : defines) key += ";" + d;
     gl::Program& p = programs_[key];
@@ -287,29 +302,47 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
         GLint size;
     };
     std::vector<float> interleaved;
-    std::array<Attribute, 2> layout{};  // both layouts have two attributes
+    std::vector<Attribute> layout;
+    // Where C varies (Mesh::variesColor), each vertex also carries its texture coordinates and colour.
+    const bool varies = mesh.variesColor();
+    const std::vector<glm::vec2>& texcoords = flat ? flatMesh.texcoords : mesh.texcoords;
+    const std::vector<glm::vec3>& colors = flat ? flatMesh.colors : mesh.colors;
+    const std::size_t extra = varies ? 5 : 0;
+    const auto addVarying = [&](float* v, std::size_t i) {
+        v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
+    };
     if (!flat) {
         // position xyz, normal xyz
-        layout = {{{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_NORMAL, 3}}};
-        interleaved.resize(mesh.positions.size() * 6);
+        layout.push_back({SL_ATTRIB_POSITION, 3});
+        layout.push_back({SL_ATTRIB_NORMAL, 3});
+        const std::size_t n6 = 6 + extra;
+        interleaved.resize(mesh.positions.size() * n6);
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-            float* v = &interleaved[i * 6];
+            float* v = &interleaved[i * n6];
             const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
             v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
+            if (varies) addVarying(v + 6, i);
         }
     } else {
         // Flat's nine floats in two vec4s (shaders/flat.vert): position xyz and centroid x; centroid
         // yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the shader
         // takes z from the unit length). llvmpipe fetches each attribute of each vertex on its own:
         // two fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
-        layout = {{{SL_ATTRIB_POSITION, 4}, {SL_ATTRIB_FLAT_FACE, 4}}};
-        interleaved.resize(flatMesh.positions.size() * 8);
+        layout.push_back({SL_ATTRIB_POSITION, 4});
+        layout.push_back({SL_ATTRIB_FLAT_FACE, 4});
+        const std::size_t n8 = 8 + extra;
+        interleaved.resize(flatMesh.positions.size() * n8);
         for (std::size_t i = 0; i < flatMesh.positions.size(); ++i) {
-            float* v = &interleaved[i * 8];
+            float* v = &interleaved[i * n8];
             const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
             v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
             v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
+            if (varies) addVarying(v + 8, i);
         }
+    }
+    if (varies) {
+        layout.push_back({SL_ATTRIB_TEXCOORD, 2});
+        layout.push_back({SL_ATTRIB_COLOR, 3});
     }
     g.vertices = gl::makeBuffer();
     glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
@@ -330,6 +363,41 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     checkGl("mesh upload");
     if (gpuMeshes_[object][0].vao && gpuMeshes_[object][1].vao) orderedMeshes_[object] = Mesh{};  // both uploaded
     return g;
+}
+
+GLuint Renderer::objectTexture(std::size_t object, int slot) {
+    if (slot < 0 || std::size_t(slot) >= objectTextures_[object].size()) {
+        if (!whiteTexture_) {
+            const unsigned char white[4] = {255, 255, 255, 255};
+            GLuint id = 0;
+            glGenTextures(1, &id);
+            whiteTexture_ = gl::Texture(id);
+            glBindTexture(GL_TEXTURE_2D, id);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        return whiteTexture_.get();
+    }
+    gl::Texture& t = objectTextures_[object][std::size_t(slot)];
+    if (t) return t.get();
+    const std::shared_ptr<const TextureImage> image = std::move(objectImages_[object][std::size_t(slot)]);
+    if (!image) throw std::logic_error("renderer: a texture that was released before it was uploaded");
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    t = gl::Texture(id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // glTF's base colours are sRGB-encoded: an sRGB texture decodes them to linear values when sampled.
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 image->rgba.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, image->wrapS);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, image->wrapT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, image->magFilter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, image->minFilter);
+    if (image->minFilter != GL_NEAREST && image->minFilter != GL_LINEAR) glGenerateMipmap(GL_TEXTURE_2D);
+    checkGl(("texture upload (" + image->name + ")").c_str());
+    return t.get();
 }
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
@@ -381,18 +449,23 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
                          const AreaSamplePass* pass, bool add) {
     const std::size_t objects = std::min(objectParts_.size(), scene.objects.size());
 
-    // One draw per object part (a glTF primitive's base colour, or the whole mesh).
+    // One draw per object part (a glTF primitive's base colour and texture, or the whole mesh). A
+    // scene's material colour replaces C, texture and vertex colours included.
     struct Draw {
         std::size_t object;
         GLsizei first, count;
         glm::vec3 color;
+        bool textured;  // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
+        int texture;    // the part's slot in Mesh::textures, or -1
     };
     std::vector<Draw> draws;
     for (std::size_t o = 0; o < objects; ++o) {
         const Material& m = scene.objects[o].material;
+        const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet;
         for (const MeshPart& part : objectParts_[o])
             draws.push_back({o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
-                             (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor});
+                             (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured,
+                             textured ? part.texture : -1});
     }
 
     // Shadow maps first: they bind their own framebuffer, program and viewport.
@@ -474,13 +547,19 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         // Only the variants some draw uses are built (each is an LLVM compile on first use).
         std::vector<char> inputs(objects, 0);
         for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
-        GLuint programs[2] = {0, 0}, current = 0;
+        GLuint programs[2][2] = {{0, 0}, {0, 0}}, current = 0;  // [interpolated inputs][textured]
         for (std::size_t d = 0; d < draws.size(); ++d) {
             const Draw& draw = draws[d];
             if (draw.count == 0) continue;
-            const int variant = inputs[draw.object] ? 1 : 0;
-            if (!programs[variant]) programs[variant] = program(pane.mode, scene, pass != nullptr, variant == 1);
-            if (programs[variant] != current) glUseProgram(current = programs[variant]);
+            GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0];
+            if (!variant) variant = program(pane.mode, scene, pass != nullptr, inputs[draw.object] != 0, draw.textured);
+            if (variant != current) glUseProgram(current = variant);
+            if (draw.textured) {
+                const GLuint texture = objectTexture(draw.object, draw.texture);
+                glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_BASE_COLOR);
+                glBindTexture(GL_TEXTURE_2D, texture);
+                glActiveTexture(GL_TEXTURE0);
+            }
             const GpuMesh& mesh = gpuMesh(draw.object, pane.mode);
             glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
                               GLintptr(objectsOffset + d * objectStride), sizeof(gpu::ObjectBlock));

@@ -95,13 +95,17 @@ public:
 private:
     struct GpuMesh {
         gl::VertexArray vao;
-        gl::Buffer vertices;  // interleaved positions, normals and (flat) centroids
+        gl::Buffer vertices;  // interleaved positions, normals and (flat) centroids, texture coordinates and colours
         gl::Buffer indices;
         GLsizei indexCount = 0;
     };
     const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
     void drawTriangles(GLsizei firstIndex, GLsizei indexCount);  // from the bound vertex array, see setDrawChunk
-    GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false, bool interpolatedInputs = false);
+    GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false, bool interpolatedInputs = false,
+                   bool textured = false);
+    // The GL texture of an object's Mesh::textures[slot] (uploaded on first use: sRGB, mipmapped as its
+    // sampler asks), or a white texel for a part without one.
+    GLuint objectTexture(std::size_t object, int slot);
     // The samples one progressive pass evaluates: i = first.x + k stride.x, j = first.y + m stride.y.
     struct AreaSamplePass {
         glm::ivec2 first{0};
@@ -122,6 +126,11 @@ private:
     GLint uniformAlignment_ = 256;
     std::vector<Aabb> objectBoxes_;                       // per object, object space (shadow maps, Phong inputs)
     std::vector<std::size_t> objectTriangles_;            // per object, all parts
+    std::vector<char> objectVariesColor_;                 // per object: has texture coordinates and colours
+    // Per object: its base colour images until uploaded, and the textures made of them.
+    std::vector<std::vector<std::shared_ptr<const TextureImage>>> objectImages_;
+    std::vector<std::vector<gl::Texture>> objectTextures_;
+    gl::Texture whiteTexture_;
     PhongInputs phongInputs_ = PhongInputs::Auto;
     MeshOrder meshOrder_ = MeshOrder::AsGiven;
     std::size_t drawChunkTriangles_ = 0;

@@ -148,7 +148,7 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
     plotWidget("##fresnel", scenePlot(PlotKind::Fresnel, scene, material, plots), width * 0.95f);
 }
 
-void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles) {
+void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& textures) {
     // Procedural shapes, plus the glTF model the object was loaded with (its path is kept when the
     // lecturer switches to a sphere, so they can switch back).
     const char* names[] = {"uvsphere", "icosphere", "torus", "cube", "plane", "glTF model"};
@@ -182,6 +182,8 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles) {
         break;
     case MeshSpec::Type::Gltf:
         ImGui::TextWrapped("file: %s", m.path.c_str());
+        // C = base colour x texture x vertex colour; off: the base colour alone (--no-textures).
+        ImGui::Checkbox("textures and vertex colours", &textures);
         break;
     }
     ImGui::Text("%zu triangles", triangles);
@@ -446,7 +448,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
         sectionPlots(scene, object ? object->material : Material{}, settings.plots);
     if (object && section("Mesh", kPanelSections[3], true))
-        sectionMesh(object->mesh, object->transform, status.objectTriangles);
+        sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
     if (section("Lights", kPanelSections[4], true)) sectionLights(scene, settings.selectedLight);
     if (section("Shadows", kPanelSections[5], true)) sectionShadows(scene.shadows);
     if (section("Overlays", kPanelSections[6], true)) {

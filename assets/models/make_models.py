@@ -7,6 +7,12 @@
   highlight falls between vertices: Gouraud loses it, Phong keeps it, flat shows the facets.
 - coarse_torus_no_normals.gltf: an 8 x 6 torus without a NORMAL attribute: shadelab computes
   angle-weighted normals (see --info), and its coarse tube shows Gouraud's Mach bands.
+- checker_globe.gltf: a 32 x 16 UV sphere with a base colour texture (a checkerboard with a red
+  meridian, embedded as a PNG data: URI) and vertex colours (COLOR_0, lighter toward the top): the
+  object texture of the lecture's C, read per fragment in every mode.
+- checker_globe_transform.gltf: the same globe with its texture coordinates stored transformed back
+  and KHR_texture_transform (offset, rotation, scale) restoring them, its texture beside it in
+  checker_globe.png: it must draw exactly like checker_globe.gltf.
 Only the Python standard library is used; buffers are embedded as base64 data: URIs.
 """
 import base64
@@ -14,6 +20,7 @@ import json
 import math
 import os
 import struct
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -93,9 +100,121 @@ def torus(major=8, minor=6, r_major=1.0, r_minor=0.4):
     return positions, indices
 
 
+def png(width, height, rgb):
+    """An 8-bit RGB PNG of rows of (r, g, b) tuples."""
+    raw = b''.join(b'\0' + bytes(c for px in row for c in px) for row in rgb)
+    def chunk(kind, data):
+        return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff)
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 2, 0, 0, 0)) +
+            chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
+
+
+def checker_image(width=256, height=128, squares=(8, 4)):
+    cream, teal, red = (236, 226, 196), (40, 120, 130), (200, 40, 30)
+    rows = []
+    for y in range(height):
+        row = []
+        for x in range(width):
+            if x < width // 32:
+                row.append(red)  # the meridian at u = 0
+            else:
+                row.append(cream if (x * squares[0] // width + y * squares[1] // height) % 2 == 0 else teal)
+        rows.append(row)
+    return png(width, height, rows)
+
+
+def globe(slices=32, stacks=16, radius=1.0):
+    positions, normals, uvs, colors, indices = [], [], [], [], []
+    for i in range(stacks + 1):
+        v = i / stacks
+        theta = math.pi * v
+        for j in range(slices + 1):
+            u = j / slices
+            phi = 2 * math.pi * u
+            n = (math.sin(theta) * math.cos(phi), math.cos(theta), -math.sin(theta) * math.sin(phi))
+            positions.append(tuple(radius * c for c in n))
+            normals.append(n)
+            uvs.append((u, v))
+            g = 0.6 + 0.4 * (1.0 - v)  # lighter toward the top
+            colors.append((g, g, 1.0))
+    for i in range(stacks):
+        for j in range(slices):
+            a = i * (slices + 1) + j
+            b = a + slices + 1
+            # counter-clockwise seen from outside; one triangle per pole quad (the other has no area)
+            if i > 0:
+                indices += [a, b, a + 1]
+            if i < stacks - 1:
+                indices += [a + 1, b, b + 1]
+    return positions, normals, uvs, colors, indices
+
+
+def write_globe(name, uvs_stored, transform=None, image_uri=None):
+    positions, normals, _, colors, indices = globe()
+    pos = b''.join(struct.pack('<3f', *p) for p in positions)
+    nrm = b''.join(struct.pack('<3f', *n) for n in normals)
+    uv = b''.join(struct.pack('<2f', *t) for t in uvs_stored)
+    col = b''.join(struct.pack('<3f', *c) for c in colors)
+    idx = b''.join(struct.pack('<H', i) for i in indices)
+    parts = [pos, nrm, uv, col, idx]
+    views, offset = [], 0
+    for k, data in enumerate(parts):
+        views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(data),
+                      "target": 34963 if k == len(parts) - 1 else 34962})
+        offset += len(data)
+    blob = b''.join(parts)
+    accessors = [
+        {"bufferView": 0, "componentType": 5126, "count": len(positions), "type": "VEC3",
+         "min": [min(p[k] for p in positions) for k in range(3)], "max": [max(p[k] for p in positions) for k in range(3)]},
+        {"bufferView": 1, "componentType": 5126, "count": len(normals), "type": "VEC3"},
+        {"bufferView": 2, "componentType": 5126, "count": len(uvs_stored), "type": "VEC2"},
+        {"bufferView": 3, "componentType": 5126, "count": len(colors), "type": "VEC3"},
+        {"bufferView": 4, "componentType": 5123, "count": len(indices), "type": "SCALAR"},
+    ]
+    texture_info = {"index": 0}
+    doc = {
+        "asset": {"version": "2.0", "generator": "shadelab assets/models/make_models.py", "copyright": "CC0-1.0"},
+        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "name": name}],
+        "materials": [{"name": name, "pbrMetallicRoughness": {"baseColorFactor": [1.0, 0.95, 0.9, 1.0],
+                                                               "baseColorTexture": texture_info,
+                                                               "metallicFactor": 0.0, "roughnessFactor": 0.5}}],
+        "meshes": [{"name": name, "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "COLOR_0": 3},
+                                                  "indices": 4, "material": 0, "mode": 4}]}],
+        "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}],
+        "textures": [{"sampler": 0, "source": 0}],
+        "images": [{"uri": image_uri or "data:image/png;base64," + base64.b64encode(checker_image()).decode()}],
+        "buffers": [{"byteLength": len(blob),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
+        "bufferViews": views, "accessors": accessors,
+    }
+    if transform:
+        texture_info["extensions"] = {"KHR_texture_transform": transform}
+        doc["extensionsUsed"] = ["KHR_texture_transform"]
+    with open(os.path.join(HERE, name + ".gltf"), 'w') as f:
+        json.dump(doc, f, indent=1)
+        f.write('\n')
+
+
+def texture_transform_inverse(uv, offset, rotation, scale):
+    # KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) uv, R = [[c, s], [-s, c]]; this is
+    # the uv that the transform takes to `uv`.
+    x, y = uv[0] - offset[0], uv[1] - offset[1]
+    c, s = math.cos(rotation), math.sin(rotation)
+    # R^-1 = [[c, -s], [s, c]]
+    x, y = c * x - s * y, s * x + c * y
+    return (x / scale[0], y / scale[1])
+
+
 if __name__ == '__main__':
     p, n, i = gem()
     write("lowpoly_gem", p, i, n, color=(0.25, 0.55, 0.9))
     p, i = torus()
     write("coarse_torus_no_normals", p, i, color=(0.9, 0.65, 0.2))
-    print("wrote lowpoly_gem.gltf, coarse_torus_no_normals.gltf")
+    _, _, uvs, _, _ = globe()
+    write_globe("checker_globe", uvs)
+    t = {"offset": [0.25, -0.125], "rotation": 0.5, "scale": [2.0, 0.5]}
+    write_globe("checker_globe_transform", [texture_transform_inverse(uv, t["offset"], t["rotation"], t["scale"]) for uv in uvs],
+                transform=t, image_uri="checker_globe.png")
+    with open(os.path.join(HERE, "checker_globe.png"), 'wb') as f:
+        f.write(checker_image())
+    print("wrote lowpoly_gem.gltf, coarse_torus_no_normals.gltf, checker_globe.gltf, checker_globe_transform.gltf, checker_globe.png")

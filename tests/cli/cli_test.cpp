@@ -550,3 +550,29 @@ TEST_F(Cli, PlaylistCaptionsAndOutputFolder) {
     EXPECT_NE(broken.err.find("03-broken.json: shading: unknown value \"toon\""), std::string::npos) << broken.err;
     EXPECT_FALSE(fs::exists(path("never")));
 }
+
+// A textured model (the project's checker globe): --info counts its base colour image, the probe
+// reports the sampled C and the texel, and --no-textures draws the base colour factor alone.
+TEST_F(Cli, TexturedModelsAreReportedProbedAndCanBeDrawnWithout) {
+    const std::string globe = std::string(SHADELAB_SOURCE_DIR) + "/assets/models/checker_globe.gltf";
+    const RunResult info = run({"--info", globe});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("textures: 1 base colour image drawn"), std::string::npos) << info.out;
+
+    const RunResult probe = run({globe, "--size", "96x96", "--probe", "48,48", "--output", path("on.png")});
+    ASSERT_EQ(probe.exitCode, 0) << probe.err;
+    const auto j = nlohmann::json::parse(probe.out);
+    ASSERT_EQ(j.at("miss"), false);
+    ASSERT_TRUE(j.contains("texture")) << probe.out;
+    const auto& C = j.at("material").at("C");
+    const auto& base = j.at("material").at("C_base");
+    const auto& texel = j.at("texture").at("texel");
+    for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_NEAR(C[k].get<double>(), base[k].get<double>() * texel[k].get<double>(), 1e-3) << probe.out;
+
+    const RunResult off = run({globe, "--size", "96x96", "--no-textures", "--probe", "48,48", "--output", path("off.png")});
+    ASSERT_EQ(off.exitCode, 0) << off.err;
+    EXPECT_FALSE(nlohmann::json::parse(off.out).contains("texture"));
+    const Image on = readPng(path("on.png")), plain = readPng(path("off.png"));
+    EXPECT_GT(compareImages(on, plain, 30).failingPixels, 500u) << "the texture should change much of the picture";
+}

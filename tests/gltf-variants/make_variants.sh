@@ -24,6 +24,12 @@ for m in lowpoly_gem coarse_torus_no_normals; do
   gltf-transform meshopt "$src" "${m}.transform-meshopt.glb"
   gltf-transform draco "$src" "${m}.transform-draco.glb"
 done
+# The textured globe: quantized texture coordinates (gltfpack carries their dequantization in a
+# KHR_texture_transform) and colours, the image moved into the .glb's buffer.
+src=$models/checker_globe.gltf
+gltfpack -i "$src" -o checker_globe.gltfpack-c.glb -c
+gltf-transform quantize "$src" checker_globe.transform-quantize.glb
+gltf-transform draco "$src" checker_globe.transform-draco.glb
 # Real models: mirrored instances (EXT_mesh_gpu_instancing), and a dense mesh through every codec.
 if [ -d "$shared" ]; then
   gltfpack -i "$shared/NegativeScaleTest/glTF/NegativeScaleTest.gltf" -o NegativeScaleTest.gltfpack-mi-c.glb -mi -c

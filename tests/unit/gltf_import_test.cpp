@@ -3,6 +3,7 @@
 // file and the offending accessor/primitive; none may crash (CI also runs this under ASan + UBSan).
 #include "core/error.hpp"
 #include "core/gltf_import.hpp"
+#include "core/image.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -542,7 +544,7 @@ TEST_F(Gltf, RequiredExtensionsAreNamedAndUsedOnesWarned) {
     ASSERT_EQ(info.warnings.size(), 1u);  // one line for all of them
     EXPECT_EQ(info.warnings[0],
               "uses KHR_texture_basisu, KHR_materials_sheen, KHR_lights_punctual, which shadelab does not read: textures "
-              "are not drawn; the lecture's model and the base colour shade every material; the scene's lights light "
+              "stored only in those formats are not drawn (a PNG or JPEG fallback is); the lecture's model and the base colour shade every material; the scene's lights light "
               "the model, not the file's");
 }
 
@@ -602,4 +604,171 @@ TEST_F(Gltf, CamerasArePlacedByTheirNodes) {
     const glm::vec3 look = glm::normalize(info.cameras[1].target - info.cameras[1].eye);
     EXPECT_NEAR(glm::distance(look, glm::vec3(-1, 0, 0)), 0.0f, 1e-5f);
     EXPECT_NE(describe("cameras.gltf", info).find("camera 0: front, perspective, 29 degrees (--camera 0)"), std::string::npos);
+}
+
+// The object texture of the lecture's C (issue 15): a base colour texture's image, sampler, texture
+// coordinates and the vertex colours, as the importer hands them to the renderer.
+namespace {
+
+// The quad of Doc with TEXCOORD_0 (accessor 2), COLOR_0 (accessor 3, normalized UNSIGNED_BYTE VEC4)
+// and a material whose base colour texture is image 0 with sampler 0.
+Doc texturedQuad(const json& image) {
+    Doc d;
+    append<float>(d.bin, {0, 0, 1, 0, 1, 1, 0, 1});                      // 60..91: TEXCOORD_0
+    d.bin.insert(d.bin.end(), {255, 51, 0, 255, 0, 255, 102, 255, 255, 255, 255, 255, 0, 0, 0, 255});  // 92..107: COLOR_0
+    d.j["buffers"][0]["byteLength"] = d.bin.size();
+    d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 32}});
+    d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 92}, {"byteLength", 16}});
+    d.j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+    d.j["accessors"].push_back(
+        {{"bufferView", 3}, {"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC4"}});
+    json& prim = d.j["meshes"][0]["primitives"][0];
+    prim["attributes"]["TEXCOORD_0"] = 2;
+    prim["attributes"]["COLOR_0"] = 3;
+    prim["material"] = 0;
+    d.j["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1, 1, 1}}, {"baseColorTexture", {{"index", 0}}}}}}});
+    d.j["textures"] = json::array({{{"source", 0}, {"sampler", 0}}});
+    d.j["samplers"] = json::array({{{"magFilter", 9728}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33648}}});
+    d.j["images"] = json::array({image});
+    return d;
+}
+
+// A 2 x 2 RGBA image: red, green / blue, white (top row first).
+Image twoByTwo() {
+    Image im(2, 2);
+    const std::uint8_t px[4][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {255, 255, 255, 255}};
+    for (int i = 0; i < 4; ++i) std::memcpy(im.pixel(i % 2, i / 2), px[i], 4);
+    return im;
+}
+
+std::vector<unsigned char> fileBytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void expectTwoByTwo(const Mesh& m) {
+    ASSERT_EQ(m.textures.size(), 1u);
+    const TextureImage& t = *m.textures[0];
+    ASSERT_EQ(t.width, 2);
+    ASSERT_EQ(t.height, 2);
+    const std::vector<std::uint8_t> expected = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
+    EXPECT_EQ(t.rgba, expected);
+}
+
+}  // namespace
+
+TEST_F(Gltf, BaseColourTextureCoordinatesAndVertexColoursAreRead) {
+    writePng((dir_ / "model" / "tex.png").string(), twoByTwo());
+    GltfInfo info;
+    const Mesh m = loadGltf(writeGltf("textured", texturedQuad({{"uri", "tex.png"}})), &info);
+    EXPECT_EQ(info.textures, 1);
+    expectTwoByTwo(m);
+    EXPECT_EQ(m.textures[0]->wrapS, 0x812F);      // CLAMP_TO_EDGE
+    EXPECT_EQ(m.textures[0]->wrapT, 0x8370);      // MIRRORED_REPEAT
+    EXPECT_EQ(m.textures[0]->magFilter, 0x2600);  // NEAREST
+    EXPECT_EQ(m.textures[0]->minFilter, 0x2601);  // LINEAR: no mipmaps
+    ASSERT_TRUE(m.variesColor());
+    ASSERT_EQ(m.texcoords.size(), 4u);
+    EXPECT_EQ(m.texcoords[2], glm::vec2(1, 1));
+    ASSERT_EQ(m.colors.size(), 4u);
+    EXPECT_FLOAT_EQ(m.colors[0].g, 0.2f);         // 51 / 255; alpha is not drawn
+    EXPECT_EQ(m.colors[1], glm::vec3(0, 1, 0.4f));
+    ASSERT_EQ(m.parts.size(), 1u);
+    EXPECT_EQ(m.parts[0].texture, 0);
+    EXPECT_EQ(m.parts[0].baseColor, glm::vec3(0.5f, 1, 1));
+
+    // The same image embedded as a data: URI and, in a .glb, in a buffer view.
+    const std::vector<unsigned char> png = fileBytes(dir_ / "model" / "tex.png");
+    expectTwoByTwo(loadGltf(writeGltf("data_uri", texturedQuad({{"uri", "data:image/png;base64," + base64(png)}}))));
+    Doc glb = texturedQuad({{"bufferView", 4}, {"mimeType", "image/png"}});
+    glb.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", glb.bin.size()}, {"byteLength", png.size()}});
+    glb.bin.insert(glb.bin.end(), png.begin(), png.end());
+    glb.j["buffers"][0]["byteLength"] = glb.bin.size();
+    expectTwoByTwo(loadGltf(writeGlb("buffer_view", glb)));
+}
+
+// KHR_mesh_quantization allows TEXCOORD_n and COLOR_n in integer types too.
+TEST_F(Gltf, QuantizedTextureCoordinatesAndColoursDequantize) {
+    writePng((dir_ / "model" / "tex.png").string(), twoByTwo());
+    Doc d = texturedQuad({{"uri", "tex.png"}});
+    d.bin.resize(60);
+    append<std::uint16_t>(d.bin, {0, 0, 65535, 0, 65535, 32768, 13107, 65535});  // 60..75: UNSIGNED_SHORT normalized
+    append<std::int8_t>(d.bin, {-3, 2, 5, 0, 0, 1, 127, -128});                  // 76..83: BYTE as it is
+    append<std::uint16_t>(d.bin, {65535, 0, 13107, 0, 0, 0, 1, 2, 3, 4, 5, 6});     // 84..107: COLOR_0 UNSIGNED_SHORT normalized VEC3
+    d.j["buffers"][0]["byteLength"] = d.bin.size();
+    d.j["bufferViews"][2] = {{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 16}};
+    d.j["bufferViews"][3] = {{"buffer", 0}, {"byteOffset", 84}, {"byteLength", 24}};
+    d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 76}, {"byteLength", 8}});
+    d.j["accessors"][2] = {{"bufferView", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 4}, {"type", "VEC2"}};
+    d.j["accessors"][3] = {{"bufferView", 3}, {"componentType", 5123}, {"normalized", true}, {"count", 4}, {"type", "VEC3"}};
+    d.j["accessors"].push_back({{"bufferView", 4}, {"componentType", 5120}, {"count", 4}, {"type", "VEC2"}});
+    d.j["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 4;
+    d.j["extensionsUsed"] = d.j["extensionsRequired"] = json::array({"KHR_mesh_quantization"});
+    Mesh m = loadGltf(writeGltf("quantized", d));
+    ASSERT_EQ(m.texcoords.size(), 4u);
+    EXPECT_EQ(m.texcoords[1], glm::vec2(1, 0));
+    EXPECT_FLOAT_EQ(m.texcoords[2].y, 32768.0f / 65535);
+    EXPECT_FLOAT_EQ(m.texcoords[3].x, 0.2f);
+    EXPECT_FLOAT_EQ(m.colors[0].r, 1.0f);
+    EXPECT_FLOAT_EQ(m.colors[0].b, 0.2f);
+    EXPECT_FLOAT_EQ(m.colors[3].g, 5.0f / 65535);
+    // The texture reads TEXCOORD_1: unnormalized BYTEs as they are.
+    d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 1;
+    m = loadGltf(writeGltf("quantized_set1", d));
+    EXPECT_EQ(m.texcoords[0], glm::vec2(-3, 2));
+    EXPECT_EQ(m.texcoords[3], glm::vec2(127, -128));
+}
+
+// KHR_texture_transform's own example (its README): offset [0, 1], rotation pi/2, scale 0.5 uses
+// "only the lower left quadrant of the source image, rotated clockwise 90 degrees".
+TEST_F(Gltf, TextureTransformFollowsTheExtensionsExample) {
+    writePng((dir_ / "model" / "tex.png").string(), twoByTwo());
+    Doc d = texturedQuad({{"uri", "tex.png"}});
+    d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+        {"offset", {0, 1}}, {"rotation", 1.57079632679}, {"scale", {0.5, 0.5}}};
+    d.j["extensionsUsed"] = d.j["extensionsRequired"] = json::array({"KHR_texture_transform"});
+    GltfInfo info;
+    const Mesh m = loadGltf(writeGltf("transform", d), &info);
+    EXPECT_TRUE(info.warnings.empty());
+    const glm::vec2 expected[4] = {{0, 1}, {0, 0.5f}, {0.5f, 0.5f}, {0.5f, 1}};  // uv (0,0), (1,0), (1,1), (0,1)
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_NEAR(m.texcoords[std::size_t(i)].x, expected[i].x, 1e-6f) << i;
+        EXPECT_NEAR(m.texcoords[std::size_t(i)].y, expected[i].y, 1e-6f) << i;
+    }
+}
+
+// A texture that cannot be drawn never stops the model: the part keeps its base colour, with a warning
+// that names the image and says why. Its URI stays inside the model's folder.
+TEST_F(Gltf, TexturesThatCannotBeDrawnAreWarnedNotFatal) {
+    std::ofstream(dir_ / "model" / "not_an_image.png") << "hello";
+    writePng((dir_ / "secret.png").string(), twoByTwo());
+    const struct {
+        json image;
+        const char* warning;
+    } cases[] = {
+        {{{"uri", "missing.png"}}, "missing.png could not be read; drawn in its base colour"},
+        {{{"uri", "not_an_image.png"}}, "not_an_image.png is not an image shadelab decodes (PNG or JPEG)"},
+        {{{"uri", "../secret.png"}}, "../secret.png could not be read"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.warning);
+        GltfInfo info;
+        const Mesh m = loadGltf(writeGltf("broken", texturedQuad(c.image)), &info);
+        EXPECT_EQ(info.textures, 0);
+        ASSERT_EQ(m.parts.size(), 1u);
+        EXPECT_EQ(m.parts[0].texture, -1);
+        EXPECT_TRUE(m.variesColor());  // COLOR_0 is still drawn
+        bool found = false;
+        for (const std::string& w : info.warnings) found = found || w.find(c.warning) != std::string::npos;
+        EXPECT_TRUE(found) << (info.warnings.empty() ? "no warning" : info.warnings[0]);
+    }
+    // A texture whose coordinate set the primitive lacks.
+    writePng((dir_ / "model" / "tex.png").string(), twoByTwo());
+    Doc d = texturedQuad({{"uri", "tex.png"}});
+    d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 3;
+    GltfInfo info;
+    const Mesh m = loadGltf(writeGltf("no_set", d), &info);
+    EXPECT_EQ(m.parts[0].texture, -1);
+    ASSERT_FALSE(info.warnings.empty());
+    EXPECT_NE(info.warnings[0].find("reads TEXCOORD_3, which it does not have"), std::string::npos) << info.warnings[0];
 }

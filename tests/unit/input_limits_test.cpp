@@ -84,6 +84,8 @@ TEST(MemoryBudget, EstimateCountsFramebuffersShadowMapsAndMeshes) {
     EXPECT_EQ(estimateFrame(s, 1, 1'000'000).meshes, 60'000'000u);
     s.layout = Layout::Compare;  // a flat pane needs vertices of its own
     EXPECT_GT(estimateFrame(s, 1, 1'000'000).meshes, 60'000'000u);
+    // A model's decoded base colour images: a 4096 x 4096 texture (64 MiB) measured ~213 MB.
+    EXPECT_EQ(estimateFrame(s, 1, 0, std::uint64_t(64) << 20).textures, (std::uint64_t(640) << 20) / 3);
 
     setMemoryBudget(std::uint64_t(128) << 20);
     s.layout = Layout::Single;

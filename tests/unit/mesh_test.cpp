@@ -143,3 +143,30 @@ TEST(Camera, TransformAppliesScaleThenRotationXYZThenTranslation) {
     EXPECT_NEAR(p.y, 2.0f, 1e-5f);
     EXPECT_NEAR(p.z, 1.0f, 1e-5f);
 }
+
+// sampleTexture: what GL reads from an sRGB texture at level 0 (texel centres at (i + 0.5) / size),
+// worked out by hand for a 2 x 1 texture of sRGB 0 and 255 and one of sRGB 128.
+TEST(Mesh, SampleTextureDecodesSrgbAndFiltersAndWrapsAsGl) {
+    TextureImage t;
+    t.width = 2, t.height = 1;
+    t.rgba = {0, 0, 0, 255, 255, 255, 255, 255};
+    t.wrapS = t.wrapT = 0x812F;  // CLAMP_TO_EDGE
+    EXPECT_EQ(sampleTexture(t, {0.25f, 0.5f}), glm::vec3(0.0f));   // the first texel's centre
+    EXPECT_EQ(sampleTexture(t, {0.75f, 0.5f}), glm::vec3(1.0f));
+    EXPECT_NEAR(sampleTexture(t, {0.5f, 0.5f}).r, 0.5f, 1e-6f);    // halfway: linear values averaged
+    EXPECT_EQ(sampleTexture(t, {-3.0f, 0.5f}), glm::vec3(0.0f));   // clamped
+    EXPECT_EQ(sampleTexture(t, {7.0f, 0.5f}), glm::vec3(1.0f));
+    t.wrapS = 0x2901;  // REPEAT: u = 1.25 is u = 0.25
+    EXPECT_EQ(sampleTexture(t, {1.25f, 0.5f}), glm::vec3(0.0f));
+    EXPECT_NEAR(sampleTexture(t, {1.0f, 0.5f}).r, 0.5f, 1e-6f);    // between the last and the first texel
+    t.wrapS = 0x8370;  // MIRRORED_REPEAT: u = 1.25 is u = 0.75
+    EXPECT_EQ(sampleTexture(t, {1.25f, 0.5f}), glm::vec3(1.0f));
+    t.magFilter = 0x2600;  // NEAREST
+    EXPECT_EQ(sampleTexture(t, {0.49f, 0.5f}), glm::vec3(0.0f));
+    EXPECT_EQ(sampleTexture(t, {0.51f, 0.5f}), glm::vec3(1.0f));
+    TextureImage grey;
+    grey.width = grey.height = 1;
+    grey.rgba = {128, 128, 128, 255};
+    // sRGB 128 / 255 decodes to ((0.50196 + 0.055) / 1.055)^2.4 = 0.21586.
+    EXPECT_NEAR(sampleTexture(grey, {0.3f, 0.9f}).g, 0.21586f, 1e-4f);
+}
