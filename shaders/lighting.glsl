@@ -147,6 +147,14 @@ float distanceFalloff(int l, int attenuation, float r2) {
     return falloff;
 }
 
+// A spot light's cone (core/lighting.cpp, spotFalloff): full inside the inner half-angle, none
+// outside the outer one, glTF's smooth t^2 between. I points from the surface to the light.
+float spotFalloff(int l, vec3 I) {
+    float cd = dot(u_lights[l].spot.xyz, -I);
+    float t = clamp((cd - u_lights[l].spot.w) * u_lights[l].falloff.w, 0.0, 1.0);
+    return t * t;
+}
+
 // Area-light sample (i, j) of an nx x ny grid as an offset in [-0.5, 0.5]^2 of the rectangle: the
 // same stratified, fixed-seed jitter as areaSampleOffset() in core/lighting.cpp.
 uint jitterHash(uint x) {
@@ -203,6 +211,16 @@ float pointVisibility(sampler2DArrayShadow map, int l, vec3 posWorld, vec3 N) {
     return shadowLookup(map, st, face, sh.y - sh.z / ma, u_lights[l].falloff.z);
 }
 
+// Spot light: one perspective map down its axis; the normal offset grows with the distance, as a
+// texel does.
+float spotVisibility(sampler2DArrayShadow map, int l, vec3 posWorld, vec3 N) {
+    float distance = length(posWorld - u_lights[l].positionOrDirection.xyz);
+    vec3 pos = posWorld + N * (u_shadowSettings.x * u_lights[l].shadow.x * distance);
+    vec4 clip = u_lights[l].shadowClipFromWorld * vec4(pos, 1.0);
+    vec3 c = clip.xyz / clip.w * 0.5 + 0.5;
+    return shadowLookup(map, c.xy, 0.0, c.z, u_lights[l].falloff.z);
+}
+
 // Directional light: one orthographic map.
 float directionalVisibility(sampler2DArrayShadow map, int l, vec3 posWorld, vec3 N) {
     vec3 pos = posWorld + N * (u_shadowSettings.x * u_lights[l].shadow.x);
@@ -224,12 +242,14 @@ vec3 lightTerm(int l, int kind, int attenuation, SL_SHADOW_PARAM vec3 posWorld, 
         float r2 = dot(toLight, toLight);
         I = toLight * inversesqrt(r2);
         falloff = distanceFalloff(l, attenuation, r2);
+        if (kind == SL_LIGHT_SPOT) falloff *= spotFalloff(l, I);
     }
     float NdotI = dot(N, I);
     if (NdotI <= 0.0) return vec3(0.0);  // light behind the surface: no diffuse and no highlight
 #if SL_SHADOWS
-    falloff *= kind == SL_LIGHT_DIRECTIONAL ? directionalVisibility(shadowMap, l, posWorld, N)
-                                            : pointVisibility(shadowMap, l, posWorld, N);
+    if (kind == SL_LIGHT_DIRECTIONAL) falloff *= directionalVisibility(shadowMap, l, posWorld, N);
+    else if (kind == SL_LIGHT_SPOT) falloff *= spotVisibility(shadowMap, l, posWorld, N);
+    else falloff *= pointVisibility(shadowMap, l, posWorld, N);
 #endif
     return falloff * reflected(l, I, NdotI, N, V, texel, specularShare);
 }

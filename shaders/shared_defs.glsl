@@ -21,6 +21,7 @@
 #define SL_LIGHT_POINT 0
 #define SL_LIGHT_DIRECTIONAL 1
 #define SL_LIGHT_AREA 2
+#define SL_LIGHT_SPOT 3                        // a point light confined to a cone (lighting.glsl, spotFalloff)
 #define SL_ATTENUATION_NONE 0
 #define SL_ATTENUATION_INVERSE_SQUARE 1
 #define SL_ATTENUATION_INVERSE_SQUARE_RANGE 2  // 1/r^2 * clamp(1 - (r/range)^4, 0, 1)^2

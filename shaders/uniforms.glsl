@@ -7,7 +7,8 @@ struct LightGpu {
     vec4 radiance;             // rgb: colour * intensity
     ivec4 kind;                // x: SL_LIGHT_*, y: SL_ATTENUATION_*, z, w: area samples nx, ny
     vec4 falloff;              // x: 1 / range^2 (windowed inverse-square), y: 1 for a two-sided area light,
-                               // z: 1 / shadow-map size (a texel in texture coordinates)
+                               // z: 1 / shadow-map size (a texel in texture coordinates),
+                               // w: spot lights: 1 / (cos(inner) - cos(outer)) (at most 1000)
     vec4 areaU;                // xyz: the area light's edge along its width (length = width)
     vec4 areaV;                // xyz: the edge along its height
     vec4 areaNormal;           // xyz: unit normal of the emitting side
@@ -18,6 +19,7 @@ struct LightGpu {
     vec4 shadowV;              // shadowClipFromWorld * vec4(areaV, 0)
     vec4 shadow;               // x: a texel's world size (per unit of distance for point and area lights);
                                // point cube faces: y - z / distance is the stored depth, w: tan(half fov)
+    vec4 spot;                 // spot lights: xyz the unit axis (the way the light points), w: cos(outer)
 };
 
 layout(std140) uniform FrameBlock {

@@ -362,10 +362,12 @@ Without --output (or --benchmark) it opens the interactive viewer.
   --mesh SPEC             replace the first object's mesh: uvsphere[:slices[:stacks]], icosphere[:n],
                           torus[:major[:minor]], cube, plane[:n], or a .gltf/.glb file
   --light SPEC            replace the scene's lights (repeat for more, up to 16): TYPE:X,Y,Z[:KEY=VALUE]...
-                          point:X,Y,Z (position), directional:X,Y,Z (travel direction), area:X,Y,Z (centre);
-                          keys color=R,G,B intensity=I attenuation=none|inverse-square range=R (point, area)
-                          normal=X,Y,Z size=W,H samples=NXxNY two-sided (area), e.g.
+                          point:X,Y,Z (position), directional:X,Y,Z (travel direction), area:X,Y,Z (centre),
+                          spot:X,Y,Z (position); keys color=R,G,B intensity=I attenuation=none|inverse-square
+                          range=R (point, spot, area), normal=X,Y,Z size=W,H samples=NXxNY two-sided (area),
+                          direction=X,Y,Z outer=DEG inner=DEG (spot: axis and cone half-angles), e.g.
                           --light area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
+                          --light spot:0,4,2:direction=0,-2,-1:outer=25:inner=15
   --shadows, --no-shadows shadows (occlusion toward every light) on or off
   --no-textures           glTF models without their base colour textures and vertex colours
                           (C is each material's base colour factor alone)

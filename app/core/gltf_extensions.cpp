@@ -18,6 +18,7 @@ const std::vector<std::string> kDecodedGltfExtensions = {
     "KHR_draco_mesh_compression",  // Draco-compressed primitives
     "EXT_mesh_gpu_instancing",     // a node drawn once per TRANSLATION / ROTATION / SCALE
     "KHR_texture_transform",       // the base colour texture's coordinates offset, rotated, scaled
+    "KHR_lights_punctual",         // point, spot and directional lights: a scene's lights when it gives none
 };
 
 namespace {

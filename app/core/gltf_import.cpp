@@ -106,6 +106,8 @@ private:
     static float scalarAt(const View& v, std::size_t i, int c);  // component c of element i, dequantized
     std::vector<glm::mat4> instances(int nodeIndex, const tinygltf::Node& n);
     void addCamera(int cameraIndex, const glm::mat4& world);
+    void addLight(const tinygltf::Node& node, int nodeIndex, const glm::mat4& world);
+    int lightsLeftOut_ = 0;
     std::vector<int> cameraIndices_;  // which file camera each info_.cameras entry is
     std::vector<std::uint32_t> indices(int accessorIndex, std::size_t vertexCount, const std::string& where) const;
     void checkRange(int bufferViewIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
@@ -679,6 +681,58 @@ void GltfReader::addCamera(int ci, const glm::mat4& world) {
     info_.cameras.push_back(cam);
 }
 
+// A node's KHR_lights_punctual light: at the node's origin, pointing down its -Z (glTF 2.0's
+// convention for lights and cameras). Values the extension forbids are refused; a light past
+// kMaxLights is left out with a warning.
+void GltfReader::addLight(const tinygltf::Node& n, int ni, const glm::mat4& world) {
+    const auto ext = n.extensions.find("KHR_lights_punctual");
+    if (ext == n.extensions.end() || !ext->second.Has("light")) return;
+    const std::string where = "node " + std::to_string(ni) + " KHR_lights_punctual";
+    const tinygltf::Value& index = ext->second.Get("light");
+    if (!index.IsInt() || index.GetNumberAsInt() < 0 || std::size_t(index.GetNumberAsInt()) >= model_.lights.size())
+        fail(where, "light " + std::to_string(index.IsNumber() ? index.GetNumberAsInt() : -1) + " does not exist");
+    const tinygltf::Light& src = model_.lights[std::size_t(index.GetNumberAsInt())];
+    const std::string name = "light " + std::to_string(index.GetNumberAsInt());
+    if (info_.lights.size() >= std::size_t(kMaxLights)) {
+        if (lightsLeftOut_++ == 0)
+            info_.warnings.push_back("more than " + std::to_string(kMaxLights) + " lights: only the first " +
+                                     std::to_string(kMaxLights) + " the scene reaches are drawn");
+        return;
+    }
+    GltfLight out;
+    out.name = src.name.empty() ? name : src.name;
+    Light& l = out.light;
+    if (src.type == "point") l.type = LightType::Point;
+    else if (src.type == "directional") l.type = LightType::Directional;
+    else if (src.type == "spot") l.type = LightType::Spot;
+    else fail(name, "type \"" + src.type + "\" is not point, directional or spot");
+    if (!std::isfinite(src.intensity) || src.intensity < 0.0) fail(name, "intensity must be a finite number >= 0");
+    l.intensity = float(src.intensity);
+    if (src.color.size() >= 3) {
+        const glm::vec3 c(float(src.color[0]), float(src.color[1]), float(src.color[2]));
+        if (!isFinite(c)) fail(name, "color is not finite");
+        l.color = glm::clamp(c, 0.0f, 1.0f);
+    } else {
+        l.color = glm::vec3(1.0f);
+    }
+    l.position = glm::vec3(world[3]);
+    l.direction = safeNormalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    if (l.type != LightType::Directional) {
+        // Physical point lights fall off with 1/r^2, windowed to zero at the range when there is one
+        // (the extension's recommendation, shadelab's "range").
+        l.attenuation = Attenuation::InverseSquare;
+        l.range = std::isfinite(src.range) && src.range > 0.0 ? float(src.range) : 0.0f;
+    }
+    if (l.type == LightType::Spot) {
+        const double inner = src.spot.innerConeAngle, outer = src.spot.outerConeAngle;
+        if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || outer <= inner || outer > 1.5707963268 + 1e-6)
+            fail(name, "spot cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2");
+        l.outerConeDeg = std::min(float(glm::degrees(outer)), kMaxSpotConeDeg);
+        l.innerConeDeg = std::min(float(glm::degrees(inner)), l.outerConeDeg - 0.01f);
+    }
+    info_.lights.push_back(std::move(out));
+}
+
 // Every node drawn is a copy of its meshes in the baked mesh: at most this many, whatever the file's size.
 constexpr int kMaxNodeInstances = 1000000;
 
@@ -759,6 +813,7 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
                                                " node instances in the scene (children listed many times?)");
     info_.nodes += 1;
     if (n.camera >= 0 && std::size_t(n.camera) < model_.cameras.size()) addCamera(n.camera, world);
+    addLight(n, ni, world);
     if (n.mesh >= 0) {
         if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
         const tinygltf::Mesh& m = model_.meshes[std::size_t(n.mesh)];
@@ -1151,6 +1206,14 @@ std::string describe(const std::string& path, const GltfInfo& i) {
              (i.cameras[c].perspective ? ", perspective, " + std::to_string(int(std::lround(i.cameras[c].yfovDeg))) + " degrees"
                                        : std::string(", orthographic (not drawn: shadelab's views are perspective)")) +
              " (--camera " + std::to_string(c) + ")\n";
+    for (std::size_t l = 0; l < i.lights.size(); ++l) {
+        const Light& light = i.lights[l].light;
+        char b[160];
+        std::snprintf(b, sizeof b, "light %zu: %s, %s, %g %s", l, i.lights[l].name.c_str(), toString(light.type),
+                      double(light.intensity), light.type == LightType::Directional ? "lux" : "cd");
+        s += std::string(b) + (light.type == LightType::Directional ? " toward " + vec(light.direction) : " at " + vec(light.position)) +
+             " (lights the scene when it gives no lights)\n";
+    }
     s += "normals: " + (i.generatedNormals ? "generated for " + std::to_string(i.generatedNormals) + " vertices"
                                              : std::string("from the file")) + "\n";
     for (const std::string& w : i.warnings) s += "warning: " + w + "\n";

@@ -22,6 +22,14 @@ struct GltfCamera {
     float zfar = 0.0f;  // 0: infinite (the file gave none)
 };
 
+// A light of the file (KHR_lights_punctual) where the drawn scene places it: each node that uses it
+// gives one. Position and direction are in the model's space; the intensity is the file's, in candela
+// (point, spot) or lux (directional) - lecturesLights() (scene_geometry.hpp) converts it to L_l.
+struct GltfLight {
+    std::string name;
+    Light light;  // point: inverse-square with the file's range; spot: cone half-angles in degrees
+};
+
 struct GltfInfo {
     int nodes = 0;              // nodes visited in the drawn scene
     int meshes = 0;             // meshes in the file
@@ -35,6 +43,7 @@ struct GltfInfo {
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // of the drawn vertices, world space
     std::vector<std::string> warnings;
     std::vector<GltfCamera> cameras;  // in the order the drawn scene reaches them (--camera N)
+    std::vector<GltfLight> lights;    // in the order the drawn scene reaches them (at most kMaxLights)
 };
 
 Mesh loadGltf(const std::string& path, GltfInfo* info = nullptr);

@@ -4,6 +4,7 @@
 
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -113,6 +114,19 @@ float attenuationFactor(const Light& light, float r2) {
     return f;
 }
 
+glm::vec2 spotCone(const Light& l) {
+    const float cosOuter = std::cos(glm::radians(l.outerConeDeg)), cosInner = std::cos(glm::radians(l.innerConeDeg));
+    return {cosOuter, 1.0f / std::max(cosInner - cosOuter, 1e-3f)};
+}
+
+float spotFalloff(const Light& l, const glm::vec3& towardLight) {
+    if (l.type != LightType::Spot) return 1.0f;
+    const glm::vec2 cone = spotCone(l);
+    const float cd = glm::dot(glm::normalize(l.direction), -towardLight);
+    const float t = glm::clamp((cd - cone.x) * cone.y, 0.0f, 1.0f);
+    return t * t;
+}
+
 AreaFrame areaFrame(const Light& l) {
     AreaFrame f;
     f.n = glm::normalize(l.normal);
@@ -166,11 +180,14 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
             addSample(t.lights[li], m, env, n, v, i, power * visible(li, 0, i, std::numeric_limits<float>::infinity()));
             break;
         }
-        case LightType::Point: {
+        case LightType::Point:
+        case LightType::Spot: {
             const glm::vec3 d = light.position - p;
             const float r2 = glm::dot(d, d), r = std::sqrt(r2);
             const glm::vec3 i = d / r;
-            addSample(t.lights[li], m, env, n, v, i, power * attenuationFactor(light, r2) * visible(li, 0, i, r));
+            const float cone = spotFalloff(light, i);
+            addSample(t.lights[li], m, env, n, v, i,
+                      power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? visible(li, 0, i, r) : 1.0f));
             break;
         }
         case LightType::Area: {

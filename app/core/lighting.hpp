@@ -6,7 +6,8 @@
 //   spec = max(0, R(I).V)^k_e (Phong) or max(0, H.N)^k_e (Blinn-Phong); 0 where N.I <= 0
 //   R(I) = 2 (N.I) N - I,  H = normalize(I + V)
 //
-// Point and directional lights are one sample k, with L = colour * intensity * attenuation. An area
+// Point and directional lights are one sample k, with L = colour * intensity * attenuation; a spot light
+// is a point light times its cone's falloff (spotFalloff: glTF KHR_lights_punctual's). An area
 // light is nx * ny point-light samples (areaSamplePosition), each with
 //   L_k = colour * intensity * attenuation(r_k) * cos_k / (nx * ny),   cos_k = n_light . (-I_k)
 // (its share of the area, and the cosine at the light; |cos_k| when two-sided, 0 behind the light).
@@ -117,6 +118,13 @@ inline glm::vec3 shade(const Material& m, const LightingEnvironment& env, const 
 // The distance falloff of a point or area light at squared distance r2: 1 (none), 1/r2
 // (inverse-square), or 1/r2 * clamp(1 - (r/range)^4, 0, 1)^2 (inverse-square with a range).
 float attenuationFactor(const Light& light, float r2);
+
+// A spot light's share toward the unit vector `towardLight` (from the point to the light): with cd the
+// cosine between the light's axis and -towardLight, t = clamp((cd - cos outer) / (cos inner - cos outer),
+// 0, 1), the falloff is t^2 (glTF KHR_lights_punctual's; the span is at least 1e-3). 1 for other lights.
+float spotFalloff(const Light& light, const glm::vec3& towardLight);
+// The two numbers the shaders take: cos(outer) and 1 / max(cos(inner) - cos(outer), 1e-3).
+glm::vec2 spotCone(const Light& light);
 
 // An area light's rectangle: `u` and `v` are its edges (lengths size.x and size.y), `n` its unit front
 // normal. u runs along normalize(cross(ref, n)) with ref = +y, or +z when n is within ~2.6 degrees of

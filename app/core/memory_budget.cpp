@@ -69,7 +69,7 @@ MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint
         const std::uint64_t areaMap = std::uint64_t(s.shadows.areaMapSize) * std::uint64_t(s.shadows.areaMapSize);
         for (const Light& l : s.lights) {
             if (l.type == LightType::Point) use.shadowMaps += 6 * map * kBytesPerTexel;
-            else if (l.type == LightType::Directional) use.shadowMaps += map * kBytesPerTexel;
+            else if (l.type == LightType::Directional || l.type == LightType::Spot) use.shadowMaps += map * kBytesPerTexel;
             else use.shadowMaps += std::uint64_t(l.samples.x) * std::uint64_t(l.samples.y) * areaMap * kBytesPerTexel * 8 / 5;
         }
     }

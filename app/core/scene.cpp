@@ -51,6 +51,7 @@ const char* toString(LightType t) {
     case LightType::Point: return "point";
     case LightType::Directional: return "directional";
     case LightType::Area: return "area";
+    case LightType::Spot: return "spot";
     }
     return "?";
 }

@@ -14,7 +14,7 @@ enum class ShadingMode { Flat, Gouraud, Phong };
 enum class Layout { Single, Compare, Diff };
 enum class ReflectionModel { Phong, BlinnPhong };
 enum class OutputEncoding { Linear, Srgb };
-enum class LightType { Point, Directional, Area };
+enum class LightType { Point, Directional, Area, Spot };
 enum class Attenuation { None, InverseSquare };
 // Beyond the heuristic model (lighting.hpp has the exact formulas):
 enum class SpecularNormalization { None, Energy };  // "energy": lobes normalised to constant reflected energy
@@ -28,6 +28,7 @@ inline constexpr int kMaxImageSide = 16384;    // pixels per side, refused befor
 inline constexpr float kMinExponent = 1.0f;    // k_e range: the lecture's slider goes 1..1000
 inline constexpr float kMaxExponent = 10000.0f;
 inline constexpr int kMaxAreaSamplesPerSide = 16;  // an area light has at most 16 x 16 samples
+inline constexpr float kMaxSpotConeDeg = 90.0f;    // a spot light's outer cone half-angle (glTF: pi / 2)
 inline constexpr int kMinShadowMapSize = 64;       // shadow-map sides, pixels
 inline constexpr int kMaxShadowMapSize = 4096;
 inline constexpr int kMaxPcfRadius = 2;            // percentage-closer filtering: (2r+1)^2 lookups
@@ -82,11 +83,11 @@ struct SceneObject {
 
 struct Light {
     LightType type = LightType::Point;
-    glm::vec3 position{3.0f, 4.0f, 5.0f};     // point lights: world space; area lights: the centre
-    glm::vec3 direction{-1.0f, -1.0f, -1.0f}; // directional lights: the direction the light travels
+    glm::vec3 position{3.0f, 4.0f, 5.0f};     // point and spot lights: world space; area lights: the centre
+    glm::vec3 direction{-1.0f, -1.0f, -1.0f}; // directional lights: the direction the light travels; spot: its axis
     glm::vec3 color{1.0f};
     float intensity = 1.0f;                   // area lights: of the whole rectangle (see lighting.hpp)
-    Attenuation attenuation = Attenuation::None;  // point and area lights
+    Attenuation attenuation = Attenuation::None;  // point, spot and area lights
     // Inverse-square only: > 0 multiplies 1/r^2 by the window clamp(1 - (r/range)^4, 0, 1)^2 so the
     // light reaches exactly zero at `range` (glTF KHR_lights_punctual's recommendation); 0: no window.
     float range = 0.0f;
@@ -96,6 +97,10 @@ struct Light {
     glm::vec2 size{1.0f, 1.0f};
     glm::ivec2 samples{4, 4};
     bool twoSided = false;
+    // Spot lights: a point light whose light is confined to a cone around `direction`: full inside the
+    // inner half-angle, none outside the outer one, glTF's smooth falloff between (lighting.hpp).
+    float innerConeDeg = 15.0f;               // when not given: half the outer half-angle
+    float outerConeDeg = 30.0f;
 };
 
 // Shadows (occlusion toward each light) and how the shadow maps are made. Biases are what keep a lit

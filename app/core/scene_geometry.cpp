@@ -2,6 +2,7 @@
 
 #include "core/camera.hpp"
 #include "core/error.hpp"
+#include "core/lighting.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -70,9 +71,52 @@ void useModelCamera(Scene& scene, const SceneGeometry& g) {
     scene.cameraGiven = true;
 }
 
+// A scene without lights of its own is lit by the first model's lights, when it has some.
+void useModelLights(Scene& scene, const SceneGeometry& g) {
+    if (scene.lightsGiven) return;
+    for (std::size_t o = 0; o < scene.objects.size() && o < g.gltfInfo.size(); ++o) {
+        if (g.gltfInfo[o].lights.empty()) continue;
+        const glm::mat4 world = worldFromObject(scene.objects[o].transform);
+        scene.lights = lecturesLights(g.gltfInfo[o].lights, world, worldBounds({&g.meshes[o]}, {world}));
+        scene.lightsGiven = true;
+        return;
+    }
+}
+
 }  // namespace
 
+std::vector<Light> lecturesLights(const std::vector<GltfLight>& lights, const glm::mat4& world, const BoundingSphere& b) {
+    std::vector<Light> out;
+    const float scale = std::cbrt(std::fabs(glm::determinant(glm::mat3(world))));
+    const float radius = b.radius > 0.0f ? b.radius : 1.0f;
+    float brightest = 0.0f, brightestIgnoringCones = 0.0f;
+    for (const GltfLight& gl : lights) {
+        Light l = gl.light;
+        l.position = glm::vec3(world * glm::vec4(l.position, 1.0f));
+        l.direction = safeNormalize(glm::mat3(world) * l.direction, glm::vec3(0.0f, 0.0f, -1.0f));
+        l.range *= scale;
+        float e = l.intensity * std::max({l.color.r, l.color.g, l.color.b});
+        if (l.type != LightType::Directional) {
+            const glm::vec3 d = l.position - b.center;
+            const float r = std::max(glm::length(d), 0.1f * radius);
+            e *= attenuationFactor(l, r * r);
+            brightestIgnoringCones = std::max(brightestIgnoringCones, e);
+            if (glm::length(d) > 0.0f) e *= spotFalloff(l, glm::normalize(d));
+        } else {
+            brightestIgnoringCones = std::max(brightestIgnoringCones, e);
+        }
+        brightest = std::max(brightest, e);
+        out.push_back(l);
+    }
+    // Spot lights that all point away from the centre: scaled as if they did not.
+    const float reference = brightest > 0.0f ? brightest : brightestIgnoringCones;
+    if (reference > 0.0f && std::isfinite(reference))
+        for (Light& l : out) l.intensity = std::min(l.intensity / reference, 1e9f);
+    return out;
+}
+
 void frameIfNeeded(Scene& scene, const SceneGeometry& g) {
+    useModelLights(scene, g);
     if (scene.modelCamera >= 0) return useModelCamera(scene, g);
     if (scene.cameraGiven) return;
     bool hasModel = false;

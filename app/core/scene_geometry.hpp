@@ -21,7 +21,18 @@ struct SceneGeometry {
 SceneGeometry buildSceneGeometry(const Scene& scene);
 
 // A scene that gives no camera and draws a glTF model gets a camera (and, with no lights given, a
-// light) placed to fit the model's bounding sphere.
+// light) placed to fit the model's bounding sphere. A scene that gives no lights and draws a glTF
+// model with lights of its own (KHR_lights_punctual) is lit by those (lecturesLights), the first such
+// model's.
 void frameIfNeeded(Scene& scene, const SceneGeometry& geometry);
+
+// A model's lights as the lecture's L_l. The file gives physical units: candela for point and spot
+// lights, whose illuminance at distance r is I / r^2 (shadelab's inverse-square attenuation, windowed
+// by the file's range), and lux for directional lights. All of them are scaled by one factor, so that
+// their ratios stay the file's and the brightest delivers L = 1 (its colour's largest channel) at the
+// centre of `bounds` (spot lights with their cone; one nearer than a tenth of the radius counted at
+// that distance). Positions and directions go through `worldFromObject`.
+std::vector<Light> lecturesLights(const std::vector<GltfLight>& lights, const glm::mat4& worldFromObject,
+                                  const BoundingSphere& bounds);
 
 }  // namespace shadelab

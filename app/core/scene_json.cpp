@@ -234,7 +234,8 @@ Light SceneReader::light(const json& j, const std::string& path) const {
     Light l;
     if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
     static const std::pair<const char*, LightType> kTypes[] = {
-        {"point", LightType::Point}, {"directional", LightType::Directional}, {"area", LightType::Area}};
+        {"point", LightType::Point}, {"directional", LightType::Directional}, {"area", LightType::Area},
+        {"spot", LightType::Spot}};
     choice(j, "type", path, l.type, kTypes);
     static const std::pair<const char*, Attenuation> kAtt[] = {{"none", Attenuation::None},
                                                                 {"inverse-square", Attenuation::InverseSquare}};
@@ -257,6 +258,18 @@ Light SceneReader::light(const json& j, const std::string& path) const {
         vec2(j, "size", path, l.size, 1e-4, 1e6);
         ivec2(j, "samples", path, l.samples, 1, kMaxAreaSamplesPerSide);
         boolean(j, "two_sided", path, l.twoSided);
+        break;
+    case LightType::Spot:
+        requireObject(j, path, {"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "color", "intensity",
+                                "attenuation", "range"});
+        vec3(j, "position", path, l.position, -1e6, 1e6);
+        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        nonZero(l.direction, join(path, "direction"));
+        number(j, "outer_cone_deg", path, l.outerConeDeg, 0.01, kMaxSpotConeDeg);
+        number(j, "inner_cone_deg", path, l.innerConeDeg, 0.0, kMaxSpotConeDeg);
+        if (!j.contains("inner_cone_deg")) l.innerConeDeg = 0.5f * l.outerConeDeg;
+        if (l.innerConeDeg >= l.outerConeDeg)
+            fail(join(path, "inner_cone_deg"), "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
         break;
     }
     if (l.type != LightType::Directional) {
@@ -524,6 +537,11 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
         } else {
             lj["position"] = vecJson(l.position);
         }
+        if (l.type == LightType::Spot) {
+            lj["direction"] = vecJson(l.direction);
+            lj["inner_cone_deg"] = l.innerConeDeg;
+            lj["outer_cone_deg"] = l.outerConeDeg;
+        }
         if (l.type == LightType::Area) {
             lj["normal"] = vecJson(l.normal);
             lj["size"] = {l.size.x, l.size.y};
@@ -647,7 +665,8 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
     if (type == "point") l.type = LightType::Point;
     else if (type == "directional") l.type = LightType::Directional;
     else if (type == "area") l.type = LightType::Area;
-    else fail("unknown light type \"" + quoteInput(type) + "\" (expected point, directional or area)");
+    else if (type == "spot") l.type = LightType::Spot;
+    else fail("unknown light type \"" + quoteInput(type) + "\" (expected point, directional, area or spot)");
     const glm::vec3 where = vec3Of(type, parts[1], -1e6, 1e6);
     if (l.type == LightType::Directional) {
         if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
@@ -655,12 +674,13 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
     } else {
         l.position = where;
     }
-    bool rangeGiven = false;
+    bool rangeGiven = false, innerGiven = false;
     for (std::size_t i = 2; i < parts.size(); ++i) {
         const std::string& kv = parts[i];
         const std::size_t eq = kv.find('=');
         const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
-        const bool positional = l.type != LightType::Directional, area = l.type == LightType::Area;
+        const bool positional = l.type != LightType::Directional, area = l.type == LightType::Area,
+                   spot = l.type == LightType::Spot;
         if (key == "two-sided" && area && eq == std::string::npos) {
             l.twoSided = true;
             continue;
@@ -681,6 +701,14 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
         } else if (key == "size" && area) {
             const std::vector<float> wh = numbers(key, value, 2, ',', 1e-4, 1e6);
             l.size = {wh[0], wh[1]};
+        } else if (key == "direction" && spot) {
+            l.direction = vec3Of(key, value, -1e6, 1e6);
+            if (glm::length(l.direction) < 1e-6f) fail("direction: must not be a zero-length vector");
+        } else if (key == "outer" && spot) {
+            l.outerConeDeg = numbers(key, value, 1, ',', 0.01, kMaxSpotConeDeg)[0];
+        } else if (key == "inner" && spot) {
+            l.innerConeDeg = numbers(key, value, 1, ',', 0.0, kMaxSpotConeDeg)[0];
+            innerGiven = true;
         } else if (key == "samples" && area) {
             const std::vector<float> n = numbers(key, value, 2, 'x', 1, kMaxAreaSamplesPerSide);
             if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
@@ -688,10 +716,15 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
         } else {
             fail("unknown key \"" + quoteInput(key) + "\" for a " + type + " light (" +
                  (area ? "color, intensity, attenuation, range, normal, size, samples, two-sided"
-                       : positional ? "color, intensity, attenuation, range" : "color, intensity") + ")");
+                  : spot ? "direction, inner, outer, color, intensity, attenuation, range"
+                  : positional ? "color, intensity, attenuation, range" : "color, intensity") + ")");
         }
     }
     if (rangeGiven && l.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
+    if (l.type == LightType::Spot) {
+        if (!innerGiven) l.innerConeDeg = 0.5f * l.outerConeDeg;
+        if (l.innerConeDeg >= l.outerConeDeg) fail("inner must be less than outer (degrees from the axis)");
+    }
     return l;
 }
 

@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -143,6 +144,31 @@ void areaProjection(const Light& light, const std::vector<Aabb>& objects, Shadow
         }
 }
 
+// Spot light: one perspective view down its axis, wide enough for the outer cone plus a few texels
+// (so filtering at the cone's edge stays inside), capped at 85 degrees half-angle: an outer cone
+// beyond that is lit without shadows past 85 degrees (README, "not supported").
+void spotProjection(const Light& light, const std::vector<Aabb>& objects, ShadowProjection& sp, int pcf) {
+    const glm::vec3 z = glm::normalize(light.direction);
+    const glm::vec3 ref = std::fabs(z.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 x = glm::normalize(glm::cross(ref, z));
+    const glm::vec3 y = glm::cross(z, x);
+    const float coneDeg = std::min(light.outerConeDeg, 85.0f), cone = std::tan(glm::radians(coneDeg));
+    sp.tanHalf = cone * float(sp.size) / (float(sp.size) - 2.0f * float(pcf + 2));
+    float farZ = 0.0f, nearZ = std::numeric_limits<float>::max();
+    for (const glm::vec3& c : corners(objects)) farZ = std::max(farZ, glm::dot(c - light.position, z));
+    for (const Aabb& b : objects) nearZ = std::min(nearZ, distanceToBox(light.position, b));
+    farZ = std::max(farZ * 1.01f, 1e-3f);
+    // The nearest object may lie off the axis, inside the cone: its depth along the axis is as small as
+    // its distance times the cosine of the cone.
+    const float nearD = std::clamp(0.9f * nearZ * std::cos(glm::radians(coneDeg)), farZ * 2e-3f, farZ * 0.5f);
+    float a, b;
+    perspectiveDepth(nearD, farZ, a, b);
+    // View space: (x, y, -z) (OpenGL looks down -z); clip = P * view, w = the distance along the axis.
+    auto row = [&](const glm::vec3& r, float constant) { return glm::vec4(r, constant - glm::dot(r, light.position)); };
+    sp.clipFromWorld.push_back(fromRows(row(x / sp.tanHalf, 0.0f), row(y / sp.tanHalf, 0.0f), row(a * z, -b), row(z, 0.0f)));
+    sp.texelWorld = 2.0f * sp.tanHalf / float(sp.size);
+}
+
 }  // namespace
 
 Aabb transformAabb(const Aabb& box, const glm::mat4& m) {
@@ -176,6 +202,10 @@ ShadowProjection shadowProjection(const Light& light, const std::vector<Aabb>& o
     case LightType::Area:
         sp.size = s.areaMapSize;
         areaProjection(light, objects, sp);
+        break;
+    case LightType::Spot:
+        sp.size = s.mapSize;
+        spotProjection(light, objects, sp, s.pcf);
         break;
     }
     return sp;

@@ -6,6 +6,7 @@
 //                filtering near a face edge stays inside the face); the shader picks the face by the
 //                major axis of p - light and needs no matrices (ShadowProjection::depthA/B, tanHalf)
 //   directional  one orthographic view along the light, fitted to the objects' bounds
+//   spot         one perspective view down the light's axis, as wide as its outer cone
 //   area         one perspective view per sample, all with the same orientation and field of view
 //                (fitted so that the objects in front of the light are inside from every sample):
 //                sample (a, b) sees p as centreClipFromWorld * p - a * uClip - b * vClip
@@ -29,7 +30,7 @@ Aabb transformAabb(const Aabb& objectBox, const glm::mat4& worldFromObject);
 struct ShadowProjection {
     int size = 0;                          // texels per side of each layer
     std::vector<glm::mat4> clipFromWorld;  // one per layer; what the depth pass renders
-    // A texel's world-space size: per unit of distance from the light (point, area), or absolute
+    // A texel's world-space size: per unit of distance from the light (point, spot, area), or absolute
     // (directional). The normal bias is given in texels and multiplied by this.
     float texelWorld = 0.0f;
     // Point lights: stored depth = depthA - depthB / d, with d the major-axis distance from the light;

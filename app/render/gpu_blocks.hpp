@@ -13,7 +13,7 @@ struct LightGpu {
     float positionOrDirection[4];
     float radiance[4];
     std::int32_t kind[4];  // kind, attenuation, area samples nx, ny
-    float falloff[4];      // 1 / range^2, two-sided, 1 / shadow-map size
+    float falloff[4];      // 1 / range^2, two-sided, 1 / shadow-map size, spot: 1 / (cos inner - cos outer)
     float areaU[4];
     float areaV[4];
     float areaNormal[4];
@@ -21,11 +21,13 @@ struct LightGpu {
     float shadowU[4];
     float shadowV[4];
     float shadow[4];       // texel world size, depth = y - z / distance, tan(half fov)
+    float spot[4];         // spot: unit axis, cos outer
 };
 static_assert(offsetof(LightGpu, falloff) == 48, "std140 offset");
 static_assert(offsetof(LightGpu, shadowClipFromWorld) == 112, "std140 offset");
 static_assert(offsetof(LightGpu, shadow) == 208, "std140 offset");
-static_assert(sizeof(LightGpu) == 224, "LightGpu must match std140");
+static_assert(offsetof(LightGpu, spot) == 224, "std140 offset");
+static_assert(sizeof(LightGpu) == 240, "LightGpu must match std140");
 
 struct FrameBlock {
     float clipFromWorld[16];
@@ -41,10 +43,10 @@ static_assert(offsetof(FrameBlock, eyeWorld) == 64, "std140 offset");
 static_assert(offsetof(FrameBlock, ambient) == 80, "std140 offset");
 static_assert(offsetof(FrameBlock, settings) == 96, "std140 offset");
 static_assert(offsetof(FrameBlock, lights) == 112, "std140 offset");
-static_assert(offsetof(FrameBlock, shadowSettings) == 112 + 224 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(offsetof(FrameBlock, modelSettings) == 128 + 224 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(offsetof(FrameBlock, areaPass) == 144 + 224 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(sizeof(FrameBlock) == 160 + 224 * SL_MAX_LIGHTS, "std140 size");
+static_assert(offsetof(FrameBlock, shadowSettings) == 112 + 240 * SL_MAX_LIGHTS, "std140 offset");
+static_assert(offsetof(FrameBlock, modelSettings) == 128 + 240 * SL_MAX_LIGHTS, "std140 offset");
+static_assert(offsetof(FrameBlock, areaPass) == 144 + 240 * SL_MAX_LIGHTS, "std140 offset");
+static_assert(sizeof(FrameBlock) == 160 + 240 * SL_MAX_LIGHTS, "std140 size");
 
 struct ObjectBlock {
     float worldFromObject[16];

@@ -237,8 +237,8 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
 }
 
 void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffset) {
-    // A three-axis cross at each point light; for a directional light a cross up-light of the target
-    // and a line along the direction the light travels; for an area light its rectangle, normal and
+    // A three-axis cross at each point light (a spot light: with its axis and outer cone); for a
+    // directional light a cross up-light of the target and a line along the direction the light travels; for an area light its rectangle, normal and
     // sample positions around the cross at its centre. Sizes follow the distance to the eye, so a
     // marker stays the same size on screen wherever the light is.
     std::vector<float> data;
@@ -254,6 +254,20 @@ void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffs
             at = cam.target - dir * reach;
             pushVertex(data, at);
             pushVertex(data, at + dir * (0.4f * reach));
+        }
+        if (light.type == LightType::Spot) {
+            // The axis and four lines along the outer cone, a quarter of the way to the eye long.
+            const glm::vec3 z = glm::normalize(light.direction);
+            const glm::vec3 ref = std::fabs(z.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+            const glm::vec3 x = glm::normalize(glm::cross(ref, z)), y = glm::cross(z, x);
+            const float length = 0.25f * std::max(glm::length(cam.eye - at), 1e-3f);
+            const float spread = std::tan(glm::radians(std::min(light.outerConeDeg, 80.0f)));
+            pushVertex(data, at);
+            pushVertex(data, at + z * length);
+            for (const glm::vec3& side : {x, -x, y, -y}) {
+                pushVertex(data, at);
+                pushVertex(data, at + (z + side * spread) * (length / std::sqrt(1.0f + spread * spread)));
+            }
         }
         if (light.type == LightType::Area) {
             // The rectangle's outline, its emitting normal, and a dot per sample position.

@@ -37,6 +37,7 @@ int lightKind(const Light& l) {
     case LightType::Point: return SL_LIGHT_POINT;
     case LightType::Directional: return SL_LIGHT_DIRECTIONAL;
     case LightType::Area: return SL_LIGHT_AREA;
+    case LightType::Spot: return SL_LIGHT_SPOT;
     }
     return SL_LIGHT_POINT;
 }
@@ -69,6 +70,11 @@ gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
             copyVec(g.areaU, f.u);
             copyVec(g.areaV, f.v);
             copyVec(g.areaNormal, f.n);
+        }
+        if (l.type == LightType::Spot) {
+            const glm::vec2 cone = spotCone(l);
+            copyVec(g.spot, glm::normalize(l.direction), cone.x);
+            g.falloff[3] = cone.y;
         }
     }
     return b;
@@ -149,7 +155,7 @@ void checkGl(const char* where) {
 
 std::vector<std::string> programDefines(const Scene& s) {
     const std::size_t count = std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS);
-    static const char* const kKinds[] = {"SL_LIGHT_POINT", "SL_LIGHT_DIRECTIONAL", "SL_LIGHT_AREA"};
+    static const char* const kKinds[] = {"SL_LIGHT_POINT", "SL_LIGHT_DIRECTIONAL", "SL_LIGHT_AREA", "SL_LIGHT_SPOT"};
     static const char* const kAttenuations[] = {"SL_ATTENUATION_NONE", "SL_ATTENUATION_INVERSE_SQUARE",
                                                 "SL_ATTENUATION_INVERSE_SQUARE_RANGE"};
     std::vector<std::string> d;

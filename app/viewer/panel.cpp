@@ -211,7 +211,7 @@ void sectionLights(Scene& scene, int& selected) {
                                             isSelected && l.type == LightType::Area ? ": samples shown" : "");
         if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selected = isSelected ? -1 : int(i);
         if (open) {
-            static const char* const kTypes[] = {"point", "directional", "area"};
+            static const char* const kTypes[] = {"point", "directional", "area", "spot"};
             combo("type", l.type, kTypes);
             if (l.type == LightType::Directional)
                 dragNonZero("direction", l.direction, 0.02f, false);
@@ -226,6 +226,14 @@ void sectionLights(Scene& scene, int& selected) {
                 ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kMaxAreaSamplesPerSide);
                 l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kMaxAreaSamplesPerSide));
                 ImGui::Checkbox("two-sided", &l.twoSided);
+            }
+            if (l.type == LightType::Spot) {
+                dragNonZero("direction", l.direction, 0.02f, false);
+                // Half-angles from the axis: full light inside the inner cone, none outside the outer.
+                ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kMaxSpotConeDeg, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+                ImGui::SliderFloat("inner cone (deg)", &l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f, "%.1f",
+                                   ImGuiSliderFlags_AlwaysClamp);
+                l.innerConeDeg = std::clamp(l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f);
             }
             colorEdit("colour", l.color);
             ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);

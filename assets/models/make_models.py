@@ -13,6 +13,9 @@
 - checker_globe_transform.gltf: the same globe with its texture coordinates stored transformed back
   and KHR_texture_transform (offset, rotation, scale) restoring them, its texture beside it in
   checker_globe.png: it must draw exactly like checker_globe.gltf.
+- spot_stage.gltf: the gem on a floor, lit by the file's own lights (KHR_lights_punctual): a spot
+  light from above (800 cd, cone 12 to 28 degrees) and a dim directional fill (0.3 lux), as an
+  exporter writes them in physical units; shadelab converts them to the lecture's L_l.
 Only the Python standard library is used; buffers are embedded as base64 data: URIs.
 """
 import base64
@@ -23,6 +26,19 @@ import struct
 import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def save(name, doc, blob):
+    """Writes NAME.gltf beside this script with `blob` as its one buffer, embedded as a data: URI."""
+    buffers = [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}]
+    ordered = {}  # "buffers" just before "bufferViews", as the files have always had it
+    for key, value in doc.items():
+        if key == "bufferViews":
+            ordered["buffers"] = buffers
+        ordered[key] = value
+    with open(os.path.join(HERE, name + ".gltf"), 'w') as f:
+        json.dump(ordered, f, indent=1)
+        f.write('\n')
 
 
 def write(name, positions, indices, normals=None, color=(0.8, 0.8, 0.8)):
@@ -49,13 +65,9 @@ def write(name, positions, indices, normals=None, color=(0.8, 0.8, 0.8)):
                                                                "metallicFactor": 0.0, "roughnessFactor": 0.5}}],
         "meshes": [{"name": name, "primitives": [{"attributes": attributes, "indices": len(accessors) - 1,
                                                   "material": 0, "mode": 4}]}],
-        "buffers": [{"byteLength": len(blob),
-                     "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
         "bufferViews": views, "accessors": accessors,
     }
-    with open(os.path.join(HERE, name + ".gltf"), 'w') as f:
-        json.dump(doc, f, indent=1)
-        f.write('\n')
+    save(name, doc, blob)
 
 
 def normalize(v):
@@ -98,6 +110,69 @@ def torus(major=8, minor=6, r_major=1.0, r_minor=0.4):
             d = i * minor + (j + 1) % minor
             indices += [a, d, b, b, d, c]   # counter-clockwise seen from outside the tube
     return positions, indices
+
+
+def floor(n=8, size=6.0, y=-0.8):
+    positions, normals, indices = [], [], []
+    for i in range(n + 1):
+        for k in range(n + 1):
+            positions.append((-size / 2 + size * k / n, y, -size / 2 + size * i / n))
+            normals.append((0.0, 1.0, 0.0))
+    for i in range(n):
+        for k in range(n):
+            a = i * (n + 1) + k
+            indices += [a, a + n + 1, a + 1, a + 1, a + n + 1, a + n + 2]  # counter-clockwise seen from above
+    return positions, normals, indices
+
+
+def write_stage(name):
+    """The gem and the floor as two meshes, and two lights on nodes of their own."""
+    gp, gn, gi = gem()
+    fp, fn, fi = floor()
+    blobs, views, accessors, meshes = [], [], [], []
+    offset = 0
+    for mesh_index, (p, n, idx) in enumerate(((gp, gn, gi), (fp, fn, fi))):
+        parts = [b''.join(struct.pack('<3f', *v) for v in p), b''.join(struct.pack('<3f', *v) for v in n),
+                 b''.join(struct.pack('<H', i) for i in idx)]
+        parts[2] += b'\0' * ((4 - len(parts[2]) % 4) % 4)
+        first = len(accessors)
+        for k, data in enumerate(parts):
+            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(data) if k < 2 else 2 * len(idx),
+                          "target": 34963 if k == 2 else 34962})
+            offset += len(data)
+            blobs.append(data)
+        accessors.append({"bufferView": first, "componentType": 5126, "count": len(p), "type": "VEC3",
+                          "min": [min(v[c] for v in p) for c in range(3)], "max": [max(v[c] for v in p) for c in range(3)]})
+        accessors.append({"bufferView": first + 1, "componentType": 5126, "count": len(n), "type": "VEC3"})
+        accessors.append({"bufferView": first + 2, "componentType": 5123, "count": len(idx), "type": "SCALAR"})
+        meshes.append({"primitives": [{"attributes": {"POSITION": first, "NORMAL": first + 1}, "indices": first + 2,
+                                       "material": mesh_index, "mode": 4}]})
+    blob = b''.join(blobs)
+    # The spot 3 m above and 1.5 m in front, turned to look at the gem: its -Z toward (0, 0, 0).
+    sx, sy, sz = 0.0, 3.0, 1.5
+    pitch = math.atan2(sy, sz)  # rotate -Z about x by -pitch to point down toward the origin
+    spot_rotation = [-math.sin(pitch / 2), 0.0, 0.0, math.cos(pitch / 2)]
+    sun_rotation = [-math.sin(math.radians(60) / 2), 0.0, 0.0, math.cos(math.radians(60) / 2)]
+    doc = {
+        "asset": {"version": "2.0", "generator": "shadelab assets/models/make_models.py", "copyright": "CC0-1.0"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"name": "spot", "type": "spot", "intensity": 800.0, "color": [1.0, 0.95, 0.85],
+             "spot": {"innerConeAngle": math.radians(12), "outerConeAngle": math.radians(28)}},
+            {"name": "fill", "type": "directional", "intensity": 0.3, "color": [0.7, 0.8, 1.0]}]}},
+        "scene": 0, "scenes": [{"nodes": [0, 1, 2, 3]}],
+        "nodes": [{"mesh": 0, "name": "gem"}, {"mesh": 1, "name": "floor"},
+                  {"name": "spot", "translation": [sx, sy, sz], "rotation": spot_rotation,
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}},
+                  {"name": "fill", "rotation": sun_rotation, "extensions": {"KHR_lights_punctual": {"light": 1}}}],
+        "materials": [{"name": "gem", "pbrMetallicRoughness": {"baseColorFactor": [0.25, 0.55, 0.9, 1.0],
+                                                               "metallicFactor": 0.0, "roughnessFactor": 0.5}},
+                      {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.75, 0.75, 0.72, 1.0],
+                                                                 "metallicFactor": 0.0, "roughnessFactor": 0.9}}],
+        "meshes": meshes,
+        "bufferViews": views, "accessors": accessors,
+    }
+    save(name, doc, blob)
 
 
 def png(width, height, rgb):
@@ -183,16 +258,12 @@ def write_globe(name, uvs_stored, transform=None, image_uri=None):
         "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}],
         "textures": [{"sampler": 0, "source": 0}],
         "images": [{"uri": image_uri or "data:image/png;base64," + base64.b64encode(checker_image()).decode()}],
-        "buffers": [{"byteLength": len(blob),
-                     "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
         "bufferViews": views, "accessors": accessors,
     }
     if transform:
         texture_info["extensions"] = {"KHR_texture_transform": transform}
         doc["extensionsUsed"] = ["KHR_texture_transform"]
-    with open(os.path.join(HERE, name + ".gltf"), 'w') as f:
-        json.dump(doc, f, indent=1)
-        f.write('\n')
+    save(name, doc, blob)
 
 
 def texture_transform_inverse(uv, offset, rotation, scale):
@@ -217,4 +288,6 @@ if __name__ == '__main__':
                 transform=t, image_uri="checker_globe.png")
     with open(os.path.join(HERE, "checker_globe.png"), 'wb') as f:
         f.write(checker_image())
-    print("wrote lowpoly_gem.gltf, coarse_torus_no_normals.gltf, checker_globe.gltf, checker_globe_transform.gltf, checker_globe.png")
+    write_stage("spot_stage")
+    print("wrote lowpoly_gem.gltf, coarse_torus_no_normals.gltf, checker_globe.gltf, checker_globe_transform.gltf, "
+          "checker_globe.png, spot_stage.gltf")

@@ -576,3 +576,19 @@ TEST_F(Cli, TexturedModelsAreReportedProbedAndCanBeDrawnWithout) {
     const Image on = readPng(path("on.png")), plain = readPng(path("off.png"));
     EXPECT_GT(compareImages(on, plain, 30).failingPixels, 500u) << "the texture should change much of the picture";
 }
+
+// A model with lights of its own (KHR_lights_punctual): --info lists them in the file's units, and a
+// scene without lights is lit by them (the spot's pool on the floor, the floor dark outside it).
+TEST_F(Cli, ModelLightsAreListedAndLightTheScene) {
+    const std::string stage = std::string(SHADELAB_SOURCE_DIR) + "/assets/models/spot_stage.gltf";
+    const RunResult info = run({"--info", stage});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("light 0: spot, spot, 800 cd at [0, 3, 1.5]"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("light 1: fill, directional, 0.3 lux"), std::string::npos) << info.out;
+
+    const RunResult own = run({stage, "--size", "160x120", "--output", path("own.png")});
+    ASSERT_EQ(own.exitCode, 0) << own.err;
+    const RunResult given = run({stage, "--size", "160x120", "--light", "point:3,4,5", "--output", path("given.png")});
+    ASSERT_EQ(given.exitCode, 0) << given.err;
+    EXPECT_GT(compareImages(readPng(path("own.png")), readPng(path("given.png")), 20).failingPixels, 1000u);
+}

@@ -138,6 +138,38 @@ INSTANTIATE_TEST_SUITE_P(Layouts, ProbeVersusRender,
                                            LayoutCase{"phong_srgb", ReflectionModel::Phong, OutputEncoding::Srgb}),
                          [](const auto& p) { return std::string(p.param.name); });
 
+// A spot light whose cone edge crosses the sphere: inside, in the smooth falloff, and outside the
+// cone, every mode's pixel is the probe's (its CPU reference has the same falloff).
+TEST(ProbeVersusRender, SpotLightConeAndFalloff) {
+    Scene scene = litIcosphere();
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {1.5f, 2.5f, 3.0f};
+    spot.direction = glm::vec3(0.35f, 0.1f, 0.0f) - spot.position;
+    spot.outerConeDeg = 14.0f;
+    spot.innerConeDeg = 6.0f;
+    spot.intensity = 1.2f;
+    scene.lights = {spot, scene.lights[2]};  // and the warm directional light, dim
+    const Rendered r = renderScene(scene);
+    const Sweep sweep = compareGrid(r, 3);
+    for (int mode = 0; mode < 3; ++mode) EXPECT_GT(sweep.checked[mode], 250) << toString(ShadingMode(mode));
+    // The cone covers part of the sphere: some visible points are in it, some in its falloff, some outside.
+    const SceneRayCaster caster(r.scene, *r.geometry);
+    int inside = 0, edge = 0, outside = 0;
+    for (int y = 2; y < scene.height; y += 4)
+        for (int x = 2 * 160; x < 3 * 160; x += 4) {
+            const ProbeResult p = probePixel(r.scene, *r.geometry, caster, x, y);
+            if (p.miss) continue;
+            const glm::vec3 towardLight = glm::normalize(spot.position - p.posWorld);
+            const float f = spotFalloff(spot, towardLight);
+            (f >= 1.0f ? inside : f > 0.0f ? edge : outside) += 1;
+        }
+    EXPECT_GT(inside, 20);
+    EXPECT_GT(edge, 20);
+    EXPECT_GT(outside, 20);
+    if (HasFailure()) saveForInspection("probe_spot", r.image);
+}
+
 // Layout diff, factor 1: A and B are each within their tolerance of the probe, so the difference
 // pane is within the sum of both (2 + 1) of the probe's |A - B|.
 TEST(ProbeVersusRender, DifferencePane) {
@@ -165,7 +197,7 @@ TEST(ProbeVersusRender, DifferencePane) {
 // by up to ~0.03 world units). Pixels are compared where the probe's visibility is the same for the
 // pixels four to either side (~0.1 world units on the plane at this size), in the umbra and in the light.
 TEST(ProbeVersusRender, ShadowsAwayFromTheirEdges) {
-    for (const char* name : {"shadow_point.json", "shadow_area_4x4.json"}) {
+    for (const char* name : {"shadow_point.json", "shadow_area_4x4.json", "shadow_spot.json"}) {
         SCOPED_TRACE(name);
         Scene scene = loadSceneFile(std::string(SHADELAB_SOURCE_DIR) + "/assets/scenes/" + name);
         scene.width = 240;

@@ -152,7 +152,7 @@ TEST(CliOptions, LightsAndShadows) {
 }
 
 TEST(CliOptions, BadLightsNameTheFlagAndTheKey) {
-    EXPECT_NE(errorOf({"--light", "spot:1,2,3"}).find("--light: unknown light type \"spot\""), std::string::npos);
+    EXPECT_NE(errorOf({"--light", "torch:1,2,3"}).find("--light: unknown light type \"torch\" (expected point, directional, area or spot)"), std::string::npos);
     EXPECT_NE(errorOf({"--light", "point"}).find("--light: expected TYPE:X,Y,Z"), std::string::npos);
     EXPECT_NE(errorOf({"--light", "point:1,2"}).find("point: expected 3 numbers"), std::string::npos);
     EXPECT_NE(errorOf({"--light", "point:1,2,x"}).find("\"x\" is not a number"), std::string::npos);

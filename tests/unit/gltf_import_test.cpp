@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "core/gltf_import.hpp"
 #include "core/image.hpp"
+#include "core/scene_geometry.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -535,7 +536,7 @@ TEST_F(Gltf, IntegerNormalsMustBeNormalized) {
 // extensionsRequired is read first: one shadelab does not decode is named; one only used is a warning.
 TEST_F(Gltf, RequiredExtensionsAreNamedAndUsedOnesWarned) {
     Doc d;
-    d.j["extensionsUsed"] = json::array({"KHR_texture_basisu", "KHR_materials_sheen", "KHR_lights_punctual"});
+    d.j["extensionsUsed"] = json::array({"KHR_texture_basisu", "KHR_materials_sheen", "KHR_lights_punctual", "EXT_lights_ies"});
     d.j["extensionsRequired"] = json::array({"KHR_texture_basisu"});
     expectRefused(writeGltf("basisu", d), {"requires KHR_texture_basisu, which shadelab does not read"});
     d.j.erase("extensionsRequired");
@@ -543,9 +544,9 @@ TEST_F(Gltf, RequiredExtensionsAreNamedAndUsedOnesWarned) {
     loadGltf(writeGltf("used", d), &info);
     ASSERT_EQ(info.warnings.size(), 1u);  // one line for all of them
     EXPECT_EQ(info.warnings[0],
-              "uses KHR_texture_basisu, KHR_materials_sheen, KHR_lights_punctual, which shadelab does not read: textures "
-              "stored only in those formats are not drawn (a PNG or JPEG fallback is); the lecture's model and the base colour shade every material; the scene's lights light "
-              "the model, not the file's");
+              "uses KHR_texture_basisu, KHR_materials_sheen, EXT_lights_ies, which shadelab does not read: textures "
+              "stored only in those formats are not drawn (a PNG or JPEG fallback is); the lecture's model and the base "
+              "colour shade every material; what the others add is not drawn");
 }
 
 // EXT_mesh_gpu_instancing: the node's mesh once per instance, T * R * S of each, after the node's own
@@ -771,4 +772,73 @@ TEST_F(Gltf, TexturesThatCannotBeDrawnAreWarnedNotFatal) {
     EXPECT_EQ(m.parts[0].texture, -1);
     ASSERT_FALSE(info.warnings.empty());
     EXPECT_NE(info.warnings[0].find("reads TEXCOORD_3, which it does not have"), std::string::npos) << info.warnings[0];
+}
+
+// KHR_lights_punctual: each node that uses a light places it (its origin, its -Z), with the file's
+// colour, intensity, range and cone; the scene's lights when it gives none, converted to L_l by one
+// factor (scene_geometry.hpp, lecturesLights).
+TEST_F(Gltf, PunctualLightsArePlacedByTheirNodes) {
+    Doc d;
+    d.j["extensionsUsed"] = json::array({"KHR_lights_punctual"});
+    d.j["extensions"]["KHR_lights_punctual"]["lights"] = json::array({
+        {{"type", "point"}, {"intensity", 40}, {"range", 12}, {"color", {1, 0.5, 0.25}}, {"name", "bulb"}},
+        {{"type", "spot"}, {"intensity", 160}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}},
+        {{"type", "directional"}, {"intensity", 2}}});
+    d.j["scenes"][0]["nodes"] = json::array({0, 1, 2, 3});
+    d.j["nodes"].push_back({{"translation", {0, 2, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    // The spot 4 above the origin, turned to look down: rotation of -90 degrees about x takes -Z to -Y.
+    d.j["nodes"].push_back({{"translation", {0.5, 4, 0.5}}, {"rotation", {-0.70710678, 0, 0, 0.70710678}},
+                            {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    d.j["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+    GltfInfo info;
+    loadGltf(writeGltf("lights", d), &info);
+    EXPECT_TRUE(info.warnings.empty()) << info.warnings[0];
+    ASSERT_EQ(info.lights.size(), 3u);
+    const Light& bulb = info.lights[0].light;
+    EXPECT_EQ(info.lights[0].name, "bulb");
+    EXPECT_EQ(bulb.type, LightType::Point);
+    EXPECT_EQ(bulb.position, glm::vec3(0, 2, 0));
+    EXPECT_EQ(bulb.attenuation, Attenuation::InverseSquare);
+    EXPECT_FLOAT_EQ(bulb.range, 12.0f);
+    EXPECT_EQ(bulb.color, glm::vec3(1, 0.5f, 0.25f));
+    const Light& spot = info.lights[1].light;
+    EXPECT_EQ(spot.type, LightType::Spot);
+    EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
+    EXPECT_NEAR(spot.outerConeDeg, 28.6479f, 1e-3f);  // 0.5 rad
+    EXPECT_NEAR(spot.innerConeDeg, 11.4592f, 1e-3f);
+    EXPECT_EQ(info.lights[2].light.type, LightType::Directional);
+    EXPECT_NEAR(info.lights[2].light.direction.z, -1.0f, 1e-6f);
+
+    // As the scene's lights: the quad's bounding sphere is centred at (0.5, 0.5, 0), radius ~0.707.
+    // Illuminance there: bulb 40 / r^2 * window (r^2 = 2.5), spot 160 / 16.25 * its cone (on its
+    // axis's side), sun 2: the brightest is the bulb's, which becomes L = 1.
+    const std::vector<Light> lit = lecturesLights(info.lights, glm::mat4(1.0f), BoundingSphere{{0.5f, 0.5f, 0.0f}, 0.7071f});
+    ASSERT_EQ(lit.size(), 3u);
+    const float q = 2.5f / 144.0f, window = (1.0f - q * q) * (1.0f - q * q);
+    const float bulbAtCentre = 40.0f / 2.5f * window;
+    EXPECT_NEAR(lit[0].intensity, 40.0f / bulbAtCentre, 1e-4f);
+    EXPECT_NEAR(lit[2].intensity, 2.0f / bulbAtCentre, 1e-5f);
+    EXPECT_NEAR(lit[1].intensity / lit[0].intensity, 4.0f, 1e-4f);  // the file's ratios stay
+
+    // A scene that gives no lights is lit by the model's; one that gives lights keeps them.
+    Scene scene;
+    scene.objects[0].mesh.type = MeshSpec::Type::Gltf;
+    scene.objects[0].mesh.resolvedPath = (dir_ / "model" / "lights.gltf").string();
+    Scene given = scene;
+    given.lightsGiven = true;
+    const SceneGeometry g = buildSceneGeometry(scene);
+    frameIfNeeded(scene, g);
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_EQ(scene.lights[1].type, LightType::Spot);
+    EXPECT_TRUE(scene.lightsGiven);
+    frameIfNeeded(given, g);
+    ASSERT_EQ(given.lights.size(), 1u);
+    EXPECT_EQ(given.lights[0].type, LightType::Point);
+
+    // A light index that does not exist, or a cone the extension forbids, is refused naming it.
+    d.j["nodes"][3]["extensions"]["KHR_lights_punctual"]["light"] = 7;
+    expectRefused(writeGltf("no_light", d), {"node 3 KHR_lights_punctual", "light 7 does not exist"});
+    d.j["nodes"][3]["extensions"]["KHR_lights_punctual"]["light"] = 1;
+    d.j["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.6;
+    expectRefused(writeGltf("bad_cone", d), {"light 1", "innerConeAngle < outerConeAngle"});
 }

@@ -3,6 +3,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
@@ -188,6 +189,39 @@ TEST(Lighting, LightsAddUp) {
 }
 
 // Inverse-square with a range: 1/r^2 * (1 - (r/range)^4)^2, zero from the range on.
+// A spot light is a point light times glTF's cone falloff: 1 inside the inner cone, 0 outside the
+// outer, ((cd - cos outer) / (cos inner - cos outer))^2 between (by hand at 25 degrees off the axis).
+TEST(Lighting, SpotLightIsAPointLightTimesItsConeFalloff) {
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0, 0, 5};
+    spot.direction = {0, 0, -1};
+    spot.innerConeDeg = 20.0f;
+    spot.outerConeDeg = 30.0f;
+    const auto toward = [&](float degreesOff) {  // from a point seen degreesOff from the axis, toward the light
+        const float a = glm::radians(degreesOff);
+        return -glm::vec3(std::sin(a), 0.0f, -std::cos(a));
+    };
+    EXPECT_FLOAT_EQ(spotFalloff(spot, toward(0.0f)), 1.0f);
+    EXPECT_FLOAT_EQ(spotFalloff(spot, toward(19.0f)), 1.0f);
+    EXPECT_FLOAT_EQ(spotFalloff(spot, toward(31.0f)), 0.0f);
+    const float t = (std::cos(glm::radians(25.0f)) - std::cos(glm::radians(30.0f))) /
+                    (std::cos(glm::radians(20.0f)) - std::cos(glm::radians(30.0f)));
+    EXPECT_NEAR(spotFalloff(spot, toward(25.0f)), t * t, 1e-5f);
+    // In the formula: the point light's terms times the falloff.
+    LightingEnvironment env;
+    env.eyeWorld = {0, 0, 5};
+    Light point = spot;
+    point.type = LightType::Point;
+    const glm::vec3 p(std::tan(glm::radians(25.0f)) * 5.0f, 0.0f, 0.0f), n(0, 0, 1);
+    env.lights = {point};
+    const ShadingTerms a = shadeTerms(plainMaterial(), env, p, n);
+    env.lights = {spot};
+    const ShadingTerms b = shadeTerms(plainMaterial(), env, p, n);
+    EXPECT_NEAR(b.diffuse.r, a.diffuse.r * t * t, 1e-5f);
+    EXPECT_NEAR(b.specular.g, a.specular.g * t * t, 1e-5f);
+}
+
 TEST(Lighting, RangeWindowReachesZero) {
     Light l = pointAt({0, 0, 0}, 1.0f, Attenuation::InverseSquare);
     EXPECT_NEAR(attenuationFactor(l, 4.0f), 0.25f, 1e-7f);  // no range: plain 1/r^2

@@ -316,9 +316,48 @@ TEST(SceneJson, LightsOfEveryKindAndShadowSettings) {
     EXPECT_EQ(sceneToJson(r, "/scenes"), sceneToJson(s, "/scenes"));
 }
 
+// Spot lights: position, axis and cone half-angles; the inner angle defaults to half the outer one.
+TEST(SceneJson, SpotLightsAreReadAndSaved) {
+    const Scene s = parse(R"({"lights": [
+      {"type": "spot", "position": [0, 4, 1], "direction": [0, -1, 0], "outer_cone_deg": 40, "inner_cone_deg": 25,
+       "attenuation": "inverse-square", "range": 9, "intensity": 3},
+      {"type": "spot", "outer_cone_deg": 16},
+      {"type": "spot"}]})");
+    ASSERT_EQ(s.lights.size(), 3u);
+    const Light& a = s.lights[0];
+    EXPECT_EQ(a.type, LightType::Spot);
+    EXPECT_EQ(a.position, glm::vec3(0, 4, 1));
+    EXPECT_EQ(a.direction, glm::vec3(0, -1, 0));
+    EXPECT_FLOAT_EQ(a.outerConeDeg, 40.0f);
+    EXPECT_FLOAT_EQ(a.innerConeDeg, 25.0f);
+    EXPECT_FLOAT_EQ(a.range, 9.0f);
+    EXPECT_FLOAT_EQ(s.lights[1].innerConeDeg, 8.0f);
+    EXPECT_FLOAT_EQ(s.lights[2].outerConeDeg, 30.0f);
+    EXPECT_FLOAT_EQ(s.lights[2].innerConeDeg, 15.0f);
+    const Scene r = parse(sceneToJson(s, "/scenes"));
+    EXPECT_EQ(sceneToJson(r, "/scenes"), sceneToJson(s, "/scenes"));
+    EXPECT_FLOAT_EQ(r.lights[0].innerConeDeg, 25.0f);
+    EXPECT_EQ(r.lights[0].direction, a.direction);
+
+    const Light l = parseLightShorthand("spot:0,3,2:direction=0,-3,-2:outer=25:inner=15:intensity=2", "--light");
+    EXPECT_EQ(l.type, LightType::Spot);
+    EXPECT_EQ(l.direction, glm::vec3(0, -3, -2));
+    EXPECT_FLOAT_EQ(l.outerConeDeg, 25.0f);
+    EXPECT_FLOAT_EQ(l.innerConeDeg, 15.0f);
+    EXPECT_FLOAT_EQ(parseLightShorthand("spot:0,3,2:outer=12", "--light").innerConeDeg, 6.0f);
+    for (const char* bad : {"spot:0,3,2:inner=30:outer=20", "spot:0,3,2:outer=91", "spot:0,3,2:normal=0,1,0",
+                            "spot:0,3,2:direction=0,0,0", "point:0,3,2:outer=20"})
+        EXPECT_THROW(parseLightShorthand(bad, "--light"), InputError) << bad;
+}
+
 TEST(SceneJson, LightAndShadowErrorsNameTheField) {
-    expectError(R"({"lights": [{"type": "spot"}]})",
-                {"lights[0].type", "unknown value \"spot\"", "\"point\", \"directional\", \"area\""});
+    expectError(R"({"lights": [{"type": "torch"}]})",
+                {"lights[0].type", "unknown value \"torch\"", "\"point\", \"directional\", \"area\", \"spot\""});
+    expectError(R"({"lights": [{"type": "spot", "outer_cone_deg": 95}]})", {"lights[0].outer_cone_deg", "<= 90"});
+    expectError(R"({"lights": [{"type": "spot", "outer_cone_deg": 20, "inner_cone_deg": 25}]})",
+                {"lights[0].inner_cone_deg", "less than outer_cone_deg"});
+    expectError(R"({"lights": [{"type": "spot", "direction": [0, 0, 0]}]})", {"lights[0].direction", "zero-length"});
+    expectError(R"({"lights": [{"type": "spot", "normal": [0, -1, 0]}]})", {"lights[0].normal", "unknown field"});
     expectError(R"({"lights": [{"type": "area", "samples": [0, 4]}]})", {"lights[0].samples[0]", ">= 1"});
     expectError(R"({"lights": [{"type": "area", "samples": [4, 17]}]})", {"lights[0].samples[1]", "<= 16"});
     expectError(R"({"lights": [{"type": "area", "samples": [4]}]})", {"lights[0].samples", "2 integers"});

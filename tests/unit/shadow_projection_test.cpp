@@ -4,6 +4,7 @@
 #include "core/shadow_projection.hpp"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 using namespace shadelab;
@@ -81,6 +82,39 @@ TEST(ShadowProjection, DirectionalMapCoversTheObjects) {
 
 // Each sample of an area light sees every object point in front of the light inside its map, and
 // its matrix is the centre's minus a * uClip + b * vClip, as the shader computes it.
+// A spot light's one view looks down its axis and is as wide as the outer cone (plus the filter's
+// margin): the axis lands at the centre, a point on the outer cone just inside the edge.
+TEST(ShadowProjection, SpotViewIsItsOuterCone) {
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {1.2f, 3.0f, 0.8f};
+    spot.direction = glm::vec3(0.0f, -0.3f, 0.0f) - spot.position;
+    spot.outerConeDeg = 30.0f;
+    const ShadowSettings settings;
+    const ShadowProjection sp = shadowProjection(spot, kObjects, settings);
+    ASSERT_EQ(sp.clipFromWorld.size(), 1u);
+    EXPECT_EQ(sp.size, settings.mapSize);
+    const glm::vec3 axis = glm::normalize(spot.direction);
+    const glm::vec3 centre = ndc(sp.clipFromWorld[0], spot.position + 3.0f * axis);
+    EXPECT_NEAR(centre.x, 0.0f, 1e-5f);
+    EXPECT_NEAR(centre.y, 0.0f, 1e-5f);
+    const glm::vec3 side = glm::normalize(glm::cross(axis, glm::vec3(0, 1, 0)));
+    const glm::vec3 edge = spot.position + 3.0f * (axis + side * std::tan(glm::radians(30.0f)));
+    const glm::vec3 e = ndc(sp.clipFromWorld[0], edge);
+    EXPECT_LT(std::max(std::fabs(e.x), std::fabs(e.y)), 1.0f);
+    EXPECT_GT(std::max(std::fabs(e.x), std::fabs(e.y)), 0.97f);
+    // Everything inside the cone lies between the view's near and far planes.
+    int inside = 0;
+    for (const glm::vec3& p : probePoints()) {
+        const glm::vec4 c = sp.clipFromWorld[0] * glm::vec4(p, 1.0f);
+        if (glm::dot(glm::normalize(p - spot.position), axis) < std::cos(glm::radians(30.0f))) continue;
+        ++inside;
+        EXPECT_GE(c.z / c.w, -1.0f) << p.x << "," << p.y << "," << p.z;
+        EXPECT_LE(c.z / c.w, 1.0f) << p.x << "," << p.y << "," << p.z;
+    }
+    EXPECT_GT(inside, 10);
+}
+
 TEST(ShadowProjection, AreaSamplesSeeTheObjectsInFrontOfTheLight) {
     Light l;
     l.type = LightType::Area;
