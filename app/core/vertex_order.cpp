@@ -1,5 +1,7 @@
 #include "core/vertex_order.hpp"
 
+#include <meshoptimizer.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -11,71 +13,13 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 // 128: +27%): it keeps the fans compact enough for a 341-triangle segment.
 constexpr std::uint32_t kCacheSize = 32;
 
-// Tipsify on `triangles` triangles whose corners are all below vertexCount, in place.
+// Tipsify on `triangles` triangles whose corners are all below vertexCount, in place: Debian's
+// meshoptimizer (meshopt_optimizeVertexCacheFifo is Sander et al.'s algorithm). bench/vertex_order.cpp
+// compares it with meshoptimizer's own order and with the Tipsify shadelab wrote before.
 void tipsify(std::uint32_t* in, std::size_t triangles, std::size_t vertexCount, std::uint32_t cacheSize) {
     if (triangles < 2) return;
-
-    // Triangles around each vertex (compressed rows), and how many of them are still to be emitted.
-    std::vector<std::uint32_t> start(vertexCount + 1, 0);
-    for (std::size_t i = 0; i < 3 * triangles; ++i) ++start[in[i] + 1];
-    for (std::size_t v = 0; v < vertexCount; ++v) start[v + 1] += start[v];
-    std::vector<std::uint32_t> live(vertexCount);
-    for (std::size_t v = 0; v < vertexCount; ++v) live[v] = start[v + 1] - start[v];
-    std::vector<std::uint32_t> around(3 * triangles), fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < 3 * triangles; ++i) around[fill[in[i]]++] = std::uint32_t(i / 3);
-    fill = {};
-
-    // cachedAt[v]: the time v last entered the simulated FIFO cache; it is in the cache while
-    // now - cachedAt[v] <= cacheSize. The clock starts past the cache so that nothing is in it.
-    std::vector<std::uint32_t> cachedAt(vertexCount, 0);
-    std::uint32_t now = cacheSize + 1;
-    std::vector<std::uint8_t> emitted(triangles, 0);
-    std::vector<std::uint32_t> deadEnds, candidates, out;  // deadEnds: recently used vertices, a stack
-    out.reserve(3 * triangles);
-    deadEnds.reserve(3 * triangles);
-    std::size_t cursor = 0;  // vertices below it have nothing left to emit
-
-    auto nextStart = [&]() -> std::uint32_t {
-        while (!deadEnds.empty()) {
-            const std::uint32_t v = deadEnds.back();
-            deadEnds.pop_back();
-            if (live[v] > 0) return v;
-        }
-        for (; cursor < vertexCount; ++cursor)
-            if (live[cursor] > 0) return std::uint32_t(cursor);
-        return kNone;
-    };
-
-    for (std::uint32_t fan = nextStart(); fan != kNone;) {
-        candidates.clear();
-        for (std::uint32_t k = start[fan]; k < start[fan + 1]; ++k) {
-            const std::uint32_t t = around[k];
-            if (emitted[t]) continue;
-            emitted[t] = 1;
-            for (int c = 0; c < 3; ++c) {
-                const std::uint32_t v = in[3 * t + c];
-                out.push_back(v);
-                deadEnds.push_back(v);
-                candidates.push_back(v);
-                --live[v];
-                if (now - cachedAt[v] > cacheSize) cachedAt[v] = now++;
-            }
-        }
-        // The next fan: the candidate with triangles left that will still be cached once they are
-        // emitted (each costs up to two new vertices) and entered the cache earliest.
-        std::uint32_t best = kNone;
-        std::int64_t bestPriority = -1;
-        for (std::uint32_t v : candidates) {
-            if (live[v] == 0) continue;
-            std::int64_t priority = 0;
-            if (now - cachedAt[v] + 2 * std::int64_t(live[v]) <= cacheSize) priority = now - cachedAt[v];
-            if (priority > bestPriority) {
-                bestPriority = priority;
-                best = v;
-            }
-        }
-        fan = best != kNone ? best : nextStart();
-    }
+    std::vector<std::uint32_t> out(3 * triangles);
+    meshopt_optimizeVertexCacheFifo(out.data(), in, out.size(), vertexCount, cacheSize);
     std::copy(out.begin(), out.end(), in);
 }
 

@@ -22,8 +22,10 @@ namespace shadelab {
 
 // The order: Tipsify (Sander, Nehab and Barczak, "Fast triangle reordering for vertex locality and
 // reduced overdraw", SIGGRAPH 2007) on each mesh part, which fans around one vertex at a time and moves
-// on to the neighbour that stays longest in a FIFO cache, linear in the triangle count; then vertices
-// numbered by first use, so that consecutive new vertices land in consecutive slots of the table.
+// on to the neighbour that stays longest in a FIFO cache, linear in the triangle count (Debian's
+// meshoptimizer, meshopt_optimizeVertexCacheFifo; its other order, meshopt_optimizeVertexCache, makes
+// ~11% more runs in this model: bench/README.md); then vertices numbered by first use, so that
+// consecutive new vertices land in consecutive slots of the table.
 
 // `mesh` with the triangles of each part reordered for the vertex cache and its vertices renumbered
 // by first use. Draws the same picture (a closed mesh has no two triangles on one pixel at one depth).

@@ -17,7 +17,7 @@
 usage: lecture_hall.py SCENARIO SHADELAB ASSETS OUTDIR   (inside an X server: see xvfb_run.sh)
 Exits 77 (skipped) where libXtst or xdotool is missing. The screenshots stay in OUTDIR to be looked at.
 """
-import os, shutil, struct, subprocess, sys, time, zlib
+import itertools, os, shutil, struct, subprocess, sys, time, zlib
 
 from xinput import quit_viewer, screenshot, start_viewer
 
@@ -50,7 +50,11 @@ def read_png(data):
     raw, stride, rows, prev = zlib.decompress(chunks), width * channels, [], bytearray(width * channels)
     for y in range(height):
         f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
+        if f == 1:  # Sub, what shadelab writes: a running sum per channel (accumulate runs in C)
+            for c in range(channels):
+                line[c::channels] = bytes(itertools.accumulate(line[c::channels], lambda u, v: (u + v) & 255))
+            f = 0
+        for i in range(stride if f else 0):
             a = line[i - channels] if i >= channels else 0
             b, c = prev[i], prev[i - channels] if i >= channels else 0
             if f == 1: line[i] = (line[i] + a) & 255
