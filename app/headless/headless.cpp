@@ -59,7 +59,7 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
     return readPixels(target);
 }
 
-// One frame of a huge mesh: bound llvmpipe's memory for it (Renderer::setDrawChunk). 2M-triangle
+// One frame of a huge mesh: bound llvmpipe's memory for it (RendererOptions::drawChunkTriangles). 2M-triangle
 // sphere: peak 218-255 -> 192-208 MiB, time unchanged (bench/README.md).
 constexpr std::size_t kOneFrameDrawChunk = 250000;
 
@@ -72,8 +72,9 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     MultisampleTarget msaa;  // after the context: released before it
     try {
         context = makeHeadlessContext(backend, scene.width, scene.height);
-        renderer = std::make_unique<Renderer>(context->getProcAddress(), shaders);
-        renderer->setDrawChunk(kOneFrameDrawChunk);
+        RendererOptions oneFrame;
+        oneFrame.drawChunkTriangles = kOneFrameDrawChunk;
+        renderer = std::make_unique<Renderer>(context->getProcAddress(), shaders, oneFrame);
         // Same programs, vertex layout and GL state as the real frame, on one small triangle per object.
         auto placeholder = std::make_shared<SceneGeometry>();
         for (std::size_t o = 0; o < scene.objects.size(); ++o) {
@@ -163,9 +164,10 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                                                int progressiveStride, int msaaSamples) {
     checkFrameMemory(scene, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
-    Renderer renderer(context->getProcAddress(), shaders);
+    RendererOptions manyFrames;  // of one mesh, as in the viewer
+    manyFrames.meshOrder = RendererOptions::MeshOrder::VertexCache;
+    Renderer renderer(context->getProcAddress(), shaders, manyFrames);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
-    renderer.setMeshOrder(Renderer::MeshOrder::VertexCache);  // many frames of one mesh, as in the viewer
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
     MultisampleTarget msaa;

@@ -200,7 +200,8 @@ std::vector<std::string> programDefines(const Scene& s) {
     return d;
 }
 
-Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders) : shaders_(std::move(shaders)) {
+Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders, RendererOptions options)
+    : shaders_(std::move(shaders)), options_(options) {
     const int version = gladLoadGL(getProcAddress);
     if (version == 0) throw std::runtime_error("could not load OpenGL entry points");
     if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
@@ -263,7 +264,7 @@ void Renderer::preparePrograms(const Scene& scene) {
         if (t && !textured) break;
         for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene, false, false, t);
         // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
-        if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && phongInputs_ != PhongInputs::Uniform)
+        if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && options_.phongInputs != PhongInputs::Uniform)
             program(ShadingMode::Phong, scene, false, true, t);
     }
 }
@@ -286,7 +287,7 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     if (g.vao) return g;
     if (!geometry_) throw std::logic_error("renderer: a shading mode that was not uploaded before the CPU geometry was released");
     const Mesh* source = &geometry_->meshes[object];
-    if (meshOrder_ == MeshOrder::VertexCache) {
+    if (options_.meshOrder == MeshOrder::VertexCache) {
         Mesh& ordered = orderedMeshes_[object];
         if (ordered.indices.empty()) ordered = orderedForVertexCache(*source);
         source = &ordered;
@@ -301,7 +302,7 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     // the layout (stride, offsets) does not depend on the mesh's size, so draw code llvmpipe compiled
     // for one mesh serves the next (see renderSceneHeadless()).
     FlatMesh flatMesh;
-    if (flat) flatMesh = meshOrder_ == MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
+    if (flat) flatMesh = options_.meshOrder == MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
     const std::vector<std::uint32_t>& indices = flat ? flatMesh.indices : mesh.indices;
     struct Attribute {
         GLuint location;
@@ -408,7 +409,7 @@ GLuint Renderer::objectTexture(std::size_t object, int slot) {
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
     const auto offset = [](std::size_t index) { return reinterpret_cast<void*>(index * sizeof(std::uint32_t)); };
-    const std::size_t chunk = 3 * drawChunkTriangles_;
+    const std::size_t chunk = 3 * options_.drawChunkTriangles;
     if (chunk == 0 || std::size_t(indexCount) <= chunk) {
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, offset(std::size_t(firstIndex)));
         return;
@@ -433,9 +434,9 @@ void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
 
 bool Renderer::interpolatesInputs(std::size_t object, const Pane& pane, const Scene& scene) const {
     if (pane.mode != ShadingMode::Phong || scene.lights.size() > SL_MAX_INTERPOLATED_LIGHTS ||
-        phongInputs_ == PhongInputs::Uniform)
+        options_.phongInputs == PhongInputs::Uniform)
         return false;
-    if (phongInputs_ == PhongInputs::Interpolated) return true;
+    if (options_.phongInputs == PhongInputs::Interpolated) return true;
     // Each input costs llvmpipe set-up work per triangle, each uniform read work per fragment: the
     // inputs pay off where the triangles are large on screen (measured break-even ~6 pixels per
     // front-facing triangle on the benchmark sphere; 16 leaves a margin for the box's overestimate).

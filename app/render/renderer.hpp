@@ -24,11 +24,40 @@ struct RenderTarget {
     int height = 0;
 };
 
+// How a renderer is tuned for the way it is used (a one-off frame, the viewer, a benchmark, a test
+// that compares two paths). Given at construction; the pictures are the same whatever the choice.
+struct RendererOptions {
+    // Where Phong draws read the per-object products and the vectors to the eye and the lights
+    // (shaders/phong_interface.glsl): Auto picks interpolated inputs for a draw whose triangles
+    // cover at least kInputsMinPixelsPerTriangle pixels each (bounding box on screen / front-facing
+    // triangles), the uniform blocks otherwise. The other two force one path (tests compare them).
+    enum class PhongInputs { Auto, Interpolated, Uniform };
+    PhongInputs phongInputs = PhongInputs::Auto;
+
+    // The order meshes are uploaded in. VertexCache reorders each mesh's triangles and vertices for
+    // the driver's vertex cache (core/vertex_order.hpp): the same picture with up to ~40% fewer
+    // vertex-shader runs a frame, for a one-off cost at upload (~0.15 s per million triangles). Worth
+    // it for a mesh drawn many times (the viewer, --benchmark), not for one --output frame.
+    enum class MeshOrder { AsGiven, VertexCache };
+    MeshOrder meshOrder = MeshOrder::AsGiven;
+
+    // Draws of more than this many triangles go in chunks of that many, and after submitting a chunk
+    // the renderer waits for the one before it (a fence), so the driver never holds more than two.
+    // llvmpipe bins every triangle of what it was given before its threads rasterise, a few scenes of
+    // ~36 MiB at a time: a frame of the 2M-triangle sphere raised resident memory by ~100 MiB, in
+    // chunks of 250k by ~30 MiB. The waits cost steady frames ~9% (binning and rasterising overlap
+    // less), so it is for a one-off frame (headless --output), not the viewer. 0 (the default): off.
+    std::size_t drawChunkTriangles = 0;
+};
+
 class Renderer {
 public:
+    using PhongInputs = RendererOptions::PhongInputs;
+    using MeshOrder = RendererOptions::MeshOrder;
+
     // Loads GL 3.3 core entry points through `getProcAddress` (the context must be current) and
     // checks the version. Programs are compiled on first use. Throws std::runtime_error.
-    Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders = ShaderLibrary());
+    Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders = ShaderLibrary(), RendererOptions options = {});
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -60,29 +89,7 @@ public:
     // ShaderError.
     void preparePrograms(const Scene& scene);
 
-    // Where Phong draws read the per-object products and the vectors to the eye and the lights
-    // (shaders/phong_interface.glsl): Auto picks interpolated inputs for a draw whose triangles
-    // cover at least kInputsMinPixelsPerTriangle pixels each (bounding box on screen / front-facing
-    // triangles), the uniform blocks otherwise. The other two force one path (tests compare them).
-    enum class PhongInputs { Auto, Interpolated, Uniform };
-    void setPhongInputs(PhongInputs p) { phongInputs_ = p; }
-    static constexpr float kInputsMinPixelsPerTriangle = 16.0f;
-
-    // The order meshes are uploaded in. VertexCache reorders each mesh's triangles and vertices for
-    // the driver's vertex cache (core/vertex_order.hpp): the same picture with up to ~40% fewer
-    // vertex-shader runs a frame, for a one-off cost at upload (~0.15 s per million triangles). Worth
-    // it for a mesh drawn many times (the viewer, --benchmark), not for one --output frame. Takes
-    // effect at the next setGeometry().
-    enum class MeshOrder { AsGiven, VertexCache };
-    void setMeshOrder(MeshOrder order) { meshOrder_ = order; }
-
-    // Draws of more than `triangles` triangles go in chunks of that many, and after submitting a chunk
-    // the renderer waits for the one before it (a fence), so the driver never holds more than two.
-    // llvmpipe bins every triangle of what it was given before its threads rasterise, a few scenes of
-    // ~36 MiB at a time: a frame of the 2M-triangle sphere raised resident memory by ~100 MiB, in
-    // chunks of 250k by ~30 MiB. The waits cost steady frames ~9% (binning and rasterising overlap
-    // less), so it is for a one-off frame (headless --output), not the viewer. 0 (the default): off.
-    void setDrawChunk(std::size_t triangles) { drawChunkTriangles_ = triangles; }
+    static constexpr float kInputsMinPixelsPerTriangle = 16.0f;  // RendererOptions::PhongInputs::Auto
     // Whether `object`'s Phong draws in `pane` take interpolated inputs (always false for flat and
     // Gouraud panes, and past SL_MAX_INTERPOLATED_LIGHTS lights).
     bool interpolatesInputs(std::size_t object, const Pane& pane, const Scene& scene) const;
@@ -100,7 +107,7 @@ private:
         GLsizei indexCount = 0;
     };
     const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
-    void drawTriangles(GLsizei firstIndex, GLsizei indexCount);  // from the bound vertex array, see setDrawChunk
+    void drawTriangles(GLsizei firstIndex, GLsizei indexCount);  // from the bound vertex array, see drawChunkTriangles
     GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false, bool interpolatedInputs = false,
                    bool textured = false);
     // The GL texture of an object's Mesh::textures[slot] (uploaded on first use: sRGB, mipmapped as its
@@ -131,9 +138,7 @@ private:
     std::vector<std::vector<std::shared_ptr<const TextureImage>>> objectImages_;
     std::vector<std::vector<gl::Texture>> objectTextures_;
     gl::Texture whiteTexture_;
-    PhongInputs phongInputs_ = PhongInputs::Auto;
-    MeshOrder meshOrder_ = MeshOrder::AsGiven;
-    std::size_t drawChunkTriangles_ = 0;
+    const RendererOptions options_;
     std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both its uploads are done
     ShadowMaps shadowMaps_;
     // Layout diff: copies of the two source panes (blitted through their framebuffers) and the

@@ -31,8 +31,9 @@ namespace {
 // The viewer draws its meshes every frame: reordering them for the driver's vertex cache once, at
 // upload, pays for itself within a few frames (Renderer::MeshOrder).
 std::unique_ptr<Renderer> makeRenderer(const ShaderLibrary& shaders) {
-    auto renderer = std::make_unique<Renderer>(glfwGetProcAddress, shaders);
-    renderer->setMeshOrder(Renderer::MeshOrder::VertexCache);
+    RendererOptions options;
+    options.meshOrder = RendererOptions::MeshOrder::VertexCache;  // many frames of one mesh
+    auto renderer = std::make_unique<Renderer>(glfwGetProcAddress, shaders, options);
     return renderer;
 }
 

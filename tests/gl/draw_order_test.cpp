@@ -1,7 +1,7 @@
 // Two ways the renderer changes the order of its draws for speed or memory, neither of which may
 // change a single pixel: meshes reordered for the vertex cache (Renderer::MeshOrder,
 // core/vertex_order.hpp: the same triangles with the same corners in another order) and draws split
-// into fenced chunks (Renderer::setDrawChunk). Checked on the golden scenes with several objects,
+// into fenced chunks (RendererOptions::drawChunkTriangles). Checked on the golden scenes with several objects,
 // parts (glTF primitives), a mirrored transform, shadow maps and all three modes side by side.
 #include "core/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
@@ -21,9 +21,10 @@ namespace {
 Image renderWith(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, Renderer::MeshOrder order,
                  std::size_t chunk = 0) {
     auto context = makeHeadlessContext(backendUnderTest(), scene.width, scene.height);
-    Renderer renderer(context->getProcAddress());
-    renderer.setMeshOrder(order);
-    renderer.setDrawChunk(chunk);
+    RendererOptions options;
+    options.meshOrder = order;
+    options.drawChunkTriangles = chunk;
+    Renderer renderer(context->getProcAddress(), ShaderLibrary(), options);
     renderer.setGeometry(std::move(geometry));
     renderer.render(scene, context->target());
     return readPixels(context->target());

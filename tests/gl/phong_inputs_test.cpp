@@ -23,8 +23,9 @@ namespace {
 
 Image renderWith(const Scene& scene, Renderer::PhongInputs inputs) {
     auto context = makeHeadlessContext(backendUnderTest(), scene.width, scene.height);
-    Renderer renderer(context->getProcAddress());
-    renderer.setPhongInputs(inputs);
+    RendererOptions options;
+    options.phongInputs = inputs;
+    Renderer renderer(context->getProcAddress(), ShaderLibrary(), options);
     renderer.setGeometry(std::make_shared<SceneGeometry>(buildSceneGeometry(scene)));
     renderer.render(scene, context->target());
     return readPixels(context->target());
@@ -104,7 +105,10 @@ TEST(PhongInputs, ChosenWhereTrianglesAreLargeOnScreen) {
     flatPane.mode = ShadingMode::Flat;
     s.camera.eye /= 40.0f;
     EXPECT_FALSE(renderer.interpolatesInputs(0, flatPane, s));  // only Phong programs have them
-    renderer.setPhongInputs(Renderer::PhongInputs::Interpolated);
+    RendererOptions forced;
+    forced.phongInputs = RendererOptions::PhongInputs::Interpolated;
+    Renderer interpolating(context->getProcAddress(), ShaderLibrary(), forced);
+    interpolating.setGeometry(std::make_shared<SceneGeometry>(buildSceneGeometry(s)));
     s.lights.resize(SL_MAX_INTERPOLATED_LIGHTS + 1, s.lights[0]);
-    EXPECT_FALSE(renderer.interpolatesInputs(0, pane, s));  // past the varying budget: the blocks
+    EXPECT_FALSE(interpolating.interpolatesInputs(0, pane, s));  // past the varying budget: the blocks
 }
