@@ -3,6 +3,7 @@
 // `flat` makes the whole triangle take that vertex's colour.
 #include "lighting.glsl"
 #include "object_color.glsl"
+#include "instancing.glsl"
 
 // Nine floats in two vec4s (Renderer::gpuMesh): llvmpipe fetches each attribute of each vertex on its
 // own, and two fetches cost less than three. The face normal's z comes from its unit length, its sign
@@ -28,8 +29,8 @@ void main() {
         zSign = -1.0;
     }
     vec3 faceNrmObject = vec3(nx, ny, zSign * sqrt(max(1.0 - nx * nx - ny * ny, 0.0)));
-    vec3 centroidWorld = (u_worldFromObject * vec4(centroidObject, 1.0)).xyz;
-    vec3 faceNrmWorld = normalize(mat3(u_normalWorldFromObject) * faceNrmObject);
+    vec3 centroidWorld = (worldFromObject() * vec4(centroidObject, 1.0)).xyz;
+    vec3 faceNrmWorld = normalize(normalWorldFromObject() * faceNrmObject);
 #if SL_TEXTURED
     v_termsOfC = shadeLectureTermsOfC(centroidWorld, faceNrmWorld);
     v_specular = shadeLectureSpecular(centroidWorld, faceNrmWorld);
@@ -37,5 +38,5 @@ void main() {
 #else
     v_color = shadeLecture(centroidWorld, faceNrmWorld, vec3(1.0));
 #endif
-    gl_Position = u_clipFromWorld * (u_worldFromObject * vec4(posObject, 1.0));
+    gl_Position = u_clipFromWorld * (worldFromObject() * vec4(posObject, 1.0));
 }

@@ -2,6 +2,7 @@
 // interpolates the colours (perspective-correct) across the triangle.
 #include "lighting.glsl"
 #include "object_color.glsl"
+#include "instancing.glsl"
 
 layout(location = SL_ATTRIB_POSITION) in vec3 a_posObject;
 layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
@@ -15,8 +16,8 @@ out vec3 v_color;
 #endif
 
 void main() {
-    vec4 posWorld = u_worldFromObject * vec4(a_posObject, 1.0);
-    vec3 nrmWorld = normalize(mat3(u_normalWorldFromObject) * a_nrmObject);
+    vec4 posWorld = worldFromObject() * vec4(a_posObject, 1.0);
+    vec3 nrmWorld = normalize(normalWorldFromObject() * a_nrmObject);
 #if SL_TEXTURED
     v_termsOfC = shadeLectureTermsOfC(posWorld.xyz, nrmWorld);
     v_specular = shadeLectureSpecular(posWorld.xyz, nrmWorld);

@@ -2,14 +2,15 @@
 #define SL_STAGE_IO out
 #include "phong_interface.glsl"
 #include "object_color.glsl"
+#include "instancing.glsl"
 
 layout(location = SL_ATTRIB_POSITION) in vec3 a_posObject;
 layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
 
 void main() {
-    vec4 posWorld = u_worldFromObject * vec4(a_posObject, 1.0);
+    vec4 posWorld = worldFromObject() * vec4(a_posObject, 1.0);
     v_posWorld = posWorld.xyz;
-    v_nrmWorld = mat3(u_normalWorldFromObject) * a_nrmObject;
+    v_nrmWorld = normalWorldFromObject() * a_nrmObject;
     gl_Position = u_clipFromWorld * posWorld;
     passObjectColor();
 #ifdef SL_INTERPOLATED_INPUTS

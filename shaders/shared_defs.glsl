@@ -8,6 +8,7 @@
 #define SL_ATTRIB_FLAT_FACE 2      // flat only: the rest of the provoking vertex's centroid and face normal
 #define SL_ATTRIB_TEXCOORD 3       // a_texcoord (SL_TEXTURED: shaders/object_color.glsl)
 #define SL_ATTRIB_COLOR 4          // a_color (SL_TEXTURED)
+#define SL_ATTRIB_INSTANCE 5       // a_instanceFromPart, a mat4 in locations 5..8 (SL_INSTANCED: shaders/instancing.glsl)
 #define SL_FLAT_NORMAL_Z_NEGATIVE 3.0  // added to the face normal's y where its z is negative (flat.vert)
 
 #define SL_BINDING_FRAME 0         // FrameBlock: camera and lights, one per pane

@@ -113,7 +113,10 @@ private:
     void checkRange(int bufferViewIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t stride,
                     std::size_t count, const std::string& where, std::size_t* strideOut,
                     const unsigned char** baseOut) const;
-    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& worldFromObject, const std::string& where);
+    // Appends a primitive to *out_, baked with `worldFromObject`; `instances`: the instanced pass's
+    // transforms of its copies relative to that (a part drawn with instances, see read()).
+    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& worldFromObject, const std::string& where,
+                      const std::vector<glm::mat4>& instances = {});
     void visit(int nodeIndex, const glm::mat4& parent, int depth);
     // The object texture of the lecture's C: the material's baseColorTexture, decoded once per image
     // and sampler into Mesh::textures; -1 (with a warning) where it cannot be drawn.
@@ -133,6 +136,9 @@ private:
     const tinygltf::Model& model_;
     GltfInfo& info_;
     Mesh mesh_;
+    Mesh* out_ = &mesh_;           // where addPrimitive appends: mesh_, or the instanced pass's mesh
+    bool instancedPass_ = false;   // read()'s second walk (a file with EXT_mesh_gpu_instancing)
+    bool instanced_ = false;       // a node drew more than one instance
     int currentNode_ = -1;  // the node whose meshes addPrimitive is baking
 };
 
@@ -506,7 +512,8 @@ std::vector<glm::vec3> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     return out;
 }
 
-void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where) {
+void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where,
+                              const std::vector<glm::mat4>& instances) {
     const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         static const char* kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
@@ -586,21 +593,21 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     // triangles clockwise, so their winding is flipped back.
     const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
     const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
-    const auto base = std::uint32_t(mesh_.positions.size());
-    if (world == glm::mat4(1.0f) && mesh_.positions.empty()) {
+    const auto base = std::uint32_t(out_->positions.size());
+    if (world == glm::mat4(1.0f) && out_->positions.empty()) {
         // One untransformed primitive (most models): take the arrays as they are.
-        mesh_.positions = std::move(positions);
-        mesh_.normals = std::move(normals);
+        out_->positions = std::move(positions);
+        out_->normals = std::move(normals);
     } else {
         // Room for this primitive, growing geometrically: an exact reserve per primitive copied the
         // whole mesh every time (quadratic in the number of node instances).
-        const std::size_t needed = mesh_.positions.size() + positions.size();
+        const std::size_t needed = out_->positions.size() + positions.size();
         // Every instance is baked: the vertices the file asks for, not its size, set the memory.
         if (needed > kMaxBakedVertices)
             fail(where, "the scene bakes to more than " + std::to_string(kMaxBakedVertices) + " vertices");
-        if (needed > mesh_.positions.capacity()) {
-            mesh_.positions.reserve(std::max(needed, 2 * mesh_.positions.capacity()));
-            mesh_.normals.reserve(std::max(needed, 2 * mesh_.normals.capacity()));
+        if (needed > out_->positions.capacity()) {
+            out_->positions.reserve(std::max(needed, 2 * out_->positions.capacity()));
+            out_->normals.reserve(std::max(needed, 2 * out_->normals.capacity()));
         }
         for (std::size_t i = 0; i < positions.size(); ++i) {
             const glm::vec3 baked = glm::vec3(world * glm::vec4(positions[i], 1.0f));
@@ -609,31 +616,31 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
                 fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
                      "vertex " + std::to_string(i) + " is not finite after node " + std::to_string(currentNode_) +
                          "'s transform");
-            mesh_.positions.push_back(baked);
+            out_->positions.push_back(baked);
             const glm::vec3 n = nrmWorld * normals[i];
-            mesh_.normals.push_back(safeNormalize(n));
+            out_->normals.push_back(safeNormalize(n));
         }
     }
-    if (!uvs.empty() || !colors.empty() || mesh_.variesColor()) {
+    if (!uvs.empty() || !colors.empty() || out_->variesColor()) {
         // Defaults for the vertices before (the first primitive that varies) and for this one where
         // it has no texture or no COLOR_0: coordinates 0 (an untextured part samples no texture) and white.
-        if (!mesh_.variesColor()) {
-            mesh_.texcoords.assign(base, glm::vec2(0.0f));
-            mesh_.colors.assign(base, glm::vec3(1.0f));
+        if (!out_->variesColor()) {
+            out_->texcoords.assign(base, glm::vec2(0.0f));
+            out_->colors.assign(base, glm::vec3(1.0f));
         }
-        mesh_.texcoords.reserve(mesh_.positions.capacity());
-        mesh_.colors.reserve(mesh_.positions.capacity());
-        if (uvs.empty()) mesh_.texcoords.resize(base + vertexCount, glm::vec2(0.0f));
-        else mesh_.texcoords.insert(mesh_.texcoords.end(), uvs.begin(), uvs.end());
-        if (colors.empty()) mesh_.colors.resize(base + vertexCount, glm::vec3(1.0f));
-        else mesh_.colors.insert(mesh_.colors.end(), colors.begin(), colors.end());
+        out_->texcoords.reserve(out_->positions.capacity());
+        out_->colors.reserve(out_->positions.capacity());
+        if (uvs.empty()) out_->texcoords.resize(base + vertexCount, glm::vec2(0.0f));
+        else out_->texcoords.insert(out_->texcoords.end(), uvs.begin(), uvs.end());
+        if (colors.empty()) out_->colors.resize(base + vertexCount, glm::vec3(1.0f));
+        else out_->colors.insert(out_->colors.end(), colors.begin(), colors.end());
     }
-    const auto firstIndex = std::uint32_t(mesh_.indices.size());
+    const auto firstIndex = std::uint32_t(out_->indices.size());
     if (firstIndex == 0 && base == 0 && !mirrored) {
-        mesh_.indices = std::move(tris);  // the first primitive, winding kept: its indices as they are
+        out_->indices = std::move(tris);  // the first primitive, winding kept: its indices as they are
     } else {
-        mesh_.indices.resize(firstIndex + tris.size());  // tris holds whole triangles
-        std::uint32_t* out = mesh_.indices.data() + firstIndex;
+        out_->indices.resize(firstIndex + tris.size());  // tris holds whole triangles
+        std::uint32_t* out = out_->indices.data() + firstIndex;
         for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
             out[0] = base + tris[t];
             out[1] = base + tris[t + (mirrored ? 2 : 1)];
@@ -644,7 +651,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     // share a part, so a many-primitive model does not cost a draw call per primitive.
     MeshPart part;
     part.firstIndex = firstIndex;
-    part.indexCount = std::uint32_t(mesh_.indices.size()) - firstIndex;
+    part.indexCount = std::uint32_t(out_->indices.size()) - firstIndex;
     part.hasBaseColor = true;
     if (p.material >= 0 && std::size_t(p.material) < model_.materials.size()) {
         const auto& f = model_.materials[std::size_t(p.material)].pbrMetallicRoughness.baseColorFactor;
@@ -652,13 +659,15 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
             part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
     }
     part.texture = textureSlot;
-    if (!mesh_.parts.empty() && mesh_.parts.back().baseColor == part.baseColor && mesh_.parts.back().texture == part.texture &&
-        mesh_.parts.back().firstIndex + mesh_.parts.back().indexCount == part.firstIndex)
-        mesh_.parts.back().indexCount += part.indexCount;
+    part.instances = instances;
+    if (!out_->parts.empty() && out_->parts.back().baseColor == part.baseColor && out_->parts.back().texture == part.texture &&
+        out_->parts.back().instances.empty() && part.instances.empty() &&
+        out_->parts.back().firstIndex + out_->parts.back().indexCount == part.firstIndex)
+        out_->parts.back().indexCount += part.indexCount;
     else if (part.indexCount > 0)
-        mesh_.parts.push_back(part);
+        out_->parts.push_back(part);
     info_.primitives += 1;
-    info_.triangles += (mesh_.indices.size() - firstIndex) / 3;
+    info_.triangles += (out_->indices.size() - firstIndex) / 3;
 }
 
 // A glTF camera looks down its node's -Z with +Y up (glTF 2.0, 3.10.1); only the first node using it counts.
@@ -812,20 +821,44 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         fail("node " + std::to_string(ni), "more than " + std::to_string(kMaxNodeInstances) +
                                                " node instances in the scene (children listed many times?)");
     info_.nodes += 1;
-    if (n.camera >= 0 && std::size_t(n.camera) < model_.cameras.size()) addCamera(n.camera, world);
-    addLight(n, ni, world);
+    if (!instancedPass_) {
+        if (n.camera >= 0 && std::size_t(n.camera) < model_.cameras.size()) addCamera(n.camera, world);
+        addLight(n, ni, world);
+    }
     if (n.mesh >= 0) {
         if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
         const tinygltf::Mesh& m = model_.meshes[std::size_t(n.mesh)];
         currentNode_ = ni;
-        for (const glm::mat4& instance : instances(ni, n)) {
-            const glm::mat4 instanceWorld = world * instance;
-            if (!isFinite(instanceWorld)) fail("node " + std::to_string(ni), "an instance's transform is not finite");
+        const std::vector<glm::mat4> copies = instances(ni, n);
+        instanced_ = instanced_ || copies.size() > 1;
+        if (instancedPass_ && copies.size() > 1) {
+            // Once, baked with the first instance's transform; the others relative to it.
+            const glm::mat4 first = world * copies[0];
+            const glm::mat4 firstInverse = glm::inverse(first);
+            std::vector<glm::mat4> relative;
+            for (const glm::mat4& instance : copies) relative.push_back(world * instance * firstInverse);
+            relative[0] = glm::mat4(1.0f);
             for (std::size_t k = 0; k < m.primitives.size(); ++k)
-                addPrimitive(m.primitives[k], instanceWorld, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
+                addPrimitive(m.primitives[k], first, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k), relative);
+        } else {
+            for (const glm::mat4& instance : copies) {
+                const glm::mat4 instanceWorld = world * instance;
+                if (!isFinite(instanceWorld)) fail("node " + std::to_string(ni), "an instance's transform is not finite");
+                for (std::size_t k = 0; k < m.primitives.size(); ++k)
+                    addPrimitive(m.primitives[k], instanceWorld, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
+            }
         }
     }
     for (int child : n.children) visit(child, world, depth + 1);
+}
+
+// Whether every instance transform of the instanced pass is finite and invertible (a zero scale is
+// not): otherwise the baked mesh is drawn as it is.
+bool instancesInvertible(const Mesh& m) {
+    for (const MeshPart& part : m.parts)
+        for (const glm::mat4& t : part.instances)
+            if (!isFinite(t) || !(std::fabs(glm::determinant(glm::mat3(t))) > 1e-12f)) return false;
+    return true;
 }
 
 Mesh GltfReader::read() {
@@ -844,6 +877,22 @@ Mesh GltfReader::read() {
             if (!isChild[i]) roots.push_back(int(i));
     }
     for (int r : roots) visit(r, glm::mat4(1.0f), 0);
+    if (instanced_) {
+        // GPU instancing: the same scene again with each instanced node's primitives once and its
+        // instances as transforms (MeshPart::instances), for the renderer's instanced draws. The baked
+        // mesh above stays what everything else reads (bounds, the probe, overlays).
+        const GltfInfo baked = info_;
+        auto compact = std::make_shared<Mesh>();
+        out_ = compact.get();
+        instancedPass_ = true;
+        info_.nodes = 0;
+        for (int r : roots) visit(r, glm::mat4(1.0f), 0);
+        out_ = &mesh_;
+        instancedPass_ = false;
+        info_ = baked;
+        compact->textures = mesh_.textures;
+        if (instancesInvertible(*compact)) mesh_.instanced = std::move(compact);
+    }
     info_.meshes = int(model_.meshes.size());
     info_.materials = int(model_.materials.size());
     info_.vertices = mesh_.positions.size();

@@ -22,6 +22,9 @@ struct MeshPart {
     bool hasBaseColor = false;
     glm::vec3 baseColor{1.0f};
     int texture = -1;                   // index into Mesh::textures; -1: none
+    // Drawn once per transform (a glTF node's EXT_mesh_gpu_instancing instances, in an instanced
+    // draw), each applied to the part's vertices in object space; empty: drawn once as it is.
+    std::vector<glm::mat4> instances;
 };
 
 // An image of the object texture (glTF's baseColorTexture) with its sampler. The texels are sRGB-
@@ -49,6 +52,9 @@ struct Mesh {
     std::vector<glm::vec2> texcoords;
     std::vector<glm::vec3> colors;
     std::vector<std::shared_ptr<const TextureImage>> textures;  // shared by copies of the mesh
+    // The same surface with instanced parts (MeshPart::instances) drawn once each, for the renderer's
+    // instanced draws; this mesh holds every instance baked, which everything else reads. Null: none.
+    std::shared_ptr<const Mesh> instanced;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     bool variesColor() const { return !texcoords.empty(); }

@@ -233,17 +233,64 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     objectTextures_.clear();
     shadowMaps_.invalidate();
     if (!geometry_) return;
-    for (const Mesh& mesh : geometry_->meshes) {
+    objectInstanceGroups_.clear();
+    objectInstances_.clear();
+    objectInstanceBuffers_.clear();
+    for (std::size_t o = 0; o < geometry_->meshes.size(); ++o) {
+        const Mesh& mesh = drawnMesh(o);
+        objectInstanceGroups_.emplace_back();
+        objectInstances_.emplace_back();
+        objectInstanceBuffers_.emplace_back();
+        for (std::size_t p = 0; p < mesh.parts.size(); ++p)
+            for (bool mirrored : {false, true}) {
+                InstanceGroup g;
+                g.part = p;
+                g.first = GLsizei(objectInstances_.back().size());
+                g.mirrored = mirrored;
+                for (const glm::mat4& t : mesh.parts[p].instances)
+                    if ((glm::determinant(glm::mat3(t)) < 0.0f) == mirrored) objectInstances_.back().push_back(t);
+                g.count = GLsizei(objectInstances_.back().size()) - g.first;
+                if (g.count > 0) objectInstanceGroups_.back().push_back(g);
+            }
         objectVariesColor_.push_back(mesh.variesColor());
         objectImages_.push_back(mesh.textures);
         objectTextures_.emplace_back(mesh.textures.size());
         objectParts_.push_back(mesh.parts);
-        if (mesh.parts.empty()) objectParts_.back().push_back(MeshPart{0, std::uint32_t(mesh.indices.size()), false, {}, -1});
+        if (mesh.parts.empty()) {
+            MeshPart whole;
+            whole.indexCount = std::uint32_t(mesh.indices.size());
+            objectParts_.back().push_back(whole);
+        }
+        // Bounds and triangle counts of every instance: the baked mesh's.
+        const Mesh& baked = geometry_->meshes[o];
         Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
-        for (const glm::vec3& p : mesh.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
-        if (mesh.positions.empty()) box = Aabb{};
+        for (const glm::vec3& p : baked.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+        if (baked.positions.empty()) box = Aabb{};
         objectBoxes_.push_back(box);
-        objectTriangles_.push_back(mesh.triangleCount());
+        objectTriangles_.push_back(baked.triangleCount());
+    }
+}
+
+const Mesh& Renderer::drawnMesh(std::size_t object) const {
+    const Mesh& baked = geometry_->meshes[object];
+    return baked.instanced && options_.instancedDraws ? *baked.instanced : baked;
+}
+
+void Renderer::bindInstances(std::size_t object, const InstanceGroup& group) {
+    gl::Buffer& buffer = objectInstanceBuffers_[object];
+    if (!buffer) {
+        buffer = gl::makeBuffer();
+        glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
+        const std::vector<glm::mat4>& data = objectInstances_[object];
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::mat4)), data.data(), GL_STATIC_DRAW);
+    }
+    // A mat4 attribute takes four locations, a column each, advancing once per instance.
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
+    for (GLuint c = 0; c < 4; ++c) {
+        const std::size_t offset = std::size_t(group.first) * sizeof(glm::mat4) + c * sizeof(glm::vec4);
+        glVertexAttribPointer(SL_ATTRIB_INSTANCE + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4), reinterpret_cast<void*>(offset));
+        glVertexAttribDivisor(SL_ATTRIB_INSTANCE + c, 1);
+        glEnableVertexAttribArray(SL_ATTRIB_INSTANCE + c);
     }
 }
 
@@ -269,11 +316,13 @@ void Renderer::preparePrograms(const Scene& scene) {
     }
 }
 
-GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, bool interpolatedInputs, bool textured) {
+GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, bool interpolatedInputs, bool textured,
+                         bool instanced) {
     std::vector<std::string> defines = programDefines(scene);
     if (accumulate) defines.push_back("SL_ACCUMULATE 1");
     if (interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
     if (textured) defines.push_back("SL_TEXTURED 1");
+    if (instanced) defines.push_back("SL_INSTANCED 1");
     std::string key = kProgramNames[std::size_t(mode)];
     for (const std::string& d : defines) key += ";" + d;
     gl::Program& p = programs_[key];
@@ -286,7 +335,7 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
     if (g.vao) return g;
     if (!geometry_) throw std::logic_error("renderer: a shading mode that was not uploaded before the CPU geometry was released");
-    const Mesh* source = &geometry_->meshes[object];
+    const Mesh* source = &drawnMesh(object);
     if (options_.meshOrder == MeshOrder::VertexCache) {
         Mesh& ordered = orderedMeshes_[object];
         if (ordered.indices.empty()) ordered = orderedForVertexCache(*source);
@@ -464,15 +513,23 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         glm::vec3 color;
         bool textured;  // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
         int texture;    // the part's slot in Mesh::textures, or -1
+        int instances;  // SL_INSTANCED: index into objectInstanceGroups_[object]; -1: drawn once
     };
     std::vector<Draw> draws;
     for (std::size_t o = 0; o < objects; ++o) {
         const Material& m = scene.objects[o].material;
         const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet;
-        for (const MeshPart& part : objectParts_[o])
-            draws.push_back({o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
-                             (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured,
-                             textured ? part.texture : -1});
+        for (std::size_t p = 0; p < objectParts_[o].size(); ++p) {
+            const MeshPart& part = objectParts_[o][p];
+            Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
+                   (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
+            if (part.instances.empty()) draws.push_back(d);
+            for (std::size_t g = 0; g < objectInstanceGroups_[o].size(); ++g)
+                if (objectInstanceGroups_[o][g].part == p) {
+                    d.instances = int(g);
+                    draws.push_back(d);
+                }
+        }
     }
 
     // Shadow maps first: they bind their own framebuffer, program and viewport.
@@ -482,9 +539,18 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         std::vector<Aabb> boxes;
         for (std::size_t o = 0; o < objects; ++o)
             boxes.push_back(transformAabb(objectBoxes_[o], worldFromObject(scene.objects[o].transform)));
-        for (const Draw& d : draws)
-            depthDraws.push_back({gpuMesh(d.object, ShadingMode::Phong).vao.get(), d.first, d.count,
-                                  worldFromObject(scene.objects[d.object].transform)});
+        for (const Draw& d : draws) {
+            const GLuint vao = gpuMesh(d.object, ShadingMode::Phong).vao.get();
+            const glm::mat4 world = worldFromObject(scene.objects[d.object].transform);
+            if (d.instances < 0) {
+                depthDraws.push_back({vao, d.first, d.count, world});
+                continue;
+            }
+            // The depth pass draws each instance on its own (it has no instanced variant).
+            const InstanceGroup& g = objectInstanceGroups_[d.object][std::size_t(d.instances)];
+            for (GLsizei i = 0; i < g.count; ++i)
+                depthDraws.push_back({vao, d.first, d.count, world * objectInstances_[d.object][std::size_t(g.first + i)]});
+        }
         shadowMaps_.render(scene, depthDraws, boxes, shaders_);
     }
 
@@ -554,12 +620,14 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         // Only the variants some draw uses are built (each is an LLVM compile on first use).
         std::vector<char> inputs(objects, 0);
         for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
-        GLuint programs[2][2] = {{0, 0}, {0, 0}}, current = 0;  // [interpolated inputs][textured]
+        GLuint programs[2][2][2] = {}, current = 0;  // [interpolated inputs][textured][instanced]
         for (std::size_t d = 0; d < draws.size(); ++d) {
             const Draw& draw = draws[d];
             if (draw.count == 0) continue;
-            GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0];
-            if (!variant) variant = program(pane.mode, scene, pass != nullptr, inputs[draw.object] != 0, draw.textured);
+            const bool instanced = draw.instances >= 0;
+            GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0][instanced ? 1 : 0];
+            if (!variant)
+                variant = program(pane.mode, scene, pass != nullptr, inputs[draw.object] != 0, draw.textured, instanced);
             if (variant != current) glUseProgram(current = variant);
             if (draw.textured) {
                 const GLuint texture = objectTexture(draw.object, draw.texture);
@@ -572,9 +640,19 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
                               GLintptr(objectsOffset + d * objectStride), sizeof(gpu::ObjectBlock));
             // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
             const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);
-            glFrontFace(glm::determinant(glm::mat3(world)) < 0.0f ? GL_CW : GL_CCW);
+            bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
             glBindVertexArray(mesh.vao.get());
-            drawTriangles(draw.first, draw.count);
+            if (!instanced) {
+                glFrontFace(mirrored ? GL_CW : GL_CCW);
+                drawTriangles(draw.first, draw.count);
+                continue;
+            }
+            const InstanceGroup& group = objectInstanceGroups_[draw.object][std::size_t(draw.instances)];
+            mirrored = mirrored != group.mirrored;
+            glFrontFace(mirrored ? GL_CW : GL_CCW);
+            bindInstances(draw.object, group);
+            glDrawElementsInstanced(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
+                                    reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)), group.count);
         }
     }
     glBindVertexArray(0);

@@ -48,6 +48,11 @@ struct RendererOptions {
     // chunks of 250k by ~30 MiB. The waits cost steady frames ~9% (binning and rasterising overlap
     // less), so it is for a one-off frame (headless --output), not the viewer. 0 (the default): off.
     std::size_t drawChunkTriangles = 0;
+
+    // A glTF model's GPU instances (EXT_mesh_gpu_instancing, Mesh::instanced) as instanced draws: one
+    // copy of the instanced parts uploaded, drawn once per instance. Off: every instance baked into
+    // the vertex buffer, as the CPU side holds them (a test compares the two).
+    bool instancedDraws = true;
 };
 
 class Renderer {
@@ -109,7 +114,17 @@ private:
     const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
     void drawTriangles(GLsizei firstIndex, GLsizei indexCount);  // from the bound vertex array, see drawChunkTriangles
     GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false, bool interpolatedInputs = false,
-                   bool textured = false);
+                   bool textured = false, bool instanced = false);
+    // The mesh an object's draws upload: its instanced form (Mesh::instanced) when it has one.
+    const Mesh& drawnMesh(std::size_t object) const;
+    // An instanced part's transforms, split by handedness (a mirroring one turns the winding): one
+    // instanced draw each, reading them from the object's instance buffer from `first` on.
+    struct InstanceGroup {
+        std::size_t part = 0;
+        GLsizei first = 0, count = 0;
+        bool mirrored = false;
+    };
+    void bindInstances(std::size_t object, const InstanceGroup& group);
     // The GL texture of an object's Mesh::textures[slot] (uploaded on first use: sRGB, mipmapped as its
     // sampler asks), or a white texel for a part without one.
     GLuint objectTexture(std::size_t object, int slot);
@@ -134,6 +149,9 @@ private:
     std::vector<Aabb> objectBoxes_;                       // per object, object space (shadow maps, Phong inputs)
     std::vector<std::size_t> objectTriangles_;            // per object, all parts
     std::vector<char> objectVariesColor_;                 // per object: has texture coordinates and colours
+    std::vector<std::vector<InstanceGroup>> objectInstanceGroups_;  // per object
+    std::vector<std::vector<glm::mat4>> objectInstances_;           // per object, until uploaded
+    std::vector<gl::Buffer> objectInstanceBuffers_;                 // per object (mat4 each)
     // Per object: its base colour images until uploaded, and the textures made of them.
     std::vector<std::vector<std::shared_ptr<const TextureImage>>> objectImages_;
     std::vector<std::vector<gl::Texture>> objectTextures_;

@@ -65,3 +65,42 @@ TEST(GltfVariants, RenderLikeTheirOriginals) {
     EXPECT_GE(compared, 14);  // the project's own models' variants need nothing from ../shared
     if (skipped) std::cout << "[ SKIPPED  ] " << skipped << " variants of models in ../shared (absent)\n";
 }
+
+// EXT_mesh_gpu_instancing as instanced draws (RendererOptions::instancedDraws): the instanced parts
+// are uploaded once and drawn once per instance, mirrored instances in a draw of their own; the
+// picture is the one every instance baked gives, shadows included (the depth pass draws each
+// instance).
+TEST(GltfVariants, InstancesAreDrawnInstanced) {
+    const fs::path model = fs::path(SHADELAB_SOURCE_DIR) / "tests" / "gltf-variants" / "NegativeScaleTest.gltfpack-mi-c.glb";
+    Scene scene = sceneForModel(model.string());
+    scene.layout = Layout::Compare;
+    scene.width = 480, scene.height = 160;
+    scene.shadows.enabled = true;
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+    frameIfNeeded(scene, *geometry);
+    const Mesh& baked = geometry->meshes[0];
+    ASSERT_TRUE(baked.instanced);
+    std::size_t instancedParts = 0, mirrored = 0;
+    for (const MeshPart& part : baked.instanced->parts) {
+        instancedParts += !part.instances.empty();
+        for (const glm::mat4& t : part.instances) mirrored += glm::determinant(glm::mat3(t)) < 0.0f;
+    }
+    EXPECT_GT(instancedParts, 0u);
+    EXPECT_GT(mirrored, 0u);  // the test model's point: instances with a negative scale
+    EXPECT_LT(baked.instanced->triangleCount(), baked.triangleCount());
+    const auto render = [&](bool instanced) {
+        const auto context = makeHeadlessContext(test::backendUnderTest(), scene.width, scene.height);
+        RendererOptions options;
+        options.instancedDraws = instanced;
+        Renderer renderer(context->getProcAddress(), ShaderLibrary(), options);
+        renderer.setGeometry(geometry);
+        renderer.render(scene, context->target());
+        return readPixels(context->target());
+    };
+    const Image instanced = render(true), bakedImage = render(false);
+    const CompareTolerance tolerance;
+    const CompareResult r = compareImages(instanced, bakedImage, tolerance.pixelThreshold);
+    EXPECT_TRUE(r.matches(tolerance)) << describe(r, tolerance);
+    EXPECT_LE(r.maxDifference, 2) << "the same transforms, composed in another order: float rounding only";
+    if (HasFailure()) test::saveForInspection("instanced_draws", instanced);
+}

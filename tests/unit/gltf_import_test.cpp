@@ -575,6 +575,18 @@ TEST_F(Gltf, EveryGpuInstanceIsDrawn) {
     // the quad's corner (1, 0, 0) lands at (0, 2, 0) + (0, 20, 5).
     EXPECT_NEAR(glm::distance(m.positions[1], glm::vec3(11, 0, 5)), 0.0f, 1e-5f);
     EXPECT_NEAR(glm::distance(m.positions[5], glm::vec3(0, 22, 5)), 0.0f, 1e-5f);
+    // For the renderer's instanced draws: the quad once (as instance 0 places it) and each instance's
+    // transform relative to that, the first the identity.
+    ASSERT_TRUE(m.instanced);
+    const Mesh& once = *m.instanced;
+    ASSERT_EQ(once.positions.size(), 4u);
+    ASSERT_EQ(once.parts.size(), 1u);
+    ASSERT_EQ(once.parts[0].instances.size(), 2u);
+    EXPECT_EQ(once.parts[0].instances[0], glm::mat4(1.0f));
+    for (int v = 0; v < 4; ++v) {
+        const glm::vec3 second(once.parts[0].instances[1] * glm::vec4(once.positions[std::size_t(v)], 1.0f));
+        EXPECT_NEAR(glm::distance(second, m.positions[std::size_t(4 + v)]), 0.0f, 1e-4f) << v;
+    }
 }
 
 // A glTF camera looks down its node's -Z with +Y up (glTF 2.0, 3.10.1), placed by the node's world

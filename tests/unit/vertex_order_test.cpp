@@ -76,8 +76,13 @@ TEST(VertexOrder, PartsKeepTheirRangesAndTheirTriangles) {
     for (std::uint32_t i : second.indices) m.indices.push_back(offset + i);
     m.positions.push_back(glm::vec3(9.0f));
     m.normals.push_back(glm::vec3(0, 1, 0));
-    m.parts = {MeshPart{0, firstCount, true, glm::vec3(1, 0, 0)},
-               MeshPart{firstCount, std::uint32_t(second.indices.size()), false, glm::vec3(1.0f)}};
+    const auto part = [](std::uint32_t first, std::uint32_t count, bool hasColor, glm::vec3 color) {
+        MeshPart p;
+        p.firstIndex = first, p.indexCount = count, p.hasBaseColor = hasColor, p.baseColor = color;
+        return p;
+    };
+    m.parts = {part(0, firstCount, true, glm::vec3(1, 0, 0)),
+               part(firstCount, std::uint32_t(second.indices.size()), false, glm::vec3(1.0f))};
 
     const Mesh o = orderedForVertexCache(m);
     ASSERT_EQ(o.parts.size(), 2u);
