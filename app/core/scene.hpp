@@ -169,6 +169,7 @@ struct Scene {
     bool cameraGiven = false;     // false: a glTF model may be auto-framed
     int modelCamera = -1;         // --camera N: the first glTF model's camera N replaces the scene's
     bool lightsGiven = false;     // false: auto-framing may move the default light with the camera
+    bool outputEncodingGiven = false;  // false: a textured glTF model is written sRGB-encoded (frameIfNeeded)
     bool usesObjectList = false;  // written back as "objects" rather than the one-object shorthand
     std::string sourcePath;       // the file it came from ("" for the built-in default)
 };

@@ -117,6 +117,14 @@ std::vector<Light> lecturesLights(const std::vector<GltfLight>& lights, const gl
 
 void frameIfNeeded(Scene& scene, const SceneGeometry& g) {
     useModelLights(scene, g);
+    // A base colour image holds sRGB-encoded colours, decoded to linear for the formula: written back
+    // encoded, the model looks as its file does (linear output would show it much darker).
+    if (!scene.outputEncodingGiven && scene.textures)
+        for (std::size_t o = 0; o < scene.objects.size() && o < g.gltfInfo.size(); ++o)
+            if (g.gltfInfo[o].textures > 0 && !scene.objects[o].material.colorSet) {
+                scene.outputEncoding = OutputEncoding::Srgb;
+                scene.outputEncodingGiven = true;
+            }
     if (scene.modelCamera >= 0) return useModelCamera(scene, g);
     if (scene.cameraGiven) return;
     bool hasModel = false;

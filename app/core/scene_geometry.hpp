@@ -23,7 +23,8 @@ SceneGeometry buildSceneGeometry(const Scene& scene);
 // A scene that gives no camera and draws a glTF model gets a camera (and, with no lights given, a
 // light) placed to fit the model's bounding sphere. A scene that gives no lights and draws a glTF
 // model with lights of its own (KHR_lights_punctual) is lit by those (lecturesLights), the first such
-// model's.
+// model's. A scene that does not choose its output encoding and draws a model with a base colour
+// texture is written sRGB-encoded.
 void frameIfNeeded(Scene& scene, const SceneGeometry& geometry);
 
 // A model's lights as the lecture's L_l. The file gives physical units: candela for point and spot

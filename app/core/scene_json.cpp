@@ -367,6 +367,7 @@ Scene SceneReader::read(const json& root) {
     static const std::pair<const char*, OutputEncoding> kEnc[] = {{"linear", OutputEncoding::Linear},
                                                                    {"srgb", OutputEncoding::Srgb}};
     choice(root, "output_encoding", "", s.outputEncoding, kEnc);
+    s.outputEncodingGiven = root.contains("output_encoding");
     vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
     vec3(root, "background", "", s.background, 0.0, 1.0);
     if (root.contains("lights")) {

@@ -854,3 +854,27 @@ TEST_F(Gltf, PunctualLightsArePlacedByTheirNodes) {
     d.j["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.6;
     expectRefused(writeGltf("bad_cone", d), {"light 1", "innerConeAngle < outerConeAngle"});
 }
+
+// A textured model is written sRGB-encoded unless the scene chooses its encoding (or draws it
+// without textures, or in a colour of its own).
+TEST(SharedModels, TexturedModelsAreWrittenSrgbUnlessTheSceneSaysOtherwise) {
+    const std::string globe = std::string(SHADELAB_SOURCE_DIR) + "/assets/models/checker_globe.gltf";
+    Scene scene;
+    scene.objects[0].mesh.type = MeshSpec::Type::Gltf;
+    scene.objects[0].mesh.resolvedPath = globe;
+    const SceneGeometry g = buildSceneGeometry(scene);
+    const auto encodingAfterFraming = [&](Scene s) {
+        frameIfNeeded(s, g);
+        return s.outputEncoding;
+    };
+    EXPECT_EQ(encodingAfterFraming(scene), OutputEncoding::Srgb);
+    Scene chosen = scene;
+    chosen.outputEncodingGiven = true;  // "output_encoding": "linear"
+    EXPECT_EQ(encodingAfterFraming(chosen), OutputEncoding::Linear);
+    Scene untextured = scene;
+    untextured.textures = false;
+    EXPECT_EQ(encodingAfterFraming(untextured), OutputEncoding::Linear);
+    Scene coloured = scene;
+    coloured.objects[0].material.colorSet = true;
+    EXPECT_EQ(encodingAfterFraming(coloured), OutputEncoding::Linear);
+}
