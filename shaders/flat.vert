@@ -30,7 +30,7 @@ void main() {
     }
     vec3 faceNrmObject = vec3(nx, ny, zSign * sqrt(max(1.0 - nx * nx - ny * ny, 0.0)));
     vec3 centroidWorld = (worldFromObject() * vec4(centroidObject, 1.0)).xyz;
-    vec3 faceNrmWorld = normalize(normalWorldFromObject() * faceNrmObject);
+    vec3 faceNrmWorld = normalize(normalToWorld(faceNrmObject));
 #if SL_TEXTURED
     v_termsOfC = shadeLectureTermsOfC(centroidWorld, faceNrmWorld);
     v_specular = shadeLectureSpecular(centroidWorld, faceNrmWorld);

@@ -17,7 +17,7 @@ out vec3 v_color;
 
 void main() {
     vec4 posWorld = worldFromObject() * vec4(a_posObject, 1.0);
-    vec3 nrmWorld = normalize(normalWorldFromObject() * a_nrmObject);
+    vec3 nrmWorld = normalize(normalToWorld(a_nrmObject));
 #if SL_TEXTURED
     v_termsOfC = shadeLectureTermsOfC(posWorld.xyz, nrmWorld);
     v_specular = shadeLectureSpecular(posWorld.xyz, nrmWorld);

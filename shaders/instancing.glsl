@@ -11,9 +11,14 @@
 #if SL_INSTANCED
 layout(location = SL_ATTRIB_INSTANCE) in mat4 a_instanceFromPart;
 mat4 worldFromObject() { return u_worldFromObject * a_instanceFromPart; }
-// Normals take the inverse transpose of the whole transform, per vertex here (an instance's own).
-mat3 normalWorldFromObject() { return transpose(inverse(mat3(worldFromObject()))); }
+// A normal of the part: through the instance's inverse transpose (per vertex here) and renormalised,
+// as if the instance had been baked into the mesh, then through the object's.
+vec3 normalToWorld(vec3 nrmObject) {
+    vec3 nrmInstance = normalize(transpose(inverse(mat3(a_instanceFromPart))) * nrmObject);
+    return mat3(u_normalWorldFromObject) * nrmInstance;
+}
 #else
 mat4 worldFromObject() { return u_worldFromObject; }
-mat3 normalWorldFromObject() { return mat3(u_normalWorldFromObject); }
+// A normal in world space: the inverse transpose of the object's transform (not renormalised here).
+vec3 normalToWorld(vec3 nrmObject) { return mat3(u_normalWorldFromObject) * nrmObject; }
 #endif

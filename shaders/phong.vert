@@ -10,7 +10,7 @@ layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
 void main() {
     vec4 posWorld = worldFromObject() * vec4(a_posObject, 1.0);
     v_posWorld = posWorld.xyz;
-    v_nrmWorld = normalWorldFromObject() * a_nrmObject;
+    v_nrmWorld = normalToWorld(a_nrmObject);
     gl_Position = u_clipFromWorld * posWorld;
     passObjectColor();
 #ifdef SL_INTERPOLATED_INPUTS

@@ -421,8 +421,9 @@ int GltfReader::textureSlot(int ti) {
         if (std::size_t(image.bufferView) >= model_.bufferViews.size())
             fail(out->name, "bufferView " + std::to_string(image.bufferView) + " does not exist");
         const std::size_t length = model_.bufferViews[std::size_t(image.bufferView)].byteLength;
-        std::size_t stride = 0;
-        checkRange(image.bufferView, 0, length, length, 1, out->name, &stride, &bytes);
+        if (length == 0) return skip(out->name + "'s bufferView is empty");
+        std::size_t stride = 0;  // the view's bytes one by one: its byteStride does not apply to an image
+        checkRange(image.bufferView, 0, 1, 1, length, out->name, &stride, &bytes);
         size = length;
     }
     if (size == 0) return skip(out->name + " could not be read");
@@ -736,8 +737,8 @@ void GltfReader::addLight(const tinygltf::Node& n, int ni, const glm::mat4& worl
         const double inner = src.spot.innerConeAngle, outer = src.spot.outerConeAngle;
         if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || outer <= inner || outer > 1.5707963268 + 1e-6)
             fail(name, "spot cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2");
-        l.outerConeDeg = std::min(float(glm::degrees(outer)), kMaxSpotConeDeg);
-        l.innerConeDeg = std::min(float(glm::degrees(inner)), l.outerConeDeg - 0.01f);
+        l.outerConeDeg = std::clamp(float(glm::degrees(outer)), 0.01f, kMaxSpotConeDeg);
+        l.innerConeDeg = std::clamp(float(glm::degrees(inner)), 0.0f, std::max(l.outerConeDeg - 0.01f, 0.0f));
     }
     info_.lights.push_back(std::move(out));
 }
@@ -885,7 +886,7 @@ Mesh GltfReader::read() {
         auto compact = std::make_shared<Mesh>();
         out_ = compact.get();
         instancedPass_ = true;
-        info_.nodes = 0;
+        info_.nodes = 0, info_.triangles = 0, info_.primitives = 0, info_.generatedNormals = 0;  // limits count one walk
         for (int r : roots) visit(r, glm::mat4(1.0f), 0);
         out_ = &mesh_;
         instancedPass_ = false;

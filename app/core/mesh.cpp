@@ -254,8 +254,11 @@ glm::vec3 sampleTexture(const TextureImage& t, const glm::vec2& uv) {
         const std::uint8_t* p = &t.rgba[(std::size_t(y) * std::size_t(t.width) + std::size_t(x)) * 4];
         return glm::vec3(decode[p[0]], decode[p[1]], decode[p[2]]);
     };
-    // GL's texel space: texel centres at (i + 0.5) / size.
-    const float x = uv.x * float(t.width), y = uv.y * float(t.height);
+    // GL's texel space: texel centres at (i + 0.5) / size. Coordinates past a billion texels (a file
+    // can hold any float) are taken as 0: no int holds them, and no float there has a fraction left.
+    float x = uv.x * float(t.width), y = uv.y * float(t.height);
+    if (!(std::fabs(x) < 1e9f)) x = 0.0f;
+    if (!(std::fabs(y) < 1e9f)) y = 0.0f;
     if (t.magFilter == 0x2600)  // GL_NEAREST
         return texel(int(std::floor(x)), int(std::floor(y)));
     const float fx = x - 0.5f, fy = y - 0.5f;

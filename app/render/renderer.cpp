@@ -210,6 +210,7 @@ Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders, RendererO
                                  std::to_string(GLAD_VERSION_MINOR(version)));
     glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniformAlignment_);
     if (uniformAlignment_ <= 0) uniformAlignment_ = 256;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentTextureUnits_);
     uniforms_ = gl::makeBuffer();
     checkGl("renderer set-up");
 }
@@ -516,9 +517,13 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         int instances;  // SL_INSTANCED: index into objectInstanceGroups_[object]; -1: drawn once
     };
     std::vector<Draw> draws;
+    // A shadowed light's map takes a texture unit of the fragment stage, the object texture one more:
+    // where the GL offers no unit for it (16 shadowed lights on a GL with 16 units), C is the base colour.
+    const std::size_t shadowUnits = scene.shadows.enabled ? std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS) : 0;
+    const bool textureUnitFree = std::size_t(fragmentTextureUnits_) > shadowUnits;
     for (std::size_t o = 0; o < objects; ++o) {
         const Material& m = scene.objects[o].material;
-        const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet;
+        const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet && textureUnitFree;
         for (std::size_t p = 0; p < objectParts_[o].size(); ++p) {
             const MeshPart& part = objectParts_[o][p];
             Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),

@@ -146,6 +146,7 @@ private:
     std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
     gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
     GLint uniformAlignment_ = 256;
+    GLint fragmentTextureUnits_ = 16;  // GL_MAX_TEXTURE_IMAGE_UNITS: shadow maps and the object texture share them
     std::vector<Aabb> objectBoxes_;                       // per object, object space (shadow maps, Phong inputs)
     std::vector<std::size_t> objectTriangles_;            // per object, all parts
     std::vector<char> objectVariesColor_;                 // per object: has texture coordinates and colours

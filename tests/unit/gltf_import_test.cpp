@@ -698,6 +698,16 @@ TEST_F(Gltf, BaseColourTextureCoordinatesAndVertexColoursAreRead) {
     glb.bin.insert(glb.bin.end(), png.begin(), png.end());
     glb.j["buffers"][0]["byteLength"] = glb.bin.size();
     expectTwoByTwo(loadGltf(writeGlb("buffer_view", glb)));
+    // A byteStride on the image's view does not apply to it; an empty view is a warning, not a crash.
+    glb.j["bufferViews"][4]["byteStride"] = 4;
+    expectTwoByTwo(loadGltf(writeGlb("buffer_view_stride", glb)));
+    glb.j["bufferViews"][4].erase("byteStride");
+    glb.j["bufferViews"][4]["byteLength"] = 0;
+    GltfInfo emptyInfo;
+    const Mesh empty = loadGltf(writeGlb("buffer_view_empty", glb), &emptyInfo);
+    EXPECT_EQ(empty.parts[0].texture, -1);
+    ASSERT_FALSE(emptyInfo.warnings.empty());
+    EXPECT_NE(emptyInfo.warnings[0].find("bufferView is empty"), std::string::npos) << emptyInfo.warnings[0];
 }
 
 // KHR_mesh_quantization allows TEXCOORD_n and COLOR_n in integer types too.
@@ -846,6 +856,14 @@ TEST_F(Gltf, PunctualLightsArePlacedByTheirNodes) {
     frameIfNeeded(given, g);
     ASSERT_EQ(given.lights.size(), 1u);
     EXPECT_EQ(given.lights[0].type, LightType::Point);
+
+    // A cone narrower than shadelab's smallest (0.01 degrees) is widened to it, so the scene saves
+    // and loads back.
+    d.j["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"] = {{"innerConeAngle", 0}, {"outerConeAngle", 1e-6}};
+    GltfInfo narrow;
+    loadGltf(writeGltf("narrow", d), &narrow);
+    EXPECT_FLOAT_EQ(narrow.lights[1].light.outerConeDeg, 0.01f);
+    EXPECT_FLOAT_EQ(narrow.lights[1].light.innerConeDeg, 0.0f);
 
     // A light index that does not exist, or a cone the extension forbids, is refused naming it.
     d.j["nodes"][3]["extensions"]["KHR_lights_punctual"]["light"] = 7;

@@ -167,6 +167,8 @@ TEST(Mesh, SampleTextureDecodesSrgbAndFiltersAndWrapsAsGl) {
     TextureImage grey;
     grey.width = grey.height = 1;
     grey.rgba = {128, 128, 128, 255};
+    // Coordinates no int can index (a file may hold any float) read texel 0, without overflow.
+    EXPECT_EQ(sampleTexture(t, {1e30f, 0.5f}), sampleTexture(t, {0.0f, 0.5f}));
     // sRGB 128 / 255 decodes to ((0.50196 + 0.055) / 1.055)^2.4 = 0.21586.
     EXPECT_NEAR(sampleTexture(grey, {0.3f, 0.9f}).g, 0.21586f, 1e-4f);
 }
