@@ -1153,7 +1153,6 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
         [](tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes, int size,
            void*) {
             if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
-            image->as_is = true;
             return true;
         },
         nullptr);

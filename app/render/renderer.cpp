@@ -524,16 +524,17 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
     for (std::size_t o = 0; o < objects; ++o) {
         const Material& m = scene.objects[o].material;
         const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet && textureUnitFree;
+        const std::vector<InstanceGroup>& groups = objectInstanceGroups_[o];
+        std::size_t g = 0;  // the groups are in part order
         for (std::size_t p = 0; p < objectParts_[o].size(); ++p) {
             const MeshPart& part = objectParts_[o][p];
             Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
                    (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
             if (part.instances.empty()) draws.push_back(d);
-            for (std::size_t g = 0; g < objectInstanceGroups_[o].size(); ++g)
-                if (objectInstanceGroups_[o][g].part == p) {
-                    d.instances = int(g);
-                    draws.push_back(d);
-                }
+            for (; g < groups.size() && groups[g].part == p; ++g) {
+                d.instances = int(g);
+                draws.push_back(d);
+            }
         }
     }
 

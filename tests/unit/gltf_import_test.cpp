@@ -668,6 +668,18 @@ void expectTwoByTwo(const Mesh& m) {
     EXPECT_EQ(t.rgba, expected);
 }
 
+// The file loads, its one part without a texture (in its base colour), with a warning containing `why`.
+Mesh expectDrawnWithoutTexture(const std::string& file, const std::string& why) {
+    GltfInfo info;
+    Mesh m = loadGltf(file, &info);
+    EXPECT_EQ(m.parts.size(), 1u);
+    EXPECT_TRUE(!m.parts.empty() && m.parts[0].texture == -1);
+    bool found = false;
+    for (const std::string& w : info.warnings) found = found || w.find(why) != std::string::npos;
+    EXPECT_TRUE(found) << (info.warnings.empty() ? "no warning" : info.warnings[0]);
+    return m;
+}
+
 }  // namespace
 
 TEST_F(Gltf, BaseColourTextureCoordinatesAndVertexColoursAreRead) {
@@ -703,11 +715,7 @@ TEST_F(Gltf, BaseColourTextureCoordinatesAndVertexColoursAreRead) {
     expectTwoByTwo(loadGltf(writeGlb("buffer_view_stride", glb)));
     glb.j["bufferViews"][4].erase("byteStride");
     glb.j["bufferViews"][4]["byteLength"] = 0;
-    GltfInfo emptyInfo;
-    const Mesh empty = loadGltf(writeGlb("buffer_view_empty", glb), &emptyInfo);
-    EXPECT_EQ(empty.parts[0].texture, -1);
-    ASSERT_FALSE(emptyInfo.warnings.empty());
-    EXPECT_NE(emptyInfo.warnings[0].find("bufferView is empty"), std::string::npos) << emptyInfo.warnings[0];
+    expectDrawnWithoutTexture(writeGlb("buffer_view_empty", glb), "bufferView is empty");
 }
 
 // KHR_mesh_quantization allows TEXCOORD_n and COLOR_n in integer types too.
@@ -775,25 +783,15 @@ TEST_F(Gltf, TexturesThatCannotBeDrawnAreWarnedNotFatal) {
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.warning);
-        GltfInfo info;
-        const Mesh m = loadGltf(writeGltf("broken", texturedQuad(c.image)), &info);
-        EXPECT_EQ(info.textures, 0);
-        ASSERT_EQ(m.parts.size(), 1u);
-        EXPECT_EQ(m.parts[0].texture, -1);
+        const Mesh m = expectDrawnWithoutTexture(writeGltf("broken", texturedQuad(c.image)), c.warning);
+        EXPECT_TRUE(m.textures.empty());
         EXPECT_TRUE(m.variesColor());  // COLOR_0 is still drawn
-        bool found = false;
-        for (const std::string& w : info.warnings) found = found || w.find(c.warning) != std::string::npos;
-        EXPECT_TRUE(found) << (info.warnings.empty() ? "no warning" : info.warnings[0]);
     }
     // A texture whose coordinate set the primitive lacks.
     writePng((dir_ / "model" / "tex.png").string(), twoByTwo());
     Doc d = texturedQuad({{"uri", "tex.png"}});
     d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 3;
-    GltfInfo info;
-    const Mesh m = loadGltf(writeGltf("no_set", d), &info);
-    EXPECT_EQ(m.parts[0].texture, -1);
-    ASSERT_FALSE(info.warnings.empty());
-    EXPECT_NE(info.warnings[0].find("reads TEXCOORD_3, which it does not have"), std::string::npos) << info.warnings[0];
+    expectDrawnWithoutTexture(writeGltf("no_set", d), "reads TEXCOORD_3, which it does not have");
 }
 
 // KHR_lights_punctual: each node that uses a light places it (its origin, its -Z), with the file's
