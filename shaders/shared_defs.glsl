@@ -3,21 +3,22 @@
 #ifndef SL_SHARED_DEFS_GLSL
 #define SL_SHARED_DEFS_GLSL
 
-#define SL_ATTRIB_POSITION 0       // a_posObject (flat: vec4, position and the centroid's x)
-#define SL_ATTRIB_NORMAL 1         // a_nrmObject (not flat)
-#define SL_ATTRIB_FLAT_FACE 2      // flat only: the rest of the provoking vertex's centroid and face normal
+#define SL_ATTRIB_POSITION 0       // a_posObject
+#define SL_ATTRIB_NORMAL 1         // a_nrmObject (flat: a_faceNrmObject)
+#define SL_ATTRIB_CENTROID 2       // flat only: a_centroidObject (flat_packed.vert: two vec4s in 0 and 2)
 #define SL_ATTRIB_TEXCOORD 3       // a_texcoord (SL_TEXTURED: shaders/object_color.glsl)
 #define SL_ATTRIB_COLOR 4          // a_color (SL_TEXTURED)
 #define SL_ATTRIB_INSTANCE 5       // a_instanceFromPart, a mat4 in locations 5..8 (SL_INSTANCED: shaders/instancing.glsl)
-#define SL_FLAT_NORMAL_Z_NEGATIVE 3.0  // added to the face normal's y where its z is negative (flat.vert)
+#define SL_FLAT_NORMAL_Z_NEGATIVE 3.0  // added to the face normal's y where its z is negative (flat_packed.vert)
 
 #define SL_BINDING_FRAME 0         // FrameBlock: camera and lights, one per pane
 #define SL_BINDING_OBJECT 1        // ObjectBlock: transform and material, one per object
 
 #define SL_MAX_LIGHTS 16
 #define SL_MAX_INTERPOLATED_LIGHTS 3  // Phong's interpolated inputs fit GL 3.3's 60 varying components (phong_interface.glsl)
-#define SL_TEXTURE_SHADOW_BASE 0   // light l's shadow map (a 2D array texture) is on texture unit BASE + l
-#define SL_TEXTURE_BASE_COLOR 16   // the object texture (u_baseColorTexture), after the shadow maps
+#define SL_TEXTURE_SHADOW_MAPS 0       // u_shadowMaps: point, spot and directional lights' layers (shaders/shadows.glsl)
+#define SL_TEXTURE_AREA_SHADOW_MAPS 1  // u_areaShadowMaps: area lights' layers
+#define SL_TEXTURE_BASE_COLOR 2        // u_baseColorTexture (shaders/object_color.glsl)
 
 #define SL_LIGHT_POINT 0
 #define SL_LIGHT_DIRECTIONAL 1

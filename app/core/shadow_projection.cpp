@@ -211,4 +211,24 @@ ShadowProjection shadowProjection(const Light& light, const std::vector<Aabb>& o
     return sp;
 }
 
+int shadowLayerCount(const Light& light) {
+    switch (light.type) {
+    case LightType::Point: return 6;
+    case LightType::Area: return light.samples.x * light.samples.y;
+    case LightType::Directional:
+    case LightType::Spot: return 1;
+    }
+    return 1;
+}
+
+ShadowLayout shadowLayout(const std::vector<Light>& lights, std::size_t count) {
+    ShadowLayout layout;
+    for (std::size_t l = 0; l < count && l < lights.size(); ++l) {
+        int& next = lights[l].type == LightType::Area ? layout.areaLayers : layout.layers;
+        layout.firstLayer.push_back(next);
+        next += shadowLayerCount(lights[l]);
+    }
+    return layout;
+}
+
 }  // namespace shadelab

@@ -41,6 +41,20 @@ struct ShadowProjection {
     glm::vec4 uClip{0.0f}, vClip{0.0f};
 };
 
+// How many layers a light's shadow map has: six cube faces (point), one view (spot, directional), one
+// per sample (area): the length of shadowProjection(light, ...).clipFromWorld.
+int shadowLayerCount(const Light& light);
+
+// Where the lights' layers go: point, spot and directional lights share one depth texture array
+// (ShadowSettings::mapSize), area lights a second (areaMapSize); each light's layers are consecutive,
+// from firstLayer[l] in its array. The shaders take firstLayer as constants (shaders/shadows.glsl).
+struct ShadowLayout {
+    std::vector<int> firstLayer;  // per light
+    int layers = 0;               // in the point/spot/directional array
+    int areaLayers = 0;           // in the area array
+};
+ShadowLayout shadowLayout(const std::vector<Light>& lights, std::size_t count);  // the first `count` lights
+
 // `objects` are the world-space boxes of everything that casts or receives shadows.
 ShadowProjection shadowProjection(const Light& light, const std::vector<Aabb>& objects, const ShadowSettings& settings);
 

@@ -45,13 +45,20 @@ void drawFrame(Renderer& renderer, const Scene& scene, const RenderTarget& targe
     }
 }
 
+// Headless frames draw flat shading from packed vertices (RendererOptions::packedFlatVertices).
+RendererOptions headlessOptions() {
+    RendererOptions options;
+    options.packedFlatVertices = true;
+    return options;
+}
+
 }  // namespace
 
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders,
                      HeadlessBackend backend, int msaaSamples) {
     checkFrameMemory(scene, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
-    Renderer renderer(context->getProcAddress(), shaders);
+    Renderer renderer(context->getProcAddress(), shaders, headlessOptions());
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
     MultisampleTarget msaa;
@@ -72,7 +79,7 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     MultisampleTarget msaa;  // after the context: released before it
     try {
         context = makeHeadlessContext(backend, scene.width, scene.height);
-        RendererOptions oneFrame;
+        RendererOptions oneFrame = headlessOptions();
         oneFrame.drawChunkTriangles = kOneFrameDrawChunk;
         renderer = std::make_unique<Renderer>(context->getProcAddress(), shaders, oneFrame);
         // Same programs, vertex layout and GL state as the real frame, on one small triangle per object.
@@ -111,7 +118,7 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
     if (scenes.empty()) return;
     for (const Scene& s : scenes) checkFrameMemory(s, msaaSamples, std::nullopt, keptBytes);  // before any work
     const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
-    Renderer renderer(context->getProcAddress(), shaders);
+    Renderer renderer(context->getProcAddress(), shaders, headlessOptions());
     MultisampleTarget msaa;
     std::shared_ptr<SceneGeometry> geometry;
     const Scene* built = nullptr;
@@ -164,7 +171,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                                                int progressiveStride, int msaaSamples) {
     checkFrameMemory(scene, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
     const auto context = makeHeadlessContext(backend, scene.width, scene.height);
-    RendererOptions manyFrames;  // of one mesh, as in the viewer
+    RendererOptions manyFrames = headlessOptions();  // of one mesh, as in the viewer
     manyFrames.meshOrder = RendererOptions::MeshOrder::VertexCache;
     Renderer renderer(context->getProcAddress(), shaders, manyFrames);
     const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));

@@ -71,18 +71,15 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
     const GLuint object = glGetUniformBlockIndex(program.get(), "ObjectBlock");
     if (frame != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), frame, SL_BINDING_FRAME);
     if (object != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), object, SL_BINDING_OBJECT);
-    // Nor for samplers: light l's shadow map is on unit SL_TEXTURE_SHADOW_BASE + l, the object texture
-    // on SL_TEXTURE_BASE_COLOR.
+    // Nor for samplers: each has its own texture unit (shaders/shared_defs.glsl).
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
     glUseProgram(program.get());
-    for (int l = 0; l < SL_MAX_LIGHTS; ++l) {
-        const std::string sampler = "u_shadowMaps[" + std::to_string(l) + "]";
-        const GLint location = glGetUniformLocation(program.get(), sampler.c_str());
-        if (location >= 0) glUniform1i(location, SL_TEXTURE_SHADOW_BASE + l);
-    }
-    if (const GLint location = glGetUniformLocation(program.get(), "u_baseColorTexture"); location >= 0)
-        glUniform1i(location, SL_TEXTURE_BASE_COLOR);
+    const std::pair<const char*, int> samplers[] = {{"u_shadowMaps", SL_TEXTURE_SHADOW_MAPS},
+                                                    {"u_areaShadowMaps", SL_TEXTURE_AREA_SHADOW_MAPS},
+                                                    {"u_baseColorTexture", SL_TEXTURE_BASE_COLOR}};
+    for (const auto& [sampler, unit] : samplers)
+        if (const GLint location = glGetUniformLocation(program.get(), sampler); location >= 0) glUniform1i(location, unit);
     glUseProgram(GLuint(previous));
     return program;
 }

@@ -158,18 +158,27 @@ std::vector<std::string> programDefines(const Scene& s) {
     static const char* const kKinds[] = {"SL_LIGHT_POINT", "SL_LIGHT_DIRECTIONAL", "SL_LIGHT_AREA", "SL_LIGHT_SPOT"};
     static const char* const kAttenuations[] = {"SL_ATTENUATION_NONE", "SL_ATTENUATION_INVERSE_SQUARE",
                                                 "SL_ATTENUATION_INVERSE_SQUARE_RANGE"};
-    std::vector<std::string> d;
-    d.push_back("SL_LIGHT_COUNT " + std::to_string(count));
+    // Per light, as comma-separated lists that shaders/lighting.glsl reads into constant arrays.
+    std::string kinds, attenuations, samplesX, samplesY;
+    bool area = false;
     for (std::size_t l = 0; l < count; ++l) {
         const Light& light = s.lights[l];
-        const std::string n = std::to_string(l);
-        d.push_back("SL_LIGHT_KIND_" + n + " " + kKinds[lightKind(light)]);
-        d.push_back("SL_LIGHT_ATTENUATION_" + n + " " + kAttenuations[attenuationKind(light)]);
-        if (light.type == LightType::Area) {
-            d.push_back("SL_LIGHT_SAMPLES_X_" + n + " " + std::to_string(light.samples.x));
-            d.push_back("SL_LIGHT_SAMPLES_Y_" + n + " " + std::to_string(light.samples.y));
-        }
+        const char* comma = l > 0 ? ", " : "";
+        kinds += comma + std::string(kKinds[lightKind(light)]);
+        attenuations += comma + std::string(kAttenuations[attenuationKind(light)]);
+        samplesX += comma + std::to_string(light.type == LightType::Area ? light.samples.x : 1);
+        samplesY += comma + std::to_string(light.type == LightType::Area ? light.samples.y : 1);
+        area = area || light.type == LightType::Area;
     }
+    std::vector<std::string> d;
+    d.push_back("SL_LIGHT_COUNT " + std::to_string(count));
+    if (count > 0) {
+        d.push_back("SL_LIGHT_KINDS " + kinds);
+        d.push_back("SL_LIGHT_ATTENUATIONS " + attenuations);
+        d.push_back("SL_AREA_SAMPLES_X " + samplesX);
+        d.push_back("SL_AREA_SAMPLES_Y " + samplesY);
+    }
+    if (area) d.push_back("SL_AREA_LIGHTS 1");
     d.push_back(std::string("SL_REFLECTION ") +
                 (s.reflection == ReflectionModel::Phong ? "SL_REFLECTION_PHONG" : "SL_REFLECTION_BLINN_PHONG"));
     d.push_back(std::string("SL_ENCODING ") +
@@ -196,6 +205,9 @@ std::vector<std::string> programDefines(const Scene& s) {
     if (s.shadows.enabled && count > 0) {
         d.push_back("SL_SHADOWS 1");
         d.push_back("SL_SHADOW_PCF " + std::to_string(s.shadows.pcf));
+        std::string layers;
+        for (int first : shadowLayout(s.lights, count).firstLayer) layers += (layers.empty() ? "" : ", ") + std::to_string(first);
+        d.push_back("SL_SHADOW_LAYERS " + layers);
     }
     return d;
 }
@@ -210,7 +222,6 @@ Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders, RendererO
                                  std::to_string(GLAD_VERSION_MINOR(version)));
     glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniformAlignment_);
     if (uniformAlignment_ <= 0) uniformAlignment_ = 256;
-    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentTextureUnits_);
     uniforms_ = gl::makeBuffer();
     checkGl("renderer set-up");
 }
@@ -324,10 +335,12 @@ GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, 
     if (interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
     if (textured) defines.push_back("SL_TEXTURED 1");
     if (instanced) defines.push_back("SL_INSTANCED 1");
-    std::string key = kProgramNames[std::size_t(mode)];
+    const std::string name = kProgramNames[std::size_t(mode)];
+    const std::string vertex = mode == ShadingMode::Flat && options_.packedFlatVertices ? "flat_packed" : name;
+    std::string key = vertex;
     for (const std::string& d : defines) key += ";" + d;
     gl::Program& p = programs_[key];
-    if (!p) p = buildProgram(kProgramNames[std::size_t(mode)], shaders_, defines);
+    if (!p) p = buildProgram(name, shaders_, defines, vertex);
     return p.get();
 }
 
@@ -364,38 +377,47 @@ const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode)
     const bool varies = mesh.variesColor();
     const std::vector<glm::vec2>& texcoords = flat ? flatMesh.texcoords : mesh.texcoords;
     const std::vector<glm::vec3>& colors = flat ? flatMesh.colors : mesh.colors;
-    const std::size_t extra = varies ? 5 : 0;
-    const auto addVarying = [&](float* v, std::size_t i) {
-        v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
+    // `floats` per vertex written by `write(v, i)`, then the texture coordinates and colour if C varies.
+    const auto interleave = [&](std::size_t count, std::size_t floats, auto write) {
+        const std::size_t stride = floats + (varies ? 5 : 0);
+        interleaved.resize(count * stride);
+        for (std::size_t i = 0; i < count; ++i) {
+            float* v = &interleaved[i * stride];
+            write(v, i);
+            if (!varies) continue;
+            v += floats;
+            v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
+        }
     };
     if (!flat) {
         // position xyz, normal xyz
         layout.push_back({SL_ATTRIB_POSITION, 3});
         layout.push_back({SL_ATTRIB_NORMAL, 3});
-        const std::size_t n6 = 6 + extra;
-        interleaved.resize(mesh.positions.size() * n6);
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-            float* v = &interleaved[i * n6];
+        interleave(mesh.positions.size(), 6, [&](float* v, std::size_t i) {
             const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
             v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
-            if (varies) addVarying(v + 6, i);
-        }
+        });
+    } else if (!options_.packedFlatVertices) {
+        // position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert)
+        layout.push_back({SL_ATTRIB_POSITION, 3});
+        layout.push_back({SL_ATTRIB_CENTROID, 3});
+        layout.push_back({SL_ATTRIB_NORMAL, 3});
+        interleave(flatMesh.positions.size(), 9, [&](float* v, std::size_t i) {
+            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
+            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
+        });
     } else {
-        // Flat's nine floats in two vec4s (shaders/flat.vert): position xyz and centroid x; centroid
-        // yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the shader
-        // takes z from the unit length). llvmpipe fetches each attribute of each vertex on its own:
-        // two fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
+        // The same nine floats in two vec4s (shaders/flat_packed.vert): position xyz and centroid x;
+        // centroid yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the
+        // shader takes z from the unit length). llvmpipe fetches each attribute of each vertex on its
+        // own: two fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
         layout.push_back({SL_ATTRIB_POSITION, 4});
-        layout.push_back({SL_ATTRIB_FLAT_FACE, 4});
-        const std::size_t n8 = 8 + extra;
-        interleaved.resize(flatMesh.positions.size() * n8);
-        for (std::size_t i = 0; i < flatMesh.positions.size(); ++i) {
-            float* v = &interleaved[i * n8];
+        layout.push_back({SL_ATTRIB_CENTROID, 4});
+        interleave(flatMesh.positions.size(), 8, [&](float* v, std::size_t i) {
             const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
             v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
             v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
-            if (varies) addVarying(v + 8, i);
-        }
+        });
     }
     if (varies) {
         layout.push_back({SL_ATTRIB_TEXCOORD, 2});
@@ -517,13 +539,9 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         int instances;  // SL_INSTANCED: index into objectInstanceGroups_[object]; -1: drawn once
     };
     std::vector<Draw> draws;
-    // A shadowed light's map takes a texture unit of the fragment stage, the object texture one more:
-    // where the GL offers no unit for it (16 shadowed lights on a GL with 16 units), C is the base colour.
-    const std::size_t shadowUnits = scene.shadows.enabled ? std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS) : 0;
-    const bool textureUnitFree = std::size_t(fragmentTextureUnits_) > shadowUnits;
     for (std::size_t o = 0; o < objects; ++o) {
         const Material& m = scene.objects[o].material;
-        const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet && textureUnitFree;
+        const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet;
         const std::vector<InstanceGroup>& groups = objectInstanceGroups_[o];
         std::size_t g = 0;  // the groups are in part order
         for (std::size_t p = 0; p < objectParts_[o].size(); ++p) {

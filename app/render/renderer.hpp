@@ -53,6 +53,12 @@ struct RendererOptions {
     // copy of the instanced parts uploaded, drawn once per instance. Off: every instance baked into
     // the vertex buffer, as the CPU side holds them (a test compares the two).
     bool instancedDraws = true;
+
+    // Flat shading's nine floats per vertex (position, centroid, face normal) in two vec4s, drawn by
+    // shaders/flat_packed.vert, instead of three vec3s (flat.vert): ~7% off a flat frame at 200k
+    // triangles on llvmpipe (bench/README.md). For headless frames; the viewer draws with flat.vert,
+    // the file a lecturer reads and edits (F5 reloads it). A test compares the two pixel for pixel.
+    bool packedFlatVertices = false;
 };
 
 class Renderer {
@@ -146,7 +152,6 @@ private:
     std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
     gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
     GLint uniformAlignment_ = 256;
-    GLint fragmentTextureUnits_ = 16;  // GL_MAX_TEXTURE_IMAGE_UNITS: shadow maps and the object texture share them
     std::vector<Aabb> objectBoxes_;                       // per object, object space (shadow maps, Phong inputs)
     std::vector<std::size_t> objectTriangles_;            // per object, all parts
     std::vector<char> objectVariesColor_;                 // per object: has texture coordinates and colours

@@ -1,5 +1,6 @@
 #include "render/shadow_maps.hpp"
 
+#include "core/error.hpp"
 #include "core/lighting.hpp"
 #include "render/program.hpp"
 
@@ -40,8 +41,7 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     viewsRendered_ = 0;
     const std::size_t count = std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS);
     std::vector<float> signature = signatureOf(scene, draws);
-    if (signature == signature_ && lights_.size() == count) return;
-    signature_ = std::move(signature);
+    if (signature == signature_ && projections_.size() == count) return;
 
     if (!program_) {
         program_ = buildProgram("shadow_depth", shaders);
@@ -50,7 +50,17 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
         glGenFramebuffers(1, &fbo);
         framebuffer_ = gl::Framebuffer(fbo);
     }
-    lights_.resize(count);
+    layout_ = shadowLayout(scene.lights, count);
+    GLint maxLayers = 256;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    if (std::max(layout_.layers, layout_.areaLayers) > maxLayers)
+        throw GlOutOfMemory("shadows: the lights need " + std::to_string(std::max(layout_.layers, layout_.areaLayers)) +
+                            " shadow-map layers in one texture array; this GL has at most " + std::to_string(maxLayers) +
+                            " (fewer area-light samples or shadowed lights)");
+    maps_.allocate(scene.shadows.mapSize, layout_.layers);
+    areaMaps_.allocate(scene.shadows.areaMapSize, layout_.areaLayers);
+    projections_.resize(count);
+    signature_ = std::move(signature);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
@@ -69,37 +79,17 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     glClearDepth(1.0);
 
     for (std::size_t l = 0; l < count; ++l) {
-        LightMaps& m = lights_[l];
-        m.projection = shadowProjection(scene.lights[l], boxes, scene.shadows);
-        const int layers = int(m.projection.clipFromWorld.size());
-        if (!m.texture || m.size != m.projection.size || m.layers != layers) {
-            GLuint id = 0;
-            glGenTextures(1, &id);
-            m.texture = gl::Texture(id);
-            m.size = m.projection.size;
-            m.layers = layers;
-            glBindTexture(GL_TEXTURE_2D_ARRAY, id);
-            glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, m.size, m.size, layers, 0, GL_DEPTH_COMPONENT,
-                         GL_UNSIGNED_INT, nullptr);
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
-            // Outside a map is lit: depth 1 at the border compares as "nothing in front".
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-            const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-            glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, border);
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        }
-        glViewport(0, 0, m.size, m.size);
-        for (int layer = 0; layer < layers; ++layer) {
-            glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, m.texture.get(), 0, layer);
+        projections_[l] = shadowProjection(scene.lights[l], boxes, scene.shadows);
+        const ShadowProjection& projection = projections_[l];
+        const LayerArray& maps = scene.lights[l].type == LightType::Area ? areaMaps_ : maps_;
+        glViewport(0, 0, maps.size, maps.size);
+        for (std::size_t layer = 0; layer < projection.clipFromWorld.size(); ++layer) {
+            glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, maps.texture.get(), 0,
+                                      layout_.firstLayer[l] + int(layer));
             glClear(GL_DEPTH_BUFFER_BIT);
-            const glm::mat4& clipFromWorld = m.projection.clipFromWorld[std::size_t(layer)];
             for (const DepthDraw& d : draws) {
                 if (d.count == 0) continue;
-                const glm::mat4 clipFromObject = clipFromWorld * d.worldFromObject;
+                const glm::mat4 clipFromObject = projection.clipFromWorld[layer] * d.worldFromObject;
                 glUniformMatrix4fv(clipFromObjectLoc_, 1, GL_FALSE, glm::value_ptr(clipFromObject));
                 glBindVertexArray(d.vao);
                 glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
@@ -114,10 +104,33 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+void ShadowMaps::LayerArray::allocate(int newSize, int newLayers) {
+    if (newLayers == 0) newSize = newLayers = 1;  // an unused array still needs a texture to bind
+    if (texture && size == newSize && layers == newLayers) return;
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    texture = gl::Texture(id);
+    size = newSize;
+    layers = newLayers;
+    glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, size, size, layers, 0, GL_DEPTH_COMPONENT,
+                 GL_UNSIGNED_INT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+    // Outside a map is lit: depth 1 at the border compares as "nothing in front".
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, border);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+}
+
 void ShadowMaps::fillBlock(const Scene& scene, gpu::FrameBlock& b) const {
     b.shadowSettings[0] = scene.shadows.normalBias;
-    for (std::size_t l = 0; l < lights_.size() && l < std::size_t(SL_MAX_LIGHTS); ++l) {
-        const ShadowProjection& p = lights_[l].projection;
+    for (std::size_t l = 0; l < projections_.size() && l < std::size_t(SL_MAX_LIGHTS); ++l) {
+        const ShadowProjection& p = projections_[l];
         gpu::LightGpu& g = b.lights[l];
         g.falloff[2] = p.size > 0 ? 1.0f / float(p.size) : 0.0f;
         const glm::mat4& clip = p.clipFromWorld.empty() ? glm::mat4(1.0f)
@@ -131,10 +144,10 @@ void ShadowMaps::fillBlock(const Scene& scene, gpu::FrameBlock& b) const {
 }
 
 void ShadowMaps::bindTextures() const {
-    for (std::size_t l = 0; l < lights_.size(); ++l) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + SL_TEXTURE_SHADOW_BASE + int(l)));
-        glBindTexture(GL_TEXTURE_2D_ARRAY, lights_[l].texture.get());
-    }
+    glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_SHADOW_MAPS);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.texture.get());
+    glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_AREA_SHADOW_MAPS);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, areaMaps_.texture.get());
     glActiveTexture(GL_TEXTURE0);
 }
 

@@ -1,7 +1,9 @@
 #pragma once
-// Shadow maps for Renderer: one depth texture array per light, rendered before the shaded passes
-// when the scene asks for shadows. What each layer sees is decided GL-free in
-// core/shadow_projection.hpp; this class owns the textures, the depth-only program and the pass.
+// Shadow maps for Renderer, rendered before the shaded passes when the scene asks for shadows: two
+// depth texture arrays, one for the point, spot and directional lights and one for the area lights
+// (their maps have their own size), each light's layers from its first layer (ShadowLayout). What
+// each layer sees is decided GL-free in core/shadow_projection.hpp; this class owns the textures, the
+// depth-only program and the pass.
 // The maps are re-rendered only when something they depend on changed (lights, settings, object
 // transforms, geometry), so a still scene in the viewer pays for them once.
 #include "core/scene.hpp"
@@ -35,7 +37,7 @@ public:
                 const ShaderLibrary& shaders);
     // Writes the per-light shadow data and the settings into a FrameBlock.
     void fillBlock(const Scene& scene, gpu::FrameBlock& block) const;
-    // Binds light l's map to texture unit SL_TEXTURE_SHADOW_BASE + l.
+    // Binds the two arrays to texture units SL_TEXTURE_SHADOW_MAPS and SL_TEXTURE_AREA_SHADOW_MAPS.
     void bindTextures() const;
     // Forget the cached maps (new geometry may reuse the old VAO names).
     void invalidate() { signature_.clear(); }
@@ -43,15 +45,17 @@ public:
     int viewsRendered() const { return viewsRendered_; }
 
 private:
-    struct LightMaps {
+    struct LayerArray {
         gl::Texture texture;
         int size = 0, layers = 0;
-        ShadowProjection projection;
+        void allocate(int size, int layers);  // (re)creates the texture when either changed
     };
     gl::Program program_;
     GLint clipFromObjectLoc_ = -1;
     gl::Framebuffer framebuffer_;
-    std::vector<LightMaps> lights_;
+    LayerArray maps_, areaMaps_;
+    std::vector<ShadowProjection> projections_;  // per light
+    ShadowLayout layout_;
     std::vector<float> signature_;  // everything the maps depend on, as of the last render
     int viewsRendered_ = 0;
 };

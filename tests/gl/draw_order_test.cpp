@@ -1,8 +1,11 @@
 // Two ways the renderer changes the order of its draws for speed or memory, neither of which may
 // change a single pixel: meshes reordered for the vertex cache (Renderer::MeshOrder,
 // core/vertex_order.hpp: the same triangles with the same corners in another order) and draws split
-// into fenced chunks (RendererOptions::drawChunkTriangles). Checked on the golden scenes with several objects,
-// parts (glTF primitives), a mirrored transform, shadow maps and all three modes side by side.
+// into fenced chunks (RendererOptions::drawChunkTriangles). And a third speed variant that may change
+// only rounding: flat shading from packed vertices (shaders/flat_packed.vert, whose face normal's z
+// is rebuilt from its unit length) against the readable flat.vert. Checked on the golden scenes with
+// several objects, parts (glTF primitives), a mirrored transform, textures, shadow maps and all three
+// modes side by side.
 #include "core/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "render/renderer.hpp"
@@ -19,11 +22,12 @@ using namespace shadelab::test;
 namespace {
 
 Image renderWith(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, Renderer::MeshOrder order,
-                 std::size_t chunk = 0) {
+                 std::size_t chunk = 0, bool packedFlat = false) {
     auto context = makeHeadlessContext(backendUnderTest(), scene.width, scene.height);
     RendererOptions options;
     options.meshOrder = order;
     options.drawChunkTriangles = chunk;
+    options.packedFlatVertices = packedFlat;
     Renderer renderer(context->getProcAddress(), ShaderLibrary(), options);
     renderer.setGeometry(std::move(geometry));
     renderer.render(scene, context->target());
@@ -52,6 +56,13 @@ TEST_P(DrawOrder, SamePixelsWhateverTheOrder) {
     EXPECT_EQ(compareImages(chunked, given, 0).failingPixels, 0u)
         << name << ": " << saveForInspection("draw_order_" + name + "_given", given) << " vs "
         << saveForInspection("draw_order_" + name + "_chunked", chunked);
+    // Packed flat vertices: the same picture up to one step of rounding where a face normal's
+    // rebuilt z differs in its last bits.
+    const Image packed = renderWith(scene, geometry, Renderer::MeshOrder::AsGiven, 0, true);
+    const CompareResult r = compareImages(packed, given, 0);
+    EXPECT_LE(r.maxDifference, 1) << name << ": " << saveForInspection("draw_order_" + name + "_given", given)
+                                  << " vs " << saveForInspection("draw_order_" + name + "_packed_flat", packed);
+    EXPECT_LE(r.failingPixels, std::size_t(given.width * given.height / 100)) << name;
     // Not a blank frame on both sides.
     EXPECT_GT(compareImages(given, Image(given.width, given.height), 0).failingPixels,
               std::size_t(given.width * given.height / 20));
@@ -59,5 +70,6 @@ TEST_P(DrawOrder, SamePixelsWhateverTheOrder) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DrawOrder,
                          ::testing::Values("compare_torus", "gem_compare", "objects_lights", "gltf_suzanne_compare",
-                                           "gltf_negative_scale", "shadow_objects_compare", "flat_uvsphere"),
+                                           "gltf_negative_scale", "shadow_objects_compare", "flat_uvsphere",
+                                           "textured_globe_compare"),
                          [](const auto& p) { return std::string(p.param); });

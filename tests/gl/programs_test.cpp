@@ -53,7 +53,7 @@ TEST_F(GlContext, EverySpecialisationCompiles) {
     // need 16 samplers in the vertex stage too (flat and gouraud light there).
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
         Light& light = scene.lights[l];
-        light.type = LightType(l % 3);
+        light.type = LightType(l % 4);  // point, directional, area, spot
         light.attenuation = l % 2 ? Attenuation::InverseSquare : Attenuation::None;
         light.range = l % 4 == 1 ? 5.0f : 0.0f;
         light.samples = {int(l % 3) + 1, 2};
@@ -81,11 +81,13 @@ TEST_F(GlContext, EverySpecialisationCompiles) {
     for (ShowTerm term : {ShowTerm::Ambient, ShowTerm::Diffuse, ShowTerm::Specular, ShowTerm::Unlit})
         scene.show = TermView{term, 0}, variants.push_back(scene);
     for (int l : {0, 7, SL_MAX_LIGHTS - 1}) scene.show = TermView{ShowTerm::Light, l}, variants.push_back(scene);
-    for (const Scene& v : variants)
+    for (const Scene& v : variants) {
         for (const char* name : {"flat", "gouraud", "phong"}) {
             SCOPED_TRACE(name);
             EXPECT_TRUE(buildProgram(name, library, programDefines(v)));
         }
+        EXPECT_TRUE(buildProgram("flat", library, programDefines(v), "flat_packed"));
+    }
     EXPECT_TRUE(buildProgram("difference", library, {}, kFullscreenVertex));
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -112,13 +114,18 @@ TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
     scene.lights[2].type = LightType::Directional;
     scene.reflection = ReflectionModel::Phong;
     scene.outputEncoding = OutputEncoding::Srgb;
-    for (const char* name : {"flat", "gouraud", "phong"}) {
-        SCOPED_TRACE(name);
-        const gl::Program p = buildProgram(name, library, programDefines(scene));
+    for (const char* vertex : {"flat", "flat_packed", "gouraud", "phong"}) {
+        SCOPED_TRACE(vertex);
+        const std::string name = std::string(vertex).substr(0, std::string(vertex).find('_'));
+        const gl::Program p = buildProgram(name, library, programDefines(scene), vertex);
         ASSERT_TRUE(p);
-        if (std::string(name) == "flat") {  // two packed vec4s (Renderer::gpuMesh)
+        if (std::string(vertex) == "flat") {  // three vec3s (Renderer::gpuMesh)
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_posObject"), SL_ATTRIB_POSITION);
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_centroidObject"), SL_ATTRIB_CENTROID);
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_faceNrmObject"), SL_ATTRIB_NORMAL);
+        } else if (std::string(vertex) == "flat_packed") {  // two vec4s
             EXPECT_EQ(glGetAttribLocation(p.get(), "a_posCentroidXObject"), SL_ATTRIB_POSITION);
-            EXPECT_EQ(glGetAttribLocation(p.get(), "a_centroidYZNormalXYObject"), SL_ATTRIB_FLAT_FACE);
+            EXPECT_EQ(glGetAttribLocation(p.get(), "a_centroidYZNormalXYObject"), SL_ATTRIB_CENTROID);
         } else {
             EXPECT_EQ(glGetAttribLocation(p.get(), "a_posObject"), SL_ATTRIB_POSITION);
             EXPECT_EQ(glGetAttribLocation(p.get(), "a_nrmObject"), SL_ATTRIB_NORMAL);

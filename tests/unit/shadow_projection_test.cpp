@@ -140,3 +140,22 @@ TEST(ShadowProjection, AreaSamplesSeeTheObjectsInFrontOfTheLight) {
             }
         }
 }
+
+// All lights' layers in two texture arrays (ShadowLayout): each light's layers follow the previous
+// light's of the same array, as many as its projection has views.
+TEST(ShadowLayout, LightsTakeConsecutiveLayersOfTheirArray) {
+    std::vector<Light> lights(5);
+    lights[0].type = LightType::Point;
+    lights[1].type = LightType::Area, lights[1].samples = {4, 2};
+    lights[2].type = LightType::Spot, lights[2].direction = {0.0f, -1.0f, 0.0f};
+    lights[3].type = LightType::Directional, lights[3].direction = {0.0f, -1.0f, 0.0f};
+    lights[4].type = LightType::Area, lights[4].samples = {2, 3};
+    for (Light& l : lights) l.position = {0.5f, 3.0f, 0.5f}, l.normal = {0.0f, -1.0f, 0.0f};
+    const ShadowLayout layout = shadowLayout(lights, lights.size());
+    EXPECT_EQ(layout.firstLayer, (std::vector<int>{0, 0, 6, 7, 8}));
+    EXPECT_EQ(layout.layers, 8);       // point 6 + spot 1 + directional 1
+    EXPECT_EQ(layout.areaLayers, 14);  // 4 x 2 + 2 x 3
+    for (const Light& l : lights)
+        EXPECT_EQ(std::size_t(shadowLayerCount(l)), shadowProjection(l, kObjects, ShadowSettings{}).clipFromWorld.size());
+    EXPECT_EQ(shadowLayout(lights, 2).firstLayer, (std::vector<int>{0, 0}));  // only the lights drawn
+}
