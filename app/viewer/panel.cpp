@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
@@ -415,6 +416,7 @@ void sectionKeys() {
 PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
                         const ProbeResult* probe) {
     PanelRequests requests;
+    const std::size_t lightsBefore = scene.lights.size();
     ImGui::SetNextWindowPos(ImVec2(area.x, area.y));
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height));
     // NoNavInputs: Tab belongs to the viewer (hide the panel), not to ImGui's widget tabbing.
@@ -469,6 +471,9 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (section("Keys", kPanelSections[10], false)) sectionKeys();
     static_assert(std::size(kPanelSections) == 11, "every section above has its name");
     settings.startSections.reset();
+    // ImGui marks every edit a widget makes (MarkItemEdited, this frame's flag); the light buttons
+    // change the list.
+    requests.sceneEdited = ImGui::GetCurrentContext()->ActiveIdHasBeenEditedThisFrame || scene.lights.size() != lightsBefore;
     ImGui::PopItemWidth();
     ImGui::End();
     return requests;

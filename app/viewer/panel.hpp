@@ -68,6 +68,7 @@ struct PanelRequests {
     int msaa = 0;                 // anti-aliasing chosen: samples (1: off; 0: unchanged)
     bool toggleFullscreen = false;
     int modelCamera = -2;         // a camera picked: the model's camera N, or -1 for shadelab's framing (-2: unchanged)
+    bool sceneEdited = false;     // a widget changed the scene (or the panel's own settings) this frame
 };
 
 // A rectangle in ImGui's coordinates (window screen units, origin top-left).

@@ -50,8 +50,10 @@ bool SceneDocument::syncGeometry() {
         if (geometry_)
             for (std::size_t i = 0; i < scene_.objects.size() && i < geometry_->specs.size(); ++i)
                 scene_.objects[i].mesh = geometry_->specs[i];
+        ++revision_;
         throw;
     }
+    ++revision_, ++geometryRevision_;
     return true;
 }
 
@@ -67,6 +69,7 @@ void SceneDocument::replace(Scene next) {
     // Nothing above touched the document: commit.
     scene_ = std::move(next);
     geometry_ = std::move(geometry);
+    ++revision_, ++geometryRevision_;
     home_ = scene_.camera;
     startFraming(fileWidth, fileHeight);
 }
@@ -77,6 +80,7 @@ void SceneDocument::restore(Scene scene, const Camera& home, bool following, int
     auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(scene));
     scene_ = std::move(scene);
     geometry_ = std::move(geometry);
+    ++revision_, ++geometryRevision_;
     home_ = home;
     // A camera that followed the view follows it again (the view may have changed size since).
     bool model = false;
@@ -134,10 +138,10 @@ void SceneDocument::followView() {
     // A new placement only when it differs by more than rounding: recomputing the same one every frame
     // must not creep (a progressive area-light sum restarts on any camera change).
     const auto settle = [this](const Camera& placed) {
-        Camera& c = scene_.camera;
+        const Camera& c = scene_.camera;
         const float scale = std::max(glm::length(c.eye - c.target), 1e-6f);
         if (glm::length(placed.eye - c.eye) > 1e-4f * scale || glm::length(placed.target - c.target) > 1e-4f * scale)
-            c = placed;
+            placeCamera(placed);
     };
     if (framing_ == Framing::Model) {
         Camera placed = scene_.camera;
@@ -146,7 +150,7 @@ void SceneDocument::followView() {
         return;
     }
     // The home camera's target and the current viewing direction (an orbit keeps following).
-    Camera& c = scene_.camera;
+    const Camera& c = scene_.camera;
     glm::vec3 dir = c.eye - c.target;
     const float homeDistance = glm::length(home_.eye - home_.target);
     if (glm::length(dir) <= 0.0f || homeDistance <= 0.0f) return;
@@ -168,6 +172,7 @@ void SceneDocument::frameModel() {
     scene_.modelCamera = -1;  // framed by shadelab, not through the model's camera
     frameInsidePane(scene_.camera, bounds(), paneAspect(scene_.width, scene_.height));
     framing_ = Framing::Model;
+    ++revision_;
 }
 
 // The pane labels take the top `labelInset_` of each pane; a model centred in the pane keeps clear of
@@ -192,6 +197,7 @@ void SceneDocument::resetCamera() {
     scene_.camera = home_;
     scene_.modelCamera = -1;
     framing_ = Framing::Home;
+    ++revision_;
     followView();
 }
 
@@ -202,7 +208,21 @@ void SceneDocument::fitClipPlanes() {
     std::vector<glm::vec3> lights;
     for (const Light& l : scene_.lights)
         if (l.type != LightType::Directional) lights.push_back(l.position);
-    shadelab::fitClipPlanes(scene_.camera, bounds(), lights);
+    Camera fitted = scene_.camera;
+    shadelab::fitClipPlanes(fitted, bounds(), lights);
+    if (fitted.nearPlane != scene_.camera.nearPlane || fitted.farPlane != scene_.camera.farPlane) placeCamera(fitted);
+}
+
+void SceneDocument::placeCamera(const Camera& placed) {
+    scene_.camera = placed;
+    ++revision_;
+}
+
+void SceneDocument::setViewSize(int width, int height) {
+    if (scene_.width == width && scene_.height == height) return;
+    scene_.width = width;
+    scene_.height = height;
+    ++revision_;
 }
 
 float SceneDocument::minZoomDistance() const {

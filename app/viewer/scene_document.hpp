@@ -6,6 +6,7 @@
 #include "core/scene_geometry.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -16,9 +17,27 @@ public:
     // `geometry` must have been built from `scene` (the CLI built it already).
     SceneDocument(Scene scene, std::shared_ptr<const SceneGeometry> geometry);
 
-    Scene& scene() { return scene_; }
+    // The scene as it is now. Every change goes through edit() (or the document's own operations
+    // below), which count it: a reader that remembers revision() knows whether anything changed since
+    // it last looked (the viewer restarts a progressive image on that), without comparing scenes.
     const Scene& scene() const { return scene_; }
+    Scene& edit() {
+        ++revision_;
+        return scene_;
+    }
+    std::uint64_t revision() const { return revision_; }
+    // The panel's widgets edit the scene in place every frame and tell afterwards whether they changed
+    // anything (PanelRequests::sceneEdited): then markEdited() counts it.
+    Scene& sceneForWidgets() { return scene_; }
+    void markEdited() { ++revision_; }
+    // The 3D view's size in pixels is the scene's (a saved scene renders that image): an edit only
+    // when it differs.
+    void setViewSize(int width, int height);
+
     const std::shared_ptr<const SceneGeometry>& geometry() const { return geometry_; }
+    // Counts the geometry's rebuilds (syncGeometry, load, replace, restore): the renderer gets new
+    // meshes when it differs from the one they were uploaded at.
+    std::uint64_t geometryRevision() const { return geometryRevision_; }
     // The camera the scene came with (after auto-framing a model): what `R` restores.
     const Camera& homeCamera() const { return home_; }
 
@@ -78,7 +97,11 @@ private:
     Camera clearOfLabels(const Camera& camera, float& aspect) const;
     void frameInsidePane(Camera& camera, const BoundingSphere& bounds, float aspect) const;
 
+    // A camera placed by framing or by the clip planes: an edit only when it moved.
+    void placeCamera(const Camera& placed);
+
     Scene scene_;
+    std::uint64_t revision_ = 0, geometryRevision_ = 0;
     std::shared_ptr<const SceneGeometry> geometry_;
     Camera home_;
     Framing framing_ = Framing::Home;

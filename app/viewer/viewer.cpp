@@ -177,7 +177,7 @@ void Viewer::savePrefs() {
 bool Viewer::idle() const {
     if (framesToDraw_ > 0 || window_.eventCount() != eventsSeen_) return false;
     if (msaaSamples_ > 1 && !antiAliased_) return false;  // one more frame: the still view anti-aliased
-    if (!progressiveSignature_.empty() && !progressiveComplete_) return false;  // sampling goes on
+    if (progressiveFrom_ && !progressiveComplete_) return false;  // sampling goes on
     const ImGuiIO& io = ImGui::GetIO();
     for (bool down : io.MouseDown)
         if (down) return false;
@@ -199,9 +199,7 @@ bool Viewer::frame(bool last) {
     imgui_.setScale(window_.contentScale() * uiScale_);  // rebuilds the font only when it changed
     imgui_.newFrame();
     const FrameLayout l = layout();
-    Scene& scene = document_.scene();
-    scene.width = std::max(l.viewWidth, 1);   // the scene's size is the 3D view's, so a
-    scene.height = std::max(l.viewHeight, 1); // saved scene renders this image
+    document_.setViewSize(std::max(l.viewWidth, 1), std::max(l.viewHeight, 1));
     if (pendingProbe_) setProbe(pendingProbe_->x, pendingProbe_->y), pendingProbe_.reset();
     handleInput(l, keys);
     evaluateProbe();
@@ -210,12 +208,13 @@ bool Viewer::frame(bool last) {
     status_.currentPreset = int(playlist_.current());
     status_.uiScale = uiScale_;
     status_.msaa = msaaSamples_;
-    const Camera before = scene.camera;
+    const Camera before = document_.scene().camera;
     std::vector<Transform> transformsBefore;
-    for (const SceneObject& o : scene.objects) transformsBefore.push_back(o.transform);
-    const PanelRequests requests = settings_.showPanel ? drawPanel(scene, settings_, status_, l.panel,
-                                                                   probe_ ? &*probe_ : nullptr)
+    for (const SceneObject& o : document_.scene().objects) transformsBefore.push_back(o.transform);
+    const PanelRequests requests = settings_.showPanel ? drawPanel(document_.sceneForWidgets(), settings_, status_,
+                                                                   l.panel, probe_ ? &*probe_ : nullptr)
                                                        : PanelRequests{};
+    if (requests.sceneEdited) document_.markEdited();
     if (settings_.showPanel) status_.scrollToPreset = false, panelDrawn_ = true;  // the list has scrolled to it
     const Camera& after = document_.scene().camera;
     if (before.eye != after.eye || before.target != after.target || before.fovYDeg != after.fovYDeg)
@@ -333,14 +332,15 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys
     }
     // Only drags and wheel steps that start over the 3D view (not its bands) move the camera.
     const auto dragging = [&](int button) { return io.MouseDown[button] && inView(io.MouseClickedPos[button]); };
-    Camera& camera = document_.scene().camera;
-    if (dragging(0)) orbitCamera(camera, -io.MouseDelta.x * kOrbitRadPerUnit, io.MouseDelta.y * kOrbitRadPerUnit);
-    if ((dragging(1) || dragging(2)) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-        panCamera(camera, io.MouseDelta.x, io.MouseDelta.y, l.view.height);
+    const bool moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+    if (dragging(0) && moved)
+        orbitCamera(document_.edit().camera, -io.MouseDelta.x * kOrbitRadPerUnit, io.MouseDelta.y * kOrbitRadPerUnit);
+    if ((dragging(1) || dragging(2)) && moved) {
+        panCamera(document_.edit().camera, io.MouseDelta.x, io.MouseDelta.y, l.view.height);
         document_.stopFollowing();
     }
     if (io.MouseWheel != 0.0f && inView(io.MousePos)) {
-        zoomCamera(camera, io.MouseWheel, document_.minZoomDistance(), document_.maxZoomDistance());
+        zoomCamera(document_.edit().camera, io.MouseWheel, document_.minZoomDistance(), document_.maxZoomDistance());
         document_.stopFollowing();
     }
 }
@@ -349,7 +349,7 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys
 // faces the camera, so it stays under the cursor; with Shift along the viewing axis (a view height of
 // drag moves it by twice its depth). A directional light turns to come from the handle.
 void Viewer::dragLight(const FrameLayout& l) {
-    Scene& scene = document_.scene();
+    const Scene& scene = document_.scene();
     if (lightDrag_->light >= int(scene.lights.size())) return lightDrag_.reset();
     const ImGuiIO& io = ImGui::GetIO();
     const Camera& c = scene.camera;
@@ -367,7 +367,7 @@ void Viewer::dragLight(const FrameLayout& l) {
         if (depth <= 0.0f || along <= 1e-4f) return;  // behind the eye: nothing to follow
         moved = c.eye + ray * (depth / along);
     }
-    Light& light = scene.lights[std::size_t(lightDrag_->light)];
+    Light& light = document_.edit().lights[std::size_t(lightDrag_->light)];
     if (light.type != LightType::Directional) light.position = moved;
     else if (glm::length(c.target - moved) > 1e-4f) light.direction = glm::normalize(c.target - moved);
 }
@@ -393,19 +393,19 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
         }
     }
     if (io.WantCaptureKeyboard) return;  // typing in a field or dragging a slider
-    Scene& scene = document_.scene();
+    const auto scene = [this]() -> Scene& { return document_.edit(); };  // the keys that change the scene
     OverlayOptions& overlays = settings_.overlays;
     // Letters come as characters, so they follow the keyboard layout (Q is Q on an AZERTY keyboard).
     // With Ctrl held there are none: Ctrl+ shortcuts are read from the key codes below.
     for (int i = 0; i < io.InputQueueCharacters.Size; ++i) {
         switch (io.InputQueueCharacters[i]) {
-        case '1': scene.shading = ShadingMode::Flat, scene.layout = Layout::Single; break;
-        case '2': scene.shading = ShadingMode::Gouraud, scene.layout = Layout::Single; break;
-        case '3': scene.shading = ShadingMode::Phong, scene.layout = Layout::Single; break;
+        case '1': scene().shading = ShadingMode::Flat, scene().layout = Layout::Single; break;
+        case '2': scene().shading = ShadingMode::Gouraud, scene().layout = Layout::Single; break;
+        case '3': scene().shading = ShadingMode::Phong, scene().layout = Layout::Single; break;
         case 'c': case 'C':
-            scene.layout = scene.layout == Layout::Compare ? Layout::Single : Layout::Compare;
+            scene().layout = document_.scene().layout == Layout::Compare ? Layout::Single : Layout::Compare;
             break;
-        case 'd': case 'D': scene.layout = scene.layout == Layout::Diff ? Layout::Single : Layout::Diff; break;
+        case 'd': case 'D': scene().layout = document_.scene().layout == Layout::Diff ? Layout::Single : Layout::Diff; break;
         case 'w': case 'W': overlays.wireframe = !overlays.wireframe; break;
         case 'n': overlays.vertexNormals = !overlays.vertexNormals; break;
         case 'N': overlays.faceNormals = !overlays.faceNormals; break;
@@ -459,12 +459,12 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.frameModel) document_.frameModel();
     if (r.modelCamera >= 0) {
         // Through the model's camera, as --camera N: no longer framed by shadelab (F or R frame again).
-        document_.scene().modelCamera = r.modelCamera;
+        document_.edit().modelCamera = r.modelCamera;
         try {
-            frameIfNeeded(document_.scene(), *document_.geometry());
+            frameIfNeeded(document_.edit(), *document_.geometry());
             document_.stopFollowing();
         } catch (const InputError& e) {
-            document_.scene().modelCamera = -1;
+            document_.edit().modelCamera = -1;
             setStatus(e.what(), true);
         }
     } else if (r.modelCamera == -1) {
@@ -542,10 +542,10 @@ void Viewer::uploadGeometryIfChanged() {
         setStatus(std::string("mesh not changed: ") + e.what(), true);
     }
     const auto& geometry = document_.geometry();
-    if (geometry.get() != uploaded_) {
+    if (uploadedGeometry_ != document_.geometryRevision()) {
         renderer_->setGeometry(geometry);
         overlays_->setGeometry(geometry);
-        uploaded_ = geometry.get();
+        uploadedGeometry_ = document_.geometryRevision();
     }
     const Layout layout = document_.scene().layout;
     const std::size_t panes = layout == Layout::Compare ? 3 : layout == Layout::Diff ? 2 : 1;
@@ -607,18 +607,17 @@ void Viewer::renderScene(const RenderTarget& view, bool complete) {
     for (const Light& light : scene.lights)
         if (light.type == LightType::Area) samples = std::max(samples, light.samples.x * light.samples.y);
     if (samples <= 1) {
-        progressiveSignature_.clear();
+        progressiveFrom_.reset();
         status_.progress.clear();
         renderer_->render(scene, view);
         return;
     }
     // Everything the image depends on; a change restarts the sum.
-    std::string signature = sceneToJson(scene, "") + std::to_string(reinterpret_cast<std::uintptr_t>(renderer_.get())) +
-                            "/" + std::to_string(reinterpret_cast<std::uintptr_t>(uploaded_)) + "/" +
-                            std::to_string(view.width) + "x" + std::to_string(view.height);
-    const bool restart = signature != progressiveSignature_;
+    const std::array<std::uint64_t, 5> from = {document_.revision(), document_.geometryRevision(), rendererGeneration_,
+                                               std::uint64_t(view.width), std::uint64_t(view.height)};
+    const bool restart = from != progressiveFrom_;
     if (restart) {
-        progressiveSignature_ = std::move(signature);
+        progressiveFrom_ = from;
         progressiveStride_ = options_.progressiveStride > 0 ? options_.progressiveStride
                                                              : adaptStride(progressiveStride_, samples, lastPassMs_);
     }
@@ -684,7 +683,8 @@ void Viewer::reloadShaders() {
         renderer->render(scene, RenderTarget{0, scene.width, scene.height});
         renderer_ = std::move(renderer);
         overlays_ = std::move(overlays);
-        uploaded_ = document_.geometry().get();
+        ++rendererGeneration_;
+        uploadedGeometry_ = document_.geometryRevision();
         setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (no shaders/ folder: start with --shader-dir DIR to edit them)"
                                              : "reloaded shaders from " + options_.shaderDir,
                   false);

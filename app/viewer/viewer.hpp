@@ -22,6 +22,8 @@
 #include <chrono>
 #include <glm/vec2.hpp>
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -123,7 +125,9 @@ private:
     ImGuiLayer imgui_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<OverlayRenderer> overlays_;
-    const SceneGeometry* uploaded_ = nullptr;  // what the renderers were last given
+    // The document's geometry revision the renderers were last given (none yet: the first frame uploads).
+    std::optional<std::uint64_t> uploadedGeometry_;
+    std::uint64_t rendererGeneration_ = 0;  // counts the renderers (F5 makes a new one)
     SceneDocument document_;
     PlaylistNavigator playlist_;
     ViewSettings settings_;
@@ -148,8 +152,10 @@ private:
     bool antiAliased_ = false;
     bool antiAliasThisFrame_ = false;
     bool screenshotRequested_ = false;
-    // Progressive sampling: what the sum so far was drawn from, the stride, and the last pass's time.
-    std::string progressiveSignature_;
+    // Progressive sampling: what the sum so far was drawn from (the scene's and the geometry's
+    // revisions, the renderer, the view's size; none while the scene needs no sampling), the stride,
+    // and the last pass's time.
+    std::optional<std::array<std::uint64_t, 5>> progressiveFrom_;
     int progressiveStride_ = 0;
     double lastPassMs_ = 0.0;
     bool passDrawnLastFrame_ = false;

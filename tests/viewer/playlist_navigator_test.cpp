@@ -67,9 +67,9 @@ TEST(PlaylistNavigator, KeepsEditsWhileSteppingAndResetReloadsTheFile) {
     SceneDocument& doc = *f.document;
     PlaylistNavigator& nav = *f.navigator;
     nav.next(doc);
-    doc.scene().shading = ShadingMode::Flat;                  // the lecturer's live edits ...
-    doc.scene().objects[0].material.ke = 300.0f;
-    doc.scene().camera.eye = glm::vec3(1, 2, 3);
+    doc.edit().shading = ShadingMode::Flat;                  // the lecturer's live edits ...
+    doc.edit().objects[0].material.ke = 300.0f;
+    doc.edit().camera.eye = glm::vec3(1, 2, 3);
     nav.next(doc);
     EXPECT_EQ(doc.scene().shading, ShadingMode::Phong);       // ... stay with their preset
     nav.previous(doc);
@@ -91,7 +91,7 @@ TEST(PlaylistNavigator, KeepsEditsWhileSteppingAndResetReloadsTheFile) {
     EXPECT_EQ(doc.scene().shading, ShadingMode::Phong);       // nothing of the old edits came back
 
     // A file broken meanwhile: reset refuses, the preset stays as it is on screen.
-    doc.scene().shading = ShadingMode::Gouraud;
+    doc.edit().shading = ShadingMode::Gouraud;
     writeText(f.dir + "/02-two.json", R"({"shading": "toon"})");
     EXPECT_THROW(nav.reset(doc), InputError);
     EXPECT_EQ(doc.scene().shading, ShadingMode::Gouraud);
@@ -102,7 +102,7 @@ TEST(PlaylistNavigator, ResetAppliesTheCommandLineOverridesAgain) {
     Fixture f("overrides", [](Scene& s) { s.shading = ShadingMode::Gouraud; });
     SceneDocument& doc = *f.document;
     EXPECT_EQ(doc.scene().shading, ShadingMode::Gouraud);  // 01-one.json says flat
-    doc.scene().shading = ShadingMode::Phong;
+    doc.edit().shading = ShadingMode::Phong;
     f.navigator->reset(doc);
     EXPECT_EQ(doc.scene().shading, ShadingMode::Gouraud);
 }
@@ -118,7 +118,7 @@ TEST(PlaylistNavigator, AFailingStepChangesNothing) {
     auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(first));
     SceneDocument doc(std::move(first), geometry);
     PlaylistNavigator nav(std::move(presets), {});
-    doc.scene().objects[0].material.ke = 77.0f;
+    doc.edit().objects[0].material.ke = 77.0f;
     EXPECT_THROW(nav.next(doc), std::exception);
     EXPECT_EQ(nav.current(), 0u);
     EXPECT_EQ(doc.scene().title, "sphere");

@@ -30,7 +30,7 @@ SceneDocument defaultDocument() {
 TEST(SceneDocument, BadFilesLeaveTheSceneAsItWas) {
     const std::string dir = outDir("bad_files");
     SceneDocument doc = defaultDocument();
-    doc.scene().objects[0].material.ke = 123.0f;  // an edit that must survive
+    doc.edit().objects[0].material.ke = 123.0f;  // an edit that must survive
     const std::string before = sceneToJson(doc.scene(), dir);
     const SceneGeometry* geometry = doc.geometry().get();
 
@@ -54,8 +54,8 @@ TEST(SceneDocument, LoadReplacesSceneGeometryAndHomeCamera) {
     writeText(dir + "/cube.json",
               "{\"mesh\": {\"type\": \"cube\"}, \"camera\": {\"eye\": [4, 4, 4]}, \"size\": [64, 64]}");
     SceneDocument doc = defaultDocument();
-    doc.scene().width = 800;  // the view's size
-    doc.scene().height = 600;
+    doc.edit().width = 800;  // the view's size
+    doc.edit().height = 600;
     doc.load(dir + "/cube.json");
     EXPECT_EQ(doc.scene().objects[0].mesh.type, MeshSpec::Type::Cube);
     EXPECT_EQ(doc.geometry()->meshes[0].triangleCount(), 12u);
@@ -67,12 +67,12 @@ TEST(SceneDocument, SyncRebuildsOnlyWhenAMeshSpecChanges) {
     SceneDocument doc = defaultDocument();
     const auto first = doc.geometry();
     EXPECT_FALSE(doc.syncGeometry());
-    doc.scene().objects[0].material.kd = 0.2f;  // not a mesh edit
+    doc.edit().objects[0].material.kd = 0.2f;  // not a mesh edit
     EXPECT_FALSE(doc.syncGeometry());
     EXPECT_EQ(doc.geometry(), first);
 
-    doc.scene().objects[0].mesh.slices = 8;
-    doc.scene().objects[0].mesh.stacks = 4;
+    doc.edit().objects[0].mesh.slices = 8;
+    doc.edit().objects[0].mesh.stacks = 4;
     EXPECT_TRUE(doc.syncGeometry());
     EXPECT_EQ(doc.geometry()->triangleCount(), 2u * 8u * 3u);
     EXPECT_FALSE(doc.syncGeometry());
@@ -81,8 +81,8 @@ TEST(SceneDocument, SyncRebuildsOnlyWhenAMeshSpecChanges) {
 TEST(SceneDocument, FailedRebuildPutsTheOldSpecBack) {
     SceneDocument doc = defaultDocument();
     const MeshSpec good = doc.scene().objects[0].mesh;
-    doc.scene().objects[0].mesh.type = MeshSpec::Type::Gltf;
-    doc.scene().objects[0].mesh.path = doc.scene().objects[0].mesh.resolvedPath = "/nonexistent/model.glb";
+    doc.edit().objects[0].mesh.type = MeshSpec::Type::Gltf;
+    doc.edit().objects[0].mesh.path = doc.edit().objects[0].mesh.resolvedPath = "/nonexistent/model.glb";
     EXPECT_THROW(doc.syncGeometry(), std::exception);
     EXPECT_EQ(doc.scene().objects[0].mesh, good);
     EXPECT_FALSE(doc.syncGeometry());
@@ -100,13 +100,13 @@ TEST(SceneDocument, FramingFollowsTheViewUntilZoomed) {
     };
     doc.followView();
     EXPECT_EQ(doc.scene().camera.eye, scene.eye);  // the scene's own size: its own camera
-    doc.scene().width = 1920;                      // wider: never moved
+    doc.edit().width = 1920;                      // wider: never moved
     doc.followView();
     EXPECT_EQ(doc.scene().camera.eye, scene.eye);
     for (Layout layout : {Layout::Compare, Layout::Diff, Layout::Single})
         for (auto [w, h] : {std::pair{1440, 1056}, std::pair{900, 700}, std::pair{400, 900}, std::pair{1280, 200}}) {
-            doc.scene().layout = layout;
-            doc.scene().width = w, doc.scene().height = h;
+            doc.edit().layout = layout;
+            doc.edit().width = w, doc.edit().height = h;
             doc.followView();
             EXPECT_TRUE(sphereInView(doc.scene().camera, sphere, paneAspect())) << w << "x" << h << " layout " << int(layout);
             EXPECT_EQ(doc.scene().camera.target, scene.target);
@@ -116,23 +116,23 @@ TEST(SceneDocument, FramingFollowsTheViewUntilZoomed) {
             EXPECT_EQ(doc.scene().camera.eye, placed.eye);
         }
     // Zoomed: the camera stays where the user put it.
-    doc.scene().width = 1280, doc.scene().height = 720, doc.scene().layout = Layout::Single;
+    doc.edit().width = 1280, doc.edit().height = 720, doc.edit().layout = Layout::Single;
     doc.followView();
     doc.stopFollowing();
-    doc.scene().camera.eye *= 0.5f;
+    doc.edit().camera.eye *= 0.5f;
     const glm::vec3 zoomed = doc.scene().camera.eye;
-    doc.scene().layout = Layout::Compare;
+    doc.edit().layout = Layout::Compare;
     doc.followView();
     EXPECT_EQ(doc.scene().camera.eye, zoomed);
     EXPECT_FALSE(doc.following());
     // F frames the whole model for this pane, and keeps doing so.
     doc.frameModel();
     EXPECT_TRUE(sphereInView(doc.scene().camera, sphere, paneAspect()));
-    doc.scene().width = 600;
+    doc.edit().width = 600;
     doc.followView();
     EXPECT_TRUE(sphereInView(doc.scene().camera, sphere, paneAspect()));
     // R: the scene's camera again.
-    doc.scene().width = 1280, doc.scene().layout = Layout::Single;
+    doc.edit().width = 1280, doc.edit().layout = Layout::Single;
     doc.resetCamera();
     EXPECT_EQ(doc.scene().camera.eye, scene.eye);
     EXPECT_TRUE(doc.following());
@@ -141,12 +141,12 @@ TEST(SceneDocument, FramingFollowsTheViewUntilZoomed) {
 TEST(SceneDocument, SaveWritesALoadableSceneOrNothing) {
     const std::string dir = outDir("save");
     SceneDocument doc = defaultDocument();
-    doc.scene().objects[0].material.ke = 250.0f;
+    doc.edit().objects[0].material.ke = 250.0f;
     doc.save(dir + "/ok.json");
     EXPECT_FLOAT_EQ(loadSceneFile(dir + "/ok.json").objects[0].material.ke, 250.0f);
 
     EXPECT_THROW(doc.save(dir + "/no/such/folder/x.json"), InputError);
-    doc.scene().camera.target = doc.scene().camera.eye;  // a camera the parser refuses
+    doc.edit().camera.target = doc.scene().camera.eye;  // a camera the parser refuses
     EXPECT_THROW(doc.save(dir + "/bad.json"), InputError);
     EXPECT_FALSE(fs::exists(dir + "/bad.json"));
     for (const auto& entry : fs::directory_iterator(dir))  // no temporary left behind
@@ -154,4 +154,45 @@ TEST(SceneDocument, SaveWritesALoadableSceneOrNothing) {
 }
 
 }  // namespace
+// The viewer restarts a progressive image and re-uploads meshes by comparing revisions: every change
+// counts, and what changes nothing (a frame's framing, clip planes and view size, all recomputed every
+// frame) does not, or a still view would never finish sampling.
+TEST(SceneDocument, RevisionsCountChangesAndOnlyChanges) {
+    SceneDocument doc = defaultDocument();
+    doc.setViewSize(800, 600);
+    doc.followView();
+    doc.fitClipPlanes();
+    const std::uint64_t settled = doc.revision(), geometry = doc.geometryRevision();
+    for (int frame = 0; frame < 3; ++frame) {  // still frames
+        doc.setViewSize(800, 600);
+        doc.followView();
+        doc.fitClipPlanes();
+        EXPECT_EQ(doc.scene().objects.size(), 1u);  // reading is not editing
+    }
+    EXPECT_EQ(doc.revision(), settled);
+    EXPECT_FALSE(doc.syncGeometry());
+    EXPECT_EQ(doc.geometryRevision(), geometry);
+
+    doc.setViewSize(1024, 600);  // a resize: a new size, and the camera follows it
+    EXPECT_GT(doc.revision(), settled);
+    std::uint64_t r = doc.revision();
+    doc.edit().objects[0].material.ke = 64.0f;
+    EXPECT_EQ(doc.revision(), r + 1);
+    r = doc.revision();
+    doc.sceneForWidgets().objects[0].material.kd = 0.5f;  // a widget's edit, counted when the panel says so
+    doc.markEdited();
+    EXPECT_EQ(doc.revision(), r + 1);
+    r = doc.revision();
+    doc.resetCamera();
+    EXPECT_GT(doc.revision(), r);
+
+    r = doc.revision();
+    doc.edit().objects[0].mesh.type = MeshSpec::Type::Torus;  // a mesh edit: new geometry
+    EXPECT_TRUE(doc.syncGeometry());
+    EXPECT_EQ(doc.geometryRevision(), geometry + 1);
+    EXPECT_GT(doc.revision(), r);
+    doc.replace(defaultScene());  // a preset or a file
+    EXPECT_EQ(doc.geometryRevision(), geometry + 2);
+}
+
 }  // namespace shadelab
