@@ -88,8 +88,6 @@ void upload(gl::VertexArray& vao, gl::Buffer& vbo, const std::vector<float>& dat
 
 void copyMat(float (&dst)[16], const glm::mat4& m) { std::memcpy(dst, glm::value_ptr(m), sizeof dst); }
 
-std::size_t alignUp(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
-
 }  // namespace
 
 OverlayRenderer::LineProgram OverlayRenderer::lineProgram(gl::Program program) {
@@ -122,11 +120,7 @@ const OverlayRenderer::LineProgram& OverlayRenderer::useWidth(float pixels) {
 
 OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders)
     : thin_(lineProgram(buildProgram("overlay", shaders))),
-      wide_(lineProgram(buildProgram("overlay", shaders, {}, "", "overlay_wide"))) {
-    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniformAlignment_);
-    if (uniformAlignment_ <= 0) uniformAlignment_ = 256;
-    uniforms_ = gl::makeBuffer();
-}
+      wide_(lineProgram(buildProgram("overlay", shaders, {}, "", "overlay_wide"))) {}
 
 void OverlayRenderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     geometry_ = std::move(geometry);
@@ -159,28 +153,23 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
     const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
 
-    // One upload per frame: a FrameBlock per pane, an ObjectBlock per object, then an identity
-    // ObjectBlock for the light markers (which are given in world space). Only the matrices are read.
-    const auto align = std::size_t(uniformAlignment_);
-    const std::size_t frameStride = alignUp(sizeof(gpu::FrameBlock), align);
-    const std::size_t objectStride = alignUp(sizeof(gpu::ObjectBlock), align);
-    const std::size_t objectsOffset = frameStride * panes.size();
-    std::vector<unsigned char> staging(objectsOffset + objectStride * (objects + 1));
+    // A FrameBlock per pane, an ObjectBlock per object, then an identity ObjectBlock for the light
+    // markers (which are given in world space). Only the matrices are read.
+    uniforms_.begin(panes.size(), objects + 1);
     for (std::size_t p = 0; p < panes.size(); ++p) {
         gpu::FrameBlock b{};
         const float aspect = float(panes[p].width) / float(std::max(panes[p].height, 1));
         copyMat(b.clipFromWorld, clipFromView(scene.camera, aspect) * viewFromWorld(scene.camera));
-        std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
+        uniforms_.setFrame(p, b);
     }
     for (std::size_t o = 0; o <= objects; ++o) {
         gpu::ObjectBlock b{};
         const glm::mat4 world = o < objects ? worldFromObject(scene.objects[o].transform) : glm::mat4(1.0f);
         copyMat(b.worldFromObject, world);
         copyMat(b.normalWorldFromObject, glm::mat4(normalWorldFromObject(world)));
-        std::memcpy(staging.data() + objectsOffset + o * objectStride, &b, sizeof b);
+        uniforms_.setObject(o, b);
     }
-    glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.get());
-    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(staging.size()), staging.data(), GL_STREAM_DRAW);
+    uniforms_.upload();
 
     // Lines are tested against the surface's depth but do not write it, and blend so the shading shows
     // through the wireframe of a dense mesh.
@@ -195,16 +184,13 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
     current_ = nullptr;
     lineWidth_ = options.lineWidth;
 
-    const std::size_t identityOffset = objectsOffset + objects * objectStride;
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const Pane& pane = panes[p];
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
         paneWidth_ = float(std::max(pane.width, 1)), paneHeight_ = float(std::max(pane.height, 1));
-        glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
-                          sizeof(gpu::FrameBlock));
+        uniforms_.bindFrame(p);
         for (std::size_t o = 0; o < objects; ++o) {
-            glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
-                              GLintptr(objectsOffset + o * objectStride), sizeof(gpu::ObjectBlock));
+            uniforms_.bindObject(o);
             const glm::vec3 s = glm::abs(scene.objects[o].transform.scale);
             const float normalLength = options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z});
             const std::pair<bool, LineKind> kinds[] = {
@@ -224,11 +210,11 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
                 glDrawArrays(GL_LINES, 0, l.vertexCount);
             }
         }
-        if (options.lightMarkers) drawLights(scene, GLintptr(identityOffset));
+        if (options.lightMarkers) drawLights(scene, objects);
         const int marked = options.sampleMarkersLight;
         if (marked >= 0 && std::size_t(marked) < scene.lights.size() && scene.lights[std::size_t(marked)].type == LightType::Area)
-            drawAreaSamples(scene, scene.lights[std::size_t(marked)], GLintptr(identityOffset));
-        if (!arrows.empty()) drawArrows(scene, pane, int(p), arrows, GLintptr(identityOffset));
+            drawAreaSamples(scene, scene.lights[std::size_t(marked)], objects);
+        if (!arrows.empty()) drawArrows(scene, pane, int(p), arrows, objects);
     }
     glBindVertexArray(0);
     glDepthMask(GL_TRUE);
@@ -236,7 +222,7 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
     glDisable(GL_BLEND);
 }
 
-void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffset) {
+void OverlayRenderer::drawLights(const Scene& scene, std::size_t identityObject) {
     // A three-axis cross at each point light (a spot light: with its axis and outer cone); for a
     // directional light a cross up-light of the target and a line along the direction the light travels; for an area light its rectangle, normal and
     // sample positions around the cross at its centre. Sizes follow the distance to the eye, so a
@@ -301,15 +287,14 @@ void OverlayRenderer::drawLights(const Scene& scene, GLintptr identityObjectOffs
         const glm::vec3 c = peak > 1e-3f ? light.color / peak : glm::vec3(1.0f);
         draws.emplace_back(first, glm::vec4(c, 1.0f));
     }
-    drawWorldLines(data, draws, identityObjectOffset);
+    drawWorldLines(data, draws, identityObject);
 }
 
 void OverlayRenderer::drawWorldLines(const std::vector<float>& data, const std::vector<std::pair<GLint, glm::vec4>>& runs,
-                                     GLintptr identityObjectOffset) {
+                                     std::size_t identityObject) {
     if (runs.empty()) return;
     upload(worldLines_.vao, worldLines_.vertices, data, GL_STREAM_DRAW);
-    glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(), identityObjectOffset,
-                      sizeof(gpu::ObjectBlock));
+    uniforms_.bindObject(identityObject);
     const LineProgram& p = useWidth(lineWidth_);
     glUniform1f(p.normalLength, 0.0f);
     glBindVertexArray(worldLines_.vao.get());
@@ -320,7 +305,7 @@ void OverlayRenderer::drawWorldLines(const std::vector<float>& data, const std::
     }
 }
 
-void OverlayRenderer::drawAreaSamples(const Scene& scene, const Light& light, GLintptr identityObjectOffset) {
+void OverlayRenderer::drawAreaSamples(const Scene& scene, const Light& light, std::size_t identityObject) {
     // The rectangle, its nx x ny stratification cells (faint), and a small square with a cross at each
     // sample position: areaSamplePosition(), the positions the shaders light with, so the jitter inside
     // each cell is what the picture uses.
@@ -366,11 +351,11 @@ void OverlayRenderer::drawAreaSamples(const Scene& scene, const Light& light, GL
             pushVertex(data, c[1]);
             pushVertex(data, c[3]);
         }
-    drawWorldLines(data, runs, identityObjectOffset);
+    drawWorldLines(data, runs, identityObject);
 }
 
 void OverlayRenderer::drawArrows(const Scene& scene, const Pane& pane, int paneIndex,
-                                 const std::vector<OverlayArrow>& arrows, GLintptr identityObjectOffset) {
+                                 const std::vector<OverlayArrow>& arrows, std::size_t identityObject) {
     std::vector<float> data;
     std::vector<std::pair<GLint, glm::vec4>> runs;
     const Camera& cam = scene.camera;
@@ -410,7 +395,7 @@ void OverlayRenderer::drawArrows(const Scene& scene, const Pane& pane, int paneI
             pushVertex(data, base + 0.45f * head * across);
         }
     }
-    drawWorldLines(data, runs, identityObjectOffset);
+    drawWorldLines(data, runs, identityObject);
 }
 
 }  // namespace shadelab

@@ -8,6 +8,7 @@
 #include "render/gl_handles.hpp"
 #include "render/renderer.hpp"
 #include "render/shader_library.hpp"
+#include "render/uniform_stager.hpp"
 
 #include <glm/vec4.hpp>
 
@@ -67,11 +68,11 @@ private:
     const Lines& lines(std::size_t object, LineKind kind);
     // Lines given in world space (light markers, sample markers, arrows), one colour per run.
     void drawWorldLines(const std::vector<float>& data, const std::vector<std::pair<GLint, glm::vec4>>& runs,
-                        GLintptr identityObjectOffset);
-    void drawLights(const Scene& scene, GLintptr identityObjectOffset);
-    void drawAreaSamples(const Scene& scene, const Light& light, GLintptr identityObjectOffset);
+                        std::size_t identityObject);
+    void drawLights(const Scene& scene, std::size_t identityObject);
+    void drawAreaSamples(const Scene& scene, const Light& light, std::size_t identityObject);
     void drawArrows(const Scene& scene, const Pane& pane, int paneIndex, const std::vector<OverlayArrow>& arrows,
-                    GLintptr identityObjectOffset);
+                    std::size_t identityObject);
 
     // One-pixel GL lines, and lines widened to quads by shaders/overlay_wide.geom.
     struct LineProgram {
@@ -88,8 +89,7 @@ private:
     std::vector<std::array<Lines, kLineKinds>> lines_;  // per object
     std::vector<float> objectRadius_;                   // per object, object space
     Lines worldLines_;                                  // rebuilt every draw (a few hundred vertices at most)
-    gl::Buffer uniforms_;
-    GLint uniformAlignment_ = 256;
+    UniformStager uniforms_;  // a FrameBlock per pane; an ObjectBlock per object, then the identity
 };
 
 }  // namespace shadelab

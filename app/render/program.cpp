@@ -1,8 +1,12 @@
 #include "render/program.hpp"
 
+#include "core/error.hpp"
+
 #include "core/glsl_include.hpp"
 #include "render/gpu_blocks.hpp"
 
+#include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -82,6 +86,18 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
         if (const GLint location = glGetUniformLocation(program.get(), sampler); location >= 0) glUniform1i(location, unit);
     glUseProgram(GLuint(previous));
     return program;
+}
+
+void checkGl(const char* where) {
+    const GLenum e = glGetError();
+    if (e == GL_OUT_OF_MEMORY)  // the request was too big for this GL: an input error, like the budget's
+        throw GlOutOfMemory(std::string("the GL ran out of memory in ") + where +
+                         " (ask for less: a smaller --size, fewer shadowed lights or smaller shadow maps)");
+    if (e != GL_NO_ERROR) {
+        char code[16];
+        std::snprintf(code, sizeof code, "0x%04x", e);
+        throw std::runtime_error(std::string("GL error ") + code + " in " + where);
+    }
 }
 
 }  // namespace shadelab

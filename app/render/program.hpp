@@ -22,6 +22,10 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
                          const std::vector<std::string>& defines = {}, const std::string& vertexName = "",
                          const std::string& geometryName = "");
 
+// Throws on a pending GL error: GlOutOfMemory (an input error: ask for less) or std::runtime_error,
+// naming `where`.
+void checkGl(const char* where);
+
 // The vertex stage of the image passes: one triangle over the viewport (shaders/fullscreen.vert).
 inline const char* const kFullscreenVertex = "fullscreen";
 

@@ -8,6 +8,7 @@
 #include "render/gpu_blocks.hpp"
 #include "render/multisample_target.hpp"
 #include "render/program.hpp"
+#include "render/program_cache.hpp"
 
 #include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -21,26 +22,11 @@
 namespace shadelab {
 namespace {
 
-const char* kProgramNames[3] = {"flat", "gouraud", "phong"};  // by ShadingMode
-
 void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
     dst[0] = v.x, dst[1] = v.y, dst[2] = v.z, dst[3] = w;
 }
 
-int attenuationKind(const Light& l) {
-    if (l.type == LightType::Directional || l.attenuation != Attenuation::InverseSquare) return SL_ATTENUATION_NONE;
-    return l.range > 0.0f ? SL_ATTENUATION_INVERSE_SQUARE_RANGE : SL_ATTENUATION_INVERSE_SQUARE;
-}
 
-int lightKind(const Light& l) {
-    switch (l.type) {
-    case LightType::Point: return SL_LIGHT_POINT;
-    case LightType::Directional: return SL_LIGHT_DIRECTIONAL;
-    case LightType::Area: return SL_LIGHT_AREA;
-    case LightType::Spot: return SL_LIGHT_SPOT;
-    }
-    return SL_LIGHT_POINT;
-}
 
 gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
     gpu::FrameBlock b{};
@@ -103,7 +89,6 @@ gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, const
     return b;
 }
 
-std::size_t alignUp(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
 
 // A width x height texture read with texelFetch (nearest, one level).
 gl::Texture makeImageTexture(GLint internalFormat, GLenum format, GLenum type, int width, int height) {
@@ -139,345 +124,57 @@ unsigned bayerRank(unsigned x, unsigned y, int bits) {
     return rank;
 }
 
-void checkGl(const char* where) {
-    const GLenum e = glGetError();
-    if (e == GL_OUT_OF_MEMORY)  // the request was too big for this GL: an input error, like the budget's
-        throw GlOutOfMemory(std::string("the GL ran out of memory in ") + where +
-                         " (ask for less: a smaller --size, fewer shadowed lights or smaller shadow maps)");
-    if (e != GL_NO_ERROR) {
-        char code[16];
-        std::snprintf(code, sizeof code, "0x%04x", e);
-        throw std::runtime_error(std::string("GL error ") + code + " in " + where);
-    }
-}
 
 }  // namespace
 
-std::vector<std::string> programDefines(const Scene& s) {
-    const std::size_t count = std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS);
-    static const char* const kKinds[] = {"SL_LIGHT_POINT", "SL_LIGHT_DIRECTIONAL", "SL_LIGHT_AREA", "SL_LIGHT_SPOT"};
-    static const char* const kAttenuations[] = {"SL_ATTENUATION_NONE", "SL_ATTENUATION_INVERSE_SQUARE",
-                                                "SL_ATTENUATION_INVERSE_SQUARE_RANGE"};
-    // Per light, as comma-separated lists that shaders/lighting.glsl reads into constant arrays.
-    std::string kinds, attenuations, samplesX, samplesY;
-    bool area = false;
-    for (std::size_t l = 0; l < count; ++l) {
-        const Light& light = s.lights[l];
-        const char* comma = l > 0 ? ", " : "";
-        kinds += comma + std::string(kKinds[lightKind(light)]);
-        attenuations += comma + std::string(kAttenuations[attenuationKind(light)]);
-        samplesX += comma + std::to_string(light.type == LightType::Area ? light.samples.x : 1);
-        samplesY += comma + std::to_string(light.type == LightType::Area ? light.samples.y : 1);
-        area = area || light.type == LightType::Area;
-    }
-    std::vector<std::string> d;
-    d.push_back("SL_LIGHT_COUNT " + std::to_string(count));
-    if (count > 0) {
-        d.push_back("SL_LIGHT_KINDS " + kinds);
-        d.push_back("SL_LIGHT_ATTENUATIONS " + attenuations);
-        d.push_back("SL_AREA_SAMPLES_X " + samplesX);
-        d.push_back("SL_AREA_SAMPLES_Y " + samplesY);
-    }
-    if (area) d.push_back("SL_AREA_LIGHTS 1");
-    d.push_back(std::string("SL_REFLECTION ") +
-                (s.reflection == ReflectionModel::Phong ? "SL_REFLECTION_PHONG" : "SL_REFLECTION_BLINN_PHONG"));
-    d.push_back(std::string("SL_ENCODING ") +
-                (s.outputEncoding == OutputEncoding::Srgb ? "SL_ENCODING_SRGB" : "SL_ENCODING_LINEAR"));
-    // The model extensions and term isolation: only scenes that use them get these defines, so every
-    // other scene compiles to the programs it always did.
-    if (s.specularNormalization == SpecularNormalization::Energy)
-        d.push_back("SL_SPECULAR_NORMALIZATION SL_NORMALIZATION_ENERGY");
-    if (s.fresnel != FresnelMode::None)
-        d.push_back(std::string("SL_FRESNEL ") +
-                    (s.fresnel == FresnelMode::Schlick ? "SL_FRESNEL_SCHLICK" : "SL_FRESNEL_EXACT"));
-    switch (s.show.term) {
-    case ShowTerm::All: break;
-    case ShowTerm::Ambient: d.push_back("SL_SHOW SL_SHOW_AMBIENT"); break;
-    case ShowTerm::Diffuse: d.push_back("SL_SHOW SL_SHOW_DIFFUSE"); break;
-    case ShowTerm::Specular: d.push_back("SL_SHOW SL_SHOW_SPECULAR"); break;
-    case ShowTerm::Unlit: d.push_back("SL_SHOW SL_SHOW_UNLIT"); break;
-    case ShowTerm::Light:
-        d.push_back("SL_SHOW SL_SHOW_LIGHT");
-        d.push_back("SL_SHOW_LIGHT_INDEX " + std::to_string(s.show.light));
-        break;
-    }
-    // Only scenes with shadows get these: without them the programs are the ones they always were.
-    if (s.shadows.enabled && count > 0) {
-        d.push_back("SL_SHADOWS 1");
-        d.push_back("SL_SHADOW_PCF " + std::to_string(s.shadows.pcf));
-        std::string layers;
-        for (int first : shadowLayout(s.lights, count).firstLayer) layers += (layers.empty() ? "" : ", ") + std::to_string(first);
-        d.push_back("SL_SHADOW_LAYERS " + layers);
-    }
-    return d;
-}
 
 Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders, RendererOptions options)
-    : shaders_(std::move(shaders)), options_(options) {
+    : options_(options), programs_(std::move(shaders), options.packedFlatVertices), meshes_(options) {
     const int version = gladLoadGL(getProcAddress);
     if (version == 0) throw std::runtime_error("could not load OpenGL entry points");
     if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
         throw std::runtime_error("OpenGL 3.3 core is needed; the context offers " +
                                  std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
                                  std::to_string(GLAD_VERSION_MINOR(version)));
-    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniformAlignment_);
-    if (uniformAlignment_ <= 0) uniformAlignment_ = 256;
-    uniforms_ = gl::makeBuffer();
+    uniforms_ = std::make_unique<UniformStager>();
     checkGl("renderer set-up");
 }
 
 Renderer::~Renderer() = default;
 
-std::string Renderer::glRenderer() const { return reinterpret_cast<const char*>(glGetString(GL_RENDERER)); }
-std::string Renderer::glVersion() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
-
 void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
-    geometry_ = std::move(geometry);
-    gpuMeshes_.clear();
-    gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
-    orderedMeshes_.clear();
-    orderedMeshes_.resize(gpuMeshes_.size());
-    objectParts_.clear();
-    objectBoxes_.clear();
-    objectTriangles_.clear();
-    objectVariesColor_.clear();
-    objectImages_.clear();
-    objectTextures_.clear();
+    meshes_.setGeometry(std::move(geometry));
     shadowMaps_.invalidate();
-    if (!geometry_) return;
-    objectInstanceGroups_.clear();
-    objectInstances_.clear();
-    objectInstanceBuffers_.clear();
-    for (std::size_t o = 0; o < geometry_->meshes.size(); ++o) {
-        const Mesh& mesh = drawnMesh(o);
-        objectInstanceGroups_.emplace_back();
-        objectInstances_.emplace_back();
-        objectInstanceBuffers_.emplace_back();
-        for (std::size_t p = 0; p < mesh.parts.size(); ++p)
-            for (bool mirrored : {false, true}) {
-                InstanceGroup g;
-                g.part = p;
-                g.first = GLsizei(objectInstances_.back().size());
-                g.mirrored = mirrored;
-                for (const glm::mat4& t : mesh.parts[p].instances)
-                    if ((glm::determinant(glm::mat3(t)) < 0.0f) == mirrored) objectInstances_.back().push_back(t);
-                g.count = GLsizei(objectInstances_.back().size()) - g.first;
-                if (g.count > 0) objectInstanceGroups_.back().push_back(g);
-            }
-        objectVariesColor_.push_back(mesh.variesColor());
-        objectImages_.push_back(mesh.textures);
-        objectTextures_.emplace_back(mesh.textures.size());
-        objectParts_.push_back(mesh.parts);
-        if (mesh.parts.empty()) {
-            MeshPart whole;
-            whole.indexCount = std::uint32_t(mesh.indices.size());
-            objectParts_.back().push_back(whole);
-        }
-        // Bounds and triangle counts of every instance: the baked mesh's.
-        const Mesh& baked = geometry_->meshes[o];
-        Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
-        for (const glm::vec3& p : baked.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
-        if (baked.positions.empty()) box = Aabb{};
-        objectBoxes_.push_back(box);
-        objectTriangles_.push_back(baked.triangleCount());
-    }
-}
-
-const Mesh& Renderer::drawnMesh(std::size_t object) const {
-    const Mesh& baked = geometry_->meshes[object];
-    return baked.instanced && options_.instancedDraws ? *baked.instanced : baked;
-}
-
-void Renderer::bindInstances(std::size_t object, const InstanceGroup& group) {
-    gl::Buffer& buffer = objectInstanceBuffers_[object];
-    if (!buffer) {
-        buffer = gl::makeBuffer();
-        glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
-        const std::vector<glm::mat4>& data = objectInstances_[object];
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::mat4)), data.data(), GL_STATIC_DRAW);
-    }
-    // A mat4 attribute takes four locations, a column each, advancing once per instance.
-    glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
-    for (GLuint c = 0; c < 4; ++c) {
-        const std::size_t offset = std::size_t(group.first) * sizeof(glm::mat4) + c * sizeof(glm::vec4);
-        glVertexAttribPointer(SL_ATTRIB_INSTANCE + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4), reinterpret_cast<void*>(offset));
-        glVertexAttribDivisor(SL_ATTRIB_INSTANCE + c, 1);
-        glEnableVertexAttribArray(SL_ATTRIB_INSTANCE + c);
-    }
 }
 
 void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
-    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1, scene.diff))
-        for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) gpuMesh(o, pane.mode);
-    if (scene.textures)
-        for (std::size_t o = 0; o < objectImages_.size(); ++o)
-            for (std::size_t t = 0; t < objectImages_[o].size(); ++t) objectTexture(o, int(t));
-    geometry_.reset();
-    orderedMeshes_.clear();
+    std::vector<ShadingMode> modes;
+    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1, scene.diff)) modes.push_back(pane.mode);
+    meshes_.uploadAndRelease(modes, scene.textures);
 }
+
+std::string Renderer::glRenderer() const { return reinterpret_cast<const char*>(glGetString(GL_RENDERER)); }
+std::string Renderer::glVersion() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
+
+
+
+
 
 void Renderer::preparePrograms(const Scene& scene) {
     bool textured = false;
-    for (char v : objectVariesColor_) textured = textured || (v && scene.textures);
+    for (std::size_t o = 0; o < meshes_.objects(); ++o) textured = textured || (meshes_.variesColor(o) && scene.textures);
     for (bool t : {false, true}) {
         if (t && !textured) break;
-        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) program(mode, scene, false, false, t);
+        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+            programs_.get(mode, scene, {false, false, t, false});
         // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
         if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && options_.phongInputs != PhongInputs::Uniform)
-            program(ShadingMode::Phong, scene, false, true, t);
+            programs_.get(ShadingMode::Phong, scene, {false, true, t, false});
     }
 }
 
-GLuint Renderer::program(ShadingMode mode, const Scene& scene, bool accumulate, bool interpolatedInputs, bool textured,
-                         bool instanced) {
-    std::vector<std::string> defines = programDefines(scene);
-    if (accumulate) defines.push_back("SL_ACCUMULATE 1");
-    if (interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
-    if (textured) defines.push_back("SL_TEXTURED 1");
-    if (instanced) defines.push_back("SL_INSTANCED 1");
-    const std::string name = kProgramNames[std::size_t(mode)];
-    const std::string vertex = mode == ShadingMode::Flat && options_.packedFlatVertices ? "flat_packed" : name;
-    std::string key = vertex;
-    for (const std::string& d : defines) key += ";" + d;
-    gl::Program& p = programs_[key];
-    if (!p) p = buildProgram(name, shaders_, defines, vertex);
-    return p.get();
-}
 
-const Renderer::GpuMesh& Renderer::gpuMesh(std::size_t object, ShadingMode mode) {
-    const bool flat = mode == ShadingMode::Flat;
-    GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
-    if (g.vao) return g;
-    if (!geometry_) throw std::logic_error("renderer: a shading mode that was not uploaded before the CPU geometry was released");
-    const Mesh* source = &drawnMesh(object);
-    if (options_.meshOrder == MeshOrder::VertexCache) {
-        Mesh& ordered = orderedMeshes_[object];
-        if (ordered.indices.empty()) ordered = orderedForVertexCache(*source);
-        source = &ordered;
-    }
-    const Mesh& mesh = *source;
-    g.vao = gl::makeVertexArray();
-    g.indices = gl::makeBuffer();
-    glBindVertexArray(g.vao.get());
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.get());
-    // One interleaved buffer: a vertex's attributes side by side. llvmpipe fetches interleaved
-    // attributes faster (~10% of a Phong frame at 200k triangles than one buffer per attribute), and
-    // the layout (stride, offsets) does not depend on the mesh's size, so draw code llvmpipe compiled
-    // for one mesh serves the next (see renderSceneHeadless()).
-    FlatMesh flatMesh;
-    if (flat) flatMesh = options_.meshOrder == MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
-    const std::vector<std::uint32_t>& indices = flat ? flatMesh.indices : mesh.indices;
-    struct Attribute {
-        GLuint location;
-        GLint size;
-    };
-    std::vector<float> interleaved;
-    std::vector<Attribute> layout;
-    // Where C varies (Mesh::variesColor), each vertex also carries its texture coordinates and colour.
-    const bool varies = mesh.variesColor();
-    const std::vector<glm::vec2>& texcoords = flat ? flatMesh.texcoords : mesh.texcoords;
-    const std::vector<glm::vec3>& colors = flat ? flatMesh.colors : mesh.colors;
-    // `floats` per vertex written by `write(v, i)`, then the texture coordinates and colour if C varies.
-    const auto interleave = [&](std::size_t count, std::size_t floats, auto write) {
-        const std::size_t stride = floats + (varies ? 5 : 0);
-        interleaved.resize(count * stride);
-        for (std::size_t i = 0; i < count; ++i) {
-            float* v = &interleaved[i * stride];
-            write(v, i);
-            if (!varies) continue;
-            v += floats;
-            v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
-        }
-    };
-    if (!flat) {
-        // position xyz, normal xyz
-        layout.push_back({SL_ATTRIB_POSITION, 3});
-        layout.push_back({SL_ATTRIB_NORMAL, 3});
-        interleave(mesh.positions.size(), 6, [&](float* v, std::size_t i) {
-            const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
-            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
-        });
-    } else if (!options_.packedFlatVertices) {
-        // position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert)
-        layout.push_back({SL_ATTRIB_POSITION, 3});
-        layout.push_back({SL_ATTRIB_CENTROID, 3});
-        layout.push_back({SL_ATTRIB_NORMAL, 3});
-        interleave(flatMesh.positions.size(), 9, [&](float* v, std::size_t i) {
-            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
-            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
-        });
-    } else {
-        // The same nine floats in two vec4s (shaders/flat_packed.vert): position xyz and centroid x;
-        // centroid yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the
-        // shader takes z from the unit length). llvmpipe fetches each attribute of each vertex on its
-        // own: two fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
-        layout.push_back({SL_ATTRIB_POSITION, 4});
-        layout.push_back({SL_ATTRIB_CENTROID, 4});
-        interleave(flatMesh.positions.size(), 8, [&](float* v, std::size_t i) {
-            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
-            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
-            v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
-        });
-    }
-    if (varies) {
-        layout.push_back({SL_ATTRIB_TEXCOORD, 2});
-        layout.push_back({SL_ATTRIB_COLOR, 3});
-    }
-    g.vertices = gl::makeBuffer();
-    glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
-    interleaved = {};
-    GLsizei stride = 0;
-    for (const Attribute& a : layout) stride += GLsizei(a.size * GLint(sizeof(float)));
-    std::size_t offset = 0;
-    for (const Attribute& a : layout) {
-        glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset));
-        glEnableVertexAttribArray(a.location);
-        offset += std::size_t(a.size) * sizeof(float);
-    }
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
-                 GL_STATIC_DRAW);
-    glBindVertexArray(0);
-    g.indexCount = GLsizei(indices.size());
-    checkGl("mesh upload");
-    if (gpuMeshes_[object][0].vao && gpuMeshes_[object][1].vao) orderedMeshes_[object] = Mesh{};  // both uploaded
-    return g;
-}
 
-GLuint Renderer::objectTexture(std::size_t object, int slot) {
-    if (slot < 0 || std::size_t(slot) >= objectTextures_[object].size()) {
-        if (!whiteTexture_) {
-            const unsigned char white[4] = {255, 255, 255, 255};
-            GLuint id = 0;
-            glGenTextures(1, &id);
-            whiteTexture_ = gl::Texture(id);
-            glBindTexture(GL_TEXTURE_2D, id);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        }
-        return whiteTexture_.get();
-    }
-    gl::Texture& t = objectTextures_[object][std::size_t(slot)];
-    if (t) return t.get();
-    const std::shared_ptr<const TextureImage> image = std::move(objectImages_[object][std::size_t(slot)]);
-    if (!image) throw std::logic_error("renderer: a texture that was released before it was uploaded");
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    t = gl::Texture(id);
-    glBindTexture(GL_TEXTURE_2D, id);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    // glTF's base colours are sRGB-encoded: an sRGB texture decodes them to linear values when sampled.
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                 image->rgba.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, image->wrapS);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, image->wrapT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, image->magFilter);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, image->minFilter);
-    if (image->minFilter != GL_NEAREST && image->minFilter != GL_LINEAR) glGenerateMipmap(GL_TEXTURE_2D);
-    checkGl(("texture upload (" + image->name + ")").c_str());
-    return t.get();
-}
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
     const auto offset = [](std::size_t index) { return reinterpret_cast<void*>(index * sizeof(std::uint32_t)); };
@@ -512,8 +209,8 @@ bool Renderer::interpolatesInputs(std::size_t object, const Pane& pane, const Sc
     // Each input costs llvmpipe set-up work per triangle, each uniform read work per fragment: the
     // inputs pay off where the triangles are large on screen (measured break-even ~6 pixels per
     // front-facing triangle on the benchmark sphere; 16 leaves a margin for the box's overestimate).
-    const Aabb box = transformAabb(objectBoxes_[object], worldFromObject(scene.objects[object].transform));
-    const float frontTriangles = std::max(1.0f, 0.5f * float(objectTriangles_[object]));
+    const Aabb box = transformAabb(meshes_.box(object), worldFromObject(scene.objects[object].transform));
+    const float frontTriangles = std::max(1.0f, 0.5f * float(meshes_.triangles(object)));
     return projectedBoxPixels(scene.camera, pane, box.lo, box.hi) >= kInputsMinPixelsPerTriangle * frontTriangles;
 }
 
@@ -524,28 +221,18 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     checkGl("render");
 }
 
-void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, const RenderTarget& target,
-                         const AreaSamplePass* pass, bool add) {
-    const std::size_t objects = std::min(objectParts_.size(), scene.objects.size());
-
-    // One draw per object part (a glTF primitive's base colour and texture, or the whole mesh). A
-    // scene's material colour replaces C, texture and vertex colours included.
-    struct Draw {
-        std::size_t object;
-        GLsizei first, count;
-        glm::vec3 color;
-        bool textured;  // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
-        int texture;    // the part's slot in Mesh::textures, or -1
-        int instances;  // SL_INSTANCED: index into objectInstanceGroups_[object]; -1: drawn once
-    };
+// One draw per object part (a glTF primitive's base colour and texture, or the whole mesh), and per
+// group of its instances. A scene's material colour replaces C, texture and vertex colours included.
+std::vector<Renderer::Draw> Renderer::drawList(const Scene& scene) const {
+    const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
     std::vector<Draw> draws;
     for (std::size_t o = 0; o < objects; ++o) {
         const Material& m = scene.objects[o].material;
-        const bool textured = objectVariesColor_[o] && scene.textures && !m.colorSet;
-        const std::vector<InstanceGroup>& groups = objectInstanceGroups_[o];
+        const bool textured = meshes_.variesColor(o) && scene.textures && !m.colorSet;
+        const std::vector<MeshCache::InstanceGroup>& groups = meshes_.instanceGroups(o);
         std::size_t g = 0;  // the groups are in part order
-        for (std::size_t p = 0; p < objectParts_[o].size(); ++p) {
-            const MeshPart& part = objectParts_[o][p];
+        for (std::size_t p = 0; p < meshes_.parts(o).size(); ++p) {
+            const MeshPart& part = meshes_.parts(o)[p];
             Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
                    (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
             if (part.instances.empty()) draws.push_back(d);
@@ -555,36 +242,35 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
             }
         }
     }
+    return draws;
+}
 
-    // Shadow maps first: they bind their own framebuffer, program and viewport.
-    const bool shadows = scene.shadows.enabled && !scene.lights.empty();
-    if (shadows) {
-        std::vector<ShadowMaps::DepthDraw> depthDraws;
-        std::vector<Aabb> boxes;
-        for (std::size_t o = 0; o < objects; ++o)
-            boxes.push_back(transformAabb(objectBoxes_[o], worldFromObject(scene.objects[o].transform)));
-        for (const Draw& d : draws) {
-            const GLuint vao = gpuMesh(d.object, ShadingMode::Phong).vao.get();
-            const glm::mat4 world = worldFromObject(scene.objects[d.object].transform);
-            if (d.instances < 0) {
-                depthDraws.push_back({vao, d.first, d.count, world});
-                continue;
-            }
-            // The depth pass draws each instance on its own (it has no instanced variant).
-            const InstanceGroup& g = objectInstanceGroups_[d.object][std::size_t(d.instances)];
-            for (GLsizei i = 0; i < g.count; ++i)
-                depthDraws.push_back({vao, d.first, d.count, world * objectInstances_[d.object][std::size_t(g.first + i)]});
+// The shadow pass: every draw's triangles into the lights' depth maps (ShadowMaps, which binds its own
+// framebuffer, program and viewport).
+void Renderer::renderShadowMaps(const Scene& scene, const std::vector<Draw>& draws) {
+    std::vector<ShadowMaps::DepthDraw> depthDraws;
+    std::vector<Aabb> boxes;
+    for (std::size_t o = 0; o < std::min(meshes_.objects(), scene.objects.size()); ++o)
+        boxes.push_back(transformAabb(meshes_.box(o), worldFromObject(scene.objects[o].transform)));
+    for (const Draw& d : draws) {
+        const GLuint vao = meshes_.gpuMesh(d.object, ShadingMode::Phong).vao.get();
+        const glm::mat4 world = worldFromObject(scene.objects[d.object].transform);
+        if (d.instances < 0) {
+            depthDraws.push_back({vao, d.first, d.count, world});
+            continue;
         }
-        shadowMaps_.render(scene, depthDraws, boxes, shaders_);
+        // The depth pass draws each instance on its own (it has no instanced variant).
+        const MeshCache::InstanceGroup& g = meshes_.instanceGroups(d.object)[std::size_t(d.instances)];
+        for (GLsizei i = 0; i < g.count; ++i)
+            depthDraws.push_back({vao, d.first, d.count, world * meshes_.instance(d.object, std::size_t(g.first + i))});
     }
+    shadowMaps_.render(scene, depthDraws, boxes, programs_.shaders());
+}
 
-    // All uniforms of the frame in one upload: a FrameBlock per pane, then an ObjectBlock per draw,
-    // each at an offset glBindBufferRange accepts.
-    const auto align = std::size_t(uniformAlignment_);
-    const std::size_t frameStride = alignUp(sizeof(gpu::FrameBlock), align);
-    const std::size_t objectStride = alignUp(sizeof(gpu::ObjectBlock), align);
-    const std::size_t objectsOffset = frameStride * panes.size();
-    std::vector<unsigned char> staging(objectsOffset + objectStride * draws.size());
+// All uniforms of the frame in one upload: a FrameBlock per pane, then an ObjectBlock per draw.
+void Renderer::stageUniforms(const Scene& scene, const std::vector<Pane>& panes, const std::vector<Draw>& draws,
+                             const AreaSamplePass* pass, bool shadows) {
+    uniforms_->begin(panes.size(), draws.size());
     for (std::size_t p = 0; p < panes.size(); ++p) {
         gpu::FrameBlock b = frameBlock(scene, float(panes[p].width) / float(std::max(panes[p].height, 1)));
         if (shadows) shadowMaps_.fillBlock(scene, b);
@@ -593,15 +279,16 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
         const bool split = pass && panes[p].mode == ShadingMode::Phong;
         const glm::ivec2 first = split ? pass->first : glm::ivec2(0), stride = split ? pass->stride : glm::ivec2(1);
         b.areaPass[0] = first.x, b.areaPass[1] = first.y, b.areaPass[2] = stride.x, b.areaPass[3] = stride.y;
-        std::memcpy(staging.data() + p * frameStride, &b, sizeof b);
+        uniforms_->setFrame(p, b);
     }
-    for (std::size_t d = 0; d < draws.size(); ++d) {
-        const gpu::ObjectBlock b = objectBlock(scene.objects[draws[d].object], draws[d].color, scene);
-        std::memcpy(staging.data() + objectsOffset + d * objectStride, &b, sizeof b);
-    }
-    glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.get());
-    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(staging.size()), staging.data(), GL_STREAM_DRAW);
+    for (std::size_t d = 0; d < draws.size(); ++d)
+        uniforms_->setObject(d, objectBlock(scene.objects[draws[d].object], draws[d].color, scene));
+    uniforms_->upload();
+}
 
+// The GL state the scene's draws rely on, and the target cleared (or, with `add`, blending onto it
+// where the depth equals).
+void Renderer::beginPanes(const Scene& scene, const RenderTarget& target, bool accumulate, bool add) {
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
@@ -617,7 +304,7 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
     } else {
         glDepthMask(GL_TRUE);
         // A progressive pass marks uncovered pixels with alpha 0 (shaders/resolve.frag).
-        if (pass) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        if (accumulate) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
         else glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
         glClearDepth(1.0);
         // Only the target's rectangle: in the viewer's window the rest is the panel and the bands.
@@ -632,53 +319,62 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
     glProvokingVertex(GL_LAST_VERTEX_CONVENTION);  // FlatMesh puts each triangle's own vertex last
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    if (shadows) shadowMaps_.bindTextures();
+}
 
-    for (std::size_t p = 0; p < panes.size(); ++p) {
-        const Pane& pane = panes[p];
-        if (pane.difference) continue;  // drawn below, from the other two panes
-        glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
-        glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, uniforms_.get(), GLintptr(p * frameStride),
-                          sizeof(gpu::FrameBlock));
-        // Per object: does this pane's Phong program take interpolated inputs (see interpolatesInputs)?
-        // Only the variants some draw uses are built (each is an LLVM compile on first use).
-        std::vector<char> inputs(objects, 0);
-        for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
-        GLuint programs[2][2][2] = {}, current = 0;  // [interpolated inputs][textured][instanced]
-        for (std::size_t d = 0; d < draws.size(); ++d) {
-            const Draw& draw = draws[d];
-            if (draw.count == 0) continue;
-            const bool instanced = draw.instances >= 0;
-            GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0][instanced ? 1 : 0];
-            if (!variant)
-                variant = program(pane.mode, scene, pass != nullptr, inputs[draw.object] != 0, draw.textured, instanced);
-            if (variant != current) glUseProgram(current = variant);
-            if (draw.textured) {
-                const GLuint texture = objectTexture(draw.object, draw.texture);
-                glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_BASE_COLOR);
-                glBindTexture(GL_TEXTURE_2D, texture);
-                glActiveTexture(GL_TEXTURE0);
-            }
-            const GpuMesh& mesh = gpuMesh(draw.object, pane.mode);
-            glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, uniforms_.get(),
-                              GLintptr(objectsOffset + d * objectStride), sizeof(gpu::ObjectBlock));
-            // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
-            const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);
-            bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
-            glBindVertexArray(mesh.vao.get());
-            if (!instanced) {
-                glFrontFace(mirrored ? GL_CW : GL_CCW);
-                drawTriangles(draw.first, draw.count);
-                continue;
-            }
-            const InstanceGroup& group = objectInstanceGroups_[draw.object][std::size_t(draw.instances)];
-            mirrored = mirrored != group.mirrored;
-            glFrontFace(mirrored ? GL_CW : GL_CCW);
-            bindInstances(draw.object, group);
-            glDrawElementsInstanced(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
-                                    reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)), group.count);
+// Pane p's draws with its shading mode's programs.
+void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, const RenderTarget& target,
+                        const std::vector<Draw>& draws, bool accumulate) {
+    glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
+    uniforms_->bindFrame(p);
+    // Per object: does this pane's Phong program take interpolated inputs (see interpolatesInputs)?
+    // Only the variants some draw uses are built (each is an LLVM compile on first use).
+    const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
+    std::vector<char> inputs(objects, 0);
+    for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
+    GLuint programs[2][2][2] = {}, current = 0;  // [interpolated inputs][textured][instanced]
+    for (std::size_t d = 0; d < draws.size(); ++d) {
+        const Draw& draw = draws[d];
+        if (draw.count == 0) continue;
+        const bool instanced = draw.instances >= 0;
+        GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0][instanced ? 1 : 0];
+        if (!variant) variant = programs_.get(pane.mode, scene, {accumulate, inputs[draw.object] != 0, draw.textured, instanced});
+        if (variant != current) glUseProgram(current = variant);
+        if (draw.textured) {
+            const GLuint texture = meshes_.texture(draw.object, draw.texture);
+            glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_BASE_COLOR);
+            glBindTexture(GL_TEXTURE_2D, texture);
+            glActiveTexture(GL_TEXTURE0);
         }
+        const MeshCache::GpuMesh& mesh = meshes_.gpuMesh(draw.object, pane.mode);
+        uniforms_->bindObject(d);
+        // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
+        const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);
+        bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+        glBindVertexArray(mesh.vao.get());
+        if (!instanced) {
+            glFrontFace(mirrored ? GL_CW : GL_CCW);
+            drawTriangles(draw.first, draw.count);
+            continue;
+        }
+        const MeshCache::InstanceGroup& group = meshes_.instanceGroups(draw.object)[std::size_t(draw.instances)];
+        mirrored = mirrored != group.mirrored;
+        glFrontFace(mirrored ? GL_CW : GL_CCW);
+        meshes_.bindInstances(draw.object, group);
+        glDrawElementsInstanced(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
+                                reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)), group.count);
     }
+}
+
+void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, const RenderTarget& target,
+                         const AreaSamplePass* pass, bool add) {
+    const std::vector<Draw> draws = drawList(scene);
+    const bool shadows = scene.shadows.enabled && !scene.lights.empty();
+    if (shadows) renderShadowMaps(scene, draws);  // first: it binds its own framebuffer
+    stageUniforms(scene, panes, draws, pass, shadows);
+    beginPanes(scene, target, pass != nullptr, add);
+    if (shadows) shadowMaps_.bindTextures();
+    for (std::size_t p = 0; p < panes.size(); ++p)
+        if (!panes[p].difference) drawPane(scene, panes[p], p, target, draws, pass != nullptr);  // difference: below
     glBindVertexArray(0);
     glFrontFace(GL_CCW);
     if (add) {
@@ -735,7 +431,7 @@ Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, cons
     const std::size_t encoding = scene.outputEncoding == OutputEncoding::Srgb ? 1 : 0;
     gl::Program& resolve = pr.resolve[encoding];
     if (!resolve) {
-        resolve = buildProgram("resolve", shaders_, {encoding ? "SL_ENCODING SL_ENCODING_SRGB" : "SL_ENCODING SL_ENCODING_LINEAR"},
+        resolve = buildProgram("resolve", programs_.shaders(), {encoding ? "SL_ENCODING SL_ENCODING_SRGB" : "SL_ENCODING SL_ENCODING_LINEAR"},
                                kFullscreenVertex);
         glUseProgram(resolve.get());
         glUniform1i(glGetUniformLocation(resolve.get(), "u_sum"), 0);
@@ -777,7 +473,7 @@ void Renderer::drawFullscreen(GLuint program) {
 void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target) {
     if (pane.width <= 0 || pane.height <= 0) return;
     if (!diffProgram_) {
-        diffProgram_ = buildProgram("difference", shaders_, {}, kFullscreenVertex);
+        diffProgram_ = buildProgram("difference", programs_.shaders(), {}, kFullscreenVertex);
         glUseProgram(diffProgram_.get());
         glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceA"), 0);
         glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceB"), 1);

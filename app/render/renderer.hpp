@@ -7,8 +7,12 @@
 #include "core/scene.hpp"
 #include "core/scene_geometry.hpp"
 #include "render/gl_handles.hpp"
+#include "render/mesh_cache.hpp"
+#include "render/program_cache.hpp"
+#include "render/renderer_options.hpp"
 #include "render/shader_library.hpp"
 #include "render/shadow_maps.hpp"
+#include "render/uniform_stager.hpp"
 
 #include <array>
 #include <map>
@@ -22,43 +26,6 @@ struct RenderTarget {
     GLuint framebuffer = 0;  // 0: the context's default framebuffer
     int width = 0;
     int height = 0;
-};
-
-// How a renderer is tuned for the way it is used (a one-off frame, the viewer, a benchmark, a test
-// that compares two paths). Given at construction; the pictures are the same whatever the choice.
-struct RendererOptions {
-    // Where Phong draws read the per-object products and the vectors to the eye and the lights
-    // (shaders/phong_interface.glsl): Auto picks interpolated inputs for a draw whose triangles
-    // cover at least kInputsMinPixelsPerTriangle pixels each (bounding box on screen / front-facing
-    // triangles), the uniform blocks otherwise. The other two force one path (tests compare them).
-    enum class PhongInputs { Auto, Interpolated, Uniform };
-    PhongInputs phongInputs = PhongInputs::Auto;
-
-    // The order meshes are uploaded in. VertexCache reorders each mesh's triangles and vertices for
-    // the driver's vertex cache (core/vertex_order.hpp): the same picture with up to ~40% fewer
-    // vertex-shader runs a frame, for a one-off cost at upload (~0.15 s per million triangles). Worth
-    // it for a mesh drawn many times (the viewer, --benchmark), not for one --output frame.
-    enum class MeshOrder { AsGiven, VertexCache };
-    MeshOrder meshOrder = MeshOrder::AsGiven;
-
-    // Draws of more than this many triangles go in chunks of that many, and after submitting a chunk
-    // the renderer waits for the one before it (a fence), so the driver never holds more than two.
-    // llvmpipe bins every triangle of what it was given before its threads rasterise, a few scenes of
-    // ~36 MiB at a time: a frame of the 2M-triangle sphere raised resident memory by ~100 MiB, in
-    // chunks of 250k by ~30 MiB. The waits cost steady frames ~9% (binning and rasterising overlap
-    // less), so it is for a one-off frame (headless --output), not the viewer. 0 (the default): off.
-    std::size_t drawChunkTriangles = 0;
-
-    // A glTF model's GPU instances (EXT_mesh_gpu_instancing, Mesh::instanced) as instanced draws: one
-    // copy of the instanced parts uploaded, drawn once per instance. Off: every instance baked into
-    // the vertex buffer, as the CPU side holds them (a test compares the two).
-    bool instancedDraws = true;
-
-    // Flat shading's nine floats per vertex (position, centroid, face normal) in two vec4s, drawn by
-    // shaders/flat_packed.vert, instead of three vec3s (flat.vert): ~7% off a flat frame at 200k
-    // triangles on llvmpipe (bench/README.md). For headless frames; the viewer draws with flat.vert,
-    // the file a lecturer reads and edits (F5 reloads it). A test compares the two pixel for pixel.
-    bool packedFlatVertices = false;
 };
 
 class Renderer {
@@ -111,29 +78,7 @@ public:
     std::string glVersion() const;
 
 private:
-    struct GpuMesh {
-        gl::VertexArray vao;
-        gl::Buffer vertices;  // interleaved positions, normals and (flat) centroids, texture coordinates and colours
-        gl::Buffer indices;
-        GLsizei indexCount = 0;
-    };
-    const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
     void drawTriangles(GLsizei firstIndex, GLsizei indexCount);  // from the bound vertex array, see drawChunkTriangles
-    GLuint program(ShadingMode mode, const Scene& scene, bool accumulate = false, bool interpolatedInputs = false,
-                   bool textured = false, bool instanced = false);
-    // The mesh an object's draws upload: its instanced form (Mesh::instanced) when it has one.
-    const Mesh& drawnMesh(std::size_t object) const;
-    // An instanced part's transforms, split by handedness (a mirroring one turns the winding): one
-    // instanced draw each, reading them from the object's instance buffer from `first` on.
-    struct InstanceGroup {
-        std::size_t part = 0;
-        GLsizei first = 0, count = 0;
-        bool mirrored = false;
-    };
-    void bindInstances(std::size_t object, const InstanceGroup& group);
-    // The GL texture of an object's Mesh::textures[slot] (uploaded on first use: sRGB, mipmapped as its
-    // sampler asks), or a white texel for a part without one.
-    GLuint objectTexture(std::size_t object, int slot);
     // The samples one progressive pass evaluates: i = first.x + k stride.x, j = first.y + m stride.y.
     struct AreaSamplePass {
         glm::ivec2 first{0};
@@ -141,30 +86,30 @@ private:
     };
     // Shadow maps, then every pane but the difference into `target`; with `pass`, the accumulating
     // programs (linear output, alpha 0 where nothing was drawn) evaluate that pass's samples, and
-    // with `add` they are added to what the target holds, where its depth equals theirs.
+    // with `add` they are added to what the target holds, where its depth equals theirs. In steps:
     void drawPanes(const Scene& scene, const std::vector<Pane>& panes, const RenderTarget& target,
                    const AreaSamplePass* pass, bool add);
+    struct Draw {  // one object part, or one group of its instances
+        std::size_t object;
+        GLsizei first, count;  // indices
+        glm::vec3 color;       // C
+        bool textured;         // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
+        int texture;           // the part's slot in Mesh::textures, or -1
+        int instances;         // SL_INSTANCED: index into meshes_.instanceGroups(object); -1: drawn once
+    };
+    std::vector<Draw> drawList(const Scene& scene) const;
+    void renderShadowMaps(const Scene& scene, const std::vector<Draw>& draws);
+    void stageUniforms(const Scene& scene, const std::vector<Pane>& panes, const std::vector<Draw>& draws,
+                       const AreaSamplePass* pass, bool shadows);
+    void beginPanes(const Scene& scene, const RenderTarget& target, bool accumulate, bool add);
+    void drawPane(const Scene& scene, const Pane& pane, std::size_t p, const RenderTarget& target,
+                  const std::vector<Draw>& draws, bool accumulate);
 
-    ShaderLibrary shaders_;
-    std::map<std::string, gl::Program> programs_;         // by name + specialisation defines
-    std::shared_ptr<const SceneGeometry> geometry_;
-    std::vector<std::vector<MeshPart>> objectParts_;      // per object: its parts (one for a plain mesh)
-    std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
-    gl::Buffer uniforms_;                                 // pane FrameBlocks, then ObjectBlocks
-    GLint uniformAlignment_ = 256;
-    std::vector<Aabb> objectBoxes_;                       // per object, object space (shadow maps, Phong inputs)
-    std::vector<std::size_t> objectTriangles_;            // per object, all parts
-    std::vector<char> objectVariesColor_;                 // per object: has texture coordinates and colours
-    std::vector<std::vector<InstanceGroup>> objectInstanceGroups_;  // per object
-    std::vector<std::vector<glm::mat4>> objectInstances_;           // per object, until uploaded
-    std::vector<gl::Buffer> objectInstanceBuffers_;                 // per object (mat4 each)
-    // Per object: its base colour images until uploaded, and the textures made of them.
-    std::vector<std::vector<std::shared_ptr<const TextureImage>>> objectImages_;
-    std::vector<std::vector<gl::Texture>> objectTextures_;
-    gl::Texture whiteTexture_;
     const RendererOptions options_;
-    std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both its uploads are done
+    ProgramCache programs_;
+    MeshCache meshes_;
     ShadowMaps shadowMaps_;
+    std::unique_ptr<UniformStager> uniforms_;  // made once the GL is loaded
     // Layout diff: copies of the two source panes (blitted through their framebuffers) and the
     // program that subtracts them.
     void drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target);
@@ -193,11 +138,6 @@ private:
 // spread over the light instead of filling it row by row.
 std::vector<glm::ivec2> progressivePassOrder(const glm::ivec2& stride);
 
-// What the shading programs are specialised for (shaders/lighting.glsl): the number of lights, each
-// light's kind and attenuation (and an area light's sample counts), the reflection model, the output
-// encoding, and with shadows on SL_SHADOWS and the PCF radius, as "NAME VALUE" defines.
-// Everything else is a uniform, so editing values never recompiles.
-std::vector<std::string> programDefines(const Scene& scene);
 
 // Reads the colour buffer of `target` (bottom-up in GL) into a top-down RGBA image; a multisampled
 // target (render/multisample_target.hpp) is resolved into a temporary copy first.

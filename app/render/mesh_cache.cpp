@@ -1,0 +1,236 @@
+#include "render/mesh_cache.hpp"
+
+#include "core/vertex_order.hpp"
+#include "render/gpu_blocks.hpp"
+#include "render/program.hpp"
+
+#include <glm/common.hpp>
+#include <glm/matrix.hpp>
+
+#include <limits>
+#include <stdexcept>
+
+namespace shadelab {
+
+MeshCache::MeshCache(const RendererOptions& options) : options_(options) {}
+
+void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
+    geometry_ = std::move(geometry);
+    gpuMeshes_.clear();
+    gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
+    orderedMeshes_.clear();
+    orderedMeshes_.resize(gpuMeshes_.size());
+    objectParts_.clear();
+    objectBoxes_.clear();
+    objectTriangles_.clear();
+    objectVariesColor_.clear();
+    objectImages_.clear();
+    objectTextures_.clear();
+    if (!geometry_) return;
+    objectInstanceGroups_.clear();
+    objectInstances_.clear();
+    objectInstanceBuffers_.clear();
+    for (std::size_t o = 0; o < geometry_->meshes.size(); ++o) {
+        const Mesh& mesh = drawnMesh(o);
+        objectInstanceGroups_.emplace_back();
+        objectInstances_.emplace_back();
+        objectInstanceBuffers_.emplace_back();
+        for (std::size_t p = 0; p < mesh.parts.size(); ++p)
+            for (bool mirrored : {false, true}) {
+                InstanceGroup g;
+                g.part = p;
+                g.first = GLsizei(objectInstances_.back().size());
+                g.mirrored = mirrored;
+                for (const glm::mat4& t : mesh.parts[p].instances)
+                    if ((glm::determinant(glm::mat3(t)) < 0.0f) == mirrored) objectInstances_.back().push_back(t);
+                g.count = GLsizei(objectInstances_.back().size()) - g.first;
+                if (g.count > 0) objectInstanceGroups_.back().push_back(g);
+            }
+        objectVariesColor_.push_back(mesh.variesColor());
+        objectImages_.push_back(mesh.textures);
+        objectTextures_.emplace_back(mesh.textures.size());
+        objectParts_.push_back(mesh.parts);
+        if (mesh.parts.empty()) {
+            MeshPart whole;
+            whole.indexCount = std::uint32_t(mesh.indices.size());
+            objectParts_.back().push_back(whole);
+        }
+        // Bounds and triangle counts of every instance: the baked mesh's.
+        const Mesh& baked = geometry_->meshes[o];
+        Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+        for (const glm::vec3& p : baked.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+        if (baked.positions.empty()) box = Aabb{};
+        objectBoxes_.push_back(box);
+        objectTriangles_.push_back(baked.triangleCount());
+    }
+}
+
+const Mesh& MeshCache::drawnMesh(std::size_t object) const {
+    const Mesh& baked = geometry_->meshes[object];
+    return baked.instanced && options_.instancedDraws ? *baked.instanced : baked;
+}
+
+void MeshCache::bindInstances(std::size_t object, const InstanceGroup& group) {
+    gl::Buffer& buffer = objectInstanceBuffers_[object];
+    if (!buffer) {
+        buffer = gl::makeBuffer();
+        glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
+        const std::vector<glm::mat4>& data = objectInstances_[object];
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::mat4)), data.data(), GL_STATIC_DRAW);
+    }
+    // A mat4 attribute takes four locations, a column each, advancing once per instance.
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
+    for (GLuint c = 0; c < 4; ++c) {
+        const std::size_t offset = std::size_t(group.first) * sizeof(glm::mat4) + c * sizeof(glm::vec4);
+        glVertexAttribPointer(SL_ATTRIB_INSTANCE + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4), reinterpret_cast<void*>(offset));
+        glVertexAttribDivisor(SL_ATTRIB_INSTANCE + c, 1);
+        glEnableVertexAttribArray(SL_ATTRIB_INSTANCE + c);
+    }
+}
+
+void MeshCache::uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures) {
+    for (ShadingMode mode : modes)
+        for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) gpuMesh(o, mode);
+    if (textures)
+        for (std::size_t o = 0; o < objectImages_.size(); ++o)
+            for (std::size_t t = 0; t < objectImages_[o].size(); ++t) texture(o, int(t));
+    geometry_.reset();
+    orderedMeshes_.clear();
+}
+
+const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mode) {
+    const bool flat = mode == ShadingMode::Flat;
+    GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
+    if (g.vao) return g;
+    if (!geometry_) throw std::logic_error("mesh cache: a shading mode that was not uploaded before the CPU geometry was released");
+    const Mesh* source = &drawnMesh(object);
+    if (options_.meshOrder == RendererOptions::MeshOrder::VertexCache) {
+        Mesh& ordered = orderedMeshes_[object];
+        if (ordered.indices.empty()) ordered = orderedForVertexCache(*source);
+        source = &ordered;
+    }
+    const Mesh& mesh = *source;
+    g.vao = gl::makeVertexArray();
+    g.indices = gl::makeBuffer();
+    glBindVertexArray(g.vao.get());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.get());
+    // One interleaved buffer: a vertex's attributes side by side. llvmpipe fetches interleaved
+    // attributes faster (~10% of a Phong frame at 200k triangles than one buffer per attribute), and
+    // the layout (stride, offsets) does not depend on the mesh's size, so draw code llvmpipe compiled
+    // for one mesh serves the next (see renderSceneHeadless()).
+    FlatMesh flatMesh;
+    if (flat) flatMesh = options_.meshOrder == RendererOptions::MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
+    const std::vector<std::uint32_t>& indices = flat ? flatMesh.indices : mesh.indices;
+    struct Attribute {
+        GLuint location;
+        GLint size;
+    };
+    std::vector<float> interleaved;
+    std::vector<Attribute> layout;
+    // Where C varies (Mesh::variesColor), each vertex also carries its texture coordinates and colour.
+    const bool varies = mesh.variesColor();
+    const std::vector<glm::vec2>& texcoords = flat ? flatMesh.texcoords : mesh.texcoords;
+    const std::vector<glm::vec3>& colors = flat ? flatMesh.colors : mesh.colors;
+    // `floats` per vertex written by `write(v, i)`, then the texture coordinates and colour if C varies.
+    const auto interleave = [&](std::size_t count, std::size_t floats, auto write) {
+        const std::size_t stride = floats + (varies ? 5 : 0);
+        interleaved.resize(count * stride);
+        for (std::size_t i = 0; i < count; ++i) {
+            float* v = &interleaved[i * stride];
+            write(v, i);
+            if (!varies) continue;
+            v += floats;
+            v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
+        }
+    };
+    if (!flat) {
+        // position xyz, normal xyz
+        layout.push_back({SL_ATTRIB_POSITION, 3});
+        layout.push_back({SL_ATTRIB_NORMAL, 3});
+        interleave(mesh.positions.size(), 6, [&](float* v, std::size_t i) {
+            const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
+            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
+        });
+    } else if (!options_.packedFlatVertices) {
+        // position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert)
+        layout.push_back({SL_ATTRIB_POSITION, 3});
+        layout.push_back({SL_ATTRIB_CENTROID, 3});
+        layout.push_back({SL_ATTRIB_NORMAL, 3});
+        interleave(flatMesh.positions.size(), 9, [&](float* v, std::size_t i) {
+            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
+            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
+        });
+    } else {
+        // The same nine floats in two vec4s (shaders/flat_packed.vert): position xyz and centroid x;
+        // centroid yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the
+        // shader takes z from the unit length). llvmpipe fetches each attribute of each vertex on its
+        // own: two fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
+        layout.push_back({SL_ATTRIB_POSITION, 4});
+        layout.push_back({SL_ATTRIB_CENTROID, 4});
+        interleave(flatMesh.positions.size(), 8, [&](float* v, std::size_t i) {
+            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
+            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
+            v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
+        });
+    }
+    if (varies) {
+        layout.push_back({SL_ATTRIB_TEXCOORD, 2});
+        layout.push_back({SL_ATTRIB_COLOR, 3});
+    }
+    g.vertices = gl::makeBuffer();
+    glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
+    interleaved = {};
+    GLsizei stride = 0;
+    for (const Attribute& a : layout) stride += GLsizei(a.size * GLint(sizeof(float)));
+    std::size_t offset = 0;
+    for (const Attribute& a : layout) {
+        glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset));
+        glEnableVertexAttribArray(a.location);
+        offset += std::size_t(a.size) * sizeof(float);
+    }
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
+                 GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    g.indexCount = GLsizei(indices.size());
+    checkGl("mesh upload");
+    if (gpuMeshes_[object][0].vao && gpuMeshes_[object][1].vao) orderedMeshes_[object] = Mesh{};  // both uploaded
+    return g;
+}
+
+GLuint MeshCache::texture(std::size_t object, int slot) {
+    if (slot < 0 || std::size_t(slot) >= objectTextures_[object].size()) {
+        if (!whiteTexture_) {
+            const unsigned char white[4] = {255, 255, 255, 255};
+            GLuint id = 0;
+            glGenTextures(1, &id);
+            whiteTexture_ = gl::Texture(id);
+            glBindTexture(GL_TEXTURE_2D, id);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        return whiteTexture_.get();
+    }
+    gl::Texture& t = objectTextures_[object][std::size_t(slot)];
+    if (t) return t.get();
+    const std::shared_ptr<const TextureImage> image = std::move(objectImages_[object][std::size_t(slot)]);
+    if (!image) throw std::logic_error("mesh cache: a texture that was released before it was uploaded");
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    t = gl::Texture(id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // glTF's base colours are sRGB-encoded: an sRGB texture decodes them to linear values when sampled.
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 image->rgba.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, image->wrapS);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, image->wrapT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, image->magFilter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, image->minFilter);
+    if (image->minFilter != GL_NEAREST && image->minFilter != GL_LINEAR) glGenerateMipmap(GL_TEXTURE_2D);
+    checkGl(("texture upload (" + image->name + ")").c_str());
+    return t.get();
+}
+
+}  // namespace shadelab

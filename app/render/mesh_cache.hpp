@@ -1,0 +1,83 @@
+#pragma once
+// The renderer's copy of a scene's meshes on the GPU: per object, its parts (a glTF primitive each,
+// or the whole mesh), a vertex array per shading mode (smooth: positions and normals; flat: a
+// provoking vertex per triangle with its centroid and face normal, FlatMesh), uploaded on first use
+// in the order RendererOptions::meshOrder asks; its GPU instances (EXT_mesh_gpu_instancing) split by
+// handedness; and its base colour textures. GL-free work (ordering, flat meshes) is in core.
+#include "core/scene.hpp"
+#include "core/scene_geometry.hpp"
+#include "core/shadow_projection.hpp"
+#include "render/gl_handles.hpp"
+#include "render/renderer_options.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace shadelab {
+
+class MeshCache {
+public:
+    explicit MeshCache(const RendererOptions& options);
+
+    // Replaces the meshes; nothing is uploaded until it is drawn.
+    void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
+    // Uploads what `modes` draw (and the textures), then lets go of the CPU copy: a one-frame
+    // headless render of a large model need not hold it twice. After this only `modes` can be drawn.
+    void uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures);
+
+    std::size_t objects() const { return objectParts_.size(); }
+    const std::vector<MeshPart>& parts(std::size_t object) const { return objectParts_[object]; }
+    const Aabb& box(std::size_t object) const { return objectBoxes_[object]; }  // object space, every instance
+    std::size_t triangles(std::size_t object) const { return objectTriangles_[object]; }
+    bool variesColor(std::size_t object) const { return objectVariesColor_[object] != 0; }  // texture coordinates and colours
+
+    struct GpuMesh {
+        gl::VertexArray vao;
+        gl::Buffer vertices;  // interleaved positions, normals and (flat) centroids, texture coordinates and colours
+        gl::Buffer indices;
+        GLsizei indexCount = 0;
+    };
+    // The object's vertex array for `mode` (uploaded now if it was not).
+    const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
+
+    // An instanced part's transforms, split by handedness (a mirroring one turns the winding): one
+    // instanced draw each, reading them from the object's instance buffer from `first` on.
+    struct InstanceGroup {
+        std::size_t part = 0;
+        GLsizei first = 0, count = 0;
+        bool mirrored = false;
+    };
+    const std::vector<InstanceGroup>& instanceGroups(std::size_t object) const { return objectInstanceGroups_[object]; }
+    const glm::mat4& instance(std::size_t object, std::size_t i) const { return objectInstances_[object][i]; }
+    // Points the bound vertex array's SL_ATTRIB_INSTANCE attributes at the group's transforms.
+    void bindInstances(std::size_t object, const InstanceGroup& group);
+
+    // The GL texture of an object's Mesh::textures[slot] (uploaded on first use: sRGB, mipmapped as its
+    // sampler asks), or a white texel for a part without one.
+    GLuint texture(std::size_t object, int slot);
+
+private:
+    // The mesh an object's draws upload: its instanced form (Mesh::instanced) when it has one.
+    const Mesh& drawnMesh(std::size_t object) const;
+
+    const RendererOptions options_;
+    std::shared_ptr<const SceneGeometry> geometry_;
+    std::vector<std::vector<MeshPart>> objectParts_;      // per object: its parts (one for a plain mesh)
+    std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
+    std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both its uploads are done
+    std::vector<Aabb> objectBoxes_;
+    std::vector<std::size_t> objectTriangles_;
+    std::vector<char> objectVariesColor_;
+    std::vector<std::vector<InstanceGroup>> objectInstanceGroups_;
+    std::vector<std::vector<glm::mat4>> objectInstances_;  // (the shadow pass draws them one by one)
+    std::vector<gl::Buffer> objectInstanceBuffers_;        // mat4 each
+    // Per object: its base colour images until uploaded, and the textures made of them.
+    std::vector<std::vector<std::shared_ptr<const TextureImage>>> objectImages_;
+    std::vector<std::vector<gl::Texture>> objectTextures_;
+    gl::Texture whiteTexture_;
+};
+
+}  // namespace shadelab

@@ -1,0 +1,45 @@
+#pragma once
+// The shading programs, by mode and specialisation: what the scene compiles in (programDefines) and
+// what a draw needs besides (Variant), each built on first use (an LLVM compile on llvmpipe) and kept.
+#include "core/scene.hpp"
+#include "render/gl_handles.hpp"
+#include "render/shader_library.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+class ProgramCache {
+public:
+    // The switches of one draw: a progressive pass (SL_ACCUMULATE), Phong's interpolated inputs
+    // (SL_INTERPOLATED_INPUTS), a colour that varies over the surface (SL_TEXTURED), GPU instances
+    // (SL_INSTANCED).
+    struct Variant {
+        bool accumulate = false, interpolatedInputs = false, textured = false, instanced = false;
+    };
+    // `packedFlatVertices`: flat shading's vertex stage is flat_packed.vert (RendererOptions).
+    ProgramCache(ShaderLibrary shaders, bool packedFlatVertices);
+    // Builds the program on first use. Throws ShaderError.
+    GLuint get(ShadingMode mode, const Scene& scene, const Variant& variant);
+    const ShaderLibrary& shaders() const { return shaders_; }
+
+private:
+    ShaderLibrary shaders_;
+    bool packedFlatVertices_;
+    std::map<std::string, gl::Program> programs_;  // by vertex stage + defines
+};
+
+// What the shading programs are specialised for (shaders/lighting.glsl): the number of lights and,
+// as constant lists, each light's kind, attenuation and area samples; the reflection model, the
+// output encoding, the options and "show"; with shadows on, SL_SHADOWS, the PCF radius and each
+// light's first shadow-map layer. "NAME VALUE" each. Everything else is a uniform, so editing values
+// never recompiles.
+std::vector<std::string> programDefines(const Scene& scene);
+
+// The constants the shaders know a light by (shaders/shared_defs.glsl): SL_LIGHT_* and SL_ATTENUATION_*.
+int lightKind(const Light& light);
+int attenuationKind(const Light& light);
+
+}  // namespace shadelab
