@@ -4,7 +4,7 @@
 // it where RendererOptions::packedFlatVertices asks (headless frames); the viewer, the docs and the
 // probe use flat.vert, and a test checks that both draw the same pixels.
 //
-// The packing (Renderer::gpuMesh): position xyz and centroid x; centroid yz, face normal x, and face
+// The packing (MeshCache::gpuMesh): position xyz and centroid x; centroid yz, face normal x, and face
 // normal y plus SL_FLAT_NORMAL_Z_NEGATIVE where its z is negative (z itself comes from the unit length).
 #include "shared_defs.glsl"
 

@@ -7,7 +7,7 @@
 //   v_l: how much of light l reaches the point (1, or its shadow-map test with shadows on)
 //
 // sumOfTerms() at the end of this file is that line. The programs are specialised
-// (app/render/renderer.cpp, programDefines): the number of lights and each light's kind, attenuation
+// (app/render/program_cache.cpp, programDefines): the number of lights and each light's kind, attenuation
 // and area samples are constant arrays, and the reflection model, the output encoding, the options
 // and "show" are constants, so the compiler unrolls the loop over the lights and drops every branch
 // that does not apply: on llvmpipe a loop over a uniform light count with per-light branches made

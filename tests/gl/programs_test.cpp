@@ -119,7 +119,7 @@ TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
         const std::string name = std::string(vertex).substr(0, std::string(vertex).find('_'));
         const gl::Program p = buildProgram(name, library, programDefines(scene), vertex);
         ASSERT_TRUE(p);
-        if (std::string(vertex) == "flat") {  // three vec3s (Renderer::gpuMesh)
+        if (std::string(vertex) == "flat") {  // three vec3s (MeshCache::gpuMesh)
             EXPECT_EQ(glGetAttribLocation(p.get(), "a_posObject"), SL_ATTRIB_POSITION);
             EXPECT_EQ(glGetAttribLocation(p.get(), "a_centroidObject"), SL_ATTRIB_CENTROID);
             EXPECT_EQ(glGetAttribLocation(p.get(), "a_faceNrmObject"), SL_ATTRIB_NORMAL);
