@@ -4,6 +4,7 @@
 #include "core/file_io.hpp"
 #include "core/gltf_extensions.hpp"
 #include "core/json_depth.hpp"
+#include "platform/platform.hpp"
 
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
@@ -1132,7 +1133,7 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
             if (err) *err += "cannot read " + p;
             return false;
         }
-        std::FILE* f = std::fopen(full.c_str(), "rb");
+        std::FILE* f = platform::openFile(full, "rb");
         if (!f) {
             if (err) *err += "cannot open " + p;
             return false;
@@ -1200,7 +1201,7 @@ Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) throw InputError(path + ": cannot read: " + ec.message());
     if (size > (std::uintmax_t(1) << 31)) throw InputError(path + ": cannot read: larger than 2048 MiB");
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(platform::openFile(path, "rb"), &std::fclose);
     if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
     char magic[4] = {};
     const bool glb = std::fread(magic, 1, 4, file.get()) == 4 && std::memcmp(magic, "glTF", 4) == 0;

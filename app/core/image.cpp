@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "platform/platform.hpp"
 
 #include <png.h>
 
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <sstream>
 
 namespace shadelab {
@@ -55,9 +57,11 @@ void writePng(const std::string& path, const Image& img, int level) {
 }
 
 Image readPng(const std::string& path) {
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(platform::openFile(path, "rb"), &std::fclose);
+    if (!file) throw InputError(path + ": cannot read PNG: " + std::strerror(errno));
     png_image desc{};
     desc.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&desc, path.c_str()))
+    if (!png_image_begin_read_from_stdio(&desc, file.get()))
         throw InputError(path + ": cannot read PNG: " + desc.message);
     desc.format = PNG_FORMAT_RGBA;
     if (desc.width > 16384 || desc.height > 16384) {
