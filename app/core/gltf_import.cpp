@@ -984,12 +984,20 @@ GlbLayout splitGlb(std::uint64_t available, const ByteReader& read, const std::s
 constexpr const char* kGlbBinUri = "<GLB BIN chunk>";
 struct LoadContext {
     fs::path folder;
-    std::string binPath;  // folder / kGlbBinUri; empty unless a .glb's buffer 0 is its BIN chunk
+    // The path tinygltf asks the callbacks for when it looks for `uri`: joined onto the folder with
+    // '/' as its JoinPath does, whatever the platform's separator ('\\' in the folder on Windows).
+    std::string pathOf(const std::string& uri) const {
+        std::string out = folder.string();
+        if (out.empty()) return uri;
+        if (out.back() != '/') out += '/';
+        return out + uri;
+    }
+    std::string binPath;  // pathOf(kGlbBinUri); empty unless a .glb's buffer 0 is its BIN chunk
     std::uint64_t binOffset = 0, binLength = 0;
     const ByteReader* read = nullptr;
     std::string* release = nullptr;  // bytes to free once tinygltf has parsed (it keeps what it needs)
     // A .gltf's base64 buffers, decoded by decodeDataUris(), by the path tinygltf asks for them by
-    // (folder / "<data URI i>").
+    // (pathOf("<data URI i>")).
     std::map<std::string, std::vector<unsigned char>> decoded;
     GltfPrepass extensions;  // what the JSON step found (core/gltf_extensions)
 };
@@ -1049,7 +1057,7 @@ bool decodeDataUris(nlohmann::json& doc, LoadContext& context, const std::string
             if (text.rfind(prefix, 0) == 0) data = std::string_view(text).substr(std::strlen(prefix));
         if (data.empty()) continue;
         const std::string sentinel = "<data URI " + std::to_string(i) + ">";
-        std::vector<unsigned char>& bytes = context.decoded[(context.folder / sentinel).string()];
+        std::vector<unsigned char>& bytes = context.decoded[context.pathOf(sentinel)];
         if (!decodeBase64(data, bytes))
             throw InputError(label + ": buffer " + std::to_string(i) + ": its data: URI is not valid base64");
         buffer["uri"] = sentinel;
@@ -1073,7 +1081,7 @@ bool pointBufferAtBin(nlohmann::json& doc, const GlbLayout& g, const std::string
     if (length->get<std::uint64_t>() > g.binLength)
         throw InputError(label + ": buffer 0: byteLength " + std::to_string(length->get<std::uint64_t>()) +
                          " is more than the BIN chunk's " + std::to_string(g.binLength) + " bytes");
-    context.binPath = (context.folder / kGlbBinUri).string();
+    context.binPath = context.pathOf(kGlbBinUri);
     context.binOffset = g.binOffset;
     context.binLength = length->get<std::uint64_t>();
     context.read = &read;
@@ -1093,7 +1101,7 @@ std::string prepareJson(std::string json, LoadContext& context, const std::strin
     }
     bool changed = prepareGltfExtensions(doc, label, context.extensions);
     for (int i : context.extensions.fallbackBuffers)  // stand-ins: one byte each, never read
-        context.decoded[(context.folder / doc["buffers"][std::size_t(i)]["uri"].get<std::string>()).string()] = {0};
+        context.decoded[context.pathOf(doc["buffers"][std::size_t(i)]["uri"].get<std::string>())] = {0};
     if (glb) changed = pointBufferAtBin(doc, *glb, label, context, *read) || changed;
     if (json.find(";base64,") != std::string::npos) changed = decodeDataUris(doc, context, label) || changed;
     return changed ? doc.dump() : json;
