@@ -40,7 +40,8 @@ long processId();
 // Linux: when SHADELAB_HUGEPAGES=1 is set, starts the program again, once, with glibc's tunable
 // glibc.malloc.hugetlb=1 (malloc's large blocks on transparent huge pages, for the GL driver's
 // allocations as well as shadelab's), where the kernel gives huge pages on request (THP "madvise").
-// Off by default: it measured faster only for some inputs (bench/README.md, "Huge pages").
+// Off by default: whether it pays depends on the kernel's free huge pages, not on the input
+// (bench/README.md, "Huge pages, opt-in"); ./dev run and ./dev bench turn it on.
 // Returns when it does not restart (not asked, GLIBC_TUNABLES or LD_PRELOAD already set, another
 // THP mode, no /proc). Elsewhere it does nothing.
 void restartWithHugePagesIfAsked(char** argv);
