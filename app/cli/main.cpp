@@ -13,6 +13,7 @@
 #include "core/playlist.hpp"
 #include "core/scene_geometry.hpp"
 #include "headless/headless.hpp"
+#include "platform/platform.hpp"
 #include "render/program.hpp"
 #include "viewer/viewer.hpp"
 
@@ -23,7 +24,6 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 #ifndef SHADELAB_VERSION
 #define SHADELAB_VERSION "0"
@@ -221,27 +221,10 @@ int run(const std::vector<std::string>& args) {
 
 }  // namespace
 
-// Large allocations on transparent huge pages. A 2M-triangle model touches ~250 MiB of fresh memory
-// (the file, the mesh, the driver's copies of it and its binned triangles): ~65k page faults of
-// 4 KiB, a third of a headless --output's time (bench/README.md). glibc backs malloc's large blocks
-// with huge pages when its tunable glibc.malloc.hugetlb=1 is set, for Mesa's allocations as well as
-// ours, but reads tunables only when a process starts: so shadelab starts itself again, once, with
-// it set (~4 ms), where the kernel gives huge pages to those who ask (THP mode "madvise", Debian's).
-void restartWithHugePages(char** argv) {
-    // The user's tunables stand; a preloaded tool (valgrind) would not follow the exec.
-    if (std::getenv("GLIBC_TUNABLES") || std::getenv("LD_PRELOAD")) return;
-    std::ifstream thp("/sys/kernel/mm/transparent_hugepage/enabled");
-    std::string mode;
-    if (!std::getline(thp, mode) || mode.find("[madvise]") == std::string::npos) return;  // "always", "never"
-    setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1);
-    execv("/proc/self/exe", argv);
-    unsetenv("GLIBC_TUNABLES");  // no /proc: go on as we are
-}
-
 }  // namespace shadelab
 
 int main(int argc, char** argv) {
-    shadelab::restartWithHugePages(argv);
+    shadelab::platform::restartWithHugePagesIfAsked(argv);
     try {
         return shadelab::run(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const shadelab::InputError& e) {

@@ -2,6 +2,7 @@
 // Reading input files with size limits and writing output files atomically (temporary file in the same
 // folder, then rename), so a failed or killed run never leaves a partial file at the output path.
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -28,7 +29,8 @@ void checkOutputFolder(const std::string& path, const std::string& option);
 void createOutputFolder(const std::string& path, const std::string& option);
 
 // Creates `path` atomically: `write` gets a FILE* to a temporary file beside it; on success the
-// temporary is renamed over `path`, on any failure (write returns false or throws) it is removed.
+// temporary is renamed over `path`, on any failure (write returns false or throws) it is removed
+// (platform::writeFileAtomic). InputError "<path>: cannot write: <reason>".
 void writeFileAtomic(const std::string& path, const std::function<bool(std::FILE*)>& write);
 
 }  // namespace shadelab

@@ -2,8 +2,15 @@
 
 #include "core/error.hpp"
 
+// Meshoptimizer and Draco are Debian's Linux libraries: a build without them (SHADELAB_MESHOPT,
+// SHADELAB_DRACO off, as the Windows build is) does not list their extensions as read, so a file that
+// requires one is refused by name and one that only uses it gets the usual warning.
+#if SHADELAB_HAVE_DRACO
 #include <draco/compression/decode.h>
+#endif
+#if SHADELAB_HAVE_MESHOPT
 #include <meshoptimizer.h>
+#endif
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
@@ -14,8 +21,12 @@ namespace shadelab {
 
 const std::vector<std::string> kDecodedGltfExtensions = {
     "KHR_mesh_quantization",       // integer positions and normals, dequantized by the node transform
+#if SHADELAB_HAVE_MESHOPT
     "EXT_meshopt_compression",     // meshoptimizer's vertex and index codecs and filters
+#endif
+#if SHADELAB_HAVE_DRACO
     "KHR_draco_mesh_compression",  // Draco-compressed primitives
+#endif
     "EXT_mesh_gpu_instancing",     // a node drawn once per TRANSLATION / ROTATION / SCALE
     "KHR_texture_transform",       // the base colour texture's coordinates offset, rotated, scaled
     "KHR_lights_punctual",         // point, spot and directional lights: a scene's lights when it gives none
@@ -86,7 +97,9 @@ bool prepareGltfExtensions(nlohmann::json& doc, const std::string& label, GltfPr
         for (std::size_t i = 0; i < buffers->size(); ++i) {
             nlohmann::json& b = (*buffers)[i];
             const nlohmann::json* ext = extension(b, "EXT_meshopt_compression");
-            if (!ext || !ext->is_object() || !ext->value("fallback", false) || b.contains("uri")) continue;
+            if (!ext || !ext->is_object() || !ext->value("fallback", false) || b.contains("uri") ||
+                !decoded("EXT_meshopt_compression"))
+                continue;
             out.fallbackBuffers.push_back(int(i));
             b["uri"] = "<meshopt fallback buffer " + std::to_string(i) + ">";
             b["byteLength"] = 1;
@@ -99,7 +112,9 @@ bool prepareGltfExtensions(nlohmann::json& doc, const std::string& label, GltfPr
             if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
             for (std::size_t p = 0; p < mesh["primitives"].size(); ++p) {
                 nlohmann::json& prim = mesh["primitives"][p];
-                if (!extension(prim, "KHR_draco_mesh_compression") || !prim.contains("indices")) continue;
+                if (!extension(prim, "KHR_draco_mesh_compression") || !prim.contains("indices") ||
+                    !decoded("KHR_draco_mesh_compression"))
+                    continue;
                 if (!prim["indices"].is_number_integer()) continue;  // tinygltf names that error
                 out.dracoIndices[{int(m), int(p)}] = prim["indices"].get<int>();
                 prim.erase("indices");
@@ -111,6 +126,7 @@ bool prepareGltfExtensions(nlohmann::json& doc, const std::string& label, GltfPr
 
 namespace {
 
+#if SHADELAB_HAVE_MESHOPT
 // The meshopt codecs reach at best about 1:64 (a block of 256 vertices costs at least 4 header bytes
 // per byte of a vertex); a stream that claims more than 256 times its size is refused unread.
 constexpr std::size_t kMaxMeshoptRatio = 256;
@@ -180,6 +196,9 @@ void decodeMeshopt(tinygltf::Model& model, const std::string& label) {
     }
 }
 
+#endif
+
+#if SHADELAB_HAVE_DRACO
 // A decoded attribute or index list as a new buffer, view and accessor contents.
 void pointAccessorAt(tinygltf::Model& model, int accessorIndex, std::vector<unsigned char> bytes, int componentType) {
     tinygltf::Buffer buffer;
@@ -266,12 +285,20 @@ void decodeDraco(tinygltf::Model& model, const GltfPrepass& prepass, const std::
             prim.extensions.erase(it);
         }
 }
+#endif
 
 }  // namespace
 
 void decodeCompressedGltf(tinygltf::Model& model, const GltfPrepass& prepass, const std::string& label) {
+#if SHADELAB_HAVE_MESHOPT
     decodeMeshopt(model, label);
+#endif
+#if SHADELAB_HAVE_DRACO
     decodeDraco(model, prepass, label);
+#else
+    (void)prepass;
+#endif
+    (void)model, (void)label;
 }
 
 }  // namespace shadelab

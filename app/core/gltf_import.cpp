@@ -4,6 +4,7 @@
 #include "core/file_io.hpp"
 #include "core/gltf_extensions.hpp"
 #include "core/json_depth.hpp"
+#include "platform/platform.hpp"
 
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
@@ -983,12 +984,20 @@ GlbLayout splitGlb(std::uint64_t available, const ByteReader& read, const std::s
 constexpr const char* kGlbBinUri = "<GLB BIN chunk>";
 struct LoadContext {
     fs::path folder;
-    std::string binPath;  // folder / kGlbBinUri; empty unless a .glb's buffer 0 is its BIN chunk
+    // The path tinygltf asks the callbacks for when it looks for `uri`: joined onto the folder with
+    // '/' as its JoinPath does, whatever the platform's separator ('\\' in the folder on Windows).
+    std::string pathOf(const std::string& uri) const {
+        std::string out = folder.string();
+        if (out.empty()) return uri;
+        if (out.back() != '/') out += '/';
+        return out + uri;
+    }
+    std::string binPath;  // pathOf(kGlbBinUri); empty unless a .glb's buffer 0 is its BIN chunk
     std::uint64_t binOffset = 0, binLength = 0;
     const ByteReader* read = nullptr;
     std::string* release = nullptr;  // bytes to free once tinygltf has parsed (it keeps what it needs)
     // A .gltf's base64 buffers, decoded by decodeDataUris(), by the path tinygltf asks for them by
-    // (folder / "<data URI i>").
+    // (pathOf("<data URI i>")).
     std::map<std::string, std::vector<unsigned char>> decoded;
     GltfPrepass extensions;  // what the JSON step found (core/gltf_extensions)
 };
@@ -1048,7 +1057,7 @@ bool decodeDataUris(nlohmann::json& doc, LoadContext& context, const std::string
             if (text.rfind(prefix, 0) == 0) data = std::string_view(text).substr(std::strlen(prefix));
         if (data.empty()) continue;
         const std::string sentinel = "<data URI " + std::to_string(i) + ">";
-        std::vector<unsigned char>& bytes = context.decoded[(context.folder / sentinel).string()];
+        std::vector<unsigned char>& bytes = context.decoded[context.pathOf(sentinel)];
         if (!decodeBase64(data, bytes))
             throw InputError(label + ": buffer " + std::to_string(i) + ": its data: URI is not valid base64");
         buffer["uri"] = sentinel;
@@ -1072,7 +1081,7 @@ bool pointBufferAtBin(nlohmann::json& doc, const GlbLayout& g, const std::string
     if (length->get<std::uint64_t>() > g.binLength)
         throw InputError(label + ": buffer 0: byteLength " + std::to_string(length->get<std::uint64_t>()) +
                          " is more than the BIN chunk's " + std::to_string(g.binLength) + " bytes");
-    context.binPath = (context.folder / kGlbBinUri).string();
+    context.binPath = context.pathOf(kGlbBinUri);
     context.binOffset = g.binOffset;
     context.binLength = length->get<std::uint64_t>();
     context.read = &read;
@@ -1092,7 +1101,7 @@ std::string prepareJson(std::string json, LoadContext& context, const std::strin
     }
     bool changed = prepareGltfExtensions(doc, label, context.extensions);
     for (int i : context.extensions.fallbackBuffers)  // stand-ins: one byte each, never read
-        context.decoded[(context.folder / doc["buffers"][std::size_t(i)]["uri"].get<std::string>()).string()] = {0};
+        context.decoded[context.pathOf(doc["buffers"][std::size_t(i)]["uri"].get<std::string>())] = {0};
     if (glb) changed = pointBufferAtBin(doc, *glb, label, context, *read) || changed;
     if (json.find(";base64,") != std::string::npos) changed = decodeDataUris(doc, context, label) || changed;
     return changed ? doc.dump() : json;
@@ -1132,7 +1141,7 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
             if (err) *err += "cannot read " + p;
             return false;
         }
-        std::FILE* f = std::fopen(full.c_str(), "rb");
+        std::FILE* f = platform::openFile(full, "rb");
         if (!f) {
             if (err) *err += "cannot open " + p;
             return false;
@@ -1200,7 +1209,7 @@ Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) throw InputError(path + ": cannot read: " + ec.message());
     if (size > (std::uintmax_t(1) << 31)) throw InputError(path + ": cannot read: larger than 2048 MiB");
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(platform::openFile(path, "rb"), &std::fclose);
     if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
     char magic[4] = {};
     const bool glb = std::fread(magic, 1, 4, file.get()) == 4 && std::memcmp(magic, "glTF", 4) == 0;

@@ -2,17 +2,78 @@
 
 #include "core/error.hpp"
 #include "core/file_io.hpp"
+#include "platform/platform.hpp"
 
+#if SHADELAB_PNG_STB
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+#else
 #include <png.h>
+#endif
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <sstream>
 
 namespace shadelab {
+
+namespace {
+using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+File openPng(const std::string& path) {
+    File file(platform::openFile(path, "rb"), &std::fclose);
+    if (!file) throw InputError(path + ": cannot read PNG: " + std::strerror(errno));
+    return file;
+}
+}  // namespace
+
+#if SHADELAB_PNG_STB
+// stb_image_write and stb_image (Debian's libstb-dev headers): the Windows build's PNG codec, as Debian
+// has no MinGW build of libpng. Same pixels in and out; the files are somewhat larger.
+
+void writePng(const std::string& path, const Image& img, int level) {
+    writeFileAtomic(path, [&](std::FILE* f) {
+        stbi_write_png_compression_level = level;
+        bool written = true;
+        struct Sink {
+            std::FILE* file;
+            bool* ok;
+        } sink{f, &written};
+        const auto put = [](void* context, void* data, int size) {
+            const Sink& to = *static_cast<Sink*>(context);
+            *to.ok = *to.ok && std::fwrite(data, 1, std::size_t(size), to.file) == std::size_t(size);
+        };
+        const int encoded = stbi_write_png_to_func(put, &sink, img.width, img.height, 4, img.rgba.data(), img.width * 4);
+        if (!encoded) throw InputError(path + ": cannot write: the PNG encoder failed");
+        return written;
+    });
+}
+
+Image readPng(const std::string& path) {
+    const File file = openPng(path);
+    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char signature[8] = {};
+    if (std::fread(signature, 1, 8, file.get()) != 8 || std::memcmp(signature, kSignature, 8) != 0 ||
+        std::fseek(file.get(), 0, SEEK_SET) != 0)
+        throw InputError(path + ": cannot read PNG: not a PNG file");
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_file(file.get(), &w, &h, &channels))
+        throw InputError(path + ": cannot read PNG: " + stbi_failure_reason());
+    if (w > 16384 || h > 16384) throw InputError(path + ": PNG too large");
+    std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load_from_file(file.get(), &w, &h, &channels, 4),
+                                                           &stbi_image_free);
+    if (!pixels) throw InputError(path + ": cannot read PNG: " + stbi_failure_reason());
+    Image img(w, h);
+    std::memcpy(img.rgba.data(), pixels.get(), img.rgba.size());
+    return img;
+}
+
+#else
+// libpng.
 
 namespace {
 // libpng reports through these instead of printing: a refusal stays one line (a full disk was
@@ -55,9 +116,10 @@ void writePng(const std::string& path, const Image& img, int level) {
 }
 
 Image readPng(const std::string& path) {
+    const File file = openPng(path);
     png_image desc{};
     desc.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&desc, path.c_str()))
+    if (!png_image_begin_read_from_stdio(&desc, file.get()))
         throw InputError(path + ": cannot read PNG: " + desc.message);
     desc.format = PNG_FORMAT_RGBA;
     if (desc.width > 16384 || desc.height > 16384) {
@@ -69,6 +131,8 @@ Image readPng(const std::string& path) {
         throw InputError(path + ": cannot read PNG: " + desc.message);
     return img;
 }
+
+#endif
 
 namespace {
 int pixelDifference(const std::uint8_t* a, const std::uint8_t* b) {

@@ -1,5 +1,5 @@
 #pragma once
-// 8-bit RGBA images, PNG input/output (libpng) and the image comparison used by the golden tests.
+// 8-bit RGBA images, PNG input/output (libpng; stb on Windows) and the image comparison used by the golden tests.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -1,8 +1,7 @@
 #include "core/memory_budget.hpp"
 
 #include "core/error.hpp"
-
-#include <unistd.h>
+#include "platform/platform.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,9 +36,9 @@ bool drawsFlat(const Scene& s) {
 }  // namespace
 
 std::uint64_t defaultMemoryBudget() {
-    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
-    if (pages <= 0 || pageSize <= 0) return std::uint64_t(4) << 30;
-    return std::uint64_t(pages) * std::uint64_t(pageSize) / 2;
+    const std::uint64_t physical = platform::physicalMemoryBytes();
+    if (physical == 0) return std::uint64_t(4) << 30;
+    return physical / 2;
 }
 
 std::uint64_t memoryBudget() { return gBudget ? *gBudget : defaultMemoryBudget(); }

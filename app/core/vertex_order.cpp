@@ -1,6 +1,8 @@
 #include "core/vertex_order.hpp"
 
+#if SHADELAB_HAVE_MESHOPT
 #include <meshoptimizer.h>
+#endif
 
 #include <algorithm>
 #include <limits>
@@ -15,12 +17,17 @@ constexpr std::uint32_t kCacheSize = 32;
 
 // Tipsify on `triangles` triangles whose corners are all below vertexCount, in place: Debian's
 // meshoptimizer (meshopt_optimizeVertexCacheFifo is Sander et al.'s algorithm). bench/vertex_order.cpp
-// compares it with meshoptimizer's own order and with the Tipsify shadelab wrote before.
+// compares it with meshoptimizer's own order and with the Tipsify shadelab wrote before. A build
+// without meshoptimizer (SHADELAB_MESHOPT off: the Windows build) keeps the triangles' order.
 void tipsify(std::uint32_t* in, std::size_t triangles, std::size_t vertexCount, std::uint32_t cacheSize) {
+#if SHADELAB_HAVE_MESHOPT
     if (triangles < 2) return;
     std::vector<std::uint32_t> out(3 * triangles);
     meshopt_optimizeVertexCacheFifo(out.data(), in, out.size(), vertexCount, cacheSize);
     std::copy(out.begin(), out.end(), in);
+#else
+    (void)in, (void)triangles, (void)vertexCount, (void)cacheSize;
+#endif
 }
 
 // New vertex numbers in order of first use in `indices` (vertices no index uses keep their relative

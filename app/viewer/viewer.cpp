@@ -5,6 +5,7 @@
 #include "core/file_io.hpp"
 #include "core/image.hpp"
 #include "core/scene_json.hpp"
+#include "platform/platform.hpp"
 #include "viewer/controls.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
@@ -71,8 +72,7 @@ std::string timestampedName() {
     const auto now = std::chrono::system_clock::now();
     const std::time_t t = std::chrono::system_clock::to_time_t(now);
     const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
-    std::tm local{};
-    localtime_r(&t, &local);
+    const std::tm local = platform::localTime(t);
     char name[64];
     std::strftime(name, sizeof name, "shadelab-%Y%m%d-%H%M%S", &local);
     char suffix[16];

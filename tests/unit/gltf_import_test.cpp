@@ -312,9 +312,26 @@ TEST_F(Gltf, UrisThatLeaveTheModelFolderAreRefused) {
         bad.j["buffers"][0]["uri"] = uri;
         expectRefused(writeGltf("escape", bad), {});
     }
-    // Through a symbolic link in the folder, or a linked subfolder, to the file outside: refused too.
+    // A 300-character name is a refusal (InputError), not an exception.
+    Doc longName;
+    longName.j["buffers"][0]["uri"] = std::string(300, 'a') + ".bin";
+    expectRefused(writeGltf("odd_uri", longName), {});
+    // The same buffer inside the folder is fine.
+    std::ofstream(dir_ / "model" / "inside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
+    Doc ok;
+    ok.j["buffers"][0]["uri"] = "inside.bin";
+    EXPECT_EQ(loadGltf(writeGltf("inside", ok)).triangleCount(), 2u);
+}
+
+TEST_F(Gltf, SymbolicLinksThatLeaveTheModelFolderAreRefused) {
+    Doc d;
+    std::ofstream(dir_ / "outside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
+    // Windows lets only privileged users make links, and wine not at all: there the test has nothing to try.
+    std::error_code noLinks;
     fs::remove(dir_ / "model" / "link.bin");
-    fs::create_symlink(dir_ / "outside.bin", dir_ / "model" / "link.bin");
+    fs::create_symlink(dir_ / "outside.bin", dir_ / "model" / "link.bin", noLinks);
+    if (noLinks) GTEST_SKIP() << "cannot make a symbolic link here: " << noLinks.message();
+    // Through a symbolic link in the folder, or a linked subfolder, to the file outside: refused too.
     fs::remove(dir_ / "model" / "linked");
     fs::create_directory_symlink(dir_, dir_ / "model" / "linked");
     for (const std::string& uri : {std::string("link.bin"), std::string("linked/outside.bin")}) {
@@ -322,19 +339,12 @@ TEST_F(Gltf, UrisThatLeaveTheModelFolderAreRefused) {
         bad.j["buffers"][0]["uri"] = uri;
         expectRefused(writeGltf("escape_link", bad), {});
     }
-    // A symbolic link loop and a 300-character name are refusals (InputError), not exceptions.
+    // A symbolic link loop is a refusal (InputError), not an exception.
     fs::remove(dir_ / "model" / "loop.bin");
     fs::create_symlink("loop.bin", dir_ / "model" / "loop.bin");
-    for (const std::string& uri : {std::string("loop.bin"), std::string(300, 'a') + ".bin"}) {
-        Doc bad;
-        bad.j["buffers"][0]["uri"] = uri;
-        expectRefused(writeGltf("odd_uri", bad), {});
-    }
-    // The same buffer inside the folder is fine.
-    std::ofstream(dir_ / "model" / "inside.bin", std::ios::binary).write(reinterpret_cast<const char*>(d.bin.data()), std::streamsize(d.bin.size()));
-    Doc ok;
-    ok.j["buffers"][0]["uri"] = "inside.bin";
-    EXPECT_EQ(loadGltf(writeGltf("inside", ok)).triangleCount(), 2u);
+    Doc loop;
+    loop.j["buffers"][0]["uri"] = "loop.bin";
+    expectRefused(writeGltf("odd_uri", loop), {});
 }
 
 TEST_F(Gltf, MirroredNodesKeepOutwardWindingAndTransformedNormals) {
@@ -417,8 +427,6 @@ TEST(SharedModels, LoadWithTheReadmeTriangleCounts) {
         {sa + "NegativeScaleTest/glTF/NegativeScaleTest.gltf", {3884, 7724}},
         {sa + "OrientationTest/glTF/OrientationTest.gltf", {524, 524}},
         {sa + "MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf", {1040409, 1040409}},
-        {sa + "Unicode❤♻Test/glTF/Unicode❤♻Test.gltf", {2, 2}},
-        {sa + "Unicode❤♻Test/glTF-Binary/Unicode❤♻Test.glb", {2, 2}},
         {sa + "Box With Spaces/glTF/Box With Spaces.gltf", {12, 12}},
         {sa + "MultipleScenes/glTF/MultipleScenes.gltf", {3, 2}},
         {ag + "00.gltf", {0, 0}}, {ag + "01.gltf", {0, 0}}, {ag + "02.gltf", {0, 0}}, {ag + "03.gltf", {0, 0}},
@@ -437,6 +445,21 @@ TEST(SharedModels, LoadWithTheReadmeTriangleCounts) {
         EXPECT_EQ(m.triangleCount(), counts.second);
         for (auto i : m.indices) ASSERT_LT(i, m.positions.size());
         for (const auto& n : m.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-4f);
+    }
+}
+
+// Names outside ASCII (UTF-8 on Linux). Windows reads shadelab's narrow path strings in its ANSI code
+// page, which has no ❤ or ♻: such a name does not open there (README, "Windows").
+TEST(SharedModels, ModelsWithNamesOutsideAsciiLoad) {
+    if (!fs::exists(kShared / "README.md")) GTEST_SKIP() << kShared << " not found: ../shared is absent";
+#ifdef _WIN32
+    GTEST_SKIP() << "Windows: paths are narrow strings in the ANSI code page, which has no \u2764 or \u267B";
+#endif
+    for (const char* file : {"sample-assets/Unicode❤♻Test/glTF/Unicode❤♻Test.gltf",
+                             "sample-assets/Unicode❤♻Test/glTF-Binary/Unicode❤♻Test.glb"}) {
+        GltfInfo info;
+        ASSERT_NO_THROW(loadGltf((kShared / file).string(), &info)) << file;
+        EXPECT_EQ(info.triangles, 2u) << file;
     }
 }
 

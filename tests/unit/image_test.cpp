@@ -1,12 +1,11 @@
 #include "core/error.hpp"
 #include "core/file_io.hpp"
 #include "core/image.hpp"
+#include "test_dir.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-
-#include <unistd.h>
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -21,14 +20,8 @@ Image gradient(int w, int h) {
         }
     return img;
 }
-// One folder per test and process: CTest runs the tests of this file in parallel processes, and /tmp
-// is shared with other users of the machine.
-struct TempDir {
-    fs::path path = fs::temp_directory_path() /
-                    ("shadelab-image-test-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                     "-" + std::to_string(::getpid()));
-    TempDir() { fs::create_directories(path); }
-    ~TempDir() { fs::remove_all(path); }
+struct TempDir : test::TestDir {
+    TempDir() : TestDir("image") {}
 };
 }  // namespace
 

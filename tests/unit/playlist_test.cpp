@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "core/playlist.hpp"
 #include "core/text.hpp"
+#include "test_dir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,23 +13,13 @@
 #include <regex>
 #include <set>
 
-#include <unistd.h>
-
 using namespace shadelab;
 namespace fs = std::filesystem;
 
 namespace {
 
-// One folder per test and process (CTest runs tests in parallel; /tmp is shared).
-struct TempDir {
-    fs::path path = fs::temp_directory_path() /
-                    ("shadelab-playlist-test-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                     "-" + std::to_string(::getpid()));
-    TempDir() {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
+struct TempDir : test::TestDir {
+    TempDir() : TestDir("playlist") {}
     std::string write(const std::string& name, const std::string& text) const {
         std::ofstream(path / name) << text;
         return (path / name).string();

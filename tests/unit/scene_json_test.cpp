@@ -15,6 +15,9 @@ namespace {
 
 Scene parse(const std::string& json) { return parseScene(json, "test.json", "/scenes"); }
 
+// A path as the scene reader resolves it: with the platform's separators ('\\' on Windows).
+std::string nativePath(const std::string& generic) { return fs::path(generic).make_preferred().string(); }
+
 // Expects an InputError whose message starts with "test.json: " and contains every fragment.
 void expectError(const std::string& json, std::initializer_list<const char*> fragments) {
     try {
@@ -81,7 +84,7 @@ TEST(SceneJson, EveryFieldIsRead) {
     EXPECT_FLOAT_EQ(s.objects[2].mesh.size, 3.0f);
     EXPECT_EQ(s.objects[3].mesh.planeSubdivisions, 4);
     EXPECT_EQ(s.objects[4].mesh.slices, 8);
-    EXPECT_EQ(s.objects[5].mesh.resolvedPath, "/scenes/models/box.glb");  // relative to the scene file
+    EXPECT_EQ(s.objects[5].mesh.resolvedPath, nativePath("/scenes/models/box.glb"));  // relative to the scene file
     EXPECT_EQ(s.shading, ShadingMode::Gouraud);
     EXPECT_EQ(s.layout, Layout::Compare);
     EXPECT_EQ(s.reflection, ReflectionModel::Phong);
@@ -185,7 +188,7 @@ TEST(SceneJson, SavedSceneLoadsBackTheSame) {
     const Scene r = parseScene(saved, "saved.json", "/scenes");
     ASSERT_EQ(r.objects.size(), 2u);
     EXPECT_EQ(r.objects[0].mesh, s.objects[0].mesh);
-    EXPECT_EQ(r.objects[1].mesh.resolvedPath, "/scenes/m/box.gltf");
+    EXPECT_EQ(r.objects[1].mesh.resolvedPath, nativePath("/scenes/m/box.gltf"));
     EXPECT_EQ(r.objects[0].material.color, s.objects[0].material.color);
     EXPECT_FLOAT_EQ(r.objects[0].material.ke, 77.0f);
     EXPECT_EQ(r.objects[0].transform.rotationDeg, s.objects[0].transform.rotationDeg);
@@ -201,7 +204,7 @@ TEST(SceneJson, SavedSceneLoadsBackTheSame) {
     EXPECT_EQ(r.outputEncoding, OutputEncoding::Srgb);
     // Saved from another folder, the model path is rewritten so it still points at the same file.
     const Scene moved = parseScene(sceneToJson(s, "/elsewhere/deeper"), "moved.json", "/elsewhere/deeper");
-    EXPECT_EQ(moved.objects[1].mesh.resolvedPath, "/scenes/m/box.gltf");
+    EXPECT_EQ(moved.objects[1].mesh.resolvedPath, nativePath("/scenes/m/box.gltf"));
     // Saving is stable: a second round trip gives identical text.
     EXPECT_EQ(sceneToJson(r, "/scenes"), saved);
 }
