@@ -144,6 +144,20 @@ long processId() {
 #endif
 }
 
+std::filesystem::path executablePath() {
+    std::error_code ec;
+#ifdef _WIN32
+    std::wstring name(32768, L'\0');
+    const DWORD n = GetModuleFileNameW(nullptr, name.data(), DWORD(name.size()));
+    if (n == 0 || n >= name.size()) return {};
+    name.resize(n);
+    return std::filesystem::path(name);
+#else
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::filesystem::path() : self;
+#endif
+}
+
 #ifdef _WIN32
 // ---- Windows
 

@@ -37,6 +37,10 @@ std::uint64_t physicalMemoryBytes();
 // This process's id (for names that must differ between concurrent processes).
 long processId();
 
+// The running program's file (Linux /proc/self/exe, Windows GetModuleFileNameW); empty when it cannot
+// be found out. Installed data is found from here, so no build path is compiled in.
+std::filesystem::path executablePath();
+
 // Linux: when SHADELAB_HUGEPAGES=1 is set, starts the program again, once, with glibc's tunable
 // glibc.malloc.hugetlb=1 (malloc's large blocks on transparent huge pages, for the GL driver's
 // allocations as well as shadelab's), where the kernel gives huge pages on request (THP "madvise").

@@ -1,6 +1,7 @@
 #include "render/shader_library.hpp"
 
 #include "core/embedded.hpp"
+#include "platform/platform.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -30,11 +31,16 @@ std::string ShaderLibrary::load(const std::string& name) const {
 }
 
 std::string defaultShaderFolder() {
-#ifdef SHADELAB_SOURCE_SHADER_DIR
+    // Beside the program: an installed one's share/shadelab/shaders (cmake --install), or a build
+    // folder's checkout (build/shadelab -> shaders/). Nothing of the build machine is compiled in.
+    const std::filesystem::path exe = platform::executablePath();
+    if (exe.empty()) return {};
     std::error_code ec;
-    if (std::filesystem::is_regular_file(std::filesystem::path(SHADELAB_SOURCE_SHADER_DIR) / "lighting.glsl", ec))
-        return SHADELAB_SOURCE_SHADER_DIR;
-#endif
+    for (const char* relative : {"../share/shadelab/shaders", "../shaders"}) {
+        const std::filesystem::path dir = exe.parent_path() / relative;
+        if (std::filesystem::is_regular_file(dir / "lighting.glsl", ec))
+            return std::filesystem::weakly_canonical(dir, ec).string();
+    }
     return {};
 }
 

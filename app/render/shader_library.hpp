@@ -22,8 +22,9 @@ private:
     std::map<std::string, std::string> diskFiles_;  // name -> contents, read at construction
 };
 
-// The shaders/ folder of the checkout shadelab was built from, when it still exists (so edits there
-// take effect without a rebuild); empty otherwise (an installed binary uses its built-in copies).
+// The GLSL folder beside the program: an installed shadelab's share/shadelab/shaders, or, for a
+// program in a build folder of a checkout, the checkout's shaders/ (so edits there take effect without
+// a rebuild); empty when there is none (the built-in copies are used).
 std::string defaultShaderFolder();
 
 }  // namespace shadelab
