@@ -305,7 +305,9 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys
     handleKeys(keys);
     // Mouse: ImGui's view of it, so a drag that starts on the panel moves a slider, not the camera.
     const ImGuiIO& io = ImGui::GetIO();
-    if (!io.MouseDown[0]) lightDrag_.reset();  // released, also over the panel
+    // Released, also over the panel; a release in this frame still moves the light to where the button
+    // came up (at a low frame rate the last moves and the release arrive in one frame).
+    if (!io.MouseDown[0] && !io.MouseReleased[0]) lightDrag_.reset();
     if (io.WantCaptureMouse) return;
     // A press on a light's marker drags the light (until the release), instead of orbiting or probing.
     const auto inView = [&](const ImVec2& p) { return p.x >= 0.0f && p.x < l.view.width && p.y >= l.view.y; };
@@ -319,7 +321,7 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys
         }
     }
     if (lightDrag_) {
-        if (io.MouseDown[0]) dragLight(l);
+        dragLight(l);
         if (!io.MouseDown[0]) lightDrag_.reset();
         return;
     }
