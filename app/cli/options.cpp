@@ -6,8 +6,8 @@
 #include "core/file_io.hpp"
 #include "core/plot_image.hpp"
 #include "core/scene_json.hpp"
-#include "viewer/controls.hpp"
-#include "viewer/panel_sections.hpp"
+#include "core/controls.hpp"
+#include "core/panel_sections.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,7 +106,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--ior") {
             const std::string v = next();
             const float x = parseFloat(arg, v);
-            if (x < kMinIor || x > kMaxIor) throw InputError(arg + ": must be between 1 and 10 (got " + v + ")");
+            if (x < kIorRange.lo || x > kIorRange.hi) throw InputError(arg + ": must be between 1 and 10 (got " + v + ")");
             o.ior = x;
         }
         else if (arg == "--show") o.show = parseTermView(next(), arg);
@@ -121,7 +121,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--diff-factor") {
             const std::string v = next();
             const float f = parseFloat(arg, v);
-            if (f < 1.0f || f > kMaxDiffFactor) throw InputError(arg + ": must be between 1 and 1000 (got " + v + ")");
+            if (f < 1.0f || f > kDiffFactorRange.hi) throw InputError(arg + ": must be between 1 and 1000 (got " + v + ")");
             o.diffFactor = f;
         }
         else if (arg == "--sweep") {
@@ -138,7 +138,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--incidence") {
             const std::string v = next();
             const float deg = parseFloat(arg, v);
-            if (deg < 0.0f || deg > kMaxIncidenceDeg)
+            if (deg < 0.0f || deg > kIncidenceDegRange.hi)
                 throw InputError(arg + ": must be between 0 and 89 degrees (got " + v + ")");
             o.incidenceDeg = deg;
         }
@@ -171,13 +171,13 @@ Options parseOptions(const std::vector<std::string>& args) {
             const std::size_t comma = v.find(',');
             if (comma == std::string::npos)
                 throw InputError(arg + ": expected the pixel as X,Y, e.g. 640,360 (got \"" + quoteInput(v) + "\")");
-            const int x = parseInt(arg, v.substr(0, comma), 0, kMaxImageSide - 1);  // x first: it is named first
-            o.probe = glm::ivec2(x, parseInt(arg, v.substr(comma + 1), 0, kMaxImageSide - 1));
+            const int x = parseInt(arg, v.substr(0, comma), 0, kImageSideRange.hi - 1);  // x first: it is named first
+            o.probe = glm::ivec2(x, parseInt(arg, v.substr(comma + 1), 0, kImageSideRange.hi - 1));
         }
         else if (arg == "--select-light") o.selectLight = parseInt(arg, next(), 0, kMaxLights - 1);
         else if (arg == "--benchmark") o.benchmarkFrames = parseInt(arg, next(), 1, 1000000);
         else if (arg == "--frames") o.frames = parseInt(arg, next(), 1, 100000000);
-        else if (arg == "--progressive") o.progressiveStride = parseInt(arg, next(), 1, kMaxAreaSamplesPerSide);
+        else if (arg == "--progressive") o.progressiveStride = parseInt(arg, next(), 1, kAreaSamplesPerSideRange.hi);
         else if (arg == "--msaa") {
             static const std::pair<const char*, int> kSamples[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}};
             o.msaa = parseChoice(arg, next(), kSamples);
@@ -197,7 +197,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         else if (arg == "--ui-scale") {
             const std::string v = next();
             const float scale = parseFloat(arg, v);
-            if (!(scale >= kMinUiScale && scale <= kMaxUiScale))
+            if (!(scale >= kUiScaleRange.lo && scale <= kUiScaleRange.hi))
                 throw InputError(arg + ": must be between 0.75 and 4 (got " + v + ")");
             o.uiScale = scale;
         }
