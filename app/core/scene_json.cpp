@@ -158,21 +158,21 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
     switch (m.type) {
     case MeshSpec::Type::UvSphere:
         requireObject(j, path, {"type", "slices", "stacks", "radius"});
-        integer(j, "slices", path, m.slices, 3, 4096);
-        integer(j, "stacks", path, m.stacks, 2, 2048);
+        integer(j, "slices", path, m.slices, kUvSphereSlicesRange.lo, kUvSphereSlicesRange.hi);
+        integer(j, "stacks", path, m.stacks, kUvSphereStacksRange.lo, kUvSphereStacksRange.hi);
         number(j, "radius", path, m.radius, 1e-4, 1e6);
         break;
     case MeshSpec::Type::IcoSphere:
         requireObject(j, path, {"type", "subdivisions", "radius"});
-        integer(j, "subdivisions", path, m.subdivisions, 0, 8);
+        integer(j, "subdivisions", path, m.subdivisions, kIcoSphereSubdivisionsRange.lo, kIcoSphereSubdivisionsRange.hi);
         number(j, "radius", path, m.radius, 1e-4, 1e6);
         break;
     case MeshSpec::Type::Torus:
         requireObject(j, path, {"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
         number(j, "major_radius", path, m.majorRadius, 1e-4, 1e6);
         number(j, "minor_radius", path, m.minorRadius, 1e-4, 1e6);
-        integer(j, "major_segments", path, m.majorSegments, 3, 4096);
-        integer(j, "minor_segments", path, m.minorSegments, 3, 4096);
+        integer(j, "major_segments", path, m.majorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
+        integer(j, "minor_segments", path, m.minorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
         break;
     case MeshSpec::Type::Cube:
         requireObject(j, path, {"type", "size"});
@@ -181,7 +181,7 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
     case MeshSpec::Type::Plane:
         requireObject(j, path, {"type", "size", "subdivisions"});
         number(j, "size", path, m.size, 1e-4, 1e6);
-        integer(j, "subdivisions", path, m.planeSubdivisions, 1, 1024);
+        integer(j, "subdivisions", path, m.planeSubdivisions, kPlaneSubdivisionsRange.lo, kPlaneSubdivisionsRange.hi);
         break;
     case MeshSpec::Type::Gltf: {
         requireObject(j, path, {"type", "path"});
@@ -558,7 +558,7 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
     std::stringstream ss(text);
     for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
     if (parts.empty()) throw InputError(opt + ": empty mesh");
-    auto intArg = [&](size_t i, int& out, int lo, int hi) {
+    auto intArg = [&](size_t i, int& out, const Range<int>& range) {
         if (i >= parts.size()) return;
         const std::string& p = parts[i];
         size_t used = 0;
@@ -569,31 +569,30 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
             used = 0;
         }
         if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + quoteInput(p) + "\" is not an integer");
-        if (v < lo || v > hi)
-            throw InputError(opt + ": " + p + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+        if (v < range.lo || v > range.hi) throw InputError(opt + ": " + p + " is out of range (" + rangeText(range) + ")");
         out = static_cast<int>(v);
     };
     const std::string& kind = parts[0];
     size_t maxParts = 1;
     if (kind == "uvsphere") {
         m.type = MeshSpec::Type::UvSphere;
-        intArg(1, m.slices, 3, 4096);
-        intArg(2, m.stacks, 2, 2048);
+        intArg(1, m.slices, kUvSphereSlicesRange);
+        intArg(2, m.stacks, kUvSphereStacksRange);
         maxParts = 3;
     } else if (kind == "icosphere") {
         m.type = MeshSpec::Type::IcoSphere;
-        intArg(1, m.subdivisions, 0, 8);
+        intArg(1, m.subdivisions, kIcoSphereSubdivisionsRange);
         maxParts = 2;
     } else if (kind == "torus") {
         m.type = MeshSpec::Type::Torus;
-        intArg(1, m.majorSegments, 3, 4096);
-        intArg(2, m.minorSegments, 3, 4096);
+        intArg(1, m.majorSegments, kTorusSegmentsRange);
+        intArg(2, m.minorSegments, kTorusSegmentsRange);
         maxParts = 3;
     } else if (kind == "cube") {
         m.type = MeshSpec::Type::Cube;
     } else if (kind == "plane") {
         m.type = MeshSpec::Type::Plane;
-        intArg(1, m.planeSubdivisions, 1, 1024);
+        intArg(1, m.planeSubdivisions, kPlaneSubdivisionsRange);
         maxParts = 2;
     } else if (hasModelExtension(text)) {
         m.type = MeshSpec::Type::Gltf;

@@ -17,6 +17,12 @@ struct Range {
 // The scene.
 inline constexpr Range<int> kLightCountRange{0, 16};        // also SL_MAX_LIGHTS in shaders/shared_defs.glsl
 inline constexpr Range<int> kImageSideRange{1, 16384};      // pixels per side, refused before anything is allocated
+// Procedural meshes' tessellation: scene files, --mesh and the sweep's "tessellation".
+inline constexpr Range<int> kUvSphereSlicesRange{3, 4096};
+inline constexpr Range<int> kUvSphereStacksRange{2, 2048};
+inline constexpr Range<int> kIcoSphereSubdivisionsRange{0, 8};
+inline constexpr Range<int> kTorusSegmentsRange{3, 4096};  // major and minor
+inline constexpr Range<int> kPlaneSubdivisionsRange{1, 1024};
 inline constexpr Range<float> kCoefficientRange{0.0f, 1000.0f};  // k_a, k_d, k_s
 inline constexpr Range<float> kExponentRange{1.0f, 10000.0f};    // k_e: the lecture's slider goes 1..1000
 inline constexpr Range<int> kAreaSamplesPerSideRange{1, 16};     // an area light has at most 16 x 16 samples

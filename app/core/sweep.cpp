@@ -23,7 +23,7 @@ const NumericParameter kNumeric[] = {
     {"kd", kCoefficientRange.lo, kCoefficientRange.hi, false},
     {"ka", kCoefficientRange.lo, kCoefficientRange.hi, false},
     {"intensity", 0.0, 1e9, false},
-    {"tessellation", 1.0, 4096.0, true},
+    {"tessellation", 1.0, double(kUvSphereSlicesRange.hi), true},
     {"ior", kIorRange.lo, kIorRange.hi, false}};
 
 // Sets `field` to the value `v` names in `names`; false when it names none.
@@ -120,16 +120,23 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
         if (scene.objects.empty()) throw InputError(flag + ": tessellation: the scene has no object");
         MeshSpec& m = scene.objects[0].mesh;
         const int n = int(x);
-        auto need = [&](int lo, int hi) {
-            if (n < lo || n > hi)
+        auto need = [&](const Range<int>& range) {
+            if (!range.contains(n))
                 throw InputError(flag + ": tessellation: " + v + " is out of range for a " + toString(m.type) + " (" +
-                                 std::to_string(lo) + ".." + std::to_string(hi) + ")");
+                                 rangeText(range) + ")");
         };
+        // A sphere's stacks and a torus's minor segments are half of n: n is at least twice their minimum.
+        const Range<int> uvSphere{2 * kUvSphereStacksRange.lo, kUvSphereSlicesRange.hi};
+        const Range<int> torus{2 * kTorusSegmentsRange.lo, kTorusSegmentsRange.hi};
         switch (m.type) {
-        case MeshSpec::Type::UvSphere: need(4, 4096), m.slices = n, m.stacks = std::max(n / 2, 2); break;
-        case MeshSpec::Type::IcoSphere: need(0, 8), m.subdivisions = n; break;
-        case MeshSpec::Type::Torus: need(6, 4096), m.majorSegments = n, m.minorSegments = std::max(n / 2, 3); break;
-        case MeshSpec::Type::Plane: need(1, 1024), m.planeSubdivisions = n; break;
+        case MeshSpec::Type::UvSphere:
+            need(uvSphere), m.slices = n, m.stacks = std::max(n / 2, kUvSphereStacksRange.lo);
+            break;
+        case MeshSpec::Type::IcoSphere: need(kIcoSphereSubdivisionsRange), m.subdivisions = n; break;
+        case MeshSpec::Type::Torus:
+            need(torus), m.majorSegments = n, m.minorSegments = std::max(n / 2, kTorusSegmentsRange.lo);
+            break;
+        case MeshSpec::Type::Plane: need(kPlaneSubdivisionsRange), m.planeSubdivisions = n; break;
         case MeshSpec::Type::Cube:
         case MeshSpec::Type::Gltf:
             throw InputError(flag + ": tessellation: the first object is a " + std::string(toString(m.type)) +
