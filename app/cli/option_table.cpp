@@ -171,7 +171,7 @@ const OptionSpec kOptions[] = {
     {"--ior", "", "X", G::General, bounds(kIorRange), nullptr, "ior",
      "index of refraction eta2/eta1 from air for `--fresnel` ({range}, default 1.5)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.ior = floatIn(self, v); }},
-    {"--show", "", "TERM", G::General, kNoBounds, [] { return std::string("all | ambient | diffuse | specular | light:N | unlit"); },
+    {"--show", "", "TERM", G::General, kNoBounds, [] { return namesList(kShowTermNames, " | "); },
      "show", "draw one addend of the formula alone: {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.show = parseTermView(v, self.name); }},
     materialOption<&Options::ka>("--ka", "objects[].material.ka", kCoefficientRange, "ambient weight ({range}) of every object"),

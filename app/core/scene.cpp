@@ -36,15 +36,7 @@ const char* toString(OutputEncoding e) { return nameOf(kOutputEncodingNames, e);
 const char* toString(SpecularNormalization n) { return nameOf(kSpecularNormalizationNames, n); }
 const char* toString(FresnelMode f) { return nameOf(kFresnelModeNames, f); }
 std::string toString(const TermView& t) {
-    switch (t.term) {
-    case ShowTerm::All: return "all";
-    case ShowTerm::Ambient: return "ambient";
-    case ShowTerm::Diffuse: return "diffuse";
-    case ShowTerm::Specular: return "specular";
-    case ShowTerm::Light: return "light:" + std::to_string(t.light);
-    case ShowTerm::Unlit: return "unlit";
-    }
-    return "?";
+    return t.term == ShowTerm::Light ? "light:" + std::to_string(t.light) : nameOf(kShowTermNames, t.term);
 }
 
 std::string formatNumber(double v) {

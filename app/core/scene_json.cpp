@@ -573,36 +573,40 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
         out = static_cast<int>(v);
     };
     const std::string& kind = parts[0];
-    size_t maxParts = 1;
-    if (kind == "uvsphere") {
-        m.type = MeshSpec::Type::UvSphere;
-        intArg(1, m.slices, kUvSphereSlicesRange);
-        intArg(2, m.stacks, kUvSphereStacksRange);
-        maxParts = 3;
-    } else if (kind == "icosphere") {
-        m.type = MeshSpec::Type::IcoSphere;
-        intArg(1, m.subdivisions, kIcoSphereSubdivisionsRange);
-        maxParts = 2;
-    } else if (kind == "torus") {
-        m.type = MeshSpec::Type::Torus;
-        intArg(1, m.majorSegments, kTorusSegmentsRange);
-        intArg(2, m.minorSegments, kTorusSegmentsRange);
-        maxParts = 3;
-    } else if (kind == "cube") {
-        m.type = MeshSpec::Type::Cube;
-    } else if (kind == "plane") {
-        m.type = MeshSpec::Type::Plane;
-        intArg(1, m.planeSubdivisions, kPlaneSubdivisionsRange);
-        maxParts = 2;
-    } else if (hasModelExtension(text)) {
+    const std::optional<MeshSpec::Type> type = valueNamed(kMeshTypeNames, kind);
+    if (!type || *type == MeshSpec::Type::Gltf) {  // a model is given by its file name, not "gltf"
+        if (!hasModelExtension(text))
+            throw InputError(opt + ": unknown mesh \"" + kind +
+                             "\" (expected uvsphere[:slices[:stacks]], icosphere[:n], torus[:major[:minor]], cube, "
+                             "plane[:n], or a .gltf/.glb file)");
         m.type = MeshSpec::Type::Gltf;
         m.path = text;
         m.resolvedPath = fs::path(text).lexically_normal().string();
         return m;
-    } else {
-        throw InputError(opt + ": unknown mesh \"" + kind +
-                         "\" (expected uvsphere[:slices[:stacks]], icosphere[:n], torus[:major[:minor]], cube, "
-                         "plane[:n], or a .gltf/.glb file)");
+    }
+    m.type = *type;
+    size_t maxParts = 1;
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        intArg(1, m.slices, kUvSphereSlicesRange);
+        intArg(2, m.stacks, kUvSphereStacksRange);
+        maxParts = 3;
+        break;
+    case MeshSpec::Type::IcoSphere:
+        intArg(1, m.subdivisions, kIcoSphereSubdivisionsRange);
+        maxParts = 2;
+        break;
+    case MeshSpec::Type::Torus:
+        intArg(1, m.majorSegments, kTorusSegmentsRange);
+        intArg(2, m.minorSegments, kTorusSegmentsRange);
+        maxParts = 3;
+        break;
+    case MeshSpec::Type::Plane:
+        intArg(1, m.planeSubdivisions, kPlaneSubdivisionsRange);
+        maxParts = 2;
+        break;
+    case MeshSpec::Type::Cube:
+    case MeshSpec::Type::Gltf: break;
     }
     if (parts.size() > maxParts) throw InputError(opt + ": too many ':' parameters for " + kind);
     return m;
@@ -706,13 +710,8 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
 TermView parseTermView(const std::string& text, const std::string& where) {
     const std::string prefix = where.empty() ? std::string() : where + ": ";
     TermView t;
-    static const std::pair<const char*, ShowTerm> kTerms[] = {{"all", ShowTerm::All},
-                                                             {"ambient", ShowTerm::Ambient},
-                                                             {"diffuse", ShowTerm::Diffuse},
-                                                             {"specular", ShowTerm::Specular},
-                                                             {"unlit", ShowTerm::Unlit}};
-    for (const auto& k : kTerms)
-        if (text == k.first) {
+    for (const auto& k : kShowTermNames)
+        if (k.second != ShowTerm::Light && text == k.first) {  // light:N below
             t.term = k.second;
             return t;
         }
@@ -729,8 +728,7 @@ TermView parseTermView(const std::string& text, const std::string& where) {
         t.light = int(v);
         return t;
     }
-    throw InputError(prefix + "unknown value \"" + text +
-                     "\" (expected one of all, ambient, diffuse, specular, light:N, unlit)");
+    throw InputError(prefix + "unknown value \"" + text + "\" (expected one of " + namesList(kShowTermNames) + ")");
 }
 
 void checkCoefficients(const Material& m, const std::string& where) {

@@ -35,6 +35,10 @@ inline constexpr EnumName<MeshSpec::Type> kMeshTypeNames[] = {
     {"uvsphere", MeshSpec::Type::UvSphere}, {"icosphere", MeshSpec::Type::IcoSphere},
     {"torus", MeshSpec::Type::Torus},       {"cube", MeshSpec::Type::Cube},
     {"plane", MeshSpec::Type::Plane},       {"gltf", MeshSpec::Type::Gltf}};
+// "show": one term of the formula; ShowTerm::Light is written "light:N", N the light's index.
+inline constexpr EnumName<ShowTerm> kShowTermNames[] = {
+    {"all", ShowTerm::All},           {"ambient", ShowTerm::Ambient}, {"diffuse", ShowTerm::Diffuse},
+    {"specular", ShowTerm::Specular}, {"light:N", ShowTerm::Light},   {"unlit", ShowTerm::Unlit}};
 
 // The name of `value` in `names` ("?" when it has none).
 template <typename E, std::size_t N>
