@@ -72,10 +72,11 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
 // then either one PNG per preset into the --output folder, or the viewer stepping through them.
 int runPlaylist(const Options& options, const std::string& shaderDir, const ShaderLibrary& shaders,
                 HeadlessBackend backend) {
-    if (options.output) checkOutputFolder(*options.output, "--output");
+    const bool images = options.mode == RunMode::PlaylistImages;  // else the viewer
+    if (images) checkOutputFolder(*options.output, "--output");
     const SceneAdjust adjust = [&options](Scene& s) { applyOverrides(s, options); };
     std::vector<Preset> presets = loadPlaylist(*options.playlist, adjust);
-    if (options.output) {
+    if (images) {
         std::vector<Scene> scenes;
         for (const Preset& p : presets) scenes.push_back(p.scene);
         // Every preset rendered before any file is written: a model that fails to load in the last
@@ -105,14 +106,136 @@ int runPlaylist(const Options& options, const std::string& shaderDir, const Shad
     return 0;
 }
 
+// What a run needs beside the options: where the GLSL comes from and which headless context.
+struct RunContext {
+    const Options& options;
+    std::string shaderDir;
+    ShaderLibrary shaders;
+    HeadlessBackend backend;
+};
+
+// --plot: drawn on the CPU from core/lighting's formulas: no GL, no context, no shaders.
+int runPlot(const Options& options, const Scene& scene) {
+    const Material material = scene.objects.empty() ? Material{} : scene.objects.front().material;
+    const Image image = renderPlotImage(scenePlot(*options.plot, scene, material, plotSettings(options)),
+                                        options.width.value_or(kPlotDefaultWidth),
+                                        options.height.value_or(kPlotDefaultHeight));
+    writePng(*options.output, image);
+    if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
+    return 0;
+}
+
+// --verbose's account of what was loaded, and every glTF warning.
+void report(const Options& options, const Scene& drawn, const std::vector<GltfInfo>& gltfInfo, std::size_t triangles) {
+    for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
+        const GltfInfo& info = gltfInfo[i];
+        const std::string& path = drawn.objects[i].mesh.resolvedPath;
+        for (const std::string& w : info.warnings) std::cerr << oneLine("shadelab: warning: " + path + ": " + w) << "\n";
+        if (options.verbose && drawn.objects[i].mesh.type == MeshSpec::Type::Gltf) {
+            std::cerr << "shadelab: " << path << ": " << info.triangles << " triangles, " << info.generatedNormals
+                      << " generated normals";
+            if (info.textures) std::cerr << ", " << info.textures << " base colour texture(s)";
+            std::cerr << "\n";
+        }
+    }
+    if (options.verbose)
+        std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
+                  << drawn.objects.size() << " object(s), " << triangles << " triangles\n";
+}
+
+int runSweepSheet(const RunContext& run, const Scene& scene) {
+    const Options& options = run.options;
+    const Stopwatch clock;
+    const Image sheet = renderSweepHeadless(scene, options.sweeps, run.shaders, run.backend, "--sweep", headlessMsaa(options));
+    writePng(*options.output, sheet);
+    if (options.verbose)
+        std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
+                  << clock.ms() << " ms)\n";
+    return 0;
+}
+
+// The probe needs the CPU geometry after the render, so this path builds it itself rather than
+// through renderSceneHeadless (which lets go of it once uploaded).
+int runProbeImage(const RunContext& run, Scene scene) {
+    const Options& options = run.options;
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+    frameIfNeeded(scene, *geometry);
+    report(options, scene, geometry->gltfInfo, geometry->triangleCount());
+    const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
+                                         options.probe->y);
+    writePng(*options.output, renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options)));
+    std::cout << probeToJson(scene, probe) << std::endl;
+    return 0;
+}
+
+int runImage(const RunContext& run, Scene scene) {
+    const Options& options = run.options;
+    const Stopwatch clock;
+    const HeadlessFrame frame = renderSceneHeadless(std::move(scene), run.shaders, run.backend, headlessMsaa(options));
+    report(options, frame.scene, frame.gltfInfo, frame.triangles);
+    const double renderedMs = clock.ms();
+    writePng(*options.output, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption)
+                                               : frame.image);
+    if (options.verbose)
+        std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
+                  << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
+    return 0;
+}
+
+int runInfo(const Scene& scene, const SceneGeometry& geometry) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const MeshSpec& spec = scene.objects[i].mesh;
+        if (spec.type == MeshSpec::Type::Gltf) {
+            std::cout << describe(spec.resolvedPath, geometry.gltfInfo[i]);
+        } else {
+            std::cout << "object " << i << ": " << toString(spec.type) << ", " << geometry.meshes[i].triangleCount()
+                      << " triangles, " << geometry.meshes[i].positions.size() << " vertices\n";
+        }
+    }
+    return 0;
+}
+
+int runBenchmark(const RunContext& run, const Scene& scene, const std::shared_ptr<SceneGeometry>& geometry) {
+    const Options& options = run.options;
+    std::vector<ShadingMode> modes;
+    if (scene.layout == Layout::Compare) modes = {scene.shading};
+    else if (options.shading) modes = {*options.shading};
+    else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
+    for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, run.shaders,
+                                                      run.backend, options.progressiveStride, headlessMsaa(options)))
+        std::cout << toJson(r) << std::endl;
+    return 0;
+}
+
+// One scene (not a playlist): the mode parseOptions decided.
+int runScene(const RunContext& run) {
+    const Options& options = run.options;
+    Scene scene = sceneFromOptions(options);
+    if (options.mode == RunMode::Plot) return runPlot(options, scene);
+    if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
+    switch (options.mode) {
+    case RunMode::SweepSheet: return runSweepSheet(run, scene);
+    case RunMode::ProbeImage: return runProbeImage(run, std::move(scene));
+    case RunMode::Image: return runImage(run, std::move(scene));
+    default: break;
+    }
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
+    frameIfNeeded(scene, *geometry);
+    if (options.mode == RunMode::Info) return runInfo(scene, *geometry);
+    report(options, scene, geometry->gltfInfo, geometry->triangleCount());
+    if (options.mode == RunMode::Benchmark) return runBenchmark(run, scene, geometry);
+    Viewer(std::move(scene), std::move(geometry), viewerOptions(options, run.shaderDir)).run();
+    return 0;
+}
+
 int run(const std::vector<std::string>& args) {
     const Options options = parseOptions(args);
     setMemoryBudget(options.maxMemory);
-    if (options.help) {
+    if (options.mode == RunMode::Help) {
         std::cout << usage();
         return 0;
     }
-    if (options.version) {
+    if (options.mode == RunMode::Version) {
         std::cout << "shadelab " << SHADELAB_VERSION << "\n";
         return 0;
     }
@@ -122,101 +245,13 @@ int run(const std::vector<std::string>& args) {
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
     // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
     const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
-    const ShaderLibrary shaders(shaderDir);
-    const HeadlessBackend backend = options.backend == "egl"      ? HeadlessBackend::Egl
-                                    : options.backend == "osmesa" ? HeadlessBackend::OsMesa
-                                                                  : HeadlessBackend::Auto;
-    if (options.playlist) return runPlaylist(options, shaderDir, shaders, backend);
-    Scene scene = sceneFromOptions(options);
-    if (options.plot && !options.info) {
-        // Drawn on the CPU from core/lighting's formulas: no GL, no context, no shaders.
-        const Material material = scene.objects.empty() ? Material{} : scene.objects.front().material;
-        const Image image = renderPlotImage(scenePlot(*options.plot, scene, material, plotSettings(options)),
-                                            options.width.value_or(kPlotDefaultWidth),
-                                            options.height.value_or(kPlotDefaultHeight));
-        writePng(*options.output, image);
-        if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
-        return 0;
-    }
-    if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
-    auto report = [&](const Scene& drawn, const std::vector<GltfInfo>& gltfInfo, std::size_t triangles) {
-        for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
-            const GltfInfo& info = gltfInfo[i];
-            const std::string& path = drawn.objects[i].mesh.resolvedPath;
-            for (const std::string& w : info.warnings) std::cerr << oneLine("shadelab: warning: " + path + ": " + w) << "\n";
-            if (options.verbose && drawn.objects[i].mesh.type == MeshSpec::Type::Gltf) {
-                std::cerr << "shadelab: " << path << ": " << info.triangles << " triangles, " << info.generatedNormals
-                          << " generated normals";
-                if (info.textures) std::cerr << ", " << info.textures << " base colour texture(s)";
-                std::cerr << "\n";
-            }
-        }
-        if (options.verbose)
-            std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
-                      << drawn.objects.size() << " object(s), " << triangles << " triangles\n";
-    };
-    const Stopwatch clock;
-
-    if (options.output && !options.sweeps.empty() && !options.info) {
-        const Image sheet = renderSweepHeadless(scene, options.sweeps, shaders, backend, "--sweep", headlessMsaa(options));
-        writePng(*options.output, sheet);
-        if (options.verbose)
-            std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
-                      << clock.ms() << " ms)\n";
-        return 0;
-    }
-    if (options.output && options.probe) {
-        // The probe needs the CPU geometry after the render, so this path builds it itself rather
-        // than through renderSceneHeadless (which lets go of it once uploaded).
-        auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
-        frameIfNeeded(scene, *geometry);
-        report(scene, geometry->gltfInfo, geometry->triangleCount());
-        const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
-                                             options.probe->y);
-        writePng(*options.output, renderHeadless(scene, geometry, shaders, backend, headlessMsaa(options)));
-        std::cout << probeToJson(scene, probe) << std::endl;
-        return 0;
-    }
-    if (options.output && !options.info && options.benchmarkFrames == 0) {
-        const HeadlessFrame frame = renderSceneHeadless(std::move(scene), shaders, backend, headlessMsaa(options));
-        report(frame.scene, frame.gltfInfo, frame.triangles);
-        const double renderedMs = clock.ms();
-        writePng(*options.output, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption)
-                                                   : frame.image);
-        if (options.verbose)
-            std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
-                      << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
-        return 0;
-    }
-
-    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
-    frameIfNeeded(scene, *geometry);
-    if (options.info) {
-        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-            const MeshSpec& spec = scene.objects[i].mesh;
-            if (spec.type == MeshSpec::Type::Gltf) {
-                std::cout << describe(spec.resolvedPath, geometry->gltfInfo[i]);
-            } else {
-                std::cout << "object " << i << ": " << toString(spec.type) << ", " << geometry->meshes[i].triangleCount()
-                          << " triangles, " << geometry->meshes[i].positions.size() << " vertices\n";
-            }
-        }
-        return 0;
-    }
-    report(scene, geometry->gltfInfo, geometry->triangleCount());
-
-    if (options.benchmarkFrames > 0) {
-        std::vector<ShadingMode> modes;
-        if (scene.layout == Layout::Compare) modes = {scene.shading};
-        else if (options.shading) modes = {*options.shading};
-        else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
-        for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, shaders, backend,
-                                                          options.progressiveStride, headlessMsaa(options)))
-            std::cout << toJson(r) << std::endl;
-        return 0;
-    }
-    Viewer(std::move(scene), std::move(geometry), viewerOptions(options, shaderDir)).run();
-    return 0;
+    const RunContext context{options, shaderDir, ShaderLibrary(shaderDir),
+                             options.backend == "egl"      ? HeadlessBackend::Egl
+                             : options.backend == "osmesa" ? HeadlessBackend::OsMesa
+                                                           : HeadlessBackend::Auto};
+    if (options.mode == RunMode::PlaylistImages || options.mode == RunMode::PlaylistViewer)
+        return runPlaylist(options, shaderDir, context.shaders, context.backend);
+    return runScene(context);
 }
 
 }  // namespace

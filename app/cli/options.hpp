@@ -14,6 +14,21 @@
 
 namespace shadelab {
 
+// What a run does, decided once by parseOptions from the options given (main.cpp acts on it).
+enum class RunMode {
+    Help,            // --help: print usage()
+    Version,         // --version
+    PlaylistImages,  // --playlist DIR --output OUT/: one PNG per preset
+    PlaylistViewer,  // --playlist DIR: the viewer stepping through the presets
+    Plot,            // --plot KIND --output FILE.png: drawn on the CPU, no GL
+    SweepSheet,      // --sweep ... --output FILE.png: a contact sheet
+    ProbeImage,      // --probe X,Y --output FILE.png: the frame and the pixel's terms as JSON
+    Image,           // --output FILE.png: one frame
+    Info,            // --info: what was loaded
+    Benchmark,       // --benchmark N: frame times as JSON lines
+    Viewer,          // anything else: the interactive viewer
+};
+
 struct Options {
     std::string input;                      // scene or model file; empty: the built-in default scene
     std::optional<std::string> output;      // --output FILE.png: render one frame headless (a folder with --playlist)
@@ -67,9 +82,12 @@ struct Options {
     bool verbose = false;
     bool help = false;
     bool version = false;
+    RunMode mode = RunMode::Viewer;          // from all of the above (parseOptions)
 };
 
-// Throws InputError "--flag: what is wrong" for unknown flags, missing or malformed values.
+// Reads the arguments through the option table (cli/option_table.hpp), checks the options against each
+// other and decides the run mode. Throws InputError "--flag: what is wrong" for unknown flags, missing
+// or malformed values and options that do not go together.
 Options parseOptions(const std::vector<std::string>& args);
 
 // Loads the input named by the options (scene file, model, or the default scene) and applies every
@@ -83,6 +101,9 @@ void applyOverrides(Scene& scene, const Options& options);
 // The plot --plot asks for, from the scene and --incidence/--from-inside (see scenePlot).
 PlotSettings plotSettings(const Options& options);
 
+// --help: the synopsis, every option of the table, and the viewer's keys.
 std::string usage();
+// The README's option table (Markdown), made from the same table: a unit test compares the two.
+std::string optionsMarkdown();
 
 }  // namespace shadelab

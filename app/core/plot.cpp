@@ -69,7 +69,7 @@ glm::vec2 unitAt(float angleFromNDeg) {
 
 }  // namespace
 
-const char* toString(PlotKind kind) { return kind == PlotKind::Lobe ? "lobe" : "fresnel"; }
+const char* toString(PlotKind kind) { return nameOf(kPlotKindNames, kind); }
 
 std::vector<LobeSample> sampleLobe(const LightingEnvironment& env, float ke, float incidenceDeg) {
     std::vector<float> angles;

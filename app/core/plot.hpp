@@ -11,6 +11,7 @@
 // rasterises it into a PNG (--plot), the viewer's panel draws the same Plot with ImGui.
 #include "core/lighting.hpp"
 #include "core/scene.hpp"
+#include "core/scene_names.hpp"
 #include "core/text.hpp"
 
 #include <glm/vec2.hpp>
@@ -24,6 +25,7 @@
 namespace shadelab {
 
 enum class PlotKind { Lobe, Fresnel };
+inline constexpr EnumName<PlotKind> kPlotKindNames[] = {{"lobe", PlotKind::Lobe}, {"fresnel", PlotKind::Fresnel}};
 const char* toString(PlotKind kind);
 
 // ---- The curves' values
@@ -106,11 +108,10 @@ Plot fresnelPlot(float eta1, float eta2);
 // What the plots take beside the scene: the lobe's incoming direction, and which side of the surface
 // the Fresnel plot's light comes from.
 struct PlotSettings {
-    float incidenceDeg = 45.0f;   // angle between I and N, 0..kMaxIncidenceDeg
+    float incidenceDeg = 45.0f;   // angle between I and N, 0..kIncidenceDegRange.hi
     bool fromInside = false;      // false: from air into the material (eta1 = 1, eta2 = ior), as the
                                   // renderer's Fresnel term; true: eta1 = ior, eta2 = 1 (total internal reflection)
 };
-inline constexpr float kMaxIncidenceDeg = 89.0f;  // at 90 the light grazes the surface and spec is 0
 
 // The plot for a scene: the lobe at material.ke with the scene's reflection model, normalisation,
 // Fresnel mode and ior; the Fresnel curves for the scene's ior, from the side settings.fromInside says.

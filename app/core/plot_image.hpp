@@ -14,5 +14,10 @@ Image renderPlotImage(const Plot& plot, int width, int height);
 inline constexpr int kPlotDefaultWidth = 800, kPlotDefaultHeight = 600;
 // Smaller plots have no room for their labels; larger ones are not needed for a slide.
 inline constexpr int kPlotMinWidth = 320, kPlotMinHeight = 240, kPlotMaxSide = 4096;
+// "320x240 to 4096x4096": the plot sizes --size may ask for, as messages and --help say it.
+inline std::string plotSizesText() {
+    return std::to_string(kPlotMinWidth) + "x" + std::to_string(kPlotMinHeight) + " to " + std::to_string(kPlotMaxSide) +
+           "x" + std::to_string(kPlotMaxSide);
+}
 
 }  // namespace shadelab

@@ -1,5 +1,9 @@
 #include "core/scene.hpp"
 
+#include "core/scene_names.hpp"
+
+#include <sstream>
+
 namespace shadelab {
 
 bool MeshSpec::operator==(const MeshSpec& o) const {
@@ -17,69 +21,28 @@ bool MeshSpec::operator==(const MeshSpec& o) const {
     return false;
 }
 
-const char* toString(ShadingMode m) {
-    switch (m) {
-    case ShadingMode::Flat: return "flat";
-    case ShadingMode::Gouraud: return "gouraud";
-    case ShadingMode::Phong: return "phong";
-    }
-    return "?";
-}
-const char* toString(Layout l) {
-    switch (l) {
-    case Layout::Single: return "single";
-    case Layout::Compare: return "compare";
-    case Layout::Diff: return "diff";
-    }
-    return "?";
-}
-const char* toString(ReflectionModel r) { return r == ReflectionModel::Phong ? "phong" : "blinn-phong"; }
-const char* toString(MeshSpec::Type t) {
-    switch (t) {
-    case MeshSpec::Type::UvSphere: return "uvsphere";
-    case MeshSpec::Type::IcoSphere: return "icosphere";
-    case MeshSpec::Type::Torus: return "torus";
-    case MeshSpec::Type::Cube: return "cube";
-    case MeshSpec::Type::Plane: return "plane";
-    case MeshSpec::Type::Gltf: return "gltf";
-    }
-    return "?";
-}
-const char* toString(Attenuation a) { return a == Attenuation::None ? "none" : "inverse-square"; }
-const char* toString(LightType t) {
-    switch (t) {
-    case LightType::Point: return "point";
-    case LightType::Directional: return "directional";
-    case LightType::Area: return "area";
-    case LightType::Spot: return "spot";
-    }
-    return "?";
-}
+const char* toString(ShadingMode m) { return nameOf(kShadingModeNames, m); }
+const char* toString(Layout l) { return nameOf(kLayoutNames, l); }
+const char* toString(ReflectionModel r) { return nameOf(kReflectionModelNames, r); }
+const char* toString(MeshSpec::Type t) { return nameOf(kMeshTypeNames, t); }
+const char* toString(Attenuation a) { return nameOf(kAttenuationNames, a); }
+const char* toString(LightType t) { return nameOf(kLightTypeNames, t); }
 
 bool ShadowSettings::operator==(const ShadowSettings& o) const {
     return enabled == o.enabled && normalBias == o.normalBias && depthBias == o.depthBias && pcf == o.pcf &&
            mapSize == o.mapSize && areaMapSize == o.areaMapSize;
 }
-const char* toString(OutputEncoding e) { return e == OutputEncoding::Linear ? "linear" : "srgb"; }
-const char* toString(SpecularNormalization n) { return n == SpecularNormalization::None ? "none" : "energy"; }
-const char* toString(FresnelMode f) {
-    switch (f) {
-    case FresnelMode::None: return "none";
-    case FresnelMode::Schlick: return "schlick";
-    case FresnelMode::Exact: return "exact";
-    }
-    return "?";
-}
+const char* toString(OutputEncoding e) { return nameOf(kOutputEncodingNames, e); }
+const char* toString(SpecularNormalization n) { return nameOf(kSpecularNormalizationNames, n); }
+const char* toString(FresnelMode f) { return nameOf(kFresnelModeNames, f); }
 std::string toString(const TermView& t) {
-    switch (t.term) {
-    case ShowTerm::All: return "all";
-    case ShowTerm::Ambient: return "ambient";
-    case ShowTerm::Diffuse: return "diffuse";
-    case ShowTerm::Specular: return "specular";
-    case ShowTerm::Light: return "light:" + std::to_string(t.light);
-    case ShowTerm::Unlit: return "unlit";
-    }
-    return "?";
+    return t.term == ShowTerm::Light ? "light:" + std::to_string(t.light) : nameOf(kShowTermNames, t.term);
+}
+
+std::string formatNumber(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
 }
 
 }  // namespace shadelab

@@ -2,6 +2,8 @@
 // The scene model: the one description of what is drawn. The JSON scene file (scene_json.hpp), the
 // command line and the viewer's panel all edit this plain struct; the renderer only reads it.
 // Defaults here are the documented defaults of the scene-file format (README, "Scene file").
+#include "core/scene_limits.hpp"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -22,19 +24,7 @@ enum class FresnelMode { None, Schlick, Exact };    // specular weighted by the 
 // Term isolation: which addend(s) of the formula are drawn ("show").
 enum class ShowTerm { All, Ambient, Diffuse, Specular, Light, Unlit };
 
-// Limits shared by the parser, the CLI and the renderer.
-inline constexpr int kMaxLights = 16;          // also SL_MAX_LIGHTS in shaders/shared_defs.glsl
-inline constexpr int kMaxImageSide = 16384;    // pixels per side, refused before anything is allocated
-inline constexpr float kMinExponent = 1.0f;    // k_e range: the lecture's slider goes 1..1000
-inline constexpr float kMaxExponent = 10000.0f;
-inline constexpr int kMaxAreaSamplesPerSide = 16;  // an area light has at most 16 x 16 samples
-inline constexpr float kMaxSpotConeDeg = 90.0f;    // a spot light's outer cone half-angle (glTF: pi / 2)
-inline constexpr int kMinShadowMapSize = 64;       // shadow-map sides, pixels
-inline constexpr int kMaxShadowMapSize = 4096;
-inline constexpr int kMaxPcfRadius = 2;            // percentage-closer filtering: (2r+1)^2 lookups
-inline constexpr float kMinIor = 1.0f;             // relative index of refraction eta2 / eta1 of the surface
-inline constexpr float kMaxIor = 10.0f;
-inline constexpr float kMaxDiffFactor = 1000.0f;   // layout "diff": |A - B| is multiplied by 1..1000
+// Limits shared by the parser, the CLI, the sweep, the panel and the renderer: core/scene_limits.hpp.
 
 struct Material {
     glm::vec3 color{0.85f, 0.32f, 0.2f};   // C, the diffuse/ambient colour (linear RGB, 0..1)
@@ -140,7 +130,7 @@ struct TermView {
 struct DiffSettings {
     ShadingMode a = ShadingMode::Gouraud;
     ShadingMode b = ShadingMode::Phong;
-    float factor = 4.0f;  // 1..kMaxDiffFactor
+    float factor = 4.0f;  // 1..kDiffFactorRange.hi
 };
 
 struct Scene {

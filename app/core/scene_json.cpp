@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "core/message.hpp"
 #include "core/json_depth.hpp"
+#include "core/scene_names.hpp"
 #include "core/file_io.hpp"
 
 #include <glm/geometric.hpp>
@@ -19,12 +20,6 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-std::string fmtNumber(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
 
 // Walks a parsed document and turns it into a Scene, naming fields by their path ("lights[0].color").
 class SceneReader {
@@ -62,8 +57,8 @@ private:
         if (!j.is_number()) fail(path, std::string("expected a number, got ") + typeName(j));
         double v = j.get<double>();
         if (!std::isfinite(v)) fail(path, "must be a finite number");
-        if (v < lo) fail(path, "must be >= " + fmtNumber(lo) + " (got " + fmtNumber(v) + ")");
-        if (v > hi) fail(path, "must be <= " + fmtNumber(hi) + " (got " + fmtNumber(v) + ")");
+        if (v < lo) fail(path, "must be >= " + formatNumber(lo) + " (got " + formatNumber(v) + ")");
+        if (v > hi) fail(path, "must be <= " + formatNumber(hi) + " (got " + formatNumber(v) + ")");
         return v;
     }
     void number(const json& o, const char* key, const std::string& path, float& out, double lo, double hi) const {
@@ -159,29 +154,25 @@ private:
 MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
     MeshSpec m;
     if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
-    static const std::pair<const char*, MeshSpec::Type> kTypes[] = {
-        {"uvsphere", MeshSpec::Type::UvSphere}, {"icosphere", MeshSpec::Type::IcoSphere},
-        {"torus", MeshSpec::Type::Torus},       {"cube", MeshSpec::Type::Cube},
-        {"plane", MeshSpec::Type::Plane},       {"gltf", MeshSpec::Type::Gltf}};
-    choice(j, "type", path, m.type, kTypes);
+    choice(j, "type", path, m.type, kMeshTypeNames);
     switch (m.type) {
     case MeshSpec::Type::UvSphere:
         requireObject(j, path, {"type", "slices", "stacks", "radius"});
-        integer(j, "slices", path, m.slices, 3, 4096);
-        integer(j, "stacks", path, m.stacks, 2, 2048);
+        integer(j, "slices", path, m.slices, kUvSphereSlicesRange.lo, kUvSphereSlicesRange.hi);
+        integer(j, "stacks", path, m.stacks, kUvSphereStacksRange.lo, kUvSphereStacksRange.hi);
         number(j, "radius", path, m.radius, 1e-4, 1e6);
         break;
     case MeshSpec::Type::IcoSphere:
         requireObject(j, path, {"type", "subdivisions", "radius"});
-        integer(j, "subdivisions", path, m.subdivisions, 0, 8);
+        integer(j, "subdivisions", path, m.subdivisions, kIcoSphereSubdivisionsRange.lo, kIcoSphereSubdivisionsRange.hi);
         number(j, "radius", path, m.radius, 1e-4, 1e6);
         break;
     case MeshSpec::Type::Torus:
         requireObject(j, path, {"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
         number(j, "major_radius", path, m.majorRadius, 1e-4, 1e6);
         number(j, "minor_radius", path, m.minorRadius, 1e-4, 1e6);
-        integer(j, "major_segments", path, m.majorSegments, 3, 4096);
-        integer(j, "minor_segments", path, m.minorSegments, 3, 4096);
+        integer(j, "major_segments", path, m.majorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
+        integer(j, "minor_segments", path, m.minorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
         break;
     case MeshSpec::Type::Cube:
         requireObject(j, path, {"type", "size"});
@@ -190,7 +181,7 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
     case MeshSpec::Type::Plane:
         requireObject(j, path, {"type", "size", "subdivisions"});
         number(j, "size", path, m.size, 1e-4, 1e6);
-        integer(j, "subdivisions", path, m.planeSubdivisions, 1, 1024);
+        integer(j, "subdivisions", path, m.planeSubdivisions, kPlaneSubdivisionsRange.lo, kPlaneSubdivisionsRange.hi);
         break;
     case MeshSpec::Type::Gltf: {
         requireObject(j, path, {"type", "path"});
@@ -212,10 +203,10 @@ Material SceneReader::material(const json& j, const std::string& path) const {
     vec3(j, "color", path, m.color, 0.0, 1.0);
     m.colorSet = j.contains("color");
     vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
-    number(j, "ka", path, m.ka, 0.0, 1000.0);
-    number(j, "kd", path, m.kd, 0.0, 1000.0);
-    number(j, "ks", path, m.ks, 0.0, 1000.0);
-    number(j, "ke", path, m.ke, kMinExponent, kMaxExponent);
+    number(j, "ka", path, m.ka, kCoefficientRange.lo, kCoefficientRange.hi);
+    number(j, "kd", path, m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
+    number(j, "ks", path, m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
+    number(j, "ke", path, m.ke, kExponentRange.lo, kExponentRange.hi);
     return m;
 }
 
@@ -233,12 +224,7 @@ Transform SceneReader::transform(const json& j, const std::string& path) const {
 Light SceneReader::light(const json& j, const std::string& path) const {
     Light l;
     if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
-    static const std::pair<const char*, LightType> kTypes[] = {
-        {"point", LightType::Point}, {"directional", LightType::Directional}, {"area", LightType::Area},
-        {"spot", LightType::Spot}};
-    choice(j, "type", path, l.type, kTypes);
-    static const std::pair<const char*, Attenuation> kAtt[] = {{"none", Attenuation::None},
-                                                                {"inverse-square", Attenuation::InverseSquare}};
+    choice(j, "type", path, l.type, kLightTypeNames);
     switch (l.type) {
     case LightType::Point:
         requireObject(j, path, {"type", "position", "color", "intensity", "attenuation", "range"});
@@ -256,7 +242,7 @@ Light SceneReader::light(const json& j, const std::string& path) const {
         vec3(j, "normal", path, l.normal, -1e6, 1e6);
         nonZero(l.normal, join(path, "normal"));
         vec2(j, "size", path, l.size, 1e-4, 1e6);
-        ivec2(j, "samples", path, l.samples, 1, kMaxAreaSamplesPerSide);
+        ivec2(j, "samples", path, l.samples, 1, kAreaSamplesPerSideRange.hi);
         boolean(j, "two_sided", path, l.twoSided);
         break;
     case LightType::Spot:
@@ -265,15 +251,15 @@ Light SceneReader::light(const json& j, const std::string& path) const {
         vec3(j, "position", path, l.position, -1e6, 1e6);
         vec3(j, "direction", path, l.direction, -1e6, 1e6);
         nonZero(l.direction, join(path, "direction"));
-        number(j, "outer_cone_deg", path, l.outerConeDeg, 0.01, kMaxSpotConeDeg);
-        number(j, "inner_cone_deg", path, l.innerConeDeg, 0.0, kMaxSpotConeDeg);
+        number(j, "outer_cone_deg", path, l.outerConeDeg, 0.01, kSpotConeDegRange.hi);
+        number(j, "inner_cone_deg", path, l.innerConeDeg, 0.0, kSpotConeDegRange.hi);
         if (!j.contains("inner_cone_deg")) l.innerConeDeg = 0.5f * l.outerConeDeg;
         if (l.innerConeDeg >= l.outerConeDeg)
             fail(join(path, "inner_cone_deg"), "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
         break;
     }
     if (l.type != LightType::Directional) {
-        choice(j, "attenuation", path, l.attenuation, kAtt);
+        choice(j, "attenuation", path, l.attenuation, kAttenuationNames);
         number(j, "range", path, l.range, 1e-4, 1e9);
         if (j.contains("range") && l.attenuation != Attenuation::InverseSquare)
             fail(join(path, "range"), "a range needs \"attenuation\": \"inverse-square\"");
@@ -288,9 +274,9 @@ ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& pat
     requireObject(j, path, {"normal_bias", "depth_bias", "pcf", "map_size", "area_map_size"});
     number(j, "normal_bias", path, s.normalBias, 0.0, 100.0);
     number(j, "depth_bias", path, s.depthBias, 0.0, 100.0);
-    integer(j, "pcf", path, s.pcf, 0, kMaxPcfRadius);
-    integer(j, "map_size", path, s.mapSize, kMinShadowMapSize, kMaxShadowMapSize);
-    integer(j, "area_map_size", path, s.areaMapSize, kMinShadowMapSize, kMaxShadowMapSize);
+    integer(j, "pcf", path, s.pcf, 0, kPcfRadiusRange.hi);
+    integer(j, "map_size", path, s.mapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
+    integer(j, "area_map_size", path, s.areaMapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
     return s;
 }
 
@@ -339,34 +325,22 @@ Scene SceneReader::read(const json& root) {
         if (root.contains("mesh")) s.objects[0].mesh = mesh(root["mesh"], "mesh");
         if (root.contains("material")) s.objects[0].material = material(root["material"], "material");
     }
-    static const std::pair<const char*, ShadingMode> kShading[] = {
-        {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
-    choice(root, "shading", "", s.shading, kShading);
-    static const std::pair<const char*, Layout> kLayout[] = {
-        {"single", Layout::Single}, {"compare", Layout::Compare}, {"diff", Layout::Diff}};
-    choice(root, "layout", "", s.layout, kLayout);
+    choice(root, "shading", "", s.shading, kShadingModeNames);
+    choice(root, "layout", "", s.layout, kLayoutNames);
     if (root.contains("diff")) {
         const json& d = root["diff"];
         requireObject(d, "diff", {"a", "b", "factor"});
-        choice(d, "a", "diff", s.diff.a, kShading);
-        choice(d, "b", "diff", s.diff.b, kShading);
-        number(d, "factor", "diff", s.diff.factor, 1.0, kMaxDiffFactor);
+        choice(d, "a", "diff", s.diff.a, kShadingModeNames);
+        choice(d, "b", "diff", s.diff.b, kShadingModeNames);
+        number(d, "factor", "diff", s.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
     }
-    static const std::pair<const char*, SpecularNormalization> kNorm[] = {{"none", SpecularNormalization::None},
-                                                                           {"energy", SpecularNormalization::Energy}};
-    choice(root, "specular_normalization", "", s.specularNormalization, kNorm);
-    static const std::pair<const char*, FresnelMode> kFresnel[] = {
-        {"none", FresnelMode::None}, {"schlick", FresnelMode::Schlick}, {"exact", FresnelMode::Exact}};
-    choice(root, "fresnel", "", s.fresnel, kFresnel);
-    number(root, "ior", "", s.ior, kMinIor, kMaxIor);
+    choice(root, "specular_normalization", "", s.specularNormalization, kSpecularNormalizationNames);
+    choice(root, "fresnel", "", s.fresnel, kFresnelModeNames);
+    number(root, "ior", "", s.ior, kIorRange.lo, kIorRange.hi);
     text(root, "title", s.title);
     text(root, "caption", s.caption);
-    static const std::pair<const char*, ReflectionModel> kRefl[] = {{"phong", ReflectionModel::Phong},
-                                                                     {"blinn-phong", ReflectionModel::BlinnPhong}};
-    choice(root, "reflection", "", s.reflection, kRefl);
-    static const std::pair<const char*, OutputEncoding> kEnc[] = {{"linear", OutputEncoding::Linear},
-                                                                   {"srgb", OutputEncoding::Srgb}};
-    choice(root, "output_encoding", "", s.outputEncoding, kEnc);
+    choice(root, "reflection", "", s.reflection, kReflectionModelNames);
+    choice(root, "output_encoding", "", s.outputEncoding, kOutputEncodingNames);
     s.outputEncodingGiven = root.contains("output_encoding");
     vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
     vec3(root, "background", "", s.background, 0.0, 1.0);
@@ -402,8 +376,8 @@ Scene SceneReader::read(const json& root) {
         if (!sz.is_array() || sz.size() != 2 || !sz[0].is_number_integer() || !sz[1].is_number_integer())
             fail("size", "expected [width, height] as two integers");
         const long long w = sz[0].get<long long>(), h = sz[1].get<long long>();
-        if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
-            fail("size", "width and height must be between 1 and " + std::to_string(kMaxImageSide) + " (got " +
+        if (w < 1 || h < 1 || w > kImageSideRange.hi || h > kImageSideRange.hi)
+            fail("size", "width and height must be between 1 and " + std::to_string(kImageSideRange.hi) + " (got " +
                              std::to_string(w) + "x" + std::to_string(h) + ")");
         s.width = static_cast<int>(w);
         s.height = static_cast<int>(h);
@@ -584,7 +558,7 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
     std::stringstream ss(text);
     for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
     if (parts.empty()) throw InputError(opt + ": empty mesh");
-    auto intArg = [&](size_t i, int& out, int lo, int hi) {
+    auto intArg = [&](size_t i, int& out, const Range<int>& range) {
         if (i >= parts.size()) return;
         const std::string& p = parts[i];
         size_t used = 0;
@@ -595,41 +569,44 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
             used = 0;
         }
         if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + quoteInput(p) + "\" is not an integer");
-        if (v < lo || v > hi)
-            throw InputError(opt + ": " + p + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+        if (v < range.lo || v > range.hi) throw InputError(opt + ": " + p + " is out of range (" + rangeText(range) + ")");
         out = static_cast<int>(v);
     };
     const std::string& kind = parts[0];
-    size_t maxParts = 1;
-    if (kind == "uvsphere") {
-        m.type = MeshSpec::Type::UvSphere;
-        intArg(1, m.slices, 3, 4096);
-        intArg(2, m.stacks, 2, 2048);
-        maxParts = 3;
-    } else if (kind == "icosphere") {
-        m.type = MeshSpec::Type::IcoSphere;
-        intArg(1, m.subdivisions, 0, 8);
-        maxParts = 2;
-    } else if (kind == "torus") {
-        m.type = MeshSpec::Type::Torus;
-        intArg(1, m.majorSegments, 3, 4096);
-        intArg(2, m.minorSegments, 3, 4096);
-        maxParts = 3;
-    } else if (kind == "cube") {
-        m.type = MeshSpec::Type::Cube;
-    } else if (kind == "plane") {
-        m.type = MeshSpec::Type::Plane;
-        intArg(1, m.planeSubdivisions, 1, 1024);
-        maxParts = 2;
-    } else if (hasModelExtension(text)) {
+    const std::optional<MeshSpec::Type> type = valueNamed(kMeshTypeNames, kind);
+    if (!type || *type == MeshSpec::Type::Gltf) {  // a model is given by its file name, not "gltf"
+        if (!hasModelExtension(text))
+            throw InputError(opt + ": unknown mesh \"" + kind +
+                             "\" (expected uvsphere[:slices[:stacks]], icosphere[:n], torus[:major[:minor]], cube, "
+                             "plane[:n], or a .gltf/.glb file)");
         m.type = MeshSpec::Type::Gltf;
         m.path = text;
         m.resolvedPath = fs::path(text).lexically_normal().string();
         return m;
-    } else {
-        throw InputError(opt + ": unknown mesh \"" + kind +
-                         "\" (expected uvsphere[:slices[:stacks]], icosphere[:n], torus[:major[:minor]], cube, "
-                         "plane[:n], or a .gltf/.glb file)");
+    }
+    m.type = *type;
+    size_t maxParts = 1;
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        intArg(1, m.slices, kUvSphereSlicesRange);
+        intArg(2, m.stacks, kUvSphereStacksRange);
+        maxParts = 3;
+        break;
+    case MeshSpec::Type::IcoSphere:
+        intArg(1, m.subdivisions, kIcoSphereSubdivisionsRange);
+        maxParts = 2;
+        break;
+    case MeshSpec::Type::Torus:
+        intArg(1, m.majorSegments, kTorusSegmentsRange);
+        intArg(2, m.minorSegments, kTorusSegmentsRange);
+        maxParts = 3;
+        break;
+    case MeshSpec::Type::Plane:
+        intArg(1, m.planeSubdivisions, kPlaneSubdivisionsRange);
+        maxParts = 2;
+        break;
+    case MeshSpec::Type::Cube:
+    case MeshSpec::Type::Gltf: break;
     }
     if (parts.size() > maxParts) throw InputError(opt + ": too many ':' parameters for " + kind);
     return m;
@@ -650,7 +627,7 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
             const float x = std::strtof(item.c_str(), &end);
             if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
                 fail(key + ": \"" + quoteInput(item) + "\" is not a number");
-            if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + fmtNumber(lo) + ".." + fmtNumber(hi) + ")");
+            if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + formatNumber(lo) + ".." + formatNumber(hi) + ")");
             out.push_back(x);
         }
         if (out.size() != count || (!v.empty() && v.back() == sep))
@@ -663,11 +640,10 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
     };
     Light l;
     const std::string& type = parts[0];
-    if (type == "point") l.type = LightType::Point;
-    else if (type == "directional") l.type = LightType::Directional;
-    else if (type == "area") l.type = LightType::Area;
-    else if (type == "spot") l.type = LightType::Spot;
-    else fail("unknown light type \"" + quoteInput(type) + "\" (expected point, directional, area or spot)");
+    const std::optional<LightType> lightType = valueNamed(kLightTypeNames, type);
+    if (!lightType)
+        fail("unknown light type \"" + quoteInput(type) + "\" (expected " + namesList(kLightTypeNames, ", ", " or ") + ")");
+    l.type = *lightType;
     const glm::vec3 where = vec3Of(type, parts[1], -1e6, 1e6);
     if (l.type == LightType::Directional) {
         if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
@@ -690,9 +666,11 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
         if (key == "color") l.color = vec3Of(key, value, 0.0, 1.0);
         else if (key == "intensity") l.intensity = numbers(key, value, 1, ',', 0.0, 1e9)[0];
         else if (key == "attenuation" && positional) {
-            if (value == "none") l.attenuation = Attenuation::None;
-            else if (value == "inverse-square") l.attenuation = Attenuation::InverseSquare;
-            else fail("attenuation: unknown value \"" + quoteInput(value) + "\" (expected none or inverse-square)");
+            const std::optional<Attenuation> a = valueNamed(kAttenuationNames, value);
+            if (!a)
+                fail("attenuation: unknown value \"" + quoteInput(value) + "\" (expected " +
+                     namesList(kAttenuationNames, ", ", " or ") + ")");
+            l.attenuation = *a;
         } else if (key == "range" && positional) {
             l.range = numbers(key, value, 1, ',', 1e-4, 1e9)[0];
             rangeGiven = true;
@@ -706,12 +684,12 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
             l.direction = vec3Of(key, value, -1e6, 1e6);
             if (glm::length(l.direction) < 1e-6f) fail("direction: must not be a zero-length vector");
         } else if (key == "outer" && spot) {
-            l.outerConeDeg = numbers(key, value, 1, ',', 0.01, kMaxSpotConeDeg)[0];
+            l.outerConeDeg = numbers(key, value, 1, ',', 0.01, kSpotConeDegRange.hi)[0];
         } else if (key == "inner" && spot) {
-            l.innerConeDeg = numbers(key, value, 1, ',', 0.0, kMaxSpotConeDeg)[0];
+            l.innerConeDeg = numbers(key, value, 1, ',', 0.0, kSpotConeDegRange.hi)[0];
             innerGiven = true;
         } else if (key == "samples" && area) {
-            const std::vector<float> n = numbers(key, value, 2, 'x', 1, kMaxAreaSamplesPerSide);
+            const std::vector<float> n = numbers(key, value, 2, 'x', 1, kAreaSamplesPerSideRange.hi);
             if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
             l.samples = {int(n[0]), int(n[1])};
         } else {
@@ -732,13 +710,8 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
 TermView parseTermView(const std::string& text, const std::string& where) {
     const std::string prefix = where.empty() ? std::string() : where + ": ";
     TermView t;
-    static const std::pair<const char*, ShowTerm> kTerms[] = {{"all", ShowTerm::All},
-                                                             {"ambient", ShowTerm::Ambient},
-                                                             {"diffuse", ShowTerm::Diffuse},
-                                                             {"specular", ShowTerm::Specular},
-                                                             {"unlit", ShowTerm::Unlit}};
-    for (const auto& k : kTerms)
-        if (text == k.first) {
+    for (const auto& k : kShowTermNames)
+        if (k.second != ShowTerm::Light && text == k.first) {  // light:N below
             t.term = k.second;
             return t;
         }
@@ -755,25 +728,24 @@ TermView parseTermView(const std::string& text, const std::string& where) {
         t.light = int(v);
         return t;
     }
-    throw InputError(prefix + "unknown value \"" + text +
-                     "\" (expected one of all, ambient, diffuse, specular, light:N, unlit)");
+    throw InputError(prefix + "unknown value \"" + text + "\" (expected one of " + namesList(kShowTermNames) + ")");
 }
 
 void checkCoefficients(const Material& m, const std::string& where) {
     auto check = [&](const char* name, float v, float lo, float hi) {
         if (!std::isfinite(v) || v < lo || v > hi)
-            throw InputError(where + name + ": must be between " + fmtNumber(lo) + " and " + fmtNumber(hi) + " (got " +
-                             fmtNumber(v) + ")");
+            throw InputError(where + name + ": must be between " + formatNumber(lo) + " and " + formatNumber(hi) + " (got " +
+                             formatNumber(v) + ")");
     };
-    check("ka", m.ka, 0.0f, 1000.0f);
-    check("kd", m.kd, 0.0f, 1000.0f);
-    check("ks", m.ks, 0.0f, 1000.0f);
-    check("ke", m.ke, kMinExponent, kMaxExponent);
+    check("ka", m.ka, kCoefficientRange.lo, kCoefficientRange.hi);
+    check("kd", m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
+    check("ks", m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
+    check("ke", m.ke, kExponentRange.lo, kExponentRange.hi);
 }
 
 void checkImageSize(int width, int height, const std::string& where) {
-    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
-        throw InputError(where + ": width and height must be between 1 and " + std::to_string(kMaxImageSide) +
+    if (width < 1 || height < 1 || width > kImageSideRange.hi || height > kImageSideRange.hi)
+        throw InputError(where + ": width and height must be between 1 and " + std::to_string(kImageSideRange.hi) +
                          " (got " + std::to_string(width) + "x" + std::to_string(height) + ")");
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/message.hpp"
+#include "core/scene_names.hpp"
 #include "core/text.hpp"
 
 #include <cmath>
@@ -17,18 +18,41 @@ struct NumericParameter {
     bool integer;
 };
 const NumericParameter kNumeric[] = {
-    {"ke", kMinExponent, kMaxExponent, false}, {"ks", 0.0, 1000.0, false}, {"kd", 0.0, 1000.0, false},
-    {"ka", 0.0, 1000.0, false},                {"intensity", 0.0, 1e9, false}, {"tessellation", 1.0, 4096.0, true},
-    {"ior", kMinIor, kMaxIor, false}};
+    {"ke", kExponentRange.lo, kExponentRange.hi, false},
+    {"ks", kCoefficientRange.lo, kCoefficientRange.hi, false},
+    {"kd", kCoefficientRange.lo, kCoefficientRange.hi, false},
+    {"ka", kCoefficientRange.lo, kCoefficientRange.hi, false},
+    {"intensity", 0.0, 1e9, false},
+    {"tessellation", 1.0, double(kUvSphereSlicesRange.hi), true},
+    {"ior", kIorRange.lo, kIorRange.hi, false}};
 
+// Sets `field` to the value `v` names in `names`; false when it names none.
+template <typename E, std::size_t N>
+bool setNamed(E& field, const EnumName<E> (&names)[N], const std::string& v) {
+    const std::optional<E> e = valueNamed(names, v);
+    if (e) field = *e;
+    return e.has_value();
+}
+
+// A parameter whose values are names (core/scene_names.hpp): `apply` sets it, false for an unknown name.
 struct NamedParameter {
     const char* name;
-    std::vector<std::string> allowed;
+    std::string allowed;  // "flat, gouraud, phong"
+    bool (*apply)(Scene& scene, const std::string& v);
 };
-const NamedParameter kNamed[] = {{"shading", {"flat", "gouraud", "phong"}},
-                                 {"reflection", {"phong", "blinn-phong"}},
-                                 {"specular_normalization", {"none", "energy"}},
-                                 {"fresnel", {"none", "schlick", "exact"}}};
+const NamedParameter kNamed[] = {
+    {"shading", namesList(kShadingModeNames),
+     [](Scene& s, const std::string& v) {
+         if (!setNamed(s.shading, kShadingModeNames, v)) return false;
+         if (s.layout == Layout::Compare) s.layout = Layout::Single;  // one pane per tile
+         return true;
+     }},
+    {"reflection", namesList(kReflectionModelNames),
+     [](Scene& s, const std::string& v) { return setNamed(s.reflection, kReflectionModelNames, v); }},
+    {"specular_normalization", namesList(kSpecularNormalizationNames),
+     [](Scene& s, const std::string& v) { return setNamed(s.specularNormalization, kSpecularNormalizationNames, v); }},
+    {"fresnel", namesList(kFresnelModeNames),
+     [](Scene& s, const std::string& v) { return setNamed(s.fresnel, kFresnelModeNames, v); }}};
 
 double number(const std::string& v) { return std::strtod(v.c_str(), nullptr); }
 
@@ -69,10 +93,10 @@ Sweep parseSweep(const std::string& text, const std::string& flag) {
     for (const auto& p : kNamed) {
         if (s.parameter != p.name) continue;
         for (const std::string& v : s.values) {
-            bool ok = false;
-            std::string allowed;
-            for (const std::string& a : p.allowed) ok = ok || v == a, allowed += (allowed.empty() ? "" : ", ") + a;
-            if (!ok) throw InputError(flag + ": " + s.parameter + ": unknown value \"" + quoteInput(v) + "\" (expected " + allowed + ")");
+            Scene scratch;
+            if (!p.apply(scratch, v))
+                throw InputError(flag + ": " + s.parameter + ": unknown value \"" + quoteInput(v) + "\" (expected " +
+                                 p.allowed + ")");
         }
         return s;
     }
@@ -96,30 +120,31 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
         if (scene.objects.empty()) throw InputError(flag + ": tessellation: the scene has no object");
         MeshSpec& m = scene.objects[0].mesh;
         const int n = int(x);
-        auto need = [&](int lo, int hi) {
-            if (n < lo || n > hi)
+        auto need = [&](const Range<int>& range) {
+            if (!range.contains(n))
                 throw InputError(flag + ": tessellation: " + v + " is out of range for a " + toString(m.type) + " (" +
-                                 std::to_string(lo) + ".." + std::to_string(hi) + ")");
+                                 rangeText(range) + ")");
         };
+        // A sphere's stacks and a torus's minor segments are half of n: n is at least twice their minimum.
+        const Range<int> uvSphere{2 * kUvSphereStacksRange.lo, kUvSphereSlicesRange.hi};
+        const Range<int> torus{2 * kTorusSegmentsRange.lo, kTorusSegmentsRange.hi};
         switch (m.type) {
-        case MeshSpec::Type::UvSphere: need(4, 4096), m.slices = n, m.stacks = std::max(n / 2, 2); break;
-        case MeshSpec::Type::IcoSphere: need(0, 8), m.subdivisions = n; break;
-        case MeshSpec::Type::Torus: need(6, 4096), m.majorSegments = n, m.minorSegments = std::max(n / 2, 3); break;
-        case MeshSpec::Type::Plane: need(1, 1024), m.planeSubdivisions = n; break;
+        case MeshSpec::Type::UvSphere:
+            need(uvSphere), m.slices = n, m.stacks = std::max(n / 2, kUvSphereStacksRange.lo);
+            break;
+        case MeshSpec::Type::IcoSphere: need(kIcoSphereSubdivisionsRange), m.subdivisions = n; break;
+        case MeshSpec::Type::Torus:
+            need(torus), m.majorSegments = n, m.minorSegments = std::max(n / 2, kTorusSegmentsRange.lo);
+            break;
+        case MeshSpec::Type::Plane: need(kPlaneSubdivisionsRange), m.planeSubdivisions = n; break;
         case MeshSpec::Type::Cube:
         case MeshSpec::Type::Gltf:
             throw InputError(flag + ": tessellation: the first object is a " + std::string(toString(m.type)) +
                              ", which has no tessellation");
         }
-    } else if (p == "shading") {
-        scene.shading = v == "flat" ? ShadingMode::Flat : v == "gouraud" ? ShadingMode::Gouraud : ShadingMode::Phong;
-        if (scene.layout == Layout::Compare) scene.layout = Layout::Single;
-    } else if (p == "reflection") {
-        scene.reflection = v == "phong" ? ReflectionModel::Phong : ReflectionModel::BlinnPhong;
-    } else if (p == "specular_normalization") {
-        scene.specularNormalization = v == "energy" ? SpecularNormalization::Energy : SpecularNormalization::None;
-    } else if (p == "fresnel") {
-        scene.fresnel = v == "schlick" ? FresnelMode::Schlick : v == "exact" ? FresnelMode::Exact : FresnelMode::None;
+    } else {
+        for (const NamedParameter& named : kNamed)
+            if (p == named.name) named.apply(scene, v);
     }
 }
 

@@ -1,8 +1,9 @@
 #include "viewer/panel.hpp"
 
 #include "core/camera.hpp"
-#include "viewer/controls.hpp"
-#include "viewer/panel_sections.hpp"
+#include "core/controls.hpp"
+#include "core/panel_sections.hpp"
+#include "core/scene_names.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -53,6 +54,20 @@ bool combo(const char* label, E& value, const char* const (&names)[N]) {
     return true;
 }
 
+// A combo box of an enum's names as scene files and the command line spell them (core/scene_names.hpp).
+template <typename E, std::size_t N>
+bool combo(const char* label, E& value, const EnumName<E> (&names)[N]) {
+    const char* labels[N];
+    int index = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+        labels[i] = names[i].first;
+        if (names[i].second == value) index = int(i);
+    }
+    if (!ImGui::Combo(label, &index, labels, int(N))) return false;
+    value = names[index].second;
+    return true;
+}
+
 // A vector edit that must not become (nearly) zero: light directions, scales.
 bool dragNonZero(const char* label, glm::vec3& v, float speed, bool perComponent) {
     glm::vec3 edited = v;
@@ -71,8 +86,8 @@ bool cameraValid(const Camera& c) {
 }
 
 void iorSlider(Scene& scene) {
-    ImGui::SliderFloat("ior \u03b7\u2082/\u03b7\u2081", &scene.ior, kMinIor, 4.0f, "%.3f");
-    scene.ior = std::clamp(scene.ior, kMinIor, kMaxIor);
+    ImGui::SliderFloat("ior \u03b7\u2082/\u03b7\u2081", &scene.ior, kIorRange.lo, 4.0f, "%.3f");
+    scene.ior = std::clamp(scene.ior, kIorRange.lo, kIorRange.hi);
 }
 
 void sectionShading(Scene& scene) {
@@ -91,14 +106,14 @@ void sectionShading(Scene& scene) {
     if (ImGui::Checkbox("difference: A | B | |A - B| x factor  (D)", &diff))
         scene.layout = diff ? Layout::Diff : Layout::Single;
     if (diff) {
-        static const char* const kModes[] = {"flat", "gouraud", "phong"};
         ImGui::PushItemWidth(ImGui::GetFontSize() * 6.0f);
-        combo("A", scene.diff.a, kModes);
+        combo("A", scene.diff.a, kShadingModeNames);
         ImGui::SameLine();
-        combo("B", scene.diff.b, kModes);
+        combo("B", scene.diff.b, kShadingModeNames);
         ImGui::PopItemWidth();
-        ImGui::SliderFloat("factor", &scene.diff.factor, 1.0f, kMaxDiffFactor, "%.1f", ImGuiSliderFlags_Logarithmic);
-        scene.diff.factor = std::clamp(scene.diff.factor, 1.0f, kMaxDiffFactor);
+        ImGui::SliderFloat("factor", &scene.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi, "%.1f",
+                           ImGuiSliderFlags_Logarithmic);
+        scene.diff.factor = std::clamp(scene.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
     }
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Reflection");
@@ -132,14 +147,14 @@ void sectionMaterial(Material& m) {
     coefficient("k_s specular", m.ks, 1.0f);
     // The exponent is what the lecture sweeps: a logarithmic slider gives 1..10 as much travel as 100..1000.
     if (ImGui::SliderFloat("k_e exponent", &m.ke, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
-        m.ke = std::clamp(m.ke, kMinExponent, kMaxExponent);
+        m.ke = std::clamp(m.ke, kExponentRange.lo, kExponentRange.hi);
 }
 
 // The lecture's plots for the current parameters (core/plot.hpp): rebuilt every frame, which costs
 // about a thousand formula evaluations, so every slider in the panel moves the curves at once.
 void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
-    ImGui::SliderFloat("incidence", &plots.incidenceDeg, 0.0f, kMaxIncidenceDeg, "\u03b8_i = %.1f\u00b0");
-    plots.incidenceDeg = std::clamp(plots.incidenceDeg, 0.0f, kMaxIncidenceDeg);
+    ImGui::SliderFloat("incidence", &plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi, "\u03b8_i = %.1f\u00b0");
+    plots.incidenceDeg = std::clamp(plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi);
     iorSlider(scene);
     ImGui::Checkbox("from inside (\u03b7\u2081 = ior, \u03b7\u2082 = 1)", &plots.fromInside);
     // Heights that leave room for the header and legend rows at the panel's width and the plot below.
@@ -212,8 +227,7 @@ void sectionLights(Scene& scene, int& selected) {
                                             isSelected && l.type == LightType::Area ? ": samples shown" : "");
         if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selected = isSelected ? -1 : int(i);
         if (open) {
-            static const char* const kTypes[] = {"point", "directional", "area", "spot"};
-            combo("type", l.type, kTypes);
+            combo("type", l.type, kLightTypeNames);
             if (l.type == LightType::Directional)
                 dragNonZero("direction", l.direction, 0.02f, false);
             else
@@ -224,14 +238,14 @@ void sectionLights(Scene& scene, int& selected) {
                 ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
                 l.size = glm::max(l.size, glm::vec2(1e-4f));
                 // Sample counts are a specialisation constant: changing them recompiles (once per count).
-                ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kMaxAreaSamplesPerSide);
-                l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kMaxAreaSamplesPerSide));
+                ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kAreaSamplesPerSideRange.hi);
+                l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kAreaSamplesPerSideRange.hi));
                 ImGui::Checkbox("two-sided", &l.twoSided);
             }
             if (l.type == LightType::Spot) {
                 dragNonZero("direction", l.direction, 0.02f, false);
                 // Half-angles from the axis: full light inside the inner cone, none outside the outer.
-                ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kMaxSpotConeDeg, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+                ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kSpotConeDegRange.hi, "%.1f", ImGuiSliderFlags_AlwaysClamp);
                 ImGui::SliderFloat("inner cone (deg)", &l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f, "%.1f",
                                    ImGuiSliderFlags_AlwaysClamp);
                 l.innerConeDeg = std::clamp(l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f);
@@ -239,8 +253,7 @@ void sectionLights(Scene& scene, int& selected) {
             colorEdit("colour", l.color);
             ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
             if (l.type != LightType::Directional) {
-                static const char* const kAttenuation[] = {"none", "inverse-square"};
-                combo("attenuation", l.attenuation, kAttenuation);
+                combo("attenuation", l.attenuation, kAttenuationNames);
                 if (l.attenuation == Attenuation::InverseSquare) {
                     // 0 = no window; otherwise the light fades smoothly to zero at this distance.
                     ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f",
@@ -270,11 +283,11 @@ void sectionShadows(ShadowSettings& s) {
     ImGui::SliderFloat("depth bias (slope)", &s.depthBias, 0.0f, 8.0f, "%.2f");
     s.normalBias = std::clamp(s.normalBias, 0.0f, 100.0f);
     s.depthBias = std::clamp(s.depthBias, 0.0f, 100.0f);
-    ImGui::SliderInt("PCF radius", &s.pcf, 0, kMaxPcfRadius);
-    s.pcf = std::clamp(s.pcf, 0, kMaxPcfRadius);
+    ImGui::SliderInt("PCF radius", &s.pcf, 0, kPcfRadiusRange.hi);
+    s.pcf = std::clamp(s.pcf, 0, kPcfRadiusRange.hi);
     // Powers of two from 64 to 4096, as an exponent slider.
     auto sizeSlider = [](const char* label, int& size) {
-        int exponent = int(std::lround(std::log2(double(std::max(size, kMinShadowMapSize)))));
+        int exponent = int(std::lround(std::log2(double(std::max(size, kShadowMapSizeRange.lo)))));
         if (ImGui::SliderInt(label, &exponent, 6, 12, "")) size = 1 << std::clamp(exponent, 6, 12);
         ImGui::SameLine();
         ImGui::Text("%d", size);
@@ -301,8 +314,8 @@ void sectionOverlays(ViewSettings& s) {
 
 void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
     float scale = status.uiScale;
-    if (ImGui::SliderFloat("UI scale", &scale, kMinUiScale, kMaxUiScale, "%.2f x  (Ctrl+= / Ctrl+-)"))
-        requests.uiScale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+    if (ImGui::SliderFloat("UI scale", &scale, kUiScaleRange.lo, kUiScaleRange.hi, "%.2f x  (Ctrl+= / Ctrl+-)"))
+        requests.uiScale = std::clamp(scale, kUiScaleRange.lo, kUiScaleRange.hi);
     // Anti-aliasing of the 3D view (on a software renderer only the still view is drawn with it).
     static const char* const kMsaa[] = {"off", "2x", "4x", "8x"};
     static const int kSamples[] = {1, 2, 4, 8};

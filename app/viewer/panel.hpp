@@ -101,7 +101,7 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip);
 // The last message over the bottom of the 3D view (where the lecturer looks), red for an error.
 void drawMessage(const PanelStatus& status, const UiRect& view);
 
-// Every key and mouse action (viewer/controls.hpp) in a box over the view: F1 or ?.
+// Every key and mouse action (core/controls.hpp) in a box over the view: F1 or ?.
 void drawHelpOverlay(const UiRect& view);
 
 // Each light's marker over the view: a ring with its number and kind, an arrow along a directional

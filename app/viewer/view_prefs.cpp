@@ -1,8 +1,8 @@
 #include "viewer/view_prefs.hpp"
 
 #include "core/file_io.hpp"
-#include "viewer/controls.hpp"
-#include "viewer/panel_sections.hpp"
+#include "core/controls.hpp"
+#include "core/panel_sections.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -55,7 +55,7 @@ ViewPrefs loadViewPrefs(const std::string& path) {
         }
         if (j.contains("ui_scale") && j.at("ui_scale").is_number()) {
             const double scale = j.at("ui_scale").get<double>();
-            if (scale >= kMinUiScale && scale <= kMaxUiScale) p.uiScale = float(scale);
+            if (scale >= kUiScaleRange.lo && scale <= kUiScaleRange.hi) p.uiScale = float(scale);
         }
         if (j.contains("msaa")) p.msaa = number(j.at("msaa"), 0, 8);
     } catch (const std::exception& e) {

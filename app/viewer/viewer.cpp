@@ -5,8 +5,8 @@
 #include "core/file_io.hpp"
 #include "core/image.hpp"
 #include "core/scene_json.hpp"
+#include "core/controls.hpp"
 #include "platform/platform.hpp"
-#include "viewer/controls.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -62,7 +62,7 @@ int adaptStride(int stride, int samples, double lastPassMs) {
         while (samples / (stride * stride) > 4) stride *= 2;
         return stride;
     }
-    if (lastPassMs > kPassBudgetMs && stride < kMaxAreaSamplesPerSide) return stride * 2;
+    if (lastPassMs > kPassBudgetMs && stride < kAreaSamplesPerSideRange.hi) return stride * 2;
     if (lastPassMs > 0.0 && lastPassMs < kPassBudgetMs / 4 && stride > 1) return stride / 2;
     return stride;
 }
@@ -375,7 +375,7 @@ void Viewer::dragLight(const FrameLayout& l) {
 }
 
 void Viewer::setUiScale(float uiScale) {
-    uiScale_ = std::clamp(uiScale, kMinUiScale, kMaxUiScale);
+    uiScale_ = std::clamp(uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
     setStatus("UI scale " + std::to_string(int(std::lround(uiScale_ * 100.0f))) + "%", false);
 }
 
@@ -454,7 +454,7 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
 }
 
 void Viewer::apply(const PanelRequests& r) {
-    if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kMinUiScale, kMaxUiScale);
+    if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
     if (r.msaa > 0) msaaSamples_ = r.msaa;
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
     if (r.resetCamera) document_.resetCamera();

@@ -59,14 +59,14 @@ TEST_F(GlContext, EverySpecialisationCompiles) {
         light.samples = {int(l % 3) + 1, 2};
     }
     variants.push_back(scene);
-    for (int pcf = 0; pcf <= kMaxPcfRadius; ++pcf) {
+    for (int pcf = 0; pcf <= kPcfRadiusRange.hi; ++pcf) {
         scene.shadows.enabled = true;
         scene.shadows.pcf = pcf;
         variants.push_back(scene);
     }
     scene.lights.resize(1);
     scene.lights[0].type = LightType::Area;
-    scene.lights[0].samples = {kMaxAreaSamplesPerSide, kMaxAreaSamplesPerSide};
+    scene.lights[0].samples = {kAreaSamplesPerSideRange.hi, kAreaSamplesPerSideRange.hi};
     variants.push_back(scene);
     // Issue 6: lobe normalisation, both Fresnel modes, every isolated term, with shadows and 16 lights.
     scene.lights.assign(SL_MAX_LIGHTS, Light{});

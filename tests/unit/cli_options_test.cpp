@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
 using namespace shadelab;
 
 namespace {
@@ -234,4 +238,68 @@ TEST(CliOptions, OverridesApplyToAnyScene) {
     EXPECT_FALSE(s.shadows.enabled);
     s.lights.clear();
     EXPECT_THROW(applyOverrides(s, parseOptions({"--show", "light:0"})), InputError);
+}
+
+// Issue 17: the run mode is decided once, by the parser.
+TEST(CliOptions, RunModeIsDecidedOnce) {
+    EXPECT_EQ(parseOptions({}).mode, RunMode::Viewer);
+    EXPECT_EQ(parseOptions({"--help", "--output", "x.png"}).mode, RunMode::Help);
+    EXPECT_EQ(parseOptions({"--version"}).mode, RunMode::Version);
+    EXPECT_EQ(parseOptions({"--output", "x.png"}).mode, RunMode::Image);
+    EXPECT_EQ(parseOptions({"--output", "x.png", "--info"}).mode, RunMode::Info);
+    EXPECT_EQ(parseOptions({"--output", "x.png", "--benchmark", "3"}).mode, RunMode::Benchmark);
+    EXPECT_EQ(parseOptions({"--benchmark", "3"}).mode, RunMode::Benchmark);
+    EXPECT_EQ(parseOptions({"--output", "x.png", "--sweep", "ke=1,2"}).mode, RunMode::SweepSheet);
+    EXPECT_EQ(parseOptions({"--output", "x.png", "--probe", "1,2"}).mode, RunMode::ProbeImage);
+    EXPECT_EQ(parseOptions({"--probe", "1,2"}).mode, RunMode::Viewer);
+    EXPECT_EQ(parseOptions({"--output", "x.png", "--plot", "lobe"}).mode, RunMode::Plot);
+    EXPECT_EQ(parseOptions({"--output", "x.png", "--plot", "lobe", "--info"}).mode, RunMode::Info);
+    EXPECT_EQ(parseOptions({"--playlist", "dir"}).mode, RunMode::PlaylistViewer);
+    EXPECT_EQ(parseOptions({"--playlist", "dir", "--output", "out/"}).mode, RunMode::PlaylistImages);
+}
+
+// Issue 17: the messages print the ranges of core/scene_limits.hpp, which --help prints too.
+TEST(CliOptions, TableRangesInMessagesAndHelp) {
+    EXPECT_NE(errorOf({"--ui-scale", "5"}).find("--ui-scale: must be between 0.75 and 4 (got 5)"), std::string::npos);
+    EXPECT_NE(errorOf({"--incidence", "90"}).find("--incidence: must be between 0 and 89 degrees (got 90)"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--benchmark", "0"}).find("--benchmark: 0 is out of range (1..1000000)"), std::string::npos);
+    EXPECT_NE(errorOf({"--progressive", "17"}).find("--progressive: 17 is out of range (1..16)"), std::string::npos);
+    EXPECT_NE(errorOf({"--msaa", "3"}).find("--msaa: unknown value \"3\" (expected one of 0, 1, 2, 4, 8)"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--overlays", "grid"}).find("--overlays: unknown value \"grid\" (expected one of wireframe"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--panel-sections", "x"}).find("--panel-sections: unknown section \"x\" (expected some of shading"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png", "--frames", "3"}).find("--output: --frames, --screenshot"), std::string::npos);
+    const std::string help = usage();
+    EXPECT_NE(help.find("--ior X                 index of refraction eta2/eta1 from air for --fresnel (1..10"),
+              std::string::npos)
+        << help;
+    EXPECT_NE(help.find("--ui-scale S"), std::string::npos);
+    EXPECT_EQ(help.find('`'), std::string::npos);  // the README's code marks stay in the README
+}
+
+// Issue 17: the README's option table is the option table (SHADELAB_UPDATE_README=1 rewrites it).
+TEST(CliOptions, ReadmeOptionTableIsTheTable) {
+    const std::string path = std::string(SHADELAB_SOURCE_DIR) + "/README.md";
+    std::ifstream in(path);
+    ASSERT_TRUE(in) << path;
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string readme = text.str();
+    const std::string begin = "<!-- options: generated from app/cli/option_table.cpp (tests/unit/cli_options_test.cpp) -->\n";
+    const std::string end = "<!-- end of options -->";
+    const std::size_t from = readme.find(begin), to = readme.find(end);
+    ASSERT_NE(from, std::string::npos) << "README.md has no line " << begin;
+    ASSERT_NE(to, std::string::npos) << "README.md has no line " << end;
+    const std::string table = readme.substr(from + begin.size(), to - from - begin.size());
+    if (table != optionsMarkdown() && std::getenv("SHADELAB_UPDATE_README")) {
+        readme.replace(from + begin.size(), to - from - begin.size(), optionsMarkdown());
+        std::ofstream(path) << readme;
+        return;
+    }
+    EXPECT_EQ(table, optionsMarkdown()) << "README.md's option table differs from the option table: run "
+                                           "SHADELAB_UPDATE_README=1 build/tests/unit_tests "
+                                           "--gtest_filter=CliOptions.ReadmeOptionTableIsTheTable";
 }

@@ -1,7 +1,7 @@
 // The viewer's command-line flags (app/cli/options.*).
 #include "cli/options.hpp"
 #include "core/error.hpp"
-#include "viewer/panel_sections.hpp"
+#include "core/panel_sections.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,9 @@
 #pragma once
 // Every key and mouse action of the viewer, in one table: the panel's Keys section, the help overlay
-// (F1 or ?) and `shadelab --help` are all printed from it, so they cannot disagree. GL-free.
+// (F1 or ?) and `shadelab --help` are all printed from it, so they cannot disagree. GL-free; in core
+// so the command line prints it without depending on the viewer.
+#include "core/scene_limits.hpp"
+
 #include <algorithm>
 #include <cstddef>
 #include <iterator>
@@ -8,8 +11,7 @@
 
 namespace shadelab {
 
-// --ui-scale and Ctrl+= / Ctrl+-: the factor on top of the monitor's content scale.
-inline constexpr float kMinUiScale = 0.75f, kMaxUiScale = 4.0f;
+// --ui-scale and Ctrl+= / Ctrl+-: kUiScaleRange (core/scene_limits.hpp).
 
 struct Control {
     const char* input;   // "Page Down / Page Up", "left drag"

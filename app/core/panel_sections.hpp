@@ -1,6 +1,6 @@
 #pragma once
 // The names of the panel's collapsing sections, as --panel-sections takes them (in the panel's order).
-// Header-only constants: cli/options.cpp checks the flag against them without linking the viewer.
+// Header-only constants in core: cli/ checks the flag against them without depending on the viewer.
 namespace shadelab {
 
 inline constexpr const char* kPanelSections[] = {"shading", "material", "plots", "mesh", "lights", "shadows",

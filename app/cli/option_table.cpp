@@ -1,0 +1,373 @@
+#include "cli/option_table.hpp"
+
+#include "core/error.hpp"
+#include "core/file_io.hpp"
+#include "core/memory_budget.hpp"
+#include "core/message.hpp"
+#include "core/panel_sections.hpp"
+#include "core/plot_image.hpp"
+#include "core/scene_json.hpp"
+#include "core/scene_names.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iterator>
+#include <sstream>
+
+namespace shadelab {
+namespace {
+
+float parseFloat(const std::string& flag, const std::string& v) {
+    char* end = nullptr;
+    const float x = std::strtof(v.c_str(), &end);
+    if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(x))
+        throw InputError(flag + ": \"" + quoteInput(v) + "\" is not a number");
+    return x;
+}
+
+int parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
+    char* end = nullptr;
+    const long x = std::strtol(v.c_str(), &end, 10);
+    if (v.empty() || end != v.c_str() + v.size()) throw InputError(flag + ": \"" + quoteInput(v) + "\" is not an integer");
+    if (x < lo || x > hi)
+        throw InputError(flag + ": " + v + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+    return int(x);
+}
+
+// The option's number, in its range; `unit` (" degrees") follows the range in the message.
+float floatIn(const OptionSpec& spec, const std::string& v, const char* unit = "") {
+    const float x = parseFloat(spec.name, v);
+    if (!(x >= spec.bounds.lo && x <= spec.bounds.hi))
+        throw InputError(std::string(spec.name) + ": must be " + betweenText(Range<double>{spec.bounds.lo, spec.bounds.hi}) +
+                         unit + " (got " + v + ")");
+    return x;
+}
+
+int intIn(const OptionSpec& spec, const std::string& v) {
+    return parseInt(spec.name, v, long(spec.bounds.lo), long(spec.bounds.hi));
+}
+
+template <typename E, std::size_t N>
+E choice(const std::string& flag, const std::string& v, const EnumName<E> (&names)[N]) {
+    if (const std::optional<E> e = valueNamed(names, v)) return *e;
+    throw InputError(flag + ": unknown value \"" + quoteInput(v) + "\" (expected one of " + namesList(names) + ")");
+}
+
+// A comma-separated list whose every item is one of `allowed`.
+// `what` and `expected` word the refusal: "unknown section \"x\" (expected some of a, b)".
+template <typename Allowed>
+std::vector<std::string> listOf(const std::string& flag, const std::string& v, const Allowed& allowed,
+                                const char* what, const char* expected) {
+    std::vector<std::string> items;
+    std::stringstream list(v);
+    for (std::string item; std::getline(list, item, ',');) {
+        if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return item == a; }) ==
+            std::end(allowed)) {
+            std::string names;
+            for (const char* a : allowed) names += std::string(names.empty() ? "" : ", ") + a;
+            throw InputError(flag + ": unknown " + what + " \"" + quoteInput(item) + "\" (expected " + expected + " " +
+                             names + ")");
+        }
+        items.push_back(item);
+    }
+    return items;
+}
+
+// A repeatable option's list, refused with `tooMany` past `most` items.
+template <typename T>
+void addAtMost(std::vector<T>& list, T item, std::size_t most, const std::string& tooMany) {
+    list.push_back(std::move(item));
+    if (list.size() > most) throw InputError(tooMany);
+}
+
+// "A,B" split at the first comma; `expected` says what, e.g. "the pixel as X,Y, e.g. 640,360".
+std::pair<std::string, std::string> pairOf(const std::string& flag, const std::string& v, char separator,
+                                           const char* expected) {
+    const std::size_t at = v.find(separator);
+    if (at == std::string::npos)
+        throw InputError(flag + ": expected " + expected + " (got \"" + quoteInput(v) + "\")");
+    return {v.substr(0, at), v.substr(at + 1)};
+}
+
+const EnumName<int> kBackendNames[] = {{"auto", 0}, {"osmesa", 1}, {"egl", 2}};
+const EnumName<int> kMsaaNames[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}};
+const char* const kOverlayNames[] = {"wireframe", "vertex-normals", "face-normals", "lights"};
+
+std::string joined(const char* const* begin, const char* const* end, const char* separator) {
+    std::string s;
+    for (const char* const* p = begin; p != end; ++p) s += std::string(s.empty() ? "" : separator) + *p;
+    return s;
+}
+
+// The apply functions of the plainest rows: a switch, a number checked later, a file or folder name.
+template <bool Options::*Field>
+void setTrue(Options& o, const OptionSpec&, const std::string&) {
+    o.*Field = true;
+}
+// --ka, --kd, --ks, --ke: a number of every object's material, its range checked with the scene's
+// (applyOverrides: checkCoefficients).
+template <std::optional<float> Options::*Field>
+OptionSpec materialOption(const char* name, const char* field, const Range<float>& range, const char* help) {
+    return {name, "", "X", OptionGroup::General, bounds(range), nullptr, field, help,
+            [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = parseFloat(self.name, v); }};
+}
+template <std::optional<std::string> Options::*Field>
+void setPath(Options& o, const OptionSpec&, const std::string& v) {
+    o.*Field = v;
+}
+
+using G = OptionGroup;
+constexpr Bounds kNoBounds{};
+
+// Each row: name, alias, argument, group, range, names, scene field, help, apply.
+const OptionSpec kOptions[] = {
+    {"--output", "-o", "FILE.png", G::General, kNoBounds, nullptr, "",
+     "render one frame offscreen (OSMesa or EGL, no display needed) and write it atomically",
+     setPath<&Options::output>},
+    {"--playlist", "", "DIR", G::General, kNoBounds, nullptr, "",
+     "the lecture presets: every `DIR/*.json` in file-name order (see *Lecture presets and the playlist*); the "
+     "viewer steps through them (Page Down / Page Up), `--output OUT/` writes `OUT/NAME.png` for each (`OUT` is "
+     "created when it ends in / and is missing). Every other option applies to each preset",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         if (v.empty()) throw InputError(std::string(self.name) + ": empty folder name");
+         o.playlist = v;
+     }},
+    {"--captions", "", "", G::General, kNoBounds, nullptr, "",
+     "with `--output`: a strip under the image with the scene's title (for a preset without one, its file name) "
+     "and caption",
+     setTrue<&Options::captions>},
+    {"--shading", "", "MODE", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "shading",
+     "shading mode (single layout): {names}",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); }},
+    {"--layout", "", "LAYOUT", G::General, kNoBounds, [] { return namesList(kLayoutNames, " | "); }, "layout",
+     "{names}: compare is three equal panes flat | gouraud | phong, one camera; diff is A | B | |A - B| x factor "
+     "(see *Lecture tools*)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.layout = choice(self.name, v, kLayoutNames); }},
+    {"--diff", "", "A,B", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "diff.a, diff.b",
+     "the two shading modes of the diff layout (default gouraud,phong), each {names}",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const auto ab = pairOf(self.name, v, ',', "two shading modes A,B, e.g. gouraud,phong");
+         o.diffA = choice(self.name, ab.first, kShadingModeNames);
+         o.diffB = choice(self.name, ab.second, kShadingModeNames);
+     }},
+    {"--diff-factor", "", "X", G::General, bounds(kDiffFactorRange), nullptr, "diff.factor",
+     "layout diff: |A - B| is multiplied by X ({range}, default 4)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.diffFactor = floatIn(self, v); }},
+    {"--reflection", "", "MODEL", G::General, kNoBounds, [] { return namesList(kReflectionModelNames, " | "); },
+     "reflection", "the specular lobe: {names}",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.reflection = choice(self.name, v, kReflectionModelNames);
+     }},
+    {"--specular-normalization", "", "NORM", G::General, kNoBounds,
+     [] { return namesList(kSpecularNormalizationNames, " | "); }, "specular_normalization",
+     "{names}: energy-normalised lobes ((k_e+2)/2pi, (k_e+8)/8pi; diffuse 1/pi; see *Lecture tools*)",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.specularNormalization = choice(self.name, v, kSpecularNormalizationNames);
+     }},
+    {"--fresnel", "", "MODE", G::General, kNoBounds, [] { return namesList(kFresnelModeNames, " | "); }, "fresnel",
+     "{names}: the specular term weighted by the Fresnel reflectance at V.H",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.fresnel = choice(self.name, v, kFresnelModeNames); }},
+    {"--ior", "", "X", G::General, bounds(kIorRange), nullptr, "ior",
+     "index of refraction eta2/eta1 from air for `--fresnel` ({range}, default 1.5)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.ior = floatIn(self, v); }},
+    {"--show", "", "TERM", G::General, kNoBounds, [] { return namesList(kShowTermNames, " | "); },
+     "show", "draw one addend of the formula alone: {names}",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.show = parseTermView(v, self.name); }},
+    materialOption<&Options::ka>("--ka", "objects[].material.ka", kCoefficientRange, "ambient weight ({range}) of every object"),
+    materialOption<&Options::kd>("--kd", "objects[].material.kd", kCoefficientRange, "diffuse weight ({range}) of every object"),
+    materialOption<&Options::ks>("--ks", "objects[].material.ks", kCoefficientRange, "specular weight ({range}) of every object"),
+    materialOption<&Options::ke>("--ke", "objects[].material.ke", kExponentRange, "specular exponent ({range}) of every object"),
+    {"--size", "", "WxH", G::General, bounds(kImageSideRange), nullptr, "size",
+     "image size in pixels, {range} per side, e.g. 1280x720",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const auto wh = pairOf(self.name, v, 'x', "WIDTHxHEIGHT, e.g. 1280x720");
+         const int w = parseInt(self.name, wh.first, -1000000000, 1000000000);
+         const int h = parseInt(self.name, wh.second, -1000000000, 1000000000);
+         checkImageSize(w, h, self.name);
+         o.width = w;
+         o.height = h;
+     }},
+    {"--mesh", "", "SPEC", G::General, kNoBounds, nullptr, "objects[0].mesh",
+     "replace the first object's mesh: `uvsphere[:slices[:stacks]]`, `icosphere[:n]`, `torus[:major[:minor]]`, "
+     "`cube`, `plane[:n]`, or a `.gltf`/`.glb` file",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.mesh = parseMeshShorthand(v, self.name); }},
+    {"--light", "", "SPEC", G::General, bounds(kLightCountRange), nullptr, "lights",
+     "replace the scene's lights; repeat for more (at most {max}). `TYPE:X,Y,Z[:KEY=VALUE]...` with `point:X,Y,Z` "
+     "(position), `directional:X,Y,Z` (travel direction), `area:X,Y,Z` (centre), `spot:X,Y,Z` (position); keys "
+     "`color=R,G,B`, `intensity=I`, `attenuation=none|inverse-square`, `range=R` (point, spot, area), "
+     "`normal=X,Y,Z`, `size=W,H`, `samples=NXxNY`, `two-sided` (area), `direction=X,Y,Z`, `outer=DEG`, "
+     "`inner=DEG` (spot: its axis and cone half-angles in degrees; outer 30, inner half the outer unless given). "
+     "E.g. `--light area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square`, "
+     "`--light spot:0,4,2:direction=0,-2,-1:outer=25:inner=15`",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const std::string tooMany = std::string(self.name) + ": at most " + formatNumber(self.bounds.hi) + " lights";
+         addAtMost(o.lights, parseLightShorthand(v, self.name), std::size_t(self.bounds.hi), tooMany);
+     }},
+    {"--shadows", "", "", G::General, kNoBounds, nullptr, "shadows", "shadows (occlusion toward every light) on",
+     [](Options& o, const OptionSpec&, const std::string&) { o.shadows = true; }},
+    {"--no-shadows", "", "", G::General, kNoBounds, nullptr, "shadows", "shadows off",
+     [](Options& o, const OptionSpec&, const std::string&) { o.shadows = false; }},
+    {"--no-textures", "", "", G::General, kNoBounds, nullptr, "textures",
+     "glTF models without their base colour textures and vertex colours: C is each material's base colour factor "
+     "(see *What is drawn*)",
+     setTrue<&Options::noTextures>},
+    {"--sweep", "", "PARAM=V1,V2,...", G::General, kNoBounds, nullptr, "",
+     "with `--output`: a contact sheet, one labelled tile (of `--size`) per value; a second `--sweep` gives rows. "
+     "PARAM: `ke`, `ks`, `kd`, `ka`, `intensity` (every light), `tessellation` (first mesh), `ior`, `shading`, "
+     "`reflection`, `specular_normalization`, `fresnel`. E.g. `--sweep ke=1,8,32,128,512 --sweep "
+     "shading=gouraud,phong`",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         addAtMost(o.sweeps, parseSweep(v, self.name), std::size_t(kMaxSweeps),
+                   std::string(self.name) + ": at most two sweeps (columns and rows)");
+         if (o.sweeps.size() == 2 && o.sweeps[0].parameter == o.sweeps[1].parameter)
+             throw InputError(std::string(self.name) + ": " + o.sweeps[1].parameter + " is swept twice");
+     }},
+    {"--plot", "", "KIND", G::General, kNoBounds, [] { return namesList(kPlotKindNames, " | "); }, "",
+     "{names}, with `--output`: the lecture's plot for the scene's parameters, drawn on the CPU (no GL), {plot-size} "
+     "unless `--size` ({plot-sizes}): lobe = Phong and Blinn-Phong spec in the plane of incidence for "
+     "k_e; fresnel = R_par, R_perp, their average and Schlick over the angle of incidence (see *Plots*)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.plot = choice(self.name, v, kPlotKindNames); }},
+    {"--incidence", "", "DEG", G::General, bounds(kIncidenceDegRange), nullptr, "",
+     "the lobe plot's angle between the incoming light I and N ({range}, default 45)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.incidenceDeg = floatIn(self, v, " degrees"); }},
+    {"--from-inside", "", "", G::General, kNoBounds, nullptr, "",
+     "the Fresnel plot from inside the material (eta1 = `--ior`, eta2 = 1): total internal reflection past the "
+     "critical angle",
+     setTrue<&Options::fromInside>},
+    {"--probe", "", "X,Y", G::General, Bounds{0, kImageSideRange.hi - 1, true}, nullptr, "",
+     "with `--output`: also print on stdout, as JSON, every term of the formula at pixel X,Y (top-left origin, "
+     "any layout) the way that pixel's mode evaluates it (see *Pixel probe*); without `--output`: open the "
+     "viewer with the probe set there",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const auto xy = pairOf(self.name, v, ',', "the pixel as X,Y, e.g. 640,360");
+         const int x = intIn(self, xy.first);  // x first: it is named first
+         o.probe = glm::ivec2(x, intIn(self, xy.second));
+     }},
+    {"--benchmark", "", "N", G::General, bounds(kBenchmarkFramesRange), nullptr, "",
+     "render N frames ({range}) offscreen per shading mode, print one JSON line per mode (frames, triangles, "
+     "size, shading, median and p95 ms)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.benchmarkFrames = intIn(self, v); }},
+    {"--progressive", "", "S", G::General, bounds(kProgressiveStrideRange), nullptr, "",
+     "area lights in the viewer: every S-th sample per axis a frame, S x S frames to the full image ({range}; "
+     "default: the viewer adapts S to its frame time); with `--benchmark`, times one such frame while the camera "
+     "orbits",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.progressiveStride = intIn(self, v); }},
+    {"--backend", "", "NAME", G::General, kNoBounds, [] { return namesList(kBackendNames, " | "); }, "",
+     "the headless OpenGL context for `--output`/`--benchmark`: {names}: OSMesa, EGL (surfaceless or a GPU's "
+     "EGL device, drawing into an FBO), or the first that works, OSMesa first (default)",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         choice(self.name, v, kBackendNames);
+         o.backend = v;
+     }},
+    {"--msaa", "", "N", G::General, kNoBounds, [] { return namesList(kMsaaNames, ", ", " or "); }, "",
+     "multisample anti-aliasing, N = {names} samples per pixel (0, 1: off; the driver may round up and caps it "
+     "at its maximum): the frame is drawn into a multisampled framebuffer and resolved. `--output` and "
+     "`--benchmark` default to 1, pixel-exact with the golden images; the viewer to 4 (on a software renderer "
+     "such as llvmpipe only the still view is anti-aliased: moving frames are drawn without, see "
+     "bench/README.md), a scripted `--frames` run to 1",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.msaa = choice(self.name, v, kMsaaNames); }},
+    {"--camera", "", "N", G::General, Bounds{0, 100000, true}, nullptr, "",
+     "look through the glTF model's camera N (`--info` lists them, in the order the drawn scene reaches them) "
+     "instead of shadelab's framing; orthographic cameras are refused (the views are perspective)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.camera = intIn(self, v); }},
+    {"--max-memory", "", "SIZE", G::General, kNoBounds, nullptr, "",
+     "the memory budget for `--output`, `--sweep`, `--playlist` and `--benchmark` (`2G`, `512M`, at least `64M`; "
+     "default half of the machine's memory): a request estimated to need more is refused with one line saying "
+     "how much",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const auto bytes = parseByteSize(v);
+         if (!bytes) throw InputError(std::string(self.name) + ": \"" + quoteInput(v) + "\" is not a size (e.g. 2G, 512M)");
+         if (*bytes < (std::uint64_t(64) << 20)) throw InputError(std::string(self.name) + ": at least 64M");
+         o.maxMemory = *bytes;
+     }},
+    {"--shader-dir", "", "DIR", G::General, kNoBounds, nullptr, "",
+     "read GLSL files from DIR where present (default: the checkout's `shaders/` when it exists, else the copies "
+     "built into the binary)",
+     [](Options& o, const OptionSpec&, const std::string& v) { o.shaderDir = v; }},
+    {"--info", "", "", G::General, kNoBounds, nullptr, "",
+     "print what was loaded (meshes, triangles, bounds, normals, the model's cameras) and exit",
+     setTrue<&Options::info>},
+    {"--verbose", "-v", "", G::General, kNoBounds, nullptr, "", "say what was loaded and written",
+     setTrue<&Options::verbose>},
+    {"--help", "-h", "", G::General, kNoBounds, nullptr, "", "print this help and exit",
+     setTrue<&Options::help>},
+    {"--version", "", "", G::General, kNoBounds, nullptr, "", "print the version and exit",
+     setTrue<&Options::version>},
+    // The viewer's window (options.cpp refuses them with --output and --benchmark).
+    {"--frames", "", "N", G::Viewer, bounds(kViewerFramesRange), nullptr, "", "quit after N frames ({range})",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.frames = intIn(self, v); }},
+    {"--screenshot", "", "FILE.png", G::Viewer, kNoBounds, nullptr, "",
+     "on the last frame (N-th, or when you quit), save the whole window, panel included",
+     setPath<&Options::screenshot>},
+    {"--screenshot-view", "", "FILE.png", G::Viewer, kNoBounds, nullptr, "",
+     "on the last frame, save the 3D view alone (what F12 saves)",
+     setPath<&Options::screenshotView>},
+    {"--save-scene", "", "FILE.json", G::Viewer, kNoBounds, nullptr, "",
+     "on the last frame, save the scene as the panel's \"save scene\" does",
+     setPath<&Options::saveScene>},
+    {"--hide-panel", "", "", G::Viewer, kNoBounds, nullptr, "", "start with the panel hidden (Tab shows it)",
+     setTrue<&Options::hidePanel>},
+    {"--overlays", "", "LIST", G::Viewer, kNoBounds,
+     [] { return joined(std::begin(kOverlayNames), std::end(kOverlayNames), ","); }, "",
+     "start with these overlays on: {names}",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         for (const std::string& name : listOf(self.name, v, kOverlayNames, "value", "one of")) o.overlays.push_back(name);
+     }},
+    {"--panel-sections", "", "LIST", G::Viewer, kNoBounds,
+     [] { return joined(std::begin(kPanelSections), std::end(kPanelSections), ", "); }, "",
+     "start with exactly these panel sections open, e.g. plots or shading,material ({names}); `--incidence` and "
+     "`--from-inside` set the Plots section's controls",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.panelSections = listOf(self.name, v, kPanelSections, "section", "some of");
+     }},
+    {"--select-light", "", "N", G::Viewer, Bounds{0, kLightCountRange.hi - 1, true}, nullptr, "",
+     "start with light N selected in the panel (an area light shows its samples)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.selectLight = intIn(self, v); }},
+    {"--ui-scale", "", "S", G::Viewer, bounds(kUiScaleRange), nullptr, "",
+     "panel, captions, pane labels, HUD and probe labels S times larger ({range}, on top of the monitor's content "
+     "scale); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.uiScale = floatIn(self, v); }},
+    {"--fullscreen", "", "", G::Viewer, kNoBounds, nullptr, "", "cover the whole monitor (F11 toggles)",
+     setTrue<&Options::fullscreen>},
+    {"--no-labels", "", "", G::Viewer, kNoBounds, nullptr, "",
+     "start without the pane labels and light labels (a clean view for slides)",
+     setTrue<&Options::noLabels>},
+    {"--reset-layout", "", "", G::Viewer, kNoBounds, nullptr, "",
+     "forget the remembered window size and position, fullscreen, panel sections, UI scale and anti-aliasing "
+     "(`$XDG_CONFIG_HOME/shadelab/viewer.json`)",
+     setTrue<&Options::resetLayout>},
+};
+
+}  // namespace
+
+const OptionSpec* optionsBegin() { return std::begin(kOptions); }
+const OptionSpec* optionsEnd() { return std::end(kOptions); }
+
+const OptionSpec* findOption(const std::string& name) {
+    for (const OptionSpec& spec : kOptions)
+        if (name == spec.name || (*spec.alias && name == spec.alias)) return &spec;
+    return nullptr;
+}
+
+std::string optionHelp(const OptionSpec& spec) {
+    std::string text = spec.help;
+    auto fill = [&text](const std::string& key, const std::string& value) {
+        for (std::size_t at; (at = text.find(key)) != std::string::npos;) text.replace(at, key.size(), value);
+    };
+    if (spec.bounds.given) {
+        fill("{range}", rangeText(Range<double>{spec.bounds.lo, spec.bounds.hi}));
+        fill("{max}", formatNumber(spec.bounds.hi));
+    }
+    if (spec.names) fill("{names}", spec.names());
+    fill("{plot-size}", std::to_string(kPlotDefaultWidth) + "x" + std::to_string(kPlotDefaultHeight));
+    fill("{plot-sizes}", plotSizesText());
+    return text;
+}
+
+std::string optionSynopsis(const OptionSpec& spec) {
+    std::string s = *spec.alias ? std::string(spec.alias) + ", " + spec.name : std::string(spec.name);
+    return *spec.argument ? s + " " + spec.argument : s;
+}
+
+}  // namespace shadelab
