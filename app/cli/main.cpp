@@ -243,7 +243,7 @@ int run(const std::vector<std::string>& args) {
     if (options.screenshot) checkOutputPath(*options.screenshot, "--screenshot");
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
-    // GLSL from --shader-dir, else from the checkout's shaders/ when it exists, else built in.
+    // GLSL from --shader-dir, else from the folder beside the program (defaultShaderFolder), else built in.
     const std::string shaderDir = options.shaderDir.empty() ? defaultShaderFolder() : options.shaderDir;
     const RunContext context{options, shaderDir, ShaderLibrary(shaderDir),
                              options.backend == "egl"      ? HeadlessBackend::Egl

@@ -282,8 +282,8 @@ const OptionSpec kOptions[] = {
          o.maxMemory = *bytes;
      }},
     {"--shader-dir", "", "DIR", G::General, kNoBounds, nullptr, "",
-     "read GLSL files from DIR where present (default: the checkout's `shaders/` when it exists, else the copies "
-     "built into the binary)",
+     "read GLSL files from DIR where present (default: the folder beside the program, an installed "
+     "`share/shadelab/shaders` or a checkout's `shaders/` for a build inside it; else the copies built in)",
      [](Options& o, const OptionSpec&, const std::string& v) { o.shaderDir = v; }},
     {"--info", "", "", G::General, kNoBounds, nullptr, "",
      "print what was loaded (meshes, triangles, bounds, normals, the model's cameras) and exit",
