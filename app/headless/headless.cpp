@@ -232,7 +232,7 @@ std::string toJson(const BenchmarkResult& r) {
                   "\"msaa\": %d, \"median_ms\": %.3f, \"p95_ms\": %.3f, \"min_ms\": %.3f, \"max_ms\": %.3f, \"backend\": \"%s\", "
                   "\"gl_renderer\": \"%s\"}",
                   r.frames, r.triangles, r.width, r.height,
-                  r.layout == Layout::Compare ? "compare" : toString(r.mode), toString(r.layout), r.msaa, r.medianMs, r.p95Ms,
+                  r.layout == Layout::Compare ? toString(Layout::Compare) : toString(r.mode), toString(r.layout), r.msaa, r.medianMs, r.p95Ms,
                   r.minMs, r.maxMs, r.backend.c_str(), r.glRenderer.c_str());
     return buf;
 }

@@ -26,10 +26,10 @@ void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     objectVariesColor_.clear();
     objectImages_.clear();
     objectTextures_.clear();
-    if (!geometry_) return;
     objectInstanceGroups_.clear();
     objectInstances_.clear();
     objectInstanceBuffers_.clear();
+    if (!geometry_) return;
     for (std::size_t o = 0; o < geometry_->meshes.size(); ++o) {
         const Mesh& mesh = drawnMesh(o);
         objectInstanceGroups_.emplace_back();

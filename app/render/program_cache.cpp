@@ -1,20 +1,12 @@
 #include "render/program_cache.hpp"
 
-#include "core/lighting.hpp"
 #include "core/shadow_projection.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 
-#include <glm/common.hpp>
-
 #include <algorithm>
 
 namespace shadelab {
-namespace {
-
-const char* kProgramNames[3] = {"flat", "gouraud", "phong"};  // by ShadingMode
-
-}  // namespace
 
 int attenuationKind(const Light& l) {
     if (l.type == LightType::Directional || l.attenuation != Attenuation::InverseSquare) return SL_ATTENUATION_NONE;
@@ -99,7 +91,7 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
     if (variant.textured) defines.push_back("SL_TEXTURED 1");
     if (variant.instanced) defines.push_back("SL_INSTANCED 1");
-    const std::string name = kProgramNames[std::size_t(mode)];
+    const std::string name = toString(mode);  // flat.vert + flat.frag, …
     const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ ? "flat_packed" : name;
     std::string key = vertex;
     for (const std::string& d : defines) key += ";" + d;

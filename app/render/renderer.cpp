@@ -4,7 +4,6 @@
 
 #include "core/camera.hpp"
 #include "core/lighting.hpp"
-#include "core/vertex_order.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/multisample_target.hpp"
 #include "render/program.hpp"
@@ -16,7 +15,6 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <limits>
 #include <stdexcept>
 
 namespace shadelab {
@@ -25,8 +23,6 @@ namespace {
 void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
     dst[0] = v.x, dst[1] = v.y, dst[2] = v.z, dst[3] = w;
 }
-
-
 
 gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
     gpu::FrameBlock b{};
@@ -89,7 +85,6 @@ gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, const
     return b;
 }
 
-
 // A width x height texture read with texelFetch (nearest, one level).
 gl::Texture makeImageTexture(GLint internalFormat, GLenum format, GLenum type, int width, int height) {
     GLuint id = 0;
@@ -124,9 +119,7 @@ unsigned bayerRank(unsigned x, unsigned y, int bits) {
     return rank;
 }
 
-
 }  // namespace
-
 
 Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders, RendererOptions options)
     : options_(options), programs_(std::move(shaders), options.packedFlatVertices), meshes_(options) {
@@ -156,10 +149,6 @@ void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
 std::string Renderer::glRenderer() const { return reinterpret_cast<const char*>(glGetString(GL_RENDERER)); }
 std::string Renderer::glVersion() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
 
-
-
-
-
 void Renderer::preparePrograms(const Scene& scene) {
     bool textured = false;
     for (std::size_t o = 0; o < meshes_.objects(); ++o) textured = textured || (meshes_.variesColor(o) && scene.textures);
@@ -172,9 +161,6 @@ void Renderer::preparePrograms(const Scene& scene) {
             programs_.get(ShadingMode::Phong, scene, {false, true, t, false});
     }
 }
-
-
-
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
     const auto offset = [](std::size_t index) { return reinterpret_cast<void*>(index * sizeof(std::uint32_t)); };
