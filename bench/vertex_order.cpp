@@ -1,13 +1,13 @@
 // Vertex-cache orders compared (issue 15: "the vertex-cache order comes from meshoptimizer if it keeps
-// the frame times"): what shadelab uploads (core/vertex_order: Tipsify through Debian's meshoptimizer
+// the frame times"): what shadelab uploads (render/cpu/vertex_order: Tipsify through Debian's meshoptimizer
 // 0.18, meshopt_optimizeVertexCacheFifo with a cache of 32, per mesh part) against meshoptimizer's
 // other order (meshopt_optimizeVertexCache) and the rows as generated, on the benchmark's UV spheres. For each: the time to order, and the vertex-shader runs per triangle Mesa's draw module
 // makes (vertexShaderRuns: segments of 1023 indices, a direct-mapped table of 256), for the smooth
 // mesh and for the flat mesh built from it. Figures in bench/README.md ("Vertex order: meshoptimizer").
 //
 //   cmake --build build --target bench_vertex_order && build/bench_vertex_order
-#include "core/mesh.hpp"
-#include "core/vertex_order.hpp"
+#include "core/geometry/mesh.hpp"
+#include "render/cpu/vertex_order.hpp"
 
 #include <meshoptimizer.h>
 

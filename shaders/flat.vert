@@ -1,5 +1,5 @@
 // Flat shading: the colour is evaluated once per triangle, at its centroid with its face normal.
-// Each triangle's provoking (last) vertex carries those (FlatMesh in app/core/mesh.hpp); `flat` makes
+// Each triangle's provoking (last) vertex carries those (FlatMesh in app/core/geometry/mesh.hpp); `flat` makes
 // the whole triangle take that vertex's colour.
 #include "lighting.glsl"
 #include "object_color.glsl"

@@ -1,6 +1,6 @@
 // The lecture's reflection model, evaluated wherever a shading mode chooses to evaluate it:
 // once per triangle (flat), per vertex (gouraud) or per fragment (phong). Mirrors shadeTerms() in
-// app/core/lighting.cpp, which the tests compare against.
+// app/core/shading/lighting.cpp, which the tests compare against.
 //
 //   L = k_a A C + sum_l v_l L_l ( k_d C max(0, N.I_l) + k_s S spec_l ),   clamped to [0, 1]
 //   spec_l = max(0, R(I_l).V)^k_e (Phong) or max(0, H_l.N)^k_e (Blinn-Phong), 0 where N.I_l <= 0
@@ -87,7 +87,7 @@ vec3 toLight(int l, vec3 posWorld) {
 }
 #endif
 
-// Fresnel reflectance from air onto ior (core/lighting.cpp, fresnelSchlick and fresnelExact).
+// Fresnel reflectance from air onto ior (core/shading/lighting.cpp, fresnelSchlick and fresnelExact).
 float fresnelSchlick(float cosVH) {  // R0 + (1 - R0)(1 - cos)^5
     float r0 = u_modelSettings.y;
     float m = 1.0 - clamp(cosVH, 0.0, 1.0);
@@ -128,7 +128,7 @@ vec3 reflected(int l, vec3 I, float NdotI, vec3 N, vec3 V, vec3 texel, float spe
     return diffuse + specular;
 }
 
-// The distance falloff at squared distance r2 (core/lighting.cpp, attenuationFactor).
+// The distance falloff at squared distance r2 (core/shading/lighting.cpp, attenuationFactor).
 float distanceFalloff(int l, float r2) {
     int attenuation = c_lightAttenuation[l];
     if (attenuation == SL_ATTENUATION_INVERSE_SQUARE) return 1.0 / r2;
@@ -140,7 +140,7 @@ float distanceFalloff(int l, float r2) {
     return 1.0;
 }
 
-// A spot light's cone (core/lighting.cpp, spotFalloff): full inside the inner half-angle, none
+// A spot light's cone (core/shading/lighting.cpp, spotFalloff): full inside the inner half-angle, none
 // outside the outer one, glTF's smooth t^2 between. I points from the surface to the light.
 float spotFalloff(int l, vec3 I) {
     float cd = dot(u_lights[l].spot.xyz, -I);
@@ -149,7 +149,7 @@ float spotFalloff(int l, vec3 I) {
 }
 
 // Area-light sample (i, j) of an nx x ny grid as an offset in [-0.5, 0.5]^2 of the rectangle: the
-// same stratified, fixed-seed jitter as areaSampleOffset() in core/lighting.cpp.
+// same stratified, fixed-seed jitter as areaSampleOffset() in core/shading/lighting.cpp.
 uint jitterHash(uint x) {
     x ^= x >> 16;
     x *= 0x7feb352dU;

@@ -1,5 +1,5 @@
 // Shadow-map depth pass: positions only, into one layer of a light's depth texture array. The view
-// (a cube face, an orthographic or an area-sample perspective view, see core/shadow_projection.hpp)
+// (a cube face, an orthographic or an area-sample perspective view, see render/cpu/shadow_projection.hpp)
 // and the object transform come premultiplied.
 #include "shared_defs.glsl"
 

@@ -1,5 +1,5 @@
 // The occlusion term v_l of shaders/lighting.glsl: how much of light l reaches the point, from the
-// light's shadow maps (SL_SHADOWS = 1; core/shadow_projection.hpp says what each layer sees). Every
+// light's shadow maps (SL_SHADOWS = 1; render/cpu/shadow_projection.hpp says what each layer sees). Every
 // point, spot and directional light's layers are in one depth texture array, every area light's in a
 // second (area maps have their own size); light l's first layer is c_shadowLayer[l], so a loop over
 // the lights needs no array of samplers.
@@ -70,7 +70,7 @@ float visibility(int l, vec3 posWorld, vec3 N) {
 
 // v for sample `sample` of area light l, at offset ab of the rectangle: that sample's view is the
 // centre's (clipP, of the point, clipN of its normal) moved by the edges' clip-space images
-// (core/shadow_projection.hpp).
+// (render/cpu/shadow_projection.hpp).
 float areaSampleVisibility(int l, vec2 ab, int sample, vec4 clipP, vec4 clipN) {
     vec4 clip = clipP - ab.x * u_lights[l].shadowU - ab.y * u_lights[l].shadowV;
     clip += clipN * (u_shadowSettings.x * u_lights[l].shadow.x * clip.w);

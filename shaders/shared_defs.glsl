@@ -27,12 +27,12 @@
 #define SL_ATTENUATION_NONE 0
 #define SL_ATTENUATION_INVERSE_SQUARE 1
 #define SL_ATTENUATION_INVERSE_SQUARE_RANGE 2  // 1/r^2 * clamp(1 - (r/range)^4, 0, 1)^2
-#define SL_AREA_JITTER_SEED 0x5ade1abU         // area-light sample jitter (core/lighting.hpp, areaSampleOffset)
+#define SL_AREA_JITTER_SEED 0x5ade1abU         // area-light sample jitter (core/shading/lighting.hpp, areaSampleOffset)
 #define SL_REFLECTION_PHONG 0
 #define SL_REFLECTION_BLINN_PHONG 1
 #define SL_ENCODING_LINEAR 0
 #define SL_ENCODING_SRGB 1
-// Beyond the heuristic model (core/lighting.hpp); only scenes that use them get these defines.
+// Beyond the heuristic model (core/shading/lighting.hpp); only scenes that use them get these defines.
 #define SL_NORMALIZATION_NONE 0
 #define SL_NORMALIZATION_ENERGY 1              // lobe * n(k_e) / n(SL_ENERGY_REFERENCE_EXPONENT)
 #define SL_ENERGY_REFERENCE_EXPONENT 32.0      // k_e at which "energy" looks like "none"

@@ -12,7 +12,7 @@ struct LightGpu {
     vec4 areaU;                // xyz: the area light's edge along its width (length = width)
     vec4 areaV;                // xyz: the edge along its height
     vec4 areaNormal;           // xyz: unit normal of the emitting side
-    // Shadows (core/shadow_projection.hpp). Directional: the orthographic map. Area: the map of the
+    // Shadows (render/cpu/shadow_projection.hpp). Directional: the orthographic map. Area: the map of the
     // rectangle's centre; sample (a, b)'s map is shadowClipFromWorld * p - a shadowU - b shadowV.
     mat4 shadowClipFromWorld;
     vec4 shadowU;              // shadowClipFromWorld * vec4(areaU, 0)

@@ -1,17 +1,17 @@
 // shadelab's entry point: parse the command line, build the scene, hand it to the headless renderer
 // or the viewer, report errors as one line. Exit status: 0 ok, 2 bad input, 1 anything else.
 #include "cli/options.hpp"
-#include "core/error.hpp"
-#include "core/file_io.hpp"
-#include "core/gltf_import.hpp"
-#include "core/image.hpp"
-#include "core/memory_budget.hpp"
-#include "core/message.hpp"
-#include "core/plot_image.hpp"
-#include "core/probe.hpp"
-#include "core/ray_cast.hpp"
-#include "core/playlist.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/base/error.hpp"
+#include "core/base/file_io.hpp"
+#include "core/geometry/gltf_import.hpp"
+#include "core/image/image.hpp"
+#include "core/scene/memory_budget.hpp"
+#include "core/base/message.hpp"
+#include "core/figures/plot_image.hpp"
+#include "core/probe/probe.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/scene/playlist.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "headless/headless.hpp"
 #include "platform/platform.hpp"
 #include "render/program.hpp"
@@ -114,7 +114,7 @@ struct RunContext {
     HeadlessBackend backend;
 };
 
-// --plot: drawn on the CPU from core/lighting's formulas: no GL, no context, no shaders.
+// --plot: drawn on the CPU from core/shading/lighting's formulas: no GL, no context, no shaders.
 int runPlot(const Options& options, const Scene& scene) {
     const Material material = scene.objects.empty() ? Material{} : scene.objects.front().material;
     const Image image = renderPlotImage(scenePlot(*options.plot, scene, material, plotSettings(options)),

@@ -1,13 +1,13 @@
 #include "cli/option_table.hpp"
 
-#include "core/error.hpp"
-#include "core/file_io.hpp"
-#include "core/memory_budget.hpp"
-#include "core/message.hpp"
-#include "core/panel_sections.hpp"
-#include "core/plot_image.hpp"
-#include "core/scene_json.hpp"
-#include "core/scene_names.hpp"
+#include "core/base/error.hpp"
+#include "core/base/file_io.hpp"
+#include "core/scene/memory_budget.hpp"
+#include "core/base/message.hpp"
+#include "core/ui/panel_sections.hpp"
+#include "core/figures/plot_image.hpp"
+#include "core/scene/scene_json.hpp"
+#include "core/scene/scene_names.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 // dependency (for the libFuzzer build too). The table keeps what a library would give: one
 // declaration per option, --help and the README's table generated from it.
 #include "cli/options.hpp"
-#include "core/scene_limits.hpp"
+#include "core/scene/scene_limits.hpp"
 
 #include <string>
 
@@ -26,7 +26,7 @@ namespace shadelab {
 // --benchmark refuse: see options.cpp).
 enum class OptionGroup { General, Viewer };
 
-// A number's range, when the option has one; from core/scene_limits.hpp.
+// A number's range, when the option has one; from core/scene/scene_limits.hpp.
 struct Bounds {
     double lo = 0, hi = 0;
     bool given = false;

@@ -1,11 +1,11 @@
 #include "cli/options.hpp"
 
 #include "cli/option_table.hpp"
-#include "core/controls.hpp"
-#include "core/error.hpp"
-#include "core/file_io.hpp"
-#include "core/plot_image.hpp"
-#include "core/scene_json.hpp"
+#include "core/ui/controls.hpp"
+#include "core/base/error.hpp"
+#include "core/base/file_io.hpp"
+#include "core/figures/plot_image.hpp"
+#include "core/scene/scene_json.hpp"
 
 #include <algorithm>
 #include <sstream>

@@ -1,9 +1,9 @@
 #pragma once
 // The command line: `shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]`. Parsing is GL-free so
 // it is unit-tested (and fuzzed) on its own. Options override what the scene file says.
-#include "core/plot.hpp"
-#include "core/scene.hpp"
-#include "core/sweep.hpp"
+#include "core/figures/plot.hpp"
+#include "core/scene/scene.hpp"
+#include "core/scene/sweep.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -32,7 +32,7 @@ enum class RunMode {
 struct Options {
     std::string input;                      // scene or model file; empty: the built-in default scene
     std::optional<std::string> output;      // --output FILE.png: render one frame headless (a folder with --playlist)
-    std::optional<std::string> playlist;    // --playlist DIR: the lecture presets in DIR (core/playlist.hpp)
+    std::optional<std::string> playlist;    // --playlist DIR: the lecture presets in DIR (core/scene/playlist.hpp)
     bool captions = false;                  // --captions: --output PNGs get a strip with the title and caption
     std::optional<ShadingMode> shading;
     std::optional<Layout> layout;
@@ -62,7 +62,7 @@ struct Options {
     // front end picks its own default: 1 for --output/--benchmark (golden images stay pixel-exact), 4 in the viewer.
     std::optional<int> msaa;
     std::optional<int> camera;               // --camera N: the glTF model's camera N
-    std::optional<std::uint64_t> maxMemory;  // --max-memory SIZE: the memory budget (core/memory_budget.hpp)
+    std::optional<std::uint64_t> maxMemory;  // --max-memory SIZE: the memory budget (core/scene/memory_budget.hpp)
     std::string shaderDir;                  // --shader-dir DIR: GLSL files read from DIR when present
     std::string backend = "auto";           // --backend osmesa|egl|auto: the headless GL context
     bool info = false;                      // --info: print what was loaded, render nothing

@@ -1,7 +1,7 @@
 #include "headless/headless.hpp"
 
-#include "core/error.hpp"
-#include "core/memory_budget.hpp"
+#include "core/base/error.hpp"
+#include "core/scene/memory_budget.hpp"
 #include "render/multisample_target.hpp"
 #include "render/renderer.hpp"
 
@@ -24,7 +24,7 @@ std::string frameName(const Scene& s) {
            std::to_string(s.height) + " frame";
 }
 
-// The memory budget (core/memory_budget.hpp) for one frame of `s`, with `kept` bytes of frames the
+// The memory budget (core/scene/memory_budget.hpp) for one frame of `s`, with `kept` bytes of frames the
 // caller holds; `triangles` once the models are read (before, the procedural meshes' part).
 void checkFrameMemory(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles, std::uint64_t kept = 0,
                       std::uint64_t textureBytes = 0) {

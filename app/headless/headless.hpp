@@ -1,9 +1,9 @@
 #pragma once
 // Headless rendering: one frame to an image, or a timed run of frames, on an OSMesa context.
-#include "core/image.hpp"
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
-#include "core/sweep.hpp"
+#include "core/image/image.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
+#include "core/scene/sweep.hpp"
 #include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
 
@@ -38,13 +38,13 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 // one's; programs are kept, geometry is rebuilt only when the meshes differ from the previous scene's)
 // and hands each image to `done` with its index as soon as it is read back, so a long playlist never
 // holds more than one image. A glTF scene without a camera is framed as for --output. Every scene is
-// checked against the memory budget (core/memory_budget.hpp) with `keptBytes` more for the images the
+// checked against the memory budget (core/scene/memory_budget.hpp) with `keptBytes` more for the images the
 // caller keeps, before anything is drawn and again once its models are read.
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
                           const std::function<void(std::size_t, Image)>& done, int msaaSamples = 1,
                           std::uint64_t keptBytes = 0);
 
-// A sweep sheet (core/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
+// A sweep sheet (core/scene/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
 // with two sweeps, per value of sweeps[1] (rows), each labelled, rendered on one context. Geometry is
 // rebuilt only when a tile's meshes differ from the previous tile's (a tessellation sweep).
 Image renderSweepHeadless(const Scene& scene, const std::vector<Sweep>& sweeps, const ShaderLibrary& shaders,

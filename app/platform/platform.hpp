@@ -4,7 +4,7 @@
 // and compile for any C++17 platform; platform.cpp holds a POSIX and a Windows (_WIN32) implementation.
 //
 // A layer of its own below core (the target shadelab_platform): it needs nothing of shadelab's, so
-// it reports failures as text for the caller to word (core/file_io.cpp turns them into InputError).
+// it reports failures as text for the caller to word (core/base/file_io.cpp turns them into InputError).
 #include <cstdint>
 #include <cstdio>
 #include <ctime>

@@ -1,6 +1,6 @@
 #include "render/mesh_cache.hpp"
 
-#include "core/vertex_order.hpp"
+#include "render/cpu/vertex_order.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 

@@ -4,9 +4,9 @@
 // provoking vertex per triangle with its centroid and face normal, FlatMesh), uploaded on first use
 // in the order RendererOptions::meshOrder asks; its GPU instances (EXT_mesh_gpu_instancing) split by
 // handedness; and its base colour textures. GL-free work (ordering, flat meshes) is in core.
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
-#include "core/shadow_projection.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
+#include "render/cpu/shadow_projection.hpp"
 #include "render/gl_handles.hpp"
 #include "render/renderer_options.hpp"
 

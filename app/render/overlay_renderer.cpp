@@ -1,8 +1,8 @@
 #include "render/overlay_renderer.hpp"
 
-#include "core/camera.hpp"
-#include "core/lighting.hpp"
-#include "core/mesh.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/shading/lighting.hpp"
+#include "core/geometry/mesh.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 

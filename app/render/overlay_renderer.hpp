@@ -3,8 +3,8 @@
 // short lines, and markers at the lights. Kept out of Renderer so the shading programs and their images
 // (which the golden tests pin) are untouched; it draws with its own program (shaders/overlay.*) and its
 // own uniform buffer, into the same target and pane layout, testing against the depth Renderer left.
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "render/gl_handles.hpp"
 #include "render/renderer.hpp"
 #include "render/shader_library.hpp"

@@ -1,8 +1,8 @@
 #include "render/program.hpp"
 
-#include "core/error.hpp"
+#include "core/base/error.hpp"
 
-#include "core/glsl_include.hpp"
+#include "render/cpu/glsl_include.hpp"
 #include "render/gpu_blocks.hpp"
 
 #include <cstdio>

@@ -1,6 +1,6 @@
 #include "render/program_cache.hpp"
 
-#include "core/shadow_projection.hpp"
+#include "render/cpu/shadow_projection.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The shading programs, by mode and specialisation: what the scene compiles in (programDefines) and
 // what a draw needs besides (Variant), each built on first use (an LLVM compile on llvmpipe) and kept.
-#include "core/scene.hpp"
+#include "core/scene/scene.hpp"
 #include "render/gl_handles.hpp"
 #include "render/shader_library.hpp"
 

@@ -1,9 +1,9 @@
 #include "render/renderer.hpp"
 
-#include "core/error.hpp"
+#include "core/base/error.hpp"
 
-#include "core/camera.hpp"
-#include "core/lighting.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/shading/lighting.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/multisample_target.hpp"
 #include "render/program.hpp"

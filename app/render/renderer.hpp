@@ -2,10 +2,10 @@
 // The GL renderer: draws a Scene into a framebuffer it is handed. It never creates a context; the
 // front end (the GLFW viewer, the OSMesa or any other headless context) makes one current and passes
 // its get-proc-address function. All GL state the renderer relies on is set in render().
-#include "core/camera.hpp"
-#include "core/image.hpp"
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/image/image.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "render/gl_handles.hpp"
 #include "render/mesh_cache.hpp"
 #include "render/program_cache.hpp"

@@ -15,7 +15,7 @@ struct RendererOptions {
     PhongInputs phongInputs = PhongInputs::Auto;
 
     // The order meshes are uploaded in. VertexCache reorders each mesh's triangles and vertices for
-    // the driver's vertex cache (core/vertex_order.hpp): the same picture with up to ~40% fewer
+    // the driver's vertex cache (render/cpu/vertex_order.hpp): the same picture with up to ~40% fewer
     // vertex-shader runs a frame, for a one-off cost at upload (~0.15 s per million triangles). Worth
     // it for a mesh drawn many times (the viewer, --benchmark), not for one --output frame.
     enum class MeshOrder { AsGiven, VertexCache };

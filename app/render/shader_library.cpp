@@ -1,6 +1,6 @@
 #include "render/shader_library.hpp"
 
-#include "core/embedded.hpp"
+#include "core/base/embedded.hpp"
 #include "platform/platform.hpp"
 
 #include <filesystem>

@@ -1,7 +1,7 @@
 #include "render/shadow_maps.hpp"
 
-#include "core/error.hpp"
-#include "core/lighting.hpp"
+#include "core/base/error.hpp"
+#include "core/shading/lighting.hpp"
 #include "render/program.hpp"
 
 #include <glm/gtc/type_ptr.hpp>

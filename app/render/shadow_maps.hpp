@@ -2,12 +2,12 @@
 // Shadow maps for Renderer, rendered before the shaded passes when the scene asks for shadows: two
 // depth texture arrays, one for the point, spot and directional lights and one for the area lights
 // (their maps have their own size), each light's layers from its first layer (ShadowLayout). What
-// each layer sees is decided GL-free in core/shadow_projection.hpp; this class owns the textures, the
+// each layer sees is decided GL-free in render/cpu/shadow_projection.hpp; this class owns the textures, the
 // depth-only program and the pass.
 // The maps are re-rendered only when something they depend on changed (lights, settings, object
 // transforms, geometry), so a still scene in the viewer pays for them once.
-#include "core/scene.hpp"
-#include "core/shadow_projection.hpp"
+#include "core/scene/scene.hpp"
+#include "render/cpu/shadow_projection.hpp"
 #include "render/gl_handles.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/shader_library.hpp"

@@ -1,6 +1,6 @@
 #include "viewer/glfw_window.hpp"
 
-#include "core/error.hpp"
+#include "core/base/error.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -95,7 +95,7 @@ void frameCamera(Camera& c, const BoundingSphere& b, float paneAspect) {
     const float radius = b.radius > 0.0f ? b.radius : 1.0f;
     const float halfY = glm::radians(c.fovYDeg) / 2.0f;
     const float halfX = std::atan(std::tan(halfY) * std::max(paneAspect, 1e-3f));
-    // Same rule as frameBounds() in core/camera.cpp: the silhouette subtends asin(r / d).
+    // Same rule as frameBounds() in core/geometry/camera.cpp: the silhouette subtends asin(r / d).
     const float dist = radius / std::sin(0.9f * std::min(halfX, halfY));
     glm::vec3 dir = c.eye - c.target;
     dir = glm::length(dir) > 0.0f ? glm::normalize(dir) : glm::vec3(0.0f, 0.0f, 1.0f);

@@ -2,8 +2,8 @@
 // Mouse camera controls as plain functions on the scene's Camera (no GL, no GLFW), so the viewer's
 // orbit, pan, zoom and framing are unit-tested and what the mouse does is exactly what a saved scene
 // holds. The target is the centre of the orbit; `up` is kept as the scene gave it.
-#include "core/mesh.hpp"
-#include "core/scene.hpp"
+#include "core/geometry/mesh.hpp"
+#include "core/scene/scene.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -1,9 +1,9 @@
 #include "viewer/panel.hpp"
 
-#include "core/camera.hpp"
-#include "core/controls.hpp"
-#include "core/panel_sections.hpp"
-#include "core/scene_names.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/ui/controls.hpp"
+#include "core/ui/panel_sections.hpp"
+#include "core/scene/scene_names.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -54,7 +54,7 @@ bool combo(const char* label, E& value, const char* const (&names)[N]) {
     return true;
 }
 
-// A combo box of an enum's names as scene files and the command line spell them (core/scene_names.hpp).
+// A combo box of an enum's names as scene files and the command line spell them (core/scene/scene_names.hpp).
 template <typename E, std::size_t N>
 bool combo(const char* label, E& value, const EnumName<E> (&names)[N]) {
     const char* labels[N];
@@ -123,7 +123,7 @@ void sectionShading(Scene& scene) {
     radio("Blinn-Phong", scene.reflection, ReflectionModel::BlinnPhong);
     static const char* const kEncodings[] = {"linear", "sRGB"};
     combo("output encoding", scene.outputEncoding, kEncodings);
-    // Beyond the heuristic model (core/lighting.hpp): each switch recompiles the programs once.
+    // Beyond the heuristic model (core/shading/lighting.hpp): each switch recompiles the programs once.
     static const char* const kNormalizations[] = {"none (heuristic)", "energy-normalised"};
     combo("lobe normalisation", scene.specularNormalization, kNormalizations);
     static const char* const kFresnel[] = {"none", "Schlick", "exact"};
@@ -150,7 +150,7 @@ void sectionMaterial(Material& m) {
         m.ke = std::clamp(m.ke, kExponentRange.lo, kExponentRange.hi);
 }
 
-// The lecture's plots for the current parameters (core/plot.hpp): rebuilt every frame, which costs
+// The lecture's plots for the current parameters (core/figures/plot.hpp): rebuilt every frame, which costs
 // about a thousand formula evaluations, so every slider in the panel moves the curves at once.
 void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
     ImGui::SliderFloat("incidence", &plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi, "\u03b8_i = %.1f\u00b0");

@@ -3,11 +3,11 @@
 // change shows on the next frame), the compare-pane labels and the HUD. Immediate mode: these functions
 // are called every frame, hold no state of their own, and report button presses as requests that the
 // viewer carries out, so file and GL work never happens inside a widget.
-#include "core/plot.hpp"
-#include "core/camera.hpp"
-#include "core/probe.hpp"
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/figures/plot.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/probe/probe.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
 
 #include <optional>
@@ -101,7 +101,7 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip);
 // The last message over the bottom of the 3D view (where the lecturer looks), red for an error.
 void drawMessage(const PanelStatus& status, const UiRect& view);
 
-// Every key and mouse action (core/controls.hpp) in a box over the view: F1 or ?.
+// Every key and mouse action (core/ui/controls.hpp) in a box over the view: F1 or ?.
 void drawHelpOverlay(const UiRect& view);
 
 // Each light's marker over the view: a ring with its number and kind, an arrow along a directional

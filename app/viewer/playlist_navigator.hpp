@@ -1,10 +1,10 @@
 #pragma once
-// Stepping the viewer's document through a lecture playlist (core/playlist.hpp), without GL or window.
+// Stepping the viewer's document through a lecture playlist (core/scene/playlist.hpp), without GL or window.
 // Each preset keeps its live edits and camera while the lecturer steps to other presets and back, as
 // slides would; reset() reloads the current one from its file (so an edit made to the file in an
 // editor shows too). Every step is all-or-nothing: when a preset's geometry cannot be built, or its
 // file no longer loads, the document and the position stay as they were.
-#include "core/playlist.hpp"
+#include "core/scene/playlist.hpp"
 #include "viewer/scene_document.hpp"
 
 #include <optional>

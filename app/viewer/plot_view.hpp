@@ -1,7 +1,7 @@
 #pragma once
-// A lecture plot (core/plot.hpp) drawn live in the panel with ImGui's draw list: the same Plot and the
+// A lecture plot (core/figures/plot.hpp) drawn live in the panel with ImGui's draw list: the same Plot and the
 // same layout as the PNG that --plot writes, painted with ImGui's antialiased lines and its font.
-#include "core/plot.hpp"
+#include "core/figures/plot.hpp"
 
 namespace shadelab {
 

@@ -1,6 +1,6 @@
 #include "viewer/probe_view.hpp"
 
-#include "core/camera.hpp"
+#include "core/geometry/camera.hpp"
 #include "viewer/panel.hpp"
 
 #include <glm/common.hpp>

@@ -1,9 +1,9 @@
 #pragma once
-// The pixel probe in the viewer (core/probe.hpp computes it): the labelled arrows N, V, I_l, R(I_l),
+// The pixel probe in the viewer (core/probe/probe.hpp computes it): the labelled arrows N, V, I_l, R(I_l),
 // H_l drawn in the 3D view where the probed mode evaluates the formula, and the panel's "Probe"
 // section listing every term. Immediate mode, like panel.hpp: called every frame, no state.
-#include "core/probe.hpp"
-#include "core/scene.hpp"
+#include "core/probe/probe.hpp"
+#include "core/scene/scene.hpp"
 #include "render/overlay_renderer.hpp"
 
 #include <string>

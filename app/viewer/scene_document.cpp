@@ -1,9 +1,9 @@
 #include "viewer/scene_document.hpp"
 
-#include "core/camera.hpp"
-#include "core/error.hpp"
-#include "core/file_io.hpp"
-#include "core/scene_json.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/base/error.hpp"
+#include "core/base/file_io.hpp"
+#include "core/scene/scene_json.hpp"
 #include "viewer/orbit.hpp"
 
 #include <glm/geometric.hpp>

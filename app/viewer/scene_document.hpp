@@ -2,8 +2,8 @@
 // What the viewer shows, without any GL or window: the scene the panel edits, the geometry built from
 // it, and the camera `R` goes back to. Loading, saving and rebuilding are all-or-nothing: when one
 // throws, the document is as it was, so a bad file or a failing glTF never costs the room its scene.
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,8 +1,8 @@
 #include "viewer/view_prefs.hpp"
 
-#include "core/file_io.hpp"
-#include "core/controls.hpp"
-#include "core/panel_sections.hpp"
+#include "core/base/file_io.hpp"
+#include "core/ui/controls.hpp"
+#include "core/ui/panel_sections.hpp"
 
 #include <nlohmann/json.hpp>
 

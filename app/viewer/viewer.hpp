@@ -3,12 +3,12 @@
 // framebuffer, the teaching overlays, and a Dear ImGui panel that edits the scene live. One object owns
 // all of it; run() loops over frame(), which is the whole per-frame story:
 //   poll -> ImGui frame -> keys/mouse/drops -> panel -> apply requests -> renderer -> ImGui -> swap.
-#include "core/image.hpp"
-#include "core/probe.hpp"
-#include "core/ray_cast.hpp"
-#include "core/playlist.hpp"
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/image/image.hpp"
+#include "core/probe/probe.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/scene/playlist.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
 #include "render/renderer.hpp"

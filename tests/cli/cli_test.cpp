@@ -1,7 +1,7 @@
 // The shadelab executable as a user (or CI) runs it: headless output with no display, one-line errors
 // with exit status 2 and no output file for every kind of bad input, the benchmark's JSON lines.
 #include "cli/run_shadelab.hpp"
-#include "core/image.hpp"
+#include "core/image/image.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -2,7 +2,7 @@
 // argument list either parses or is an InputError; with no input file, the overrides are applied to
 // the built-in scene too (no file is read).
 #include "cli/options.hpp"
-#include "core/error.hpp"
+#include "core/base/error.hpp"
 
 #include <cstdint>
 #include <string>

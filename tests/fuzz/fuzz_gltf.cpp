@@ -1,8 +1,8 @@
 // libFuzzer target: glTF import from bytes (.glb when they start with "glTF", else .gltf JSON).
 // Any input either loads or is an InputError; what loads must be a valid mesh. External URIs resolve
 // against an empty folder, so only data: URIs and embedded buffers are exercised.
-#include "core/error.hpp"
-#include "core/gltf_import.hpp"
+#include "core/base/error.hpp"
+#include "core/geometry/gltf_import.hpp"
 
 #include <glm/geometric.hpp>
 

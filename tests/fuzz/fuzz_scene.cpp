@@ -1,7 +1,7 @@
 // libFuzzer target: the scene-file parser. Any input either parses or is an InputError; a scene that
 // parses must also survive a save/load round trip (what the viewer's "save scene" relies on).
-#include "core/error.hpp"
-#include "core/scene_json.hpp"
+#include "core/base/error.hpp"
+#include "core/scene/scene_json.hpp"
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,8 +1,8 @@
 // Analytic image tests: rendered pixels against the CPU reference of the lecture's formula
-// (app/core/lighting.cpp) at the surface point each pixel sees. Golden images can be regenerated;
+// (app/core/shading/lighting.cpp) at the surface point each pixel sees. Golden images can be regenerated;
 // these cannot, so a wrong formula cannot hide behind a new baseline.
-#include "core/lighting.hpp"
-#include "core/mesh.hpp"
+#include "core/shading/lighting.hpp"
+#include "core/geometry/mesh.hpp"
 #include "gl/gl_test_support.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,12 +1,12 @@
 // Two ways the renderer changes the order of its draws for speed or memory, neither of which may
 // change a single pixel: meshes reordered for the vertex cache (Renderer::MeshOrder,
-// core/vertex_order.hpp: the same triangles with the same corners in another order) and draws split
+// render/cpu/vertex_order.hpp: the same triangles with the same corners in another order) and draws split
 // into fenced chunks (RendererOptions::drawChunkTriangles). And a third speed variant that may change
 // only rounding: flat shading from packed vertices (shaders/flat_packed.vert, whose face normal's z
 // is rebuilt from its unit length) against the readable flat.vert. Checked on the golden scenes with
 // several objects, parts (glTF primitives), a mirrored transform, textures, shadow maps and all three
 // modes side by side.
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "render/renderer.hpp"
 

@@ -1,10 +1,10 @@
 #pragma once
 // Helpers for the GL tests: headless renders and the pixel <-> world mapping that lets a test
 // compare a pixel with the CPU reference at the surface point that pixel sees.
-#include "core/camera.hpp"
-#include "core/image.hpp"
-#include "core/scene.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/image/image.hpp"
+#include "core/scene/scene.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "headless/headless_context.hpp"
 
 #include <glm/vec2.hpp>

@@ -1,7 +1,7 @@
 // Golden-image tests: small renders of the scenes in tests/scenes/ against tests/golden/*.png, images
 // a person looked at. They are defined as what OSMesa/llvmpipe on Debian 12 renders.
 //
-// Metric (core/image.hpp): per pixel, the largest channel difference. The test fails when more than
+// Metric (core/image/image.hpp): per pixel, the largest channel difference. The test fails when more than
 // 0.2% of the pixels differ by more than 4/255, or the mean difference exceeds 0.25/255. llvmpipe is
 // deterministic for a given Mesa build and CPU, but its vector width follows the CPU (AVX2 vs
 // AVX-512), which moves some values by 1-2/255 and may flip a few silhouette pixels: the thresholds
@@ -10,7 +10,7 @@
 // A failing test writes NAME.actual.png and NAME.diff.png (red: over the threshold) to
 // build/tests/output/ and prints their paths. `./dev goldens` re-renders every baseline into
 // tests/golden/; look at each image before committing it.
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "headless/headless.hpp"
 

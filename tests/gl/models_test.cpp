@@ -1,7 +1,7 @@
 // Every real model in ../shared/assets/gltf renders headless in all three modes, auto-framed, with no
 // GL error and a picture that is not empty. The renders are written to build/tests/output/models/
 // for a person to look at.
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "render/renderer.hpp"
 

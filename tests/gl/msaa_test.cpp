@@ -3,7 +3,7 @@
 // four, the sphere's silhouette is blended with the background and nothing away from it changes.
 // The renderer's own passes must work on a multisampled target too: the diff layout copies its two
 // panes out of it, readPixels reads it, progressive frames resolve their sum into it.
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "headless/headless.hpp"
 #include "render/multisample_target.hpp"

@@ -5,7 +5,7 @@
 //
 // Tolerance: the to-eye and to-light vectors are interpolated instead of computed from the
 // interpolated position; the two differ by float rounding, 1 of 255 at a rounding boundary at most.
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/renderer.hpp"

@@ -1,4 +1,4 @@
-// The pixel probe (app/core/probe.hpp) against what the renderer draws: for pixels of every shading
+// The pixel probe (app/core/probe/probe.hpp) against what the renderer draws: for pixels of every shading
 // mode, the probe's 8-bit total must be the rendered pixel. The probe gets its numbers from the CPU
 // reference, so this also pins the renderer to the reference at the probed pixels.
 //
@@ -10,9 +10,9 @@
 // Flat pixels are compared only where the pixels two to either side see the same triangle: at an
 // edge the rasteriser's tie rule and the ray cast may pick different triangles (for gouraud and phong
 // the colour is continuous there, but the same rule is used for all three).
-#include "core/probe.hpp"
-#include "core/ray_cast.hpp"
-#include "core/scene_json.hpp"
+#include "core/probe/probe.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 
 #include <gtest/gtest.h>

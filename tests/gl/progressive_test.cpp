@@ -4,7 +4,7 @@
 //
 // Tolerance: the passes are summed in 32-bit floats and divided by their count, which can move a
 // value by a few ulps from the one-pass sum: 1 of 255 at a rounding boundary, nowhere more.
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "render/renderer.hpp"
 

@@ -7,7 +7,7 @@
 // bilinear compare - about 5 texels, 0.01 rad seen from the light, ~0.03 world units at the sphere.
 // Pixels are checked only where every light point is occluded (or visible) with the segment passing
 // at least kMargin = 0.06 inside (outside) the sphere, twice that.
-#include "core/lighting.hpp"
+#include "core/shading/lighting.hpp"
 #include "gl/gl_test_support.hpp"
 
 #include <glm/geometric.hpp>
@@ -301,7 +301,7 @@ TEST(Shadows, EachLightIsOccludedOnItsOwn) {
 
 // Area lights and range windows without shadows: Phong pixels of a fine sphere against the CPU
 // reference on the true sphere (as PhongVersusRayCast in analytic_test.cpp, same 2/255 tolerance):
-// the GLSL jitter hash, sample weights and the window agree with core/lighting.cpp.
+// the GLSL jitter hash, sample weights and the window agree with core/shading/lighting.cpp.
 TEST(AreaLights, PhongPixelsMatchTheReference) {
     Scene s;
     s.objects[0].mesh.slices = 256;

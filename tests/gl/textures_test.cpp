@@ -1,14 +1,14 @@
 // The object texture of the lecture's C (a glTF base colour texture and vertex colours) as the renderer
-// draws it in each mode, against the probe's CPU evaluation (core/probe.hpp) and against the
+// draws it in each mode, against the probe's CPU evaluation (core/probe/probe.hpp) and against the
 // untextured programs. The model is the project's checker globe (assets/models/make_models.py).
 //
 // Tolerances (per channel, out of 255) are the probe test's (flat, Phong 1; Gouraud 2). The GPU reads
 // smaller mip levels where the texture is minified and the CPU reads the full-size image: they agree
 // inside the checker's squares and can differ across their edges, so up to 2% of the pixels may be
 // past the tolerance (none are on llvmpipe with this close camera: the worst pixel is 1 off).
-#include "core/probe.hpp"
-#include "core/ray_cast.hpp"
-#include "core/scene_json.hpp"
+#include "core/probe/probe.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 
 #include <gtest/gtest.h>

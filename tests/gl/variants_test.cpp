@@ -2,7 +2,7 @@
 // Draco-compressed, instanced; made by gltfpack and glTF Transform) renders like the original it was
 // made from, in all three modes, with the same number of triangles (every instance drawn; less the few a quantizer makes degenerate). The renders
 // are written to build/tests/output/variants/ for a person to look at.
-#include "core/scene_json.hpp"
+#include "core/scene/scene_json.hpp"
 #include "gl/gl_test_support.hpp"
 #include "render/renderer.hpp"
 

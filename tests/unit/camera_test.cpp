@@ -1,6 +1,6 @@
 // projectedBoxPixels: the screen area Renderer::interpolatesInputs weighs against an object's
 // triangle count. Checked against boxes whose projection is known in closed form.
-#include "core/camera.hpp"
+#include "core/geometry/camera.hpp"
 
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>

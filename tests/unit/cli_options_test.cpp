@@ -1,5 +1,5 @@
 #include "cli/options.hpp"
-#include "core/error.hpp"
+#include "core/base/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -258,7 +258,7 @@ TEST(CliOptions, RunModeIsDecidedOnce) {
     EXPECT_EQ(parseOptions({"--playlist", "dir", "--output", "out/"}).mode, RunMode::PlaylistImages);
 }
 
-// Issue 17: the messages print the ranges of core/scene_limits.hpp, which --help prints too.
+// Issue 17: the messages print the ranges of core/scene/scene_limits.hpp, which --help prints too.
 TEST(CliOptions, TableRangesInMessagesAndHelp) {
     EXPECT_NE(errorOf({"--ui-scale", "5"}).find("--ui-scale: must be between 0.75 and 4 (got 5)"), std::string::npos);
     EXPECT_NE(errorOf({"--incidence", "90"}).find("--incidence: must be between 0 and 89 degrees (got 90)"),

@@ -1,7 +1,7 @@
 // The GLSL include step, and the one source of truth for constants shared by C++ and GLSL.
 #include "../../shaders/shared_defs.glsl"
-#include "core/glsl_include.hpp"
-#include "core/scene.hpp"
+#include "render/cpu/glsl_include.hpp"
+#include "core/scene/scene.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // glTF import: the real models in ../shared/assets/gltf (counts from its README), and small broken or
 // hostile files this test writes itself. Every broken file must give an InputError that names the
 // file and the offending accessor/primitive; none may crash (CI also runs this under ASan + UBSan).
-#include "core/error.hpp"
-#include "core/gltf_import.hpp"
-#include "core/image.hpp"
-#include "core/scene_geometry.hpp"
+#include "core/base/error.hpp"
+#include "core/geometry/gltf_import.hpp"
+#include "core/image/image.hpp"
+#include "core/geometry/scene_geometry.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

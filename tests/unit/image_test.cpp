@@ -1,6 +1,6 @@
-#include "core/error.hpp"
-#include "core/file_io.hpp"
-#include "core/image.hpp"
+#include "core/base/error.hpp"
+#include "core/base/file_io.hpp"
+#include "core/image/image.hpp"
 #include "test_dir.hpp"
 
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
 // The limits that keep a refusal one short line and a small file from asking for unbounded work:
 // messages quoting the input, JSON nesting measured on the text, the memory budget's estimate.
-#include "core/error.hpp"
-#include "core/json_depth.hpp"
-#include "core/memory_budget.hpp"
-#include "core/mesh.hpp"
-#include "core/message.hpp"
+#include "core/base/error.hpp"
+#include "core/base/json_depth.hpp"
+#include "core/scene/memory_budget.hpp"
+#include "core/geometry/mesh.hpp"
+#include "core/base/message.hpp"
 
 #include <gtest/gtest.h>
 

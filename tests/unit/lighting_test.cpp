@@ -1,5 +1,5 @@
 // The CPU reference of the lecture's formula, checked against values worked out by hand here.
-#include "core/lighting.hpp"
+#include "core/shading/lighting.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -366,7 +366,7 @@ TEST(Lighting, VisibilityScalesEachLightSample) {
 namespace {
 constexpr double kPiD = 3.14159265358979323846;
 
-// The lecture's forms, written independently of core/lighting.cpp: R_par = tan^2(t1 - t3) / tan^2(t1 + t3),
+// The lecture's forms, written independently of core/shading/lighting.cpp: R_par = tan^2(t1 - t3) / tan^2(t1 + t3),
 // R_perp = sin^2(t1 - t3) / sin^2(t1 + t3), with Snell's eta1 sin t1 = eta2 sin t3 (t1 > 0).
 void lectureFresnel(double theta1, double eta1, double eta2, double& par, double& perp) {
     const double theta3 = std::asin(eta1 / eta2 * std::sin(theta1));

@@ -1,5 +1,5 @@
-#include "core/camera.hpp"
-#include "core/mesh.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/geometry/mesh.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -1,9 +1,9 @@
 // Lecture playlists without GL: which files a folder's playlist holds and in what order, the errors for
 // a missing, empty or broken one, the overrides applied to every preset, the caption strip, and the
 // presets shipped in assets/scenes/lecture.
-#include "core/error.hpp"
-#include "core/playlist.hpp"
-#include "core/text.hpp"
+#include "core/base/error.hpp"
+#include "core/scene/playlist.hpp"
+#include "core/image/text.hpp"
 #include "test_dir.hpp"
 
 #include <gtest/gtest.h>

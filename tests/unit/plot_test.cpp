@@ -1,10 +1,10 @@
-// The lecture's plots (core/plot.hpp, core/plot_image.hpp): the curves' values against the formulas
+// The lecture's plots (core/figures/plot.hpp, core/figures/plot_image.hpp): the curves' values against the formulas
 // written out here in double precision — in the plane of incidence Phong's R.V is cos(phi - theta_i)
 // and Blinn-Phong's N.H is cos((phi - theta_i) / 2) — the Fresnel curves against the lecture's tan/sin
 // forms, Brewster's and the critical angle, the layout, and the rasterised PNGs against goldens.
-#include "core/image.hpp"
-#include "core/plot.hpp"
-#include "core/plot_image.hpp"
+#include "core/image/image.hpp"
+#include "core/figures/plot.hpp"
+#include "core/figures/plot_image.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

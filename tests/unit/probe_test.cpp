@@ -1,10 +1,10 @@
-// The pixel probe without GL (app/core/ray_cast.*, probe.*): the ray cast against hand-placed
+// The pixel probe without GL (app/core/geometry/ray_cast.*, app/core/probe/probe.*): the ray cast against hand-placed
 // triangles and against a brute-force loop written here, and the probe's evaluations against values
 // worked out by hand. tests/gl/probe_test.cpp checks the probe's totals against rendered pixels.
-#include "core/error.hpp"
-#include "core/mesh.hpp"
-#include "core/probe.hpp"
-#include "core/ray_cast.hpp"
+#include "core/base/error.hpp"
+#include "core/geometry/mesh.hpp"
+#include "core/probe/probe.hpp"
+#include "core/geometry/ray_cast.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

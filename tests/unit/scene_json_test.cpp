@@ -1,7 +1,7 @@
 // The scene-file format: defaults, every field, every error (which must name the file and the field),
 // and the round trip through sceneToJson that the viewer's "save scene" relies on.
-#include "core/error.hpp"
-#include "core/scene_json.hpp"
+#include "core/base/error.hpp"
+#include "core/scene/scene_json.hpp"
 
 #include <gtest/gtest.h>
 

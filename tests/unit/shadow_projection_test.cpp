@@ -1,7 +1,7 @@
-// Where the shadow maps look (core/shadow_projection.hpp): every object point a light can see lands
+// Where the shadow maps look (render/cpu/shadow_projection.hpp): every object point a light can see lands
 // inside the map, cube faces agree with the face the shader picks, and depths increase with distance.
-#include "core/lighting.hpp"
-#include "core/shadow_projection.hpp"
+#include "core/shading/lighting.hpp"
+#include "render/cpu/shadow_projection.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -1,8 +1,8 @@
 // Sweep sheets without GL: parsing "PARAM=V1,V2", applying a value to the scene, the labels, and the
 // composition of the sheet with its text drawn into the image.
-#include "core/error.hpp"
-#include "core/sweep.hpp"
-#include "core/text.hpp"
+#include "core/base/error.hpp"
+#include "core/scene/sweep.hpp"
+#include "core/image/text.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "core/mesh.hpp"
-#include "core/vertex_order.hpp"
+#include "core/geometry/mesh.hpp"
+#include "render/cpu/vertex_order.hpp"
 
 #include <glm/geometric.hpp>
 

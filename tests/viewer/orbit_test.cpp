@@ -1,5 +1,5 @@
 // The viewer's mouse camera controls (app/viewer/orbit.hpp): plain maths on the scene's Camera.
-#include "core/camera.hpp"
+#include "core/geometry/camera.hpp"
 #include "viewer/orbit.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,7 +1,7 @@
 // PlaylistNavigator (app/viewer/playlist_navigator.hpp): stepping the viewer's document through a
 // playlist, keeping each preset's edits, resetting from the file, and never half-switching.
-#include "core/error.hpp"
-#include "core/playlist.hpp"
+#include "core/base/error.hpp"
+#include "core/scene/playlist.hpp"
 #include "viewer/playlist_navigator.hpp"
 
 #include "test_files.hpp"

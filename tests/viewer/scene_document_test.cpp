@@ -1,8 +1,8 @@
 // SceneDocument (app/viewer/scene_document.hpp): the viewer's load, save and rebuild, which must leave
 // the scene untouched whenever they fail.
-#include "core/error.hpp"
-#include "core/scene_json.hpp"
-#include "core/camera.hpp"
+#include "core/base/error.hpp"
+#include "core/scene/scene_json.hpp"
+#include "core/geometry/camera.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/scene_document.hpp"
 

@@ -2,9 +2,9 @@
 // with --frames/--screenshot*/--save-scene, and check the files it writes. The "3D view" images
 // (--screenshot-view) are read from the window's own default framebuffer, after the renderer and
 // before ImGui draws, so they are the pixels the lecturer sees under the panel's labels.
-#include "core/image.hpp"
-#include "core/scene.hpp"
-#include "core/scene_json.hpp"
+#include "core/image/image.hpp"
+#include "core/scene/scene.hpp"
+#include "core/scene/scene_json.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,265 @@
+#include "core/probe/probe.hpp"
+
+#include "core/base/error.hpp"
+#include "core/geometry/mesh.hpp"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shadelab {
+namespace {
+
+// Start shadow rays this far (relative to the scene's size) off the surface along N, so a point
+// does not hide itself behind its own triangle in float rounding.
+constexpr float kShadowRayOffset = 1e-4f;
+
+// What one mode's evaluations need to know about the probed triangle.
+struct TriangleContext {
+    const Scene& scene;
+    const LightingEnvironment& env;
+    const Material& material;  // C as drawn at the point: the part's base colour times the texel
+    const SceneRayCaster& caster;
+    glm::mat4 worldFromObject;
+    glm::mat3 normalWorldFromObject;
+    glm::vec3 posObject[3];
+    glm::vec3 nrmObject[3];
+    std::uint32_t vertex[3];
+    glm::vec3 barycentric;
+    // Where C varies (SL_TEXTURED): the material with the base colour alone, and the texel (texture x
+    // vertex colour) the fragment multiplies it by. Flat and Gouraud evaluate with the former and
+    // combine per fragment as shaders/object_color.glsl does; Phong evaluates with `material`.
+    const Material* baseMaterial = nullptr;
+    glm::vec3 texel{1.0f};
+};
+
+// Of what `show` selects, the part the texel does not multiply: the specular.
+glm::vec3 shownSpecular(const ShadingTerms& t, const TermView& show) {
+    switch (show.term) {
+    case ShowTerm::All:
+    case ShowTerm::Specular: return t.specular;
+    case ShowTerm::Light:
+        return show.light >= 0 && std::size_t(show.light) < t.lights.size() ? t.lights[std::size_t(show.light)].specular
+                                                                           : glm::vec3(0.0f);
+    default: return glm::vec3(0.0f);
+    }
+}
+
+// The formula at one point with one unit normal: shadeTerms with, when shadows are on, an occlusion
+// test by ray cast; then the lecture's vectors for each light.
+ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, const glm::vec3& posWorld,
+                         const glm::vec3& nrmWorld) {
+    ProbeEvaluation e;
+    e.posWorld = posWorld;
+    e.nrmWorld = nrmWorld;
+    e.viewWorld = glm::normalize(c.env.eyeWorld - posWorld);
+    const std::size_t lightCount = c.env.lights.size();
+    e.lights.resize(lightCount);
+    Visibility visibility;
+    if (c.scene.shadows.enabled) {
+        const float offset = kShadowRayOffset * std::max(c.caster.radius(), 1e-3f);
+        // `offset` by value: the lambda outlives this block (shadeTerms calls it below).
+        visibility = [&, offset](const glm::vec3& p, const LightRay& ray) {
+            ProbeLight& light = e.lights[ray.light];
+            ++light.samplesTested;
+            const bool hidden = c.caster.occluded(p + offset * nrmWorld, ray.towardLight, 0.0f, ray.distance - offset);
+            if (!hidden) ++light.samplesVisible;
+            return hidden ? 0.0f : 1.0f;
+        };
+    }
+    e.terms = shadeTerms(material, c.env, posWorld, nrmWorld, visibility);
+    for (std::size_t l = 0; l < lightCount; ++l) {
+        const Light& light = c.env.lights[l];
+        ProbeLight& out = e.lights[l];
+        out.towardLight = light.type == LightType::Directional ? glm::normalize(-light.direction)
+                                                                : glm::normalize(light.position - posWorld);
+        out.nDotI = glm::dot(nrmWorld, out.towardLight);
+        out.reflected = 2.0f * out.nDotI * nrmWorld - out.towardLight;
+        out.rDotV = glm::dot(out.reflected, e.viewWorld);
+        out.halfway = glm::normalize(out.towardLight + e.viewWorld);
+        out.hDotN = glm::dot(out.halfway, nrmWorld);
+        out.diffuse = e.terms.lights[l].diffuse;
+        out.specular = e.terms.lights[l].specular;
+        out.visibility = out.samplesTested > 0 ? float(out.samplesVisible) / float(out.samplesTested) : 1.0f;
+    }
+    return e;
+}
+
+glm::vec3 toWorld(const glm::mat4& m, const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); }
+
+ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
+    ModeProbe m;
+    m.mode = mode;
+    const glm::vec3& w = c.barycentric;
+    // Phong evaluates with the sampled C; flat and Gouraud with the base colour (see TriangleContext).
+    const Material& lit = mode != ShadingMode::Phong && c.baseMaterial ? *c.baseMaterial : c.material;
+    switch (mode) {
+    case ShadingMode::Phong: {
+        // phong.vert passes normalWorldFromObject * normal unnormalised; phong.frag normalises the
+        // interpolated vector.
+        const glm::vec3 posObject = w.x * c.posObject[0] + w.y * c.posObject[1] + w.z * c.posObject[2];
+        const glm::vec3 nrm = w.x * (c.normalWorldFromObject * c.nrmObject[0]) +
+                              w.y * (c.normalWorldFromObject * c.nrmObject[1]) +
+                              w.z * (c.normalWorldFromObject * c.nrmObject[2]);
+        m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), glm::normalize(nrm)));
+        m.color = m.evaluations[0].terms.total;
+        break;
+    }
+    case ShadingMode::Gouraud: {
+        // Textured: gouraud.vert's two parts, unclamped, interpolated; combined in gouraud.frag.
+        glm::vec3 termsOfC(0.0f), specular(0.0f);
+        for (int k = 0; k < 3; ++k) {
+            ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, c.posObject[k]),
+                                         glm::normalize(c.normalWorldFromObject * c.nrmObject[k]));
+            e.site = ProbeEvaluation::Site::Vertex;
+            e.vertex = c.vertex[k];
+            m.color += w[k] * e.terms.total;
+            const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
+            termsOfC += w[k] * (e.terms.shown - s);
+            specular += w[k] * s;
+            m.evaluations.push_back(std::move(e));
+        }
+        if (c.baseMaterial) m.color = glm::clamp(c.texel * termsOfC + specular, 0.0f, 1.0f);
+        break;
+    }
+    case ShadingMode::Flat: {
+        // As makeFlatMesh: the face normal of the corners in index order and the object-space centroid,
+        // both taken to world space by flat.vert.
+        const glm::vec3 centroid = (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f;
+        const glm::vec3 face = faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
+        ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid), glm::normalize(c.normalWorldFromObject * face));
+        e.site = ProbeEvaluation::Site::Centroid;
+        m.color = e.terms.total;
+        if (c.baseMaterial) {
+            const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
+            m.color = glm::clamp(c.texel * (e.terms.shown - s) + s, 0.0f, 1.0f);
+        }
+        m.evaluations.push_back(std::move(e));
+        break;
+    }
+    }
+    m.output = m.color;
+    if (c.scene.outputEncoding == OutputEncoding::Srgb)
+        m.output = glm::vec3(encodeSrgb(m.color.x), encodeSrgb(m.color.y), encodeSrgb(m.color.z));
+    // UNORM8 framebuffers store round(value * 255).
+    for (int k = 0; k < 3; ++k) m.output8[k] = int(std::lround(glm::clamp(m.output[k], 0.0f, 1.0f) * 255.0f));
+    return m;
+}
+
+glm::ivec3 quantize(const glm::vec3& c) {
+    glm::ivec3 q;
+    for (int k = 0; k < 3; ++k) q[k] = int(std::lround(glm::clamp(c[k], 0.0f, 1.0f) * 255.0f));
+    return q;
+}
+
+// The part of the mesh a triangle belongs to (nullptr for a mesh without parts).
+const MeshPart* partOf(const Mesh& mesh, std::size_t triangle) {
+    const std::size_t index = 3 * triangle;
+    for (const MeshPart& part : mesh.parts)
+        if (index >= part.firstIndex && index < std::size_t(part.firstIndex) + part.indexCount) return &part;
+    return nullptr;
+}
+
+// The material the renderer draws a triangle with: a glTF part's base colour unless the scene set one.
+Material drawnMaterial(const Scene& scene, const Mesh& mesh, std::size_t object, std::size_t triangle) {
+    Material m = scene.objects[object].material;
+    if (m.colorSet) return m;
+    const MeshPart* part = partOf(mesh, triangle);
+    if (part && part->hasBaseColor) m.color = part->baseColor;
+    return m;
+}
+
+}  // namespace
+
+void checkProbePixel(const Scene& scene, int x, int y, const std::string& flag) {
+    if (x < 0 || y < 0 || x >= scene.width || y >= scene.height)
+        throw InputError(flag + ": pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
+                         std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image");
+}
+
+bool validAnchor(const Scene& scene, const SceneGeometry& geometry, const ProbeAnchor& a) {
+    return a.object < scene.objects.size() && a.object < geometry.meshes.size() &&
+           a.triangle < geometry.meshes[a.object].triangleCount();
+}
+
+ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const SceneRayCaster& caster,
+                        const ProbeAnchor& anchor) {
+    ProbeResult r;
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
+    r.x = anchor.x;
+    r.y = anchor.y;
+    r.pane = std::clamp(anchor.pane, 0, int(panes.size()) - 1);
+    r.paneRect = panes[std::size_t(r.pane)];
+    r.anchor = anchor;
+    r.anchor.pane = r.pane;
+    const Mesh& mesh = geometry.meshes[anchor.object];
+    r.material = drawnMaterial(scene, mesh, anchor.object, anchor.triangle);
+    const Material baseMaterial = r.material;
+    const LightingEnvironment env = lightingEnvironment(scene);
+    const glm::mat4 world = worldFromObject(scene.objects[anchor.object].transform);
+    TriangleContext c{scene, env, r.material, caster, world, normalWorldFromObject(world), {}, {}, {}, anchor.barycentric};
+    for (int k = 0; k < 3; ++k) {
+        c.vertex[k] = mesh.indices[3 * anchor.triangle + std::size_t(k)];
+        c.posObject[k] = mesh.positions[c.vertex[k]];
+        c.nrmObject[k] = mesh.normals[c.vertex[k]];
+    }
+    // Where C varies, the sampled C: the base colour times the texture and the vertex colour at the
+    // point (object_color.glsl), with the coordinates and colours interpolated by the barycentrics.
+    if (mesh.variesColor() && scene.textures && !scene.objects[anchor.object].material.colorSet) {
+        const glm::vec3& w = anchor.barycentric;
+        r.textured = true;
+        r.texcoord = w.x * mesh.texcoords[c.vertex[0]] + w.y * mesh.texcoords[c.vertex[1]] + w.z * mesh.texcoords[c.vertex[2]];
+        r.texel = w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
+        const MeshPart* part = partOf(mesh, anchor.triangle);
+        if (part && part->texture >= 0 && std::size_t(part->texture) < mesh.textures.size())
+            r.texel *= sampleTexture(*mesh.textures[std::size_t(part->texture)], r.texcoord);
+        r.baseColor = baseMaterial.color;
+        r.material.color = baseMaterial.color * r.texel;
+        c.baseMaterial = &baseMaterial;
+        c.texel = r.texel;
+    }
+    r.posWorld = toWorld(world, anchor.barycentric.x * c.posObject[0] + anchor.barycentric.y * c.posObject[1] +
+                                    anchor.barycentric.z * c.posObject[2]);
+    r.miss = false;
+    if (r.paneRect.difference) {
+        // difference.frag: |a - b| * factor of the two panes' 8-bit values, clamped.
+        r.modes = {evaluateMode(c, scene.diff.a), evaluateMode(c, scene.diff.b)};
+        const glm::vec3 d = glm::abs(glm::vec3(r.modes[0].output8 - r.modes[1].output8)) / 255.0f * scene.diff.factor;
+        r.output8 = quantize(d);
+    } else {
+        r.modes = {evaluateMode(c, r.paneRect.mode)};
+        r.output8 = r.modes[0].output8;
+    }
+    return r;
+}
+
+ProbeResult probePixel(const Scene& scene, const SceneGeometry& geometry, const SceneRayCaster& caster, int x, int y) {
+    checkProbePixel(scene, x, y, "probe");
+    ProbeResult r;
+    r.x = x;
+    r.y = y;
+    // The background is the clear colour, written as given; the difference of two backgrounds is 0.
+    r.output8 = quantize(scene.background);
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
+    for (std::size_t p = 0; p < panes.size(); ++p) {
+        const Pane& pane = panes[p];
+        if (x >= pane.x && x < pane.x + pane.width && y >= pane.y && y < pane.y + pane.height) r.pane = int(p);
+    }
+    if (r.pane < 0) return r;
+    r.paneRect = panes[std::size_t(r.pane)];
+    if (r.paneRect.difference) r.output8 = glm::ivec3(0);
+    const Camera& cam = scene.camera;
+    const glm::vec3 direction = pixelDirectionWorld(cam, r.paneRect, float(x) + 0.5f, float(y) + 0.5f);
+    // The rasteriser keeps what lies between the near and far planes (depth along the view axis).
+    const float along = glm::dot(direction, glm::normalize(cam.target - cam.eye));
+    if (!(along > 0.0f)) return r;
+    const auto hit = caster.nearestFrontFace(cam.eye, direction, cam.nearPlane / along, cam.farPlane / along);
+    if (!hit || !validAnchor(scene, geometry, ProbeAnchor{x, y, r.pane, hit->object, hit->triangle, hit->barycentric}))
+        return r;
+    return probeAnchor(scene, geometry, caster, ProbeAnchor{x, y, r.pane, hit->object, hit->triangle, hit->barycentric});
+}
+
+}  // namespace shadelab

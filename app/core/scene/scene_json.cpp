@@ -1,0 +1,752 @@
+#include "core/scene/scene_json.hpp"
+
+#include "core/base/embedded.hpp"
+#include "core/base/error.hpp"
+#include "core/base/message.hpp"
+#include "core/base/json_depth.hpp"
+#include "core/scene/scene_names.hpp"
+#include "core/base/file_io.hpp"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+#include <sstream>
+
+namespace shadelab {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// Walks a parsed document and turns it into a Scene, naming fields by their path ("lights[0].color").
+class SceneReader {
+public:
+    SceneReader(std::string file, std::string baseDir) : file_(std::move(file)), baseDir_(std::move(baseDir)) {}
+
+    Scene read(const json& root);
+
+private:
+    [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+        throw InputError(file_ + ": " + (path.empty() ? std::string() : path + ": ") + what);
+    }
+    static std::string join(const std::string& path, const std::string& key) {
+        return path.empty() ? key : path + "." + key;
+    }
+    static const char* typeName(const json& j) {
+        if (j.is_boolean()) return "a boolean";
+        if (j.is_number()) return "a number";
+        if (j.is_string()) return "a string";
+        if (j.is_array()) return "an array";
+        if (j.is_object()) return "an object";
+        return "null";
+    }
+
+    void requireObject(const json& j, const std::string& path, std::initializer_list<const char*> allowed) const {
+        if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
+        for (auto it = j.begin(); it != j.end(); ++it) {
+            bool known = false;
+            for (const char* a : allowed) known = known || it.key() == a;
+            if (!known) fail(join(path, quoteInput(it.key())), "unknown field");
+        }
+    }
+
+    double number(const json& j, const std::string& path, double lo, double hi) const {
+        if (!j.is_number()) fail(path, std::string("expected a number, got ") + typeName(j));
+        double v = j.get<double>();
+        if (!std::isfinite(v)) fail(path, "must be a finite number");
+        if (v < lo) fail(path, "must be >= " + formatNumber(lo) + " (got " + formatNumber(v) + ")");
+        if (v > hi) fail(path, "must be <= " + formatNumber(hi) + " (got " + formatNumber(v) + ")");
+        return v;
+    }
+    void number(const json& o, const char* key, const std::string& path, float& out, double lo, double hi) const {
+        if (o.contains(key)) out = static_cast<float>(number(o[key], join(path, key), lo, hi));
+    }
+    void integer(const json& o, const char* key, const std::string& path, int& out, int lo, int hi) const {
+        if (o.contains(key)) out = integer(o[key], join(path, key), lo, hi);
+    }
+    int integer(const json& j, const std::string& p, int lo, int hi) const {
+        if (!j.is_number_integer()) fail(p, std::string("expected an integer, got ") + typeName(j));
+        // nlohmann stores non-negative integers as unsigned: compare in the type it holds.
+        const bool tooBig = j.is_number_unsigned() ? j.get<unsigned long long>() > static_cast<unsigned long long>(hi)
+                                                   : j.get<long long>() > hi;
+        const bool tooSmall = j.is_number_unsigned() ? j.get<unsigned long long>() < static_cast<unsigned long long>(lo)
+                                                     : j.get<long long>() < lo;
+        if (tooBig) fail(p, "must be <= " + std::to_string(hi) + " (got " + j.dump() + ")");
+        if (tooSmall) fail(p, "must be >= " + std::to_string(lo) + " (got " + j.dump() + ")");
+        return j.get<int>();
+    }
+    glm::vec3 vec3(const json& j, const std::string& path, double lo, double hi) const {
+        if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
+        glm::vec3 v;
+        for (int i = 0; i < 3; ++i)
+            v[i] = static_cast<float>(number(j[static_cast<size_t>(i)], path + "[" + std::to_string(i) + "]", lo, hi));
+        return v;
+    }
+    void vec3(const json& o, const char* key, const std::string& path, glm::vec3& out, double lo, double hi) const {
+        if (o.contains(key)) out = vec3(o[key], join(path, key), lo, hi);
+    }
+    void boolean(const json& o, const char* key, const std::string& path, bool& out) const {
+        if (!o.contains(key)) return;
+        if (!o[key].is_boolean()) fail(join(path, key), std::string("expected true or false, got ") + typeName(o[key]));
+        out = o[key].get<bool>();
+    }
+    // [x, y] of numbers in [lo, hi]
+    void vec2(const json& o, const char* key, const std::string& path, glm::vec2& out, double lo, double hi) const {
+        if (!o.contains(key)) return;
+        const json& j = o[key];
+        const std::string p = join(path, key);
+        if (!j.is_array() || j.size() != 2) fail(p, "expected an array of 2 numbers");
+        for (int i = 0; i < 2; ++i)
+            out[i] = static_cast<float>(number(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi));
+    }
+    // [x, y] of integers in [lo, hi]
+    void ivec2(const json& o, const char* key, const std::string& path, glm::ivec2& out, int lo, int hi) const {
+        if (!o.contains(key)) return;
+        const json& j = o[key];
+        const std::string p = join(path, key);
+        if (!j.is_array() || j.size() != 2) fail(p, "expected an array of 2 integers");
+        for (int i = 0; i < 2; ++i) out[i] = integer(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi);
+    }
+    // A short single-line text (titles, captions): at most 500 characters, no control characters.
+    void text(const json& o, const char* key, std::string& out) const {
+        if (!o.contains(key)) return;
+        if (!o[key].is_string()) fail(key, std::string("expected a string, got ") + typeName(o[key]));
+        const std::string t = o[key].get<std::string>();
+        if (t.size() > 500) fail(key, "at most 500 characters (got " + std::to_string(t.size()) + ")");
+        for (char c : t)
+            if (static_cast<unsigned char>(c) < 0x20) fail(key, "must be one line without control characters");
+        out = t;
+    }
+    void nonZero(const glm::vec3& v, const std::string& path) const {
+        if (glm::length(v) < 1e-6f) fail(path, "must not be a zero-length vector");
+    }
+    template <typename E, size_t N>
+    void choice(const json& o, const char* key, const std::string& path, E& out,
+                const std::pair<const char*, E> (&options)[N]) const {
+        if (!o.contains(key)) return;
+        const json& j = o[key];
+        const std::string p = join(path, key);
+        std::string allowed;
+        for (const auto& opt : options) allowed += std::string(allowed.empty() ? "" : ", ") + "\"" + opt.first + "\"";
+        if (!j.is_string()) fail(p, "expected one of " + allowed + ", got " + typeName(j));
+        for (const auto& opt : options)
+            if (j.get<std::string>() == opt.first) {
+                out = opt.second;
+                return;
+            }
+        fail(p, "unknown value \"" + quoteInput(j.get<std::string>()) + "\" (expected one of " + allowed + ")");
+    }
+
+    MeshSpec mesh(const json& j, const std::string& path) const;
+    Material material(const json& j, const std::string& path) const;
+    Transform transform(const json& j, const std::string& path) const;
+    Light light(const json& j, const std::string& path) const;
+    ShadowSettings shadowSettings(const json& j, const std::string& path) const;
+    Camera camera(const json& j, const std::string& path) const;
+
+    std::string file_;
+    std::string baseDir_;
+};
+
+MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
+    MeshSpec m;
+    if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
+    choice(j, "type", path, m.type, kMeshTypeNames);
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        requireObject(j, path, {"type", "slices", "stacks", "radius"});
+        integer(j, "slices", path, m.slices, kUvSphereSlicesRange.lo, kUvSphereSlicesRange.hi);
+        integer(j, "stacks", path, m.stacks, kUvSphereStacksRange.lo, kUvSphereStacksRange.hi);
+        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        break;
+    case MeshSpec::Type::IcoSphere:
+        requireObject(j, path, {"type", "subdivisions", "radius"});
+        integer(j, "subdivisions", path, m.subdivisions, kIcoSphereSubdivisionsRange.lo, kIcoSphereSubdivisionsRange.hi);
+        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        break;
+    case MeshSpec::Type::Torus:
+        requireObject(j, path, {"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
+        number(j, "major_radius", path, m.majorRadius, 1e-4, 1e6);
+        number(j, "minor_radius", path, m.minorRadius, 1e-4, 1e6);
+        integer(j, "major_segments", path, m.majorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
+        integer(j, "minor_segments", path, m.minorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
+        break;
+    case MeshSpec::Type::Cube:
+        requireObject(j, path, {"type", "size"});
+        number(j, "size", path, m.size, 1e-4, 1e6);
+        break;
+    case MeshSpec::Type::Plane:
+        requireObject(j, path, {"type", "size", "subdivisions"});
+        number(j, "size", path, m.size, 1e-4, 1e6);
+        integer(j, "subdivisions", path, m.planeSubdivisions, kPlaneSubdivisionsRange.lo, kPlaneSubdivisionsRange.hi);
+        break;
+    case MeshSpec::Type::Gltf: {
+        requireObject(j, path, {"type", "path"});
+        if (!j.contains("path")) fail(join(path, "path"), "a gltf mesh needs a path");
+        if (!j["path"].is_string() || j["path"].get<std::string>().empty())
+            fail(join(path, "path"), "expected a non-empty string");
+        m.path = j["path"].get<std::string>();
+        fs::path p(m.path);
+        m.resolvedPath = (p.is_absolute() ? p : fs::path(baseDir_) / p).lexically_normal().string();
+        break;
+    }
+    }
+    return m;
+}
+
+Material SceneReader::material(const json& j, const std::string& path) const {
+    Material m;
+    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke"});
+    vec3(j, "color", path, m.color, 0.0, 1.0);
+    m.colorSet = j.contains("color");
+    vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
+    number(j, "ka", path, m.ka, kCoefficientRange.lo, kCoefficientRange.hi);
+    number(j, "kd", path, m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
+    number(j, "ks", path, m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
+    number(j, "ke", path, m.ke, kExponentRange.lo, kExponentRange.hi);
+    return m;
+}
+
+Transform SceneReader::transform(const json& j, const std::string& path) const {
+    Transform t;
+    requireObject(j, path, {"translation", "rotation_deg", "scale"});
+    vec3(j, "translation", path, t.translation, -1e6, 1e6);
+    vec3(j, "rotation_deg", path, t.rotationDeg, -1e6, 1e6);
+    vec3(j, "scale", path, t.scale, -1e6, 1e6);
+    for (int i = 0; i < 3; ++i)
+        if (std::fabs(t.scale[i]) < 1e-6f) fail(join(path, "scale"), "components must not be 0");
+    return t;
+}
+
+Light SceneReader::light(const json& j, const std::string& path) const {
+    Light l;
+    if (!j.is_object()) fail(path, std::string("expected an object, got ") + typeName(j));
+    choice(j, "type", path, l.type, kLightTypeNames);
+    switch (l.type) {
+    case LightType::Point:
+        requireObject(j, path, {"type", "position", "color", "intensity", "attenuation", "range"});
+        vec3(j, "position", path, l.position, -1e6, 1e6);
+        break;
+    case LightType::Directional:
+        requireObject(j, path, {"type", "direction", "color", "intensity"});
+        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        nonZero(l.direction, join(path, "direction"));
+        break;
+    case LightType::Area:
+        requireObject(j, path, {"type", "position", "normal", "size", "samples", "color", "intensity", "two_sided",
+                                "attenuation", "range"});
+        vec3(j, "position", path, l.position, -1e6, 1e6);
+        vec3(j, "normal", path, l.normal, -1e6, 1e6);
+        nonZero(l.normal, join(path, "normal"));
+        vec2(j, "size", path, l.size, 1e-4, 1e6);
+        ivec2(j, "samples", path, l.samples, 1, kAreaSamplesPerSideRange.hi);
+        boolean(j, "two_sided", path, l.twoSided);
+        break;
+    case LightType::Spot:
+        requireObject(j, path, {"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "color", "intensity",
+                                "attenuation", "range"});
+        vec3(j, "position", path, l.position, -1e6, 1e6);
+        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        nonZero(l.direction, join(path, "direction"));
+        number(j, "outer_cone_deg", path, l.outerConeDeg, 0.01, kSpotConeDegRange.hi);
+        number(j, "inner_cone_deg", path, l.innerConeDeg, 0.0, kSpotConeDegRange.hi);
+        if (!j.contains("inner_cone_deg")) l.innerConeDeg = 0.5f * l.outerConeDeg;
+        if (l.innerConeDeg >= l.outerConeDeg)
+            fail(join(path, "inner_cone_deg"), "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
+        break;
+    }
+    if (l.type != LightType::Directional) {
+        choice(j, "attenuation", path, l.attenuation, kAttenuationNames);
+        number(j, "range", path, l.range, 1e-4, 1e9);
+        if (j.contains("range") && l.attenuation != Attenuation::InverseSquare)
+            fail(join(path, "range"), "a range needs \"attenuation\": \"inverse-square\"");
+    }
+    vec3(j, "color", path, l.color, 0.0, 1.0);
+    number(j, "intensity", path, l.intensity, 0.0, 1e9);
+    return l;
+}
+
+ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& path) const {
+    ShadowSettings s;
+    requireObject(j, path, {"normal_bias", "depth_bias", "pcf", "map_size", "area_map_size"});
+    number(j, "normal_bias", path, s.normalBias, 0.0, 100.0);
+    number(j, "depth_bias", path, s.depthBias, 0.0, 100.0);
+    integer(j, "pcf", path, s.pcf, 0, kPcfRadiusRange.hi);
+    integer(j, "map_size", path, s.mapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
+    integer(j, "area_map_size", path, s.areaMapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
+    return s;
+}
+
+Camera SceneReader::camera(const json& j, const std::string& path) const {
+    Camera c;
+    requireObject(j, path, {"eye", "target", "up", "fov_y_deg", "near", "far"});
+    vec3(j, "eye", path, c.eye, -1e6, 1e6);
+    vec3(j, "target", path, c.target, -1e6, 1e6);
+    vec3(j, "up", path, c.up, -1e6, 1e6);
+    number(j, "fov_y_deg", path, c.fovYDeg, 1.0, 179.0);
+    number(j, "near", path, c.nearPlane, 1e-6, 1e6);
+    number(j, "far", path, c.farPlane, 1e-6, 1e7);
+    if (c.farPlane <= c.nearPlane) fail(join(path, "far"), "must be greater than near");
+    const glm::vec3 forward = c.target - c.eye;
+    if (glm::length(forward) < 1e-6f) fail(join(path, "target"), "must differ from eye");
+    nonZero(c.up, join(path, "up"));
+    if (glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) < 1e-4f)
+        fail(join(path, "up"), "must not be parallel to the viewing direction (target - eye)");
+    return c;
+}
+
+Scene SceneReader::read(const json& root) {
+    Scene s;
+    requireObject(root, "",
+                  {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
+                   "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
+                   "fresnel", "ior", "show", "diff", "title", "caption", "textures"});
+    if (root.contains("objects")) {
+        if (root.contains("mesh") || root.contains("material"))
+            fail("objects", "give either \"objects\" or the one-object shorthand \"mesh\"/\"material\", not both");
+        const json& list = root["objects"];
+        if (!list.is_array()) fail("objects", std::string("expected an array, got ") + typeName(list));
+        if (list.size() > 256) fail("objects", "at most 256 objects (got " + std::to_string(list.size()) + ")");
+        s.objects.clear();
+        s.usesObjectList = true;
+        for (size_t i = 0; i < list.size(); ++i) {
+            const std::string p = "objects[" + std::to_string(i) + "]";
+            requireObject(list[i], p, {"mesh", "material", "transform"});
+            SceneObject o;
+            if (list[i].contains("mesh")) o.mesh = mesh(list[i]["mesh"], p + ".mesh");
+            if (list[i].contains("material")) o.material = material(list[i]["material"], p + ".material");
+            if (list[i].contains("transform")) o.transform = transform(list[i]["transform"], p + ".transform");
+            s.objects.push_back(o);
+        }
+    } else {
+        if (root.contains("mesh")) s.objects[0].mesh = mesh(root["mesh"], "mesh");
+        if (root.contains("material")) s.objects[0].material = material(root["material"], "material");
+    }
+    choice(root, "shading", "", s.shading, kShadingModeNames);
+    choice(root, "layout", "", s.layout, kLayoutNames);
+    if (root.contains("diff")) {
+        const json& d = root["diff"];
+        requireObject(d, "diff", {"a", "b", "factor"});
+        choice(d, "a", "diff", s.diff.a, kShadingModeNames);
+        choice(d, "b", "diff", s.diff.b, kShadingModeNames);
+        number(d, "factor", "diff", s.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
+    }
+    choice(root, "specular_normalization", "", s.specularNormalization, kSpecularNormalizationNames);
+    choice(root, "fresnel", "", s.fresnel, kFresnelModeNames);
+    number(root, "ior", "", s.ior, kIorRange.lo, kIorRange.hi);
+    text(root, "title", s.title);
+    text(root, "caption", s.caption);
+    choice(root, "reflection", "", s.reflection, kReflectionModelNames);
+    choice(root, "output_encoding", "", s.outputEncoding, kOutputEncodingNames);
+    s.outputEncodingGiven = root.contains("output_encoding");
+    vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
+    vec3(root, "background", "", s.background, 0.0, 1.0);
+    if (root.contains("lights")) {
+        const json& list = root["lights"];
+        if (!list.is_array()) fail("lights", std::string("expected an array, got ") + typeName(list));
+        if (list.size() > static_cast<size_t>(kMaxLights))
+            fail("lights", "at most " + std::to_string(kMaxLights) + " lights (got " + std::to_string(list.size()) + ")");
+        s.lights.clear();
+        for (size_t i = 0; i < list.size(); ++i) s.lights.push_back(light(list[i], "lights[" + std::to_string(i) + "]"));
+        s.lightsGiven = true;
+    }
+    if (root.contains("show")) {
+        if (!root["show"].is_string()) fail("show", std::string("expected a string, got ") + typeName(root["show"]));
+        try {
+            s.show = parseTermView(root["show"].get<std::string>(), "");
+        } catch (const InputError& e) {
+            fail("show", e.what());
+        }
+        if (s.show.term == ShowTerm::Light && s.show.light >= int(s.lights.size()))
+            fail("show", "light " + std::to_string(s.show.light) + " does not exist (the scene has " +
+                             std::to_string(s.lights.size()) + " light(s))");
+    }
+    if (root.contains("shadow_settings")) s.shadows = shadowSettings(root["shadow_settings"], "shadow_settings");
+    boolean(root, "shadows", "", s.shadows.enabled);
+    boolean(root, "textures", "", s.textures);
+    if (root.contains("camera")) {
+        s.camera = camera(root["camera"], "camera");
+        s.cameraGiven = true;
+    }
+    if (root.contains("size")) {
+        const json& sz = root["size"];
+        if (!sz.is_array() || sz.size() != 2 || !sz[0].is_number_integer() || !sz[1].is_number_integer())
+            fail("size", "expected [width, height] as two integers");
+        const long long w = sz[0].get<long long>(), h = sz[1].get<long long>();
+        if (w < 1 || h < 1 || w > kImageSideRange.hi || h > kImageSideRange.hi)
+            fail("size", "width and height must be between 1 and " + std::to_string(kImageSideRange.hi) + " (got " +
+                             std::to_string(w) + "x" + std::to_string(h) + ")");
+        s.width = static_cast<int>(w);
+        s.height = static_cast<int>(h);
+    }
+    return s;
+}
+
+json vecJson(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
+    nlohmann::ordered_json j;
+    j["type"] = toString(m.type);
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        j["slices"] = m.slices;
+        j["stacks"] = m.stacks;
+        j["radius"] = m.radius;
+        break;
+    case MeshSpec::Type::IcoSphere:
+        j["subdivisions"] = m.subdivisions;
+        j["radius"] = m.radius;
+        break;
+    case MeshSpec::Type::Torus:
+        j["major_radius"] = m.majorRadius;
+        j["minor_radius"] = m.minorRadius;
+        j["major_segments"] = m.majorSegments;
+        j["minor_segments"] = m.minorSegments;
+        break;
+    case MeshSpec::Type::Cube: j["size"] = m.size; break;
+    case MeshSpec::Type::Plane:
+        j["size"] = m.size;
+        j["subdivisions"] = m.planeSubdivisions;
+        break;
+    case MeshSpec::Type::Gltf: {
+        std::error_code ec;
+        fs::path abs = fs::absolute(m.resolvedPath, ec);
+        fs::path rel = ec ? fs::path() : abs.lexically_relative(fs::absolute(saveDir.empty() ? "." : saveDir, ec));
+        j["path"] = (ec || rel.empty()) ? m.resolvedPath : rel.generic_string();
+        break;
+    }
+    }
+    return j;
+}
+
+nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh) {
+    nlohmann::ordered_json j;
+    // A glTF model's own colours stay unless a colour was chosen: write it only then.
+    if (m.colorSet || mesh.type != MeshSpec::Type::Gltf) j["color"] = vecJson(m.color);
+    j["specular_color"] = vecJson(m.specularColor);
+    j["ka"] = m.ka;
+    j["kd"] = m.kd;
+    j["ks"] = m.ks;
+    j["ke"] = m.ke;
+    return j;
+}
+
+bool isIdentity(const Transform& t) {
+    return t.translation == glm::vec3(0.0f) && t.rotationDeg == glm::vec3(0.0f) && t.scale == glm::vec3(1.0f);
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& fileLabel, const std::string& baseDir) {
+    checkJsonDepth(text, fileLabel);
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::exception& e) {
+        // parse_error ("[json.exception.parse_error.101] parse error at line 3, column 5: ...") and
+        // out_of_range for numbers too large for a double ("... number overflow parsing '1e999'").
+        std::string what = e.what();
+        const size_t bracket = what.find("] ");
+        if (what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) what = what.substr(bracket + 2);
+        for (char& c : what)
+            if (c == '\n') c = ' ';
+        throw InputError(fileLabel + ": malformed JSON: " + what);
+    }
+    Scene s = SceneReader(fileLabel, baseDir).read(root);
+    s.sourcePath = fileLabel;
+    return s;
+}
+
+Scene loadSceneFile(const std::string& path) {
+    const std::string text = readTextFile(path, 64u << 20);
+    const fs::path parent = fs::path(path).parent_path();
+    return parseScene(text, path, parent.empty() ? "." : parent.string());
+}
+
+Scene defaultScene() {
+    const char* text = findEmbedded(kEmbeddedScenes, "default.json");
+    Scene s = parseScene(text ? text : "{}", "(built-in default scene)", ".");
+    s.sourcePath.clear();
+    return s;
+}
+
+Scene sceneForModel(const std::string& modelPath) {
+    Scene s;
+    s.objects[0].mesh.type = MeshSpec::Type::Gltf;
+    s.objects[0].mesh.path = modelPath;
+    s.objects[0].mesh.resolvedPath = fs::path(modelPath).lexically_normal().string();
+    return s;
+}
+
+std::string sceneToJson(const Scene& s, const std::string& saveDir) {
+    nlohmann::ordered_json j;
+    const bool shorthand = !s.usesObjectList && s.objects.size() == 1 && isIdentity(s.objects[0].transform);
+    if (shorthand) {
+        j["mesh"] = meshJson(s.objects[0].mesh, saveDir);
+        j["material"] = materialJson(s.objects[0].material, s.objects[0].mesh);
+    } else {
+        j["objects"] = nlohmann::ordered_json::array();
+        for (const SceneObject& o : s.objects) {
+            nlohmann::ordered_json oj;
+            oj["mesh"] = meshJson(o.mesh, saveDir);
+            oj["material"] = materialJson(o.material, o.mesh);
+            oj["transform"] = {{"translation", vecJson(o.transform.translation)},
+                               {"rotation_deg", vecJson(o.transform.rotationDeg)},
+                               {"scale", vecJson(o.transform.scale)}};
+            j["objects"].push_back(oj);
+        }
+    }
+    j["shading"] = toString(s.shading);
+    j["layout"] = toString(s.layout);
+    j["reflection"] = toString(s.reflection);
+    j["ambient"] = vecJson(s.ambient);
+    j["lights"] = nlohmann::ordered_json::array();
+    for (const Light& l : s.lights) {
+        nlohmann::ordered_json lj;
+        lj["type"] = toString(l.type);
+        if (l.type == LightType::Directional) {
+            lj["direction"] = vecJson(l.direction);
+        } else {
+            lj["position"] = vecJson(l.position);
+        }
+        if (l.type == LightType::Spot) {
+            lj["direction"] = vecJson(l.direction);
+            lj["inner_cone_deg"] = l.innerConeDeg;
+            lj["outer_cone_deg"] = l.outerConeDeg;
+        }
+        if (l.type == LightType::Area) {
+            lj["normal"] = vecJson(l.normal);
+            lj["size"] = {l.size.x, l.size.y};
+            lj["samples"] = {l.samples.x, l.samples.y};
+            lj["two_sided"] = l.twoSided;
+        }
+        lj["color"] = vecJson(l.color);
+        lj["intensity"] = l.intensity;
+        if (l.type != LightType::Directional) {
+            lj["attenuation"] = toString(l.attenuation);
+            if (l.attenuation == Attenuation::InverseSquare && l.range > 0.0f) lj["range"] = l.range;
+        }
+        j["lights"].push_back(lj);
+    }
+    j["shadows"] = s.shadows.enabled;
+    if (!s.textures) j["textures"] = false;
+    j["shadow_settings"] = {{"normal_bias", s.shadows.normalBias}, {"depth_bias", s.shadows.depthBias},
+                            {"pcf", s.shadows.pcf},                {"map_size", s.shadows.mapSize},
+                            {"area_map_size", s.shadows.areaMapSize}};
+    j["camera"] = {{"eye", vecJson(s.camera.eye)},        {"target", vecJson(s.camera.target)},
+                   {"up", vecJson(s.camera.up)},          {"fov_y_deg", s.camera.fovYDeg},
+                   {"near", s.camera.nearPlane},          {"far", s.camera.farPlane}};
+    j["background"] = vecJson(s.background);
+    j["size"] = {s.width, s.height};
+    j["output_encoding"] = toString(s.outputEncoding);
+    j["specular_normalization"] = toString(s.specularNormalization);
+    j["fresnel"] = toString(s.fresnel);
+    j["ior"] = s.ior;
+    j["show"] = toString(s.show);
+    j["diff"] = {{"a", toString(s.diff.a)}, {"b", toString(s.diff.b)}, {"factor", s.diff.factor}};
+    if (!s.title.empty()) j["title"] = s.title;
+    if (!s.caption.empty()) j["caption"] = s.caption;
+    return j.dump(2) + "\n";
+}
+
+MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
+    MeshSpec m;
+    std::vector<std::string> parts;
+    std::stringstream ss(text);
+    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+    if (parts.empty()) throw InputError(opt + ": empty mesh");
+    auto intArg = [&](size_t i, int& out, const Range<int>& range) {
+        if (i >= parts.size()) return;
+        const std::string& p = parts[i];
+        size_t used = 0;
+        long v = 0;
+        try {
+            v = std::stol(p, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + quoteInput(p) + "\" is not an integer");
+        if (v < range.lo || v > range.hi) throw InputError(opt + ": " + p + " is out of range (" + rangeText(range) + ")");
+        out = static_cast<int>(v);
+    };
+    const std::string& kind = parts[0];
+    const std::optional<MeshSpec::Type> type = valueNamed(kMeshTypeNames, kind);
+    if (!type || *type == MeshSpec::Type::Gltf) {  // a model is given by its file name, not "gltf"
+        if (!hasModelExtension(text))
+            throw InputError(opt + ": unknown mesh \"" + kind +
+                             "\" (expected uvsphere[:slices[:stacks]], icosphere[:n], torus[:major[:minor]], cube, "
+                             "plane[:n], or a .gltf/.glb file)");
+        m.type = MeshSpec::Type::Gltf;
+        m.path = text;
+        m.resolvedPath = fs::path(text).lexically_normal().string();
+        return m;
+    }
+    m.type = *type;
+    size_t maxParts = 1;
+    switch (m.type) {
+    case MeshSpec::Type::UvSphere:
+        intArg(1, m.slices, kUvSphereSlicesRange);
+        intArg(2, m.stacks, kUvSphereStacksRange);
+        maxParts = 3;
+        break;
+    case MeshSpec::Type::IcoSphere:
+        intArg(1, m.subdivisions, kIcoSphereSubdivisionsRange);
+        maxParts = 2;
+        break;
+    case MeshSpec::Type::Torus:
+        intArg(1, m.majorSegments, kTorusSegmentsRange);
+        intArg(2, m.minorSegments, kTorusSegmentsRange);
+        maxParts = 3;
+        break;
+    case MeshSpec::Type::Plane:
+        intArg(1, m.planeSubdivisions, kPlaneSubdivisionsRange);
+        maxParts = 2;
+        break;
+    case MeshSpec::Type::Cube:
+    case MeshSpec::Type::Gltf: break;
+    }
+    if (parts.size() > maxParts) throw InputError(opt + ": too many ':' parameters for " + kind);
+    return m;
+}
+
+Light parseLightShorthand(const std::string& text, const std::string& opt) {
+    std::vector<std::string> parts;
+    std::stringstream ss(text);
+    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+    auto fail = [&](const std::string& what) -> void { throw InputError(opt + ": " + what + " (in \"" + quoteInput(text) + "\")"); };
+    if (parts.size() < 2) fail("expected TYPE:X,Y,Z[:KEY=VALUE...], e.g. point:1,2,3:intensity=2");
+    auto numbers = [&](const std::string& key, const std::string& v, std::size_t count, char sep, double lo,
+                       double hi) {
+        std::vector<float> out;
+        std::stringstream vs(v);
+        for (std::string item; std::getline(vs, item, sep);) {
+            char* end = nullptr;
+            const float x = std::strtof(item.c_str(), &end);
+            if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
+                fail(key + ": \"" + quoteInput(item) + "\" is not a number");
+            if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + formatNumber(lo) + ".." + formatNumber(hi) + ")");
+            out.push_back(x);
+        }
+        if (out.size() != count || (!v.empty() && v.back() == sep))
+            fail(key + ": expected " + std::to_string(count) + " numbers separated by '" + std::string(1, sep) + "'");
+        return out;
+    };
+    auto vec3Of = [&](const std::string& key, const std::string& v, double lo, double hi) {
+        const std::vector<float> n = numbers(key, v, 3, ',', lo, hi);
+        return glm::vec3(n[0], n[1], n[2]);
+    };
+    Light l;
+    const std::string& type = parts[0];
+    const std::optional<LightType> lightType = valueNamed(kLightTypeNames, type);
+    if (!lightType)
+        fail("unknown light type \"" + quoteInput(type) + "\" (expected " + namesList(kLightTypeNames, ", ", " or ") + ")");
+    l.type = *lightType;
+    const glm::vec3 where = vec3Of(type, parts[1], -1e6, 1e6);
+    if (l.type == LightType::Directional) {
+        if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
+        l.direction = where;
+    } else {
+        l.position = where;
+    }
+    bool rangeGiven = false, innerGiven = false;
+    for (std::size_t i = 2; i < parts.size(); ++i) {
+        const std::string& kv = parts[i];
+        const std::size_t eq = kv.find('=');
+        const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
+        const bool positional = l.type != LightType::Directional, area = l.type == LightType::Area,
+                   spot = l.type == LightType::Spot;
+        if (key == "two-sided" && area && eq == std::string::npos) {
+            l.twoSided = true;
+            continue;
+        }
+        if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + quoteInput(kv) + "\"");
+        if (key == "color") l.color = vec3Of(key, value, 0.0, 1.0);
+        else if (key == "intensity") l.intensity = numbers(key, value, 1, ',', 0.0, 1e9)[0];
+        else if (key == "attenuation" && positional) {
+            const std::optional<Attenuation> a = valueNamed(kAttenuationNames, value);
+            if (!a)
+                fail("attenuation: unknown value \"" + quoteInput(value) + "\" (expected " +
+                     namesList(kAttenuationNames, ", ", " or ") + ")");
+            l.attenuation = *a;
+        } else if (key == "range" && positional) {
+            l.range = numbers(key, value, 1, ',', 1e-4, 1e9)[0];
+            rangeGiven = true;
+        } else if (key == "normal" && area) {
+            l.normal = vec3Of(key, value, -1e6, 1e6);
+            if (glm::length(l.normal) < 1e-6f) fail("normal: must not be a zero-length vector");
+        } else if (key == "size" && area) {
+            const std::vector<float> wh = numbers(key, value, 2, ',', 1e-4, 1e6);
+            l.size = {wh[0], wh[1]};
+        } else if (key == "direction" && spot) {
+            l.direction = vec3Of(key, value, -1e6, 1e6);
+            if (glm::length(l.direction) < 1e-6f) fail("direction: must not be a zero-length vector");
+        } else if (key == "outer" && spot) {
+            l.outerConeDeg = numbers(key, value, 1, ',', 0.01, kSpotConeDegRange.hi)[0];
+        } else if (key == "inner" && spot) {
+            l.innerConeDeg = numbers(key, value, 1, ',', 0.0, kSpotConeDegRange.hi)[0];
+            innerGiven = true;
+        } else if (key == "samples" && area) {
+            const std::vector<float> n = numbers(key, value, 2, 'x', 1, kAreaSamplesPerSideRange.hi);
+            if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
+            l.samples = {int(n[0]), int(n[1])};
+        } else {
+            fail("unknown key \"" + quoteInput(key) + "\" for a " + type + " light (" +
+                 (area ? "color, intensity, attenuation, range, normal, size, samples, two-sided"
+                  : spot ? "direction, inner, outer, color, intensity, attenuation, range"
+                  : positional ? "color, intensity, attenuation, range" : "color, intensity") + ")");
+        }
+    }
+    if (rangeGiven && l.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
+    if (l.type == LightType::Spot) {
+        if (!innerGiven) l.innerConeDeg = 0.5f * l.outerConeDeg;
+        if (l.innerConeDeg >= l.outerConeDeg) fail("inner must be less than outer (degrees from the axis)");
+    }
+    return l;
+}
+
+TermView parseTermView(const std::string& text, const std::string& where) {
+    const std::string prefix = where.empty() ? std::string() : where + ": ";
+    TermView t;
+    for (const auto& k : kShowTermNames)
+        if (k.second != ShowTerm::Light && text == k.first) {  // light:N below
+            t.term = k.second;
+            return t;
+        }
+    if (text.rfind("light:", 0) == 0) {
+        const std::string n = text.substr(6);
+        char* end = nullptr;
+        const long v = std::strtol(n.c_str(), &end, 10);
+        if (n.empty() || end != n.c_str() + n.size() || n[0] == '-' || n[0] == '+')
+            throw InputError(prefix + "\"" + quoteInput(n) + "\" is not a light index (light:N, N = 0.." +
+                             std::to_string(kMaxLights - 1) + ")");
+        if (v >= kMaxLights)
+            throw InputError(prefix + "light index " + n + " is out of range (0.." + std::to_string(kMaxLights - 1) + ")");
+        t.term = ShowTerm::Light;
+        t.light = int(v);
+        return t;
+    }
+    throw InputError(prefix + "unknown value \"" + text + "\" (expected one of " + namesList(kShowTermNames) + ")");
+}
+
+void checkCoefficients(const Material& m, const std::string& where) {
+    auto check = [&](const char* name, float v, float lo, float hi) {
+        if (!std::isfinite(v) || v < lo || v > hi)
+            throw InputError(where + name + ": must be between " + formatNumber(lo) + " and " + formatNumber(hi) + " (got " +
+                             formatNumber(v) + ")");
+    };
+    check("ka", m.ka, kCoefficientRange.lo, kCoefficientRange.hi);
+    check("kd", m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
+    check("ks", m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
+    check("ke", m.ke, kExponentRange.lo, kExponentRange.hi);
+}
+
+void checkImageSize(int width, int height, const std::string& where) {
+    if (width < 1 || height < 1 || width > kImageSideRange.hi || height > kImageSideRange.hi)
+        throw InputError(where + ": width and height must be between 1 and " + std::to_string(kImageSideRange.hi) +
+                         " (got " + std::to_string(width) + "x" + std::to_string(height) + ")");
+}
+
+}  // namespace shadelab

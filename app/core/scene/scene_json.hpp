@@ -1,0 +1,49 @@
+#pragma once
+// Reading and writing scene files (JSON). The format is documented in the README ("Scene file").
+// Every field is optional; unknown fields, wrong types and out-of-range values are InputErrors whose
+// message names the file and the field, e.g. "a.json: lights[0].intensity: must be >= 0 (got -1)".
+#include "core/scene/scene.hpp"
+
+#include <string>
+
+namespace shadelab {
+
+// Parses scene JSON. `fileLabel` prefixes error messages; relative glTF paths resolve against `baseDir`.
+Scene parseScene(const std::string& text, const std::string& fileLabel, const std::string& baseDir);
+
+// Reads and parses a scene file.
+Scene loadSceneFile(const std::string& path);
+
+// The built-in default scene (assets/scenes/default.json, embedded at build time).
+Scene defaultScene();
+
+// A scene that shows one glTF/GLB model with everything else at its defaults (camera auto-framed).
+Scene sceneForModel(const std::string& modelPath);
+
+// Serialises every field of the scene, so loading the result gives the same image. glTF paths are
+// written relative to `saveDir` (the folder the JSON will be saved in).
+std::string sceneToJson(const Scene& scene, const std::string& saveDir);
+
+// Parses the command line's mesh shorthand: "uvsphere[:slices[:stacks]]", "icosphere[:subdivisions]",
+// "torus[:major_segments[:minor_segments]]", "cube", "plane[:subdivisions]", or a .gltf/.glb path.
+MeshSpec parseMeshShorthand(const std::string& text, const std::string& optionName);
+
+// Parses the command line's light shorthand, TYPE:X,Y,Z[:KEY=VALUE]...:
+//   point:X,Y,Z        a point light at (X, Y, Z)
+//   directional:X,Y,Z  a directional light travelling along (X, Y, Z)
+//   area:X,Y,Z         an area light centred at (X, Y, Z)
+// and the keys color=R,G,B  intensity=I  attenuation=none|inverse-square  range=R (point, area)
+// normal=X,Y,Z  size=W,H  samples=NXxNY  two-sided (area). E.g.
+//   area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
+// Values are checked against the scene format's ranges; errors are InputErrors "<optionName>: ...".
+Light parseLightShorthand(const std::string& text, const std::string& optionName);
+
+// Validation shared with the command line; each throws InputError "<where>: <what>".
+// "all" | "ambient" | "diffuse" | "specular" | "light:N" (0 <= N < kMaxLights) | "unlit". Throws
+// InputError "WHERE: what" (no prefix when `where` is empty). Whether light N exists is the caller's check.
+TermView parseTermView(const std::string& text, const std::string& where);
+
+void checkCoefficients(const Material& m, const std::string& where);
+void checkImageSize(int width, int height, const std::string& where);
+
+}  // namespace shadelab

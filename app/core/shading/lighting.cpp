@@ -1,0 +1,232 @@
+#include "core/shading/lighting.hpp"
+
+#include "../../../shaders/shared_defs.glsl"
+
+#include <glm/common.hpp>
+#include <glm/exponential.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace shadelab {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+// One light sample's addend: radiance * (k_d C (N.I) + k_s S spec), nothing when N.I <= 0.
+void addSample(LightShare& t, const Material& m, const LightingEnvironment& env, const glm::vec3& n,
+               const glm::vec3& v, const glm::vec3& i, const glm::vec3& radiance) {
+    const float nDotI = glm::dot(n, i);
+    if (nDotI <= 0.0f) return;  // light behind the surface: no diffuse, no specular
+    t.diffuse += radiance * m.kd * m.color * nDotI;
+    t.specular += radiance * m.ks * m.specularColor * specularTerm(env, m.ke, n, i, v);
+}
+
+}  // namespace
+
+LightingEnvironment lightingEnvironment(const Scene& s) {
+    LightingEnvironment env;
+    env.model = s.reflection;
+    env.normalization = s.specularNormalization;
+    env.fresnel = s.fresnel;
+    env.ior = s.ior;
+    env.show = s.show;
+    env.ambient = s.ambient;
+    env.lights = s.lights;
+    env.eyeWorld = s.camera.eye;
+    return env;
+}
+
+float lobeNormalization(ReflectionModel model, float ke) {
+    return model == ReflectionModel::Phong ? (ke + 2.0f) / (2.0f * kPi) : (ke + 8.0f) / (8.0f * kPi);
+}
+
+float energySpecularScale(ReflectionModel model, float ke) {
+    return lobeNormalization(model, ke) / lobeNormalization(model, kEnergyReferenceExponent);
+}
+
+FresnelTerms fresnelExact(float cosTheta1, float eta1, float eta2) {
+    FresnelTerms f;
+    const float c1 = glm::clamp(cosTheta1, 0.0f, 1.0f);
+    const float sin1 = std::sqrt(std::max(0.0f, 1.0f - c1 * c1));
+    const float sin3 = eta1 / eta2 * sin1;  // Snell: eta1 sin theta1 = eta2 sin theta3
+    if (sin3 >= 1.0f) {
+        f.parallel = f.perpendicular = f.average = 1.0f;
+        f.totalInternal = true;
+        return f;
+    }
+    const float c3 = std::sqrt(1.0f - sin3 * sin3);
+    // The cosine forms of the lecture's tan^2/sin^2 quotients (equal to them, and finite at normal incidence).
+    const float perp = (eta1 * c1 - eta2 * c3) / (eta1 * c1 + eta2 * c3);
+    const float par = (eta1 * c3 - eta2 * c1) / (eta1 * c3 + eta2 * c1);
+    f.parallel = par * par;
+    f.perpendicular = perp * perp;
+    f.average = 0.5f * (f.parallel + f.perpendicular);
+    return f;
+}
+
+float fresnelR0(float eta1, float eta2) {
+    const float r = (eta1 - eta2) / (eta1 + eta2);
+    return r * r;
+}
+
+float fresnelSchlick(float cosTheta1, float eta1, float eta2) {
+    const float r0 = fresnelR0(eta1, eta2);
+    const float m = 1.0f - glm::clamp(cosTheta1, 0.0f, 1.0f);
+    return r0 + (1.0f - r0) * m * m * m * m * m;
+}
+
+float fresnelWeight(FresnelMode mode, float cosVH, float ior) {
+    switch (mode) {
+    case FresnelMode::None: return 1.0f;
+    case FresnelMode::Schlick: return fresnelSchlick(cosVH, 1.0f, ior);
+    case FresnelMode::Exact: return fresnelExact(cosVH, 1.0f, ior).average;
+    }
+    return 1.0f;
+}
+
+float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v) {
+    const float nDotI = glm::dot(n, i);
+    if (nDotI <= 0.0f) return 0.0f;  // light behind the surface
+    float cosLobe;
+    const glm::vec3 h = glm::normalize(i + v);
+    if (env.model == ReflectionModel::Phong) {
+        const glm::vec3 r = 2.0f * nDotI * n - i;
+        cosLobe = glm::dot(r, v);
+    } else {
+        cosLobe = glm::dot(h, n);
+    }
+    float spec = std::pow(std::max(cosLobe, 0.0f), ke);
+    if (env.normalization == SpecularNormalization::Energy) spec *= energySpecularScale(env.model, ke);
+    if (env.fresnel != FresnelMode::None) spec *= fresnelWeight(env.fresnel, std::max(glm::dot(v, h), 0.0f), env.ior);
+    return spec;
+}
+
+float attenuationFactor(const Light& light, float r2) {
+    if (light.attenuation != Attenuation::InverseSquare) return 1.0f;
+    float f = 1.0f / r2;
+    if (light.range > 0.0f) {
+        const float q = r2 / (light.range * light.range);  // (r/range)^2
+        const float w = glm::clamp(1.0f - q * q, 0.0f, 1.0f);
+        f *= w * w;
+    }
+    return f;
+}
+
+glm::vec2 spotCone(const Light& l) {
+    const float cosOuter = std::cos(glm::radians(l.outerConeDeg)), cosInner = std::cos(glm::radians(l.innerConeDeg));
+    return {cosOuter, 1.0f / std::max(cosInner - cosOuter, 1e-3f)};
+}
+
+float spotFalloff(const Light& l, const glm::vec3& towardLight) {
+    if (l.type != LightType::Spot) return 1.0f;
+    const glm::vec2 cone = spotCone(l);
+    const float cd = glm::dot(glm::normalize(l.direction), -towardLight);
+    const float t = glm::clamp((cd - cone.x) * cone.y, 0.0f, 1.0f);
+    return t * t;
+}
+
+AreaFrame areaFrame(const Light& l) {
+    AreaFrame f;
+    f.n = glm::normalize(l.normal);
+    const glm::vec3 ref = std::fabs(f.n.y) > 0.999f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 u = glm::normalize(glm::cross(ref, f.n));
+    f.u = l.size.x * u;
+    f.v = l.size.y * glm::cross(f.n, u);
+    return f;
+}
+
+std::uint32_t jitterHash(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+glm::vec2 areaSampleOffset(int i, int j, const glm::ivec2& n) {
+    const auto k = std::uint32_t(j * n.x + i);
+    // 24 bits of the hash as a float in [0, 1): exact in float, the same in GLSL.
+    auto unit = [](std::uint32_t h) { return float(h >> 8) * (1.0f / 16777216.0f); };
+    const float jx = n.x == 1 ? 0.5f : unit(jitterHash(2u * k + SL_AREA_JITTER_SEED));
+    const float jy = n.y == 1 ? 0.5f : unit(jitterHash(2u * k + 1u + SL_AREA_JITTER_SEED));
+    return {(float(i) + jx) / float(n.x) - 0.5f, (float(j) + jy) / float(n.y) - 0.5f};
+}
+
+glm::vec3 areaSamplePosition(const Light& l, int i, int j) {
+    const AreaFrame f = areaFrame(l);
+    const glm::vec2 o = areaSampleOffset(i, j, l.samples);
+    return l.position + o.x * f.u + o.y * f.v;
+}
+
+ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& p, const glm::vec3& n,
+                        const Visibility& visibility) {
+    ShadingTerms t;
+    t.lights.resize(env.lights.size());
+    const glm::vec3 v = glm::normalize(env.eyeWorld - p);
+    t.ambient = m.ka * env.ambient * m.color;
+    auto visible = [&](std::size_t light, int sample, const glm::vec3& i, float distance) {
+        if (!visibility || glm::dot(n, i) <= 0.0f) return 1.0f;  // N.I <= 0 adds nothing anyway
+        return visibility(p, LightRay{light, sample, i, distance});
+    };
+    for (std::size_t li = 0; li < env.lights.size(); ++li) {
+        const Light& light = env.lights[li];
+        const glm::vec3 power = light.color * light.intensity;
+        switch (light.type) {
+        case LightType::Directional: {
+            const glm::vec3 i = glm::normalize(-light.direction);
+            addSample(t.lights[li], m, env, n, v, i, power * visible(li, 0, i, std::numeric_limits<float>::infinity()));
+            break;
+        }
+        case LightType::Point:
+        case LightType::Spot: {
+            const glm::vec3 d = light.position - p;
+            const float r2 = glm::dot(d, d), r = std::sqrt(r2);
+            const glm::vec3 i = d / r;
+            const float cone = spotFalloff(light, i);
+            addSample(t.lights[li], m, env, n, v, i,
+                      power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? visible(li, 0, i, r) : 1.0f));
+            break;
+        }
+        case LightType::Area: {
+            const glm::vec3 front = glm::normalize(light.normal);
+            const float share = 1.0f / float(light.samples.x * light.samples.y);
+            for (int sj = 0; sj < light.samples.y; ++sj)
+                for (int si = 0; si < light.samples.x; ++si) {
+                    const glm::vec3 d = areaSamplePosition(light, si, sj) - p;
+                    const float r2 = glm::dot(d, d), r = std::sqrt(r2);
+                    const glm::vec3 i = d / r;
+                    float cosLight = -glm::dot(front, i);
+                    if (light.twoSided) cosLight = std::fabs(cosLight);
+                    if (cosLight <= 0.0f) continue;  // behind the emitting side
+                    const float vis = visible(li, sj * light.samples.x + si, i, r);
+                    addSample(t.lights[li], m, env, n, v, i, power * (attenuationFactor(light, r2) * cosLight * share * vis));
+                }
+            break;
+        }
+        }
+    }
+    for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
+    glm::vec3& shown = t.shown;
+    switch (env.show.term) {
+    case ShowTerm::All: shown = t.ambient + t.diffuse + t.specular; break;
+    case ShowTerm::Ambient: shown = t.ambient; break;
+    case ShowTerm::Diffuse: shown = t.diffuse; break;
+    case ShowTerm::Specular: shown = t.specular; break;
+    case ShowTerm::Light:
+        if (env.show.light >= 0 && std::size_t(env.show.light) < t.lights.size())
+            shown = t.lights[std::size_t(env.show.light)].diffuse + t.lights[std::size_t(env.show.light)].specular;
+        break;
+    case ShowTerm::Unlit: shown = m.color; break;
+    }
+    t.total = glm::clamp(shown, 0.0f, 1.0f);
+    return t;
+}
+
+float encodeSrgb(float c) {
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+}  // namespace shadelab

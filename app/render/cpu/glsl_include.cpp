@@ -1,0 +1,73 @@
+#include "render/cpu/glsl_include.hpp"
+
+#include <cctype>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+
+namespace shadelab {
+namespace {
+
+void expandInto(const std::string& name, const std::function<std::string(const std::string&)>& load,
+                ExpandedGlsl& out, int depth) {
+    if (depth > 16) throw std::runtime_error(name + ": includes nested deeper than 16");
+    for (const auto& f : out.files)
+        if (f == name) return;  // already included in this program
+    const int id = int(out.files.size());
+    out.files.push_back(name);
+    std::istringstream in(load(name));
+    std::string line;
+    int lineNo = 0;
+    out.text += "#line 1 " + std::to_string(id) + "\n";
+    while (std::getline(in, line)) {
+        ++lineNo;
+        const size_t first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
+            const size_t open = line.find('"', first), close = line.find('"', open + 1);
+            if (open == std::string::npos || close == std::string::npos)
+                throw std::runtime_error(name + ":" + std::to_string(lineNo) + ": malformed #include");
+            expandInto(line.substr(open + 1, close - open - 1), load, out, depth + 1);
+            out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(id) + "\n";
+        } else if (first != std::string::npos && line.compare(first, 8, "#version") == 0) {
+            throw std::runtime_error(name + ":" + std::to_string(lineNo) +
+                                     ": #version is added by the include step; remove it");
+        } else {
+            out.text += line + "\n";
+        }
+    }
+}
+
+}  // namespace
+
+ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string(const std::string&)>& load,
+                        const std::vector<std::string>& defines) {
+    ExpandedGlsl out;
+    // Target GLSL 330 so the programs run on OpenGL 3.3 core (and macOS's 4.1).
+    out.text = "#version 330 core\n";
+    for (const std::string& d : defines) out.text += "#define " + d + "\n";
+    expandInto(name, load, out, 0);
+    return out;
+}
+
+std::string locateGlslLog(const std::string& log, const std::vector<std::string>& files) {
+    // A log line starts (after blanks and an optional "ERROR: " or "WARNING: ") with
+    // "SOURCE:LINE", e.g. Mesa's "0:12(5): error: ...": replace SOURCE by its file name.
+    std::istringstream in(log);
+    std::string line, result;
+    while (std::getline(in, line)) {
+        size_t p = line.find_first_not_of(" \t");
+        for (const char* prefix : {"ERROR: ", "WARNING: "})
+            if (p != std::string::npos && line.compare(p, std::strlen(prefix), prefix) == 0) p += std::strlen(prefix);
+        size_t digits = p;
+        while (digits < line.size() && std::isdigit(static_cast<unsigned char>(line[digits]))) ++digits;
+        if (p != std::string::npos && digits > p && digits + 1 < line.size() && line[digits] == ':' &&
+            std::isdigit(static_cast<unsigned char>(line[digits + 1]))) {
+            const size_t id = std::stoul(line.substr(p, digits - p));
+            if (id < files.size()) line = line.substr(0, p) + files[id] + line.substr(digits);
+        }
+        result += line + "\n";
+    }
+    return result;
+}
+
+}  // namespace shadelab
