@@ -21,7 +21,9 @@ public:
     virtual const char* backendName() const = 0;
 };
 
-// Auto tries OSMesa, then EGL. Throws std::runtime_error saying what is missing for each.
+// Auto tries OSMesa, then EGL (of those this build has). Throws std::runtime_error saying what is missing
+// for each; asking for a backend the build has not got (CMake options SHADELAB_OSMESA, SHADELAB_EGL) is an
+// InputError.
 std::unique_ptr<HeadlessContext> makeHeadlessContext(HeadlessBackend backend, int width, int height);
 
 const char* toString(HeadlessBackend b);

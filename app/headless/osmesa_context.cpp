@@ -1,7 +1,5 @@
 #include "headless/osmesa_context.hpp"
 
-#include "headless/egl_context.hpp"
-
 #include <GL/osmesa.h>
 #include <dlfcn.h>
 
@@ -80,29 +78,6 @@ void OsMesaContext::resize(int width, int height) {
 GLADloadfunc OsMesaContext::loader() {
     api();  // fail early with the clear message
     return &loadGlFunction;
-}
-
-std::unique_ptr<HeadlessContext> makeHeadlessContext(HeadlessBackend backend, int width, int height) {
-    if (backend == HeadlessBackend::OsMesa) return std::make_unique<OsMesaContext>(width, height);
-    if (backend == HeadlessBackend::Egl) return std::make_unique<EglContext>(width, height);
-    try {
-        return std::make_unique<OsMesaContext>(width, height);
-    } catch (const std::exception& osmesa) {
-        try {
-            return std::make_unique<EglContext>(width, height);
-        } catch (const std::exception& egl) {
-            throw std::runtime_error(std::string("no headless OpenGL: ") + osmesa.what() + "; " + egl.what());
-        }
-    }
-}
-
-const char* toString(HeadlessBackend b) {
-    switch (b) {
-    case HeadlessBackend::Auto: return "auto";
-    case HeadlessBackend::OsMesa: return "osmesa";
-    case HeadlessBackend::Egl: return "egl";
-    }
-    return "?";
 }
 
 }  // namespace shadelab

@@ -1,6 +1,7 @@
 #pragma once
 // Compiling and linking one GLSL program from files in a ShaderLibrary. Errors are ShaderErrors whose
 // message names the program, the stage, and the file and line of each driver message.
+#include "core/base/error.hpp"   // ShaderError
 #include "render/gl_handles.hpp"
 #include "render/shader_library.hpp"
 
@@ -9,11 +10,6 @@
 #include <vector>
 
 namespace shadelab {
-
-class ShaderError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // Builds `<name>.vert` (or `<vertexName>.vert`) + `<name>.frag`, with `<geometryName>.geom` between
 // them when given, with `defines` ("NAME VALUE") after #version, and binds the uniform blocks to their

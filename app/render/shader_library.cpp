@@ -44,4 +44,6 @@ std::string defaultShaderFolder() {
     return {};
 }
 
+std::string shaderFolder(const std::string& asked) { return asked.empty() ? defaultShaderFolder() : asked; }
+
 }  // namespace shadelab

@@ -27,4 +27,7 @@ private:
 // a rebuild); empty when there is none (the built-in copies are used).
 std::string defaultShaderFolder();
 
+// The folder a run reads GLSL from: `asked` (--shader-dir), else defaultShaderFolder().
+std::string shaderFolder(const std::string& asked);
+
 }  // namespace shadelab

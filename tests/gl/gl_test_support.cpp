@@ -14,7 +14,8 @@ namespace shadelab::test {
 
 HeadlessBackend backendUnderTest() {
     const char* b = std::getenv("SHADELAB_TEST_BACKEND");
-    return (b && std::string(b) == "egl") ? HeadlessBackend::Egl : HeadlessBackend::OsMesa;
+    if (b) return std::string(b) == "egl" ? HeadlessBackend::Egl : HeadlessBackend::OsMesa;
+    return SHADELAB_HAVE_OSMESA ? HeadlessBackend::OsMesa : HeadlessBackend::Egl;  // what this build has
 }
 
 Scene threeLightScene() {

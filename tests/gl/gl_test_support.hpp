@@ -16,7 +16,7 @@
 namespace shadelab::test {
 
 // The headless backend the GL tests run on: SHADELAB_TEST_BACKEND=osmesa|egl (CTest registers the GL
-// tests once for each), OSMesa when unset.
+// tests once for each backend the build has), else OSMesa where the build has it, else EGL.
 HeadlessBackend backendUnderTest();
 
 // The default object at the origin under three lights of the kinds a scene can mix, so the GPU loop

@@ -32,8 +32,8 @@ const std::map<std::string, std::vector<std::string>> kBelow = {
     {"cli", {"core/ui", "core/probe", "core/figures"}},
 };
 
-// The executable's main() sits in cli/ and may use every layer.
-const std::set<std::string> kProgram = {"cli/main.cpp"};
+// The executable's files (main() and the run modes, cli/program.hpp) sit in cli/ and may use every layer.
+const std::set<std::string> kProgram = {"cli/main.cpp", "cli/run_headless.cpp", "cli/run_viewer.cpp"};
 
 std::set<std::string> reachable(const std::string& folder) {
     std::set<std::string> seen{folder};

@@ -20,4 +20,12 @@ public:
     using InputError::InputError;
 };
 
+// A GLSL program that does not compile or link (a --shader-dir of one's own, an edit reloaded with F5):
+// bad input too (exit 2); the message names the program, the stage, and the file and line of each
+// driver message (render/program.hpp builds programs).
+class ShaderError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 }  // namespace shadelab

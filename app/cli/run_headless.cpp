@@ -1,0 +1,132 @@
+// The run modes that render without a window (program.hpp): one frame, a sweep sheet, a probed frame,
+// a benchmark, a playlist's images. Built where a headless context is (SHADELAB_OSMESA or SHADELAB_EGL).
+#include "cli/program.hpp"
+#include "core/base/file_io.hpp"
+#include "core/geometry/scene_geometry.hpp"
+#include "core/image/image.hpp"
+#include "core/probe/probe.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/scene/playlist.hpp"
+#include "headless/headless.hpp"
+#include "render/shader_library.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace shadelab {
+namespace {
+
+struct Stopwatch {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
+};
+
+// --msaa for --output and --benchmark: off unless asked for, so the golden images stay pixel-exact.
+int headlessMsaa(const Options& options) { return options.msaa.value_or(1); }
+
+// What a run needs beside the options: where the GLSL comes from and which headless context.
+struct RunContext {
+    const Options& options;
+    ShaderLibrary shaders;
+    HeadlessBackend backend;
+};
+
+HeadlessBackend backendOf(const Options& options) {
+    if (options.backend == "egl") return HeadlessBackend::Egl;
+    if (options.backend == "osmesa") return HeadlessBackend::OsMesa;
+    return HeadlessBackend::Auto;
+}
+
+// --playlist DIR --output OUT/: every preset loaded and rendered before any file is written (one bad
+// file, or a model that fails to load in the last preset, leaves the folder as it was; the frames wait
+// in memory, within the budget), then one PNG per preset.
+int runPlaylistImages(const RunContext& run) {
+    const Options& options = run.options;
+    checkOutputFolder(*options.output, "--output");
+    std::vector<Preset> presets = loadPlaylist(*options.playlist, [&options](Scene& s) { applyOverrides(s, options); });
+    std::vector<Scene> scenes;
+    for (const Preset& p : presets) scenes.push_back(p.scene);
+    std::vector<Image> frames(presets.size());
+    std::uint64_t kept = 0;  // every frame's pixels (a caption strip adds a little)
+    for (const Scene& s : scenes) kept += 4 * std::uint64_t(s.width) * std::uint64_t(s.height);
+    renderScenesHeadless(scenes, run.shaders, run.backend, [&](std::size_t i, Image image) {
+        const Preset& p = presets[i];
+        frames[i] = options.captions ? withCaptionStrip(image, presetTitle(p), p.scene.caption) : std::move(image);
+    }, headlessMsaa(options), kept);
+    createOutputFolder(*options.output, "--output");
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+        const std::string path = (std::filesystem::path(*options.output) / (presets[i].name + ".png")).string();
+        writePng(path, frames[i]);
+        if (options.verbose) std::cerr << "shadelab: wrote " << path << "\n";
+    }
+    return 0;
+}
+
+int runSweepSheet(const RunContext& run, const Scene& scene) {
+    const Options& options = run.options;
+    const Stopwatch clock;
+    const Image sheet = renderSweepHeadless(scene, options.sweeps, run.shaders, run.backend, "--sweep", headlessMsaa(options));
+    writePng(*options.output, sheet);
+    if (options.verbose)
+        std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
+                  << clock.ms() << " ms)\n";
+    return 0;
+}
+
+// The probe needs the CPU geometry after the render, so this path builds it itself rather than
+// through renderSceneHeadless (which lets go of it once uploaded).
+int runProbeImage(const RunContext& run, Scene scene) {
+    const Options& options = run.options;
+    const auto geometry = loadGeometry(options, scene);
+    const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
+                                         options.probe->y);
+    writePng(*options.output, renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options)));
+    std::cout << probeToJson(scene, probe) << std::endl;
+    return 0;
+}
+
+int runImage(const RunContext& run, Scene scene) {
+    const Options& options = run.options;
+    const Stopwatch clock;
+    const HeadlessFrame frame = renderSceneHeadless(std::move(scene), run.shaders, run.backend, headlessMsaa(options));
+    report(options, frame.scene, frame.gltfInfo, frame.triangles);
+    const double renderedMs = clock.ms();
+    writePng(*options.output, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption)
+                                               : frame.image);
+    if (options.verbose)
+        std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
+                  << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
+    return 0;
+}
+
+int runBenchmark(const RunContext& run, Scene scene) {
+    const Options& options = run.options;
+    const auto geometry = loadGeometry(options, scene);
+    std::vector<ShadingMode> modes;
+    if (scene.layout == Layout::Compare) modes = {scene.shading};
+    else if (options.shading) modes = {*options.shading};
+    else modes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong};
+    for (const BenchmarkResult& r : benchmarkHeadless(scene, geometry, modes, options.benchmarkFrames, 3, run.shaders,
+                                                      run.backend, options.progressiveStride, headlessMsaa(options)))
+        std::cout << toJson(r) << std::endl;
+    return 0;
+}
+
+}  // namespace
+
+int runHeadlessMode(const Options& options) {
+    const RunContext run{options, ShaderLibrary(shaderFolder(options.shaderDir)), backendOf(options)};
+    if (options.mode == RunMode::PlaylistImages) return runPlaylistImages(run);
+    Scene scene = sceneFromOptions(options);
+    if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
+    switch (options.mode) {
+    case RunMode::SweepSheet: return runSweepSheet(run, scene);
+    case RunMode::ProbeImage: return runProbeImage(run, std::move(scene));
+    case RunMode::Benchmark: return runBenchmark(run, std::move(scene));
+    default: return runImage(run, std::move(scene));
+    }
+}
+
+}  // namespace shadelab
