@@ -9,7 +9,7 @@ work=$(mktemp -d)
 cd "$work"
 /usr/bin/shadelab --version
 /usr/bin/shadelab --size 320x240 --layout compare --output compare.png
-/usr/bin/shadelab --playlist /usr/share/shadelab/scenes/lecture --size 160x120 --output lecture/
+/usr/bin/shadelab --playlist lecture --size 160x120 --output lecture/   # the installed presets, by name
 /usr/bin/shadelab /usr/share/shadelab/models/lowpoly_gem.gltf --size 160x120 --output gem.png
 test -s compare.png && test -s gem.png && test "$(ls lecture/*.png | wc -l)" -ge 10
 test -f /usr/share/man/man1/shadelab.1.gz -o -f /usr/share/man/man1/shadelab.1

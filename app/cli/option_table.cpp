@@ -126,7 +126,8 @@ const OptionSpec kOptions[] = {
      "render one frame offscreen (OSMesa or EGL, no display needed) and write it atomically",
      setPath<&Options::output>},
     {"--playlist", "", "DIR", G::General, kNoBounds, nullptr, "",
-     "the lecture presets: every `DIR/*.json` in file-name order (see *Lecture presets and the playlist*); the "
+     "the lecture presets: every `DIR/*.json` in file-name order (see *Lecture presets and the playlist*); a bare "
+     "name that is no folder here (`lecture`) is the scene folder of that name beside the program; the "
      "viewer steps through them (Page Down / Page Up), `--output OUT/` writes `OUT/NAME.png` for each (`OUT` is "
      "created when it ends in / and is missing). Every other option applies to each preset",
      [](Options& o, const OptionSpec& self, const std::string& v) {

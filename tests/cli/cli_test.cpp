@@ -519,6 +519,31 @@ TEST_F(Cli, PlaylistWritesOnePngPerPreset) {
     EXPECT_EQ(compareImages(readPng(path("slides/" + last)), readPng(path("single.png")), 0).maxDifference, 0) << preset;
 }
 
+// --playlist NAME: a bare name that is no folder where shadelab runs is the scene folder of that name
+// beside the program (here the checkout's assets/scenes/lecture, for the program in the build folder;
+// installed, share/shadelab/scenes/lecture: packaging/check-deb.sh); a folder of that name where it
+// runs comes first; an unknown name says where it was looked for.
+TEST_F(Cli, PlaylistByNameFindsTheScenesBesideTheProgram) {
+    std::set<std::string> expected;
+    for (const auto& e : fs::directory_iterator(fs::path(SHADELAB_SOURCE_DIR) / "assets" / "scenes" / "lecture"))
+        if (e.path().extension() == ".json") expected.insert(e.path().stem().string() + ".png");
+    const RunResult r = test::runShadelab({"--playlist", "lecture", "--output", "byname/", "--size", "32x18"}, dir_, dir_);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::set<std::string> written;
+    for (const auto& e : fs::directory_iterator(dir_ / "byname")) written.insert(e.path().filename().string());
+    EXPECT_EQ(written, expected);
+
+    fs::create_directories(dir_ / "lecture");
+    file("lecture/only.json", R"({"mesh": {"type": "cube"}})");
+    ASSERT_EQ(test::runShadelab({"--playlist", "lecture", "--output", "local/", "--size", "32x18"}, dir_, dir_).exitCode, 0);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "local"), fs::directory_iterator()), 1);
+
+    const RunResult unknown = test::runShadelab({"--playlist", "no-such-lecture", "--output", "x/"}, dir_, dir_);
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.err.find("no-such-lecture: no such folder (nor a scene folder of that name beside the program)"),
+              std::string::npos) << unknown.err;
+}
+
 // --captions: each image gets a strip with its title (or file name) and caption below the unchanged
 // render; without a trailing '/' a folder that does not exist is refused, and a broken preset stops
 // the run before anything is created.

@@ -4,6 +4,7 @@
 #include "core/base/file_io.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/image/text.hpp"
+#include "platform/platform.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -12,9 +13,24 @@
 namespace shadelab {
 namespace fs = std::filesystem;
 
+std::string playlistFolder(const std::string& given) {
+    std::error_code ec;
+    const bool bareName = !given.empty() && given.find_first_of("/\\") == std::string::npos && given != "." && given != "..";
+    if (fs::exists(given, ec) || !bareName) return given;
+    const fs::path exe = platform::executablePath();
+    if (exe.empty()) return given;
+    for (const char* scenes : {"../share/shadelab/scenes", "../assets/scenes"}) {
+        const fs::path folder = exe.parent_path() / scenes / given;
+        if (fs::is_directory(folder, ec)) return fs::weakly_canonical(folder, ec).string();
+    }
+    return given;
+}
+
 std::vector<std::string> listPresetFiles(const std::string& folder) {
     std::error_code ec;
-    if (!fs::exists(folder, ec)) throw InputError(folder + ": no such folder");
+    if (!fs::exists(folder, ec))
+        throw InputError(folder + ": no such folder" +
+                         (folder.find_first_of("/\\") == std::string::npos ? " (nor a scene folder of that name beside the program)" : ""));
     if (!fs::is_directory(folder, ec)) throw InputError(folder + ": not a folder (--playlist takes a folder of scene files)");
     std::vector<std::string> names;
     fs::directory_iterator it(folder, ec);
@@ -51,7 +67,7 @@ Preset loadPreset(const std::string& path, const SceneAdjust& adjust) {
 
 std::vector<Preset> loadPlaylist(const std::string& folder, const SceneAdjust& adjust) {
     std::vector<Preset> presets;
-    for (const std::string& path : listPresetFiles(folder)) presets.push_back(loadPreset(path, adjust));
+    for (const std::string& path : listPresetFiles(playlistFolder(folder))) presets.push_back(loadPreset(path, adjust));
     return presets;
 }
 

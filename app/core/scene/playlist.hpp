@@ -31,6 +31,12 @@ std::vector<std::string> listPresetFiles(const std::string& folder);
 // Loads one preset file; errors name the file and the field (as loadSceneFile).
 Preset loadPreset(const std::string& path, const SceneAdjust& adjust = {});
 
+// The folder --playlist names: `given` where it exists; else, for a bare name ("lecture"), the scene
+// folder of that name beside the program: an installed shadelab's share/shadelab/scenes/NAME, or a
+// checkout's assets/scenes/NAME for a program in its build folder. Otherwise `given` (listPresetFiles
+// then says it is missing).
+std::string playlistFolder(const std::string& given);
+
 // Every preset of `folder` (listPresetFiles), all loaded before any is returned: one bad file fails
 // the whole playlist with an InputError naming that file and what is wrong.
 std::vector<Preset> loadPlaylist(const std::string& folder, const SceneAdjust& adjust = {});
