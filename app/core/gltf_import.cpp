@@ -118,6 +118,18 @@ private:
     // transforms of its copies relative to that (a part drawn with instances, see read()).
     void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& worldFromObject, const std::string& where,
                       const std::vector<glm::mat4>& instances = {});
+    // addPrimitive's steps.
+    std::vector<glm::vec3> readPositions(int accessorIndex, const std::string& where) const;
+    std::vector<std::uint32_t> triangles(const tinygltf::Primitive& p, int mode, std::size_t vertexCount,
+                                         const std::string& where) const;
+    std::vector<glm::vec3> readNormals(const tinygltf::Primitive& p, const std::vector<glm::vec3>& positions,
+                                       const std::vector<std::uint32_t>& triangles, const std::string& where);
+    void bakeVertices(std::vector<glm::vec3>&& positions, std::vector<glm::vec3>&& normals, const glm::mat4& worldFromObject,
+                      int positionAccessor, const std::string& where);
+    void appendColorInputs(std::uint32_t base, std::size_t count, const std::vector<glm::vec2>& uvs,
+                           const std::vector<glm::vec3>& colors);
+    std::uint32_t appendIndices(std::vector<std::uint32_t>&& triangles, std::uint32_t base, bool mirrored);
+    void addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot, const std::vector<glm::mat4>& instances);
     void visit(int nodeIndex, const glm::mat4& parent, int depth);
     // The object texture of the lecture's C: the material's baseColorTexture, decoded once per image
     // and sampler into Mesh::textures; -1 (with a warning) where it cannot be drawn.
@@ -514,36 +526,9 @@ std::vector<glm::vec3> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     return out;
 }
 
-void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where,
-                              const std::vector<glm::mat4>& instances) {
-    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
-    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-        static const char* kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
-        info_.warnings.push_back(where + ": " + (mode >= 0 && mode < 4 ? kNames[mode] : "unknown-mode") +
-                                 " primitive skipped (only triangles are shaded)");
-        return;
-    }
-    const auto posIt = p.attributes.find("POSITION");
-    // The validator only warns about this, but a triangle primitive without positions cannot be drawn,
-    // and its indices (if any) point at nothing: refuse the file rather than guess.
-    if (posIt == p.attributes.end()) fail(where, "has no POSITION attribute");
-    // FLOAT, or any 8- or 16-bit integer type (KHR_mesh_quantization; the node transform dequantizes).
-    const View pos = view(posIt->second, where + " POSITION", {TINYGLTF_TYPE_VEC3},
-                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
-    std::vector<glm::vec3> positions = readVec3(pos);
-    for (std::size_t i = 0; i < pos.count; ++i) {
-        if (!isFinite(positions[i]))
-            fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
-                 "vertex " + std::to_string(i) + " is not finite");
-    }
-    std::vector<std::uint32_t> order;
-    if (p.indices >= 0) {
-        order = indices(p.indices, positions.size(), where);
-    } else {
-        order.resize(positions.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
-    }
+namespace {
+// The triangles of a strip or a fan (or a list, its last partial triangle dropped) as a triangle list.
+std::vector<std::uint32_t> triangleList(int mode, std::vector<std::uint32_t> order) {
     std::vector<std::uint32_t> tris;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
         order.resize(order.size() / 3 * 3);
@@ -557,32 +542,28 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     } else {
         for (std::size_t i = 2; i < order.size(); ++i) tris.insert(tris.end(), {order[i - 1], order[i], order[0]});
     }
-    if (info_.triangles + tris.size() / 3 > kMaxTriangles)
-        fail(where, "more than " + std::to_string(kMaxTriangles) + " triangles in total");
+    return tris;
+}
+}  // namespace
 
-    std::vector<glm::vec3> normals;
-    const auto nrmIt = p.attributes.find("NORMAL");
-    if (nrmIt != p.attributes.end()) {
-        // FLOAT, or normalized BYTE or SHORT (KHR_mesh_quantization).
-        const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
-                             {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
-        if (nv.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !nv.normalized)
-            fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")", "integer normals must be normalized");
-        if (nv.count != pos.count)
-            fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
-                 "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(pos.count));
-        normals = readVec3(nv);
-        for (std::size_t i = 0; i < normals.size(); ++i) {
-            glm::vec3& n = normals[i];
-            if (!isFinite(n))
-                fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
-                     "normal " + std::to_string(i) + " is not finite");
-            n = safeNormalize(n);
-        }
-    } else {
-        angleWeightedNormals(positions, tris, normals);
-        info_.generatedNormals += normals.size();
+// The order: read, check and triangulate the primitive; bake its vertices into *out_; then its
+// colour inputs, its indices and its part.
+void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where,
+                              const std::vector<glm::mat4>& instances) {
+    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        static const char* kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+        info_.warnings.push_back(where + ": " + (mode >= 0 && mode < 4 ? kNames[mode] : "unknown-mode") +
+                                 " primitive skipped (only triangles are shaded)");
+        return;
     }
+    const auto posIt = p.attributes.find("POSITION");
+    // The validator only warns about this, but a triangle primitive without positions cannot be drawn,
+    // and its indices (if any) point at nothing: refuse the file rather than guess.
+    if (posIt == p.attributes.end()) fail(where, "has no POSITION attribute");
+    std::vector<glm::vec3> positions = readPositions(posIt->second, where);
+    std::vector<std::uint32_t> tris = triangles(p, mode, positions.size(), where);
+    std::vector<glm::vec3> normals = readNormals(p, positions, tris, where);
 
     // C where it varies over the surface: the base colour texture's coordinates and COLOR_0.
     const std::size_t vertexCount = positions.size();
@@ -591,72 +572,155 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     const int textureSlot = uvs.empty() ? -1 : texture.slot;
     const std::vector<glm::vec3> colors = vertexColors(p, vertexCount, where);
 
-    // Bake the node transform. A mirroring transform (negative determinant) turns counter-clockwise
-    // triangles clockwise, so their winding is flipped back.
-    const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
-    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
     const auto base = std::uint32_t(out_->positions.size());
+    bakeVertices(std::move(positions), std::move(normals), world, posIt->second, where);
+    appendColorInputs(base, vertexCount, uvs, colors);
+    // A mirroring transform (negative determinant) turns counter-clockwise triangles clockwise, so
+    // their winding is flipped back.
+    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    const std::uint32_t firstIndex = appendIndices(std::move(tris), base, mirrored);
+    addPart(p.material, firstIndex, textureSlot, instances);
+    info_.primitives += 1;
+    info_.triangles += (out_->indices.size() - firstIndex) / 3;
+}
+
+// POSITION: FLOAT, or any 8- or 16-bit integer type (KHR_mesh_quantization; the node transform dequantizes).
+std::vector<glm::vec3> GltfReader::readPositions(int accessor, const std::string& where) const {
+    const View pos = view(accessor, where + " POSITION", {TINYGLTF_TYPE_VEC3},
+                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    std::vector<glm::vec3> positions = readVec3(pos);
+    for (std::size_t i = 0; i < pos.count; ++i) {
+        if (!isFinite(positions[i]))
+            fail(where + " POSITION (accessor " + std::to_string(accessor) + ")", "vertex " + std::to_string(i) + " is not finite");
+    }
+    return positions;
+}
+
+// The primitive's triangles as a list (its indices, or its vertices in order), within kMaxTriangles.
+std::vector<std::uint32_t> GltfReader::triangles(const tinygltf::Primitive& p, int mode, std::size_t vertexCount,
+                                                 const std::string& where) const {
+    std::vector<std::uint32_t> order;
+    if (p.indices >= 0) {
+        order = indices(p.indices, vertexCount, where);
+    } else {
+        order.resize(vertexCount);
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
+    }
+    std::vector<std::uint32_t> tris = triangleList(mode, std::move(order));
+    if (info_.triangles + tris.size() / 3 > kMaxTriangles)
+        fail(where, "more than " + std::to_string(kMaxTriangles) + " triangles in total");
+    return tris;
+}
+
+// NORMAL (FLOAT, or normalized BYTE or SHORT: KHR_mesh_quantization), normalised; generated from the
+// triangles (angleWeightedNormals) when the primitive has none.
+std::vector<glm::vec3> GltfReader::readNormals(const tinygltf::Primitive& p, const std::vector<glm::vec3>& positions,
+                                               const std::vector<std::uint32_t>& tris, const std::string& where) {
+    std::vector<glm::vec3> normals;
+    const auto nrmIt = p.attributes.find("NORMAL");
+    if (nrmIt == p.attributes.end()) {
+        angleWeightedNormals(positions, tris, normals);
+        info_.generatedNormals += normals.size();
+        return normals;
+    }
+    const std::string name = where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")";
+    const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
+                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
+    if (nv.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !nv.normalized) fail(name, "integer normals must be normalized");
+    if (nv.count != positions.size())
+        fail(name, "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(positions.size()));
+    normals = readVec3(nv);
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+        glm::vec3& n = normals[i];
+        if (!isFinite(n)) fail(name, "normal " + std::to_string(i) + " is not finite");
+        n = safeNormalize(n);
+    }
+    return normals;
+}
+
+// Appends the vertices to *out_ baked with the node transform `world` (normals with its inverse
+// transpose); the first untransformed primitive's arrays are taken as they are.
+void GltfReader::bakeVertices(std::vector<glm::vec3>&& positions, std::vector<glm::vec3>&& normals,
+                              const glm::mat4& world, int positionAccessor, const std::string& where) {
     if (world == glm::mat4(1.0f) && out_->positions.empty()) {
         // One untransformed primitive (most models): take the arrays as they are.
         out_->positions = std::move(positions);
         out_->normals = std::move(normals);
-    } else {
-        // Room for this primitive, growing geometrically: an exact reserve per primitive copied the
-        // whole mesh every time (quadratic in the number of node instances).
-        const std::size_t needed = out_->positions.size() + positions.size();
-        // Every instance is baked: the vertices the file asks for, not its size, set the memory.
-        if (needed > kMaxBakedVertices)
-            fail(where, "the scene bakes to more than " + std::to_string(kMaxBakedVertices) + " vertices");
-        if (needed > out_->positions.capacity()) {
-            out_->positions.reserve(std::max(needed, 2 * out_->positions.capacity()));
-            out_->normals.reserve(std::max(needed, 2 * out_->normals.capacity()));
-        }
-        for (std::size_t i = 0; i < positions.size(); ++i) {
-            const glm::vec3 baked = glm::vec3(world * glm::vec4(positions[i], 1.0f));
-            // Finite positions times a finite matrix can still overflow.
-            if (!isFinite(baked))
-                fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
-                     "vertex " + std::to_string(i) + " is not finite after node " + std::to_string(currentNode_) +
-                         "'s transform");
-            out_->positions.push_back(baked);
-            const glm::vec3 n = nrmWorld * normals[i];
-            out_->normals.push_back(safeNormalize(n));
-        }
+        return;
     }
-    if (!uvs.empty() || !colors.empty() || out_->variesColor()) {
-        // Defaults for the vertices before (the first primitive that varies) and for this one where
-        // it has no texture or no COLOR_0: coordinates 0 (an untextured part samples no texture) and white.
-        if (!out_->variesColor()) {
-            out_->texcoords.assign(base, glm::vec2(0.0f));
-            out_->colors.assign(base, glm::vec3(1.0f));
-        }
-        out_->texcoords.reserve(out_->positions.capacity());
-        out_->colors.reserve(out_->positions.capacity());
-        if (uvs.empty()) out_->texcoords.resize(base + vertexCount, glm::vec2(0.0f));
-        else out_->texcoords.insert(out_->texcoords.end(), uvs.begin(), uvs.end());
-        if (colors.empty()) out_->colors.resize(base + vertexCount, glm::vec3(1.0f));
-        else out_->colors.insert(out_->colors.end(), colors.begin(), colors.end());
+    // Room for this primitive, growing geometrically: an exact reserve per primitive copied the
+    // whole mesh every time (quadratic in the number of node instances).
+    const std::size_t needed = out_->positions.size() + positions.size();
+    // Every instance is baked: the vertices the file asks for, not its size, set the memory.
+    if (needed > kMaxBakedVertices)
+        fail(where, "the scene bakes to more than " + std::to_string(kMaxBakedVertices) + " vertices");
+    if (needed > out_->positions.capacity()) {
+        out_->positions.reserve(std::max(needed, 2 * out_->positions.capacity()));
+        out_->normals.reserve(std::max(needed, 2 * out_->normals.capacity()));
     }
+    const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const glm::vec3 baked = glm::vec3(world * glm::vec4(positions[i], 1.0f));
+        // Finite positions times a finite matrix can still overflow.
+        if (!isFinite(baked))
+            fail(where + " POSITION (accessor " + std::to_string(positionAccessor) + ")",
+                 "vertex " + std::to_string(i) + " is not finite after node " + std::to_string(currentNode_) +
+                     "'s transform");
+        out_->positions.push_back(baked);
+        const glm::vec3 n = nrmWorld * normals[i];
+        out_->normals.push_back(safeNormalize(n));
+    }
+}
+
+// The texture coordinates and vertex colours of the `count` vertices from `base` on, once any
+// primitive has them.
+void GltfReader::appendColorInputs(std::uint32_t base, std::size_t count, const std::vector<glm::vec2>& uvs,
+                                   const std::vector<glm::vec3>& colors) {
+    if (uvs.empty() && colors.empty() && !out_->variesColor()) return;
+    // Defaults for the vertices before (the first primitive that varies) and for this one where
+    // it has no texture or no COLOR_0: coordinates 0 (an untextured part samples no texture) and white.
+    if (!out_->variesColor()) {
+        out_->texcoords.assign(base, glm::vec2(0.0f));
+        out_->colors.assign(base, glm::vec3(1.0f));
+    }
+    out_->texcoords.reserve(out_->positions.capacity());
+    out_->colors.reserve(out_->positions.capacity());
+    if (uvs.empty()) out_->texcoords.resize(base + count, glm::vec2(0.0f));
+    else out_->texcoords.insert(out_->texcoords.end(), uvs.begin(), uvs.end());
+    if (colors.empty()) out_->colors.resize(base + count, glm::vec3(1.0f));
+    else out_->colors.insert(out_->colors.end(), colors.begin(), colors.end());
+}
+
+// Appends the triangles to *out_'s indices, offset by the vertices before them (`base`) and flipped
+// when `mirrored`; returns where they start.
+std::uint32_t GltfReader::appendIndices(std::vector<std::uint32_t>&& tris, std::uint32_t base, bool mirrored) {
     const auto firstIndex = std::uint32_t(out_->indices.size());
     if (firstIndex == 0 && base == 0 && !mirrored) {
         out_->indices = std::move(tris);  // the first primitive, winding kept: its indices as they are
-    } else {
-        out_->indices.resize(firstIndex + tris.size());  // tris holds whole triangles
-        std::uint32_t* out = out_->indices.data() + firstIndex;
-        for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
-            out[0] = base + tris[t];
-            out[1] = base + tris[t + (mirrored ? 2 : 1)];
-            out[2] = base + tris[t + (mirrored ? 1 : 2)];
-        }
+        return firstIndex;
     }
-    // The primitive's base colour (glTF's default is white); consecutive primitives of one colour
-    // share a part, so a many-primitive model does not cost a draw call per primitive.
+    out_->indices.resize(firstIndex + tris.size());  // tris holds whole triangles
+    std::uint32_t* out = out_->indices.data() + firstIndex;
+    for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
+        out[0] = base + tris[t];
+        out[1] = base + tris[t + (mirrored ? 2 : 1)];
+        out[2] = base + tris[t + (mirrored ? 1 : 2)];
+    }
+    return firstIndex;
+}
+
+// The part of the indices from `firstIndex` on, with the material's base colour (glTF's default is
+// white); consecutive primitives of one colour share a part, so a many-primitive model does not cost
+// a draw call per primitive.
+void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot,
+                         const std::vector<glm::mat4>& instances) {
     MeshPart part;
     part.firstIndex = firstIndex;
     part.indexCount = std::uint32_t(out_->indices.size()) - firstIndex;
     part.hasBaseColor = true;
-    if (p.material >= 0 && std::size_t(p.material) < model_.materials.size()) {
-        const auto& f = model_.materials[std::size_t(p.material)].pbrMetallicRoughness.baseColorFactor;
+    if (materialIndex >= 0 && std::size_t(materialIndex) < model_.materials.size()) {
+        const auto& f = model_.materials[std::size_t(materialIndex)].pbrMetallicRoughness.baseColorFactor;
         if (f.size() >= 3)
             part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
     }
@@ -668,8 +732,6 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         out_->parts.back().indexCount += part.indexCount;
     else if (part.indexCount > 0)
         out_->parts.push_back(part);
-    info_.primitives += 1;
-    info_.triangles += (out_->indices.size() - firstIndex) / 3;
 }
 
 // A glTF camera looks down its node's -Z with +Y up (glTF 2.0, 3.10.1); only the first node using it counts.
