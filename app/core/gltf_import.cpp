@@ -4,6 +4,7 @@
 #include "core/file_io.hpp"
 #include "core/gltf_extensions.hpp"
 #include "core/json_depth.hpp"
+#include "core/scene_names.hpp"
 #include "platform/platform.hpp"
 
 #include <nlohmann/json.hpp>
@@ -775,10 +776,9 @@ void GltfReader::addLight(const tinygltf::Node& n, int ni, const glm::mat4& worl
     GltfLight out;
     out.name = src.name.empty() ? name : src.name;
     Light& l = out.light;
-    if (src.type == "point") l.type = LightType::Point;
-    else if (src.type == "directional") l.type = LightType::Directional;
-    else if (src.type == "spot") l.type = LightType::Spot;
-    else fail(name, "type \"" + src.type + "\" is not point, directional or spot");
+    const std::optional<LightType> type = valueNamed(kPunctualLightTypeNames, src.type);
+    if (!type) fail(name, "type \"" + src.type + "\" is not " + namesList(kPunctualLightTypeNames, ", ", " or "));
+    l.type = *type;
     if (!std::isfinite(src.intensity) || src.intensity < 0.0) fail(name, "intensity must be a finite number >= 0");
     l.intensity = float(src.intensity);
     if (src.color.size() >= 3) {
