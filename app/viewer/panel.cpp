@@ -4,6 +4,7 @@
 #include "core/controls.hpp"
 #include "core/panel_sections.hpp"
 #include "core/scene_names.hpp"
+#include "core/view_names.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -298,14 +299,15 @@ void sectionShadows(ShadowSettings& s) {
 }
 
 void sectionOverlays(ViewSettings& s) {
-    ImGui::Checkbox("wireframe (W)", &s.overlays.wireframe);
-    ImGui::Checkbox("vertex normals (N)", &s.overlays.vertexNormals);
+    const auto overlay = [&s](Overlay o) { ImGui::Checkbox(nameOf(kOverlayLabels, o), &s.overlays.shown(o)); };
+    overlay(Overlay::Wireframe);
+    overlay(Overlay::VertexNormals);
     ImGui::SameLine();
-    ImGui::Checkbox("face normals (Shift+N)", &s.overlays.faceNormals);
+    overlay(Overlay::FaceNormals);
     ImGui::SliderFloat("normal length", &s.overlays.normalScale, 0.02f, 0.5f, "%.2f x radius");
     ImGui::Checkbox("light labels (L)", &s.lightLabels);
     ImGui::SameLine();
-    ImGui::Checkbox("3D light crosses", &s.overlays.lightMarkers);
+    overlay(Overlay::LightMarkers);
     ImGui::Checkbox("pane labels", &s.paneLabels);
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);
@@ -316,11 +318,19 @@ void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
     float scale = status.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, kUiScaleRange.lo, kUiScaleRange.hi, "%.2f x  (Ctrl+= / Ctrl+-)"))
         requests.uiScale = std::clamp(scale, kUiScaleRange.lo, kUiScaleRange.hi);
-    // Anti-aliasing of the 3D view (on a software renderer only the still view is drawn with it).
-    static const char* const kMsaa[] = {"off", "2x", "4x", "8x"};
-    static const int kSamples[] = {1, 2, 4, 8};
-    int choice = status.msaa >= 8 ? 3 : status.msaa >= 4 ? 2 : status.msaa >= 2 ? 1 : 0;
-    if (ImGui::Combo("anti-aliasing", &choice, kMsaa, 4)) requests.msaa = kSamples[choice];
+    // Anti-aliasing of the 3D view (on a software renderer only the still view is drawn with it): --msaa's
+    // sample counts from 1 on, the largest not above what the driver gave shown as chosen.
+    std::vector<int> samples;
+    std::vector<std::string> labels;
+    for (const auto& n : kMsaaNames)
+        if (n.second >= 1) samples.push_back(n.second), labels.push_back(msaaLabel(n.second));
+    std::vector<const char*> items;
+    int choice = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        items.push_back(labels[i].c_str());
+        if (status.msaa >= samples[i]) choice = int(i);
+    }
+    if (ImGui::Combo("anti-aliasing", &choice, items.data(), int(items.size()))) requests.msaa = samples[std::size_t(choice)];
     requests.toggleFullscreen |= ImGui::Button("fullscreen (F11)");
     if (!status.trueTypeFont) ImGui::TextWrapped("DejaVu Sans not found (Debian: fonts-dejavu-core): bitmap font");
 }
