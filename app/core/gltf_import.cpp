@@ -800,7 +800,7 @@ void GltfReader::addLight(const tinygltf::Node& n, int ni, const glm::mat4& worl
         const double inner = src.spot.innerConeAngle, outer = src.spot.outerConeAngle;
         if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || outer <= inner || outer > 1.5707963268 + 1e-6)
             fail(name, "spot cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2");
-        l.outerConeDeg = std::clamp(float(glm::degrees(outer)), 0.01f, kSpotConeDegRange.hi);
+        l.outerConeDeg = std::clamp(float(glm::degrees(outer)), float(kSpotOuterConeDegRange.lo), kSpotConeDegRange.hi);
         l.innerConeDeg = std::clamp(float(glm::degrees(inner)), 0.0f, std::max(l.outerConeDeg - 0.01f, 0.0f));
     }
     info_.lights.push_back(std::move(out));

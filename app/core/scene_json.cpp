@@ -165,27 +165,27 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
         requireObject(j, path, {"type", "slices", "stacks", "radius"});
         integer(j, "slices", path, m.slices, kUvSphereSlicesRange.lo, kUvSphereSlicesRange.hi);
         integer(j, "stacks", path, m.stacks, kUvSphereStacksRange.lo, kUvSphereStacksRange.hi);
-        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        number(j, "radius", path, m.radius, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::IcoSphere:
         requireObject(j, path, {"type", "subdivisions", "radius"});
         integer(j, "subdivisions", path, m.subdivisions, kIcoSphereSubdivisionsRange.lo, kIcoSphereSubdivisionsRange.hi);
-        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        number(j, "radius", path, m.radius, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::Torus:
         requireObject(j, path, {"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
-        number(j, "major_radius", path, m.majorRadius, 1e-4, 1e6);
-        number(j, "minor_radius", path, m.minorRadius, 1e-4, 1e6);
+        number(j, "major_radius", path, m.majorRadius, kSizeRange.lo, kSizeRange.hi);
+        number(j, "minor_radius", path, m.minorRadius, kSizeRange.lo, kSizeRange.hi);
         integer(j, "major_segments", path, m.majorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
         integer(j, "minor_segments", path, m.minorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
         break;
     case MeshSpec::Type::Cube:
         requireObject(j, path, {"type", "size"});
-        number(j, "size", path, m.size, 1e-4, 1e6);
+        number(j, "size", path, m.size, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::Plane:
         requireObject(j, path, {"type", "size", "subdivisions"});
-        number(j, "size", path, m.size, 1e-4, 1e6);
+        number(j, "size", path, m.size, kSizeRange.lo, kSizeRange.hi);
         integer(j, "subdivisions", path, m.planeSubdivisions, kPlaneSubdivisionsRange.lo, kPlaneSubdivisionsRange.hi);
         break;
     case MeshSpec::Type::Gltf: {
@@ -218,9 +218,9 @@ Material SceneReader::material(const json& j, const std::string& path) const {
 Transform SceneReader::transform(const json& j, const std::string& path) const {
     Transform t;
     requireObject(j, path, {"translation", "rotation_deg", "scale"});
-    vec3(j, "translation", path, t.translation, -1e6, 1e6);
-    vec3(j, "rotation_deg", path, t.rotationDeg, -1e6, 1e6);
-    vec3(j, "scale", path, t.scale, -1e6, 1e6);
+    vec3(j, "translation", path, t.translation, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "rotation_deg", path, t.rotationDeg, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "scale", path, t.scale, kCoordinateRange.lo, kCoordinateRange.hi);
     for (int i = 0; i < 3; ++i)
         if (std::fabs(t.scale[i]) < 1e-6f) fail(join(path, "scale"), "components must not be 0");
     return t;
@@ -233,31 +233,31 @@ Light SceneReader::light(const json& j, const std::string& path) const {
     switch (l.type) {
     case LightType::Point:
         requireObject(j, path, {"type", "position", "color", "intensity", "attenuation", "range"});
-        vec3(j, "position", path, l.position, -1e6, 1e6);
+        vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
         break;
     case LightType::Directional:
         requireObject(j, path, {"type", "direction", "color", "intensity"});
-        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        vec3(j, "direction", path, l.direction, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.direction, join(path, "direction"));
         break;
     case LightType::Area:
         requireObject(j, path, {"type", "position", "normal", "size", "samples", "color", "intensity", "two_sided",
                                 "attenuation", "range"});
-        vec3(j, "position", path, l.position, -1e6, 1e6);
-        vec3(j, "normal", path, l.normal, -1e6, 1e6);
+        vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
+        vec3(j, "normal", path, l.normal, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.normal, join(path, "normal"));
-        vec2(j, "size", path, l.size, 1e-4, 1e6);
+        vec2(j, "size", path, l.size, kSizeRange.lo, kSizeRange.hi);
         ivec2(j, "samples", path, l.samples, 1, kAreaSamplesPerSideRange.hi);
         boolean(j, "two_sided", path, l.twoSided);
         break;
     case LightType::Spot:
         requireObject(j, path, {"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "color", "intensity",
                                 "attenuation", "range"});
-        vec3(j, "position", path, l.position, -1e6, 1e6);
-        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
+        vec3(j, "direction", path, l.direction, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.direction, join(path, "direction"));
-        number(j, "outer_cone_deg", path, l.outerConeDeg, 0.01, kSpotConeDegRange.hi);
-        number(j, "inner_cone_deg", path, l.innerConeDeg, 0.0, kSpotConeDegRange.hi);
+        number(j, "outer_cone_deg", path, l.outerConeDeg, kSpotOuterConeDegRange.lo, kSpotOuterConeDegRange.hi);
+        number(j, "inner_cone_deg", path, l.innerConeDeg, kSpotConeDegRange.lo, kSpotConeDegRange.hi);
         if (!j.contains("inner_cone_deg")) l.innerConeDeg = 0.5f * l.outerConeDeg;
         if (l.innerConeDeg >= l.outerConeDeg)
             fail(join(path, "inner_cone_deg"), "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
@@ -265,20 +265,20 @@ Light SceneReader::light(const json& j, const std::string& path) const {
     }
     if (l.type != LightType::Directional) {
         choice(j, "attenuation", path, l.attenuation, kAttenuationNames);
-        number(j, "range", path, l.range, 1e-4, 1e9);
+        number(j, "range", path, l.range, kLightRangeRange.lo, kLightRangeRange.hi);
         if (j.contains("range") && l.attenuation != Attenuation::InverseSquare)
             fail(join(path, "range"), "a range needs \"attenuation\": \"inverse-square\"");
     }
     vec3(j, "color", path, l.color, 0.0, 1.0);
-    number(j, "intensity", path, l.intensity, 0.0, 1e9);
+    number(j, "intensity", path, l.intensity, kIntensityRange.lo, kIntensityRange.hi);
     return l;
 }
 
 ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& path) const {
     ShadowSettings s;
     requireObject(j, path, {"normal_bias", "depth_bias", "pcf", "map_size", "area_map_size"});
-    number(j, "normal_bias", path, s.normalBias, 0.0, 100.0);
-    number(j, "depth_bias", path, s.depthBias, 0.0, 100.0);
+    number(j, "normal_bias", path, s.normalBias, kShadowBiasRange.lo, kShadowBiasRange.hi);
+    number(j, "depth_bias", path, s.depthBias, kShadowBiasRange.lo, kShadowBiasRange.hi);
     integer(j, "pcf", path, s.pcf, 0, kPcfRadiusRange.hi);
     integer(j, "map_size", path, s.mapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
     integer(j, "area_map_size", path, s.areaMapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
@@ -288,10 +288,10 @@ ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& pat
 Camera SceneReader::camera(const json& j, const std::string& path) const {
     Camera c;
     requireObject(j, path, {"eye", "target", "up", "fov_y_deg", "near", "far"});
-    vec3(j, "eye", path, c.eye, -1e6, 1e6);
-    vec3(j, "target", path, c.target, -1e6, 1e6);
-    vec3(j, "up", path, c.up, -1e6, 1e6);
-    number(j, "fov_y_deg", path, c.fovYDeg, 1.0, 179.0);
+    vec3(j, "eye", path, c.eye, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "target", path, c.target, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "up", path, c.up, kCoordinateRange.lo, kCoordinateRange.hi);
+    number(j, "fov_y_deg", path, c.fovYDeg, kFovYDegRange.lo, kFovYDegRange.hi);
     number(j, "near", path, c.nearPlane, 1e-6, 1e6);
     number(j, "far", path, c.farPlane, 1e-6, 1e7);
     if (c.farPlane <= c.nearPlane) fail(join(path, "far"), "must be greater than near");
@@ -694,7 +694,7 @@ private:
     }
     // A direction or normal: not (nearly) zero.
     glm::vec3 nonZeroVec3Of(const std::string& key, const std::string& v) const {
-        const glm::vec3 d = vec3Of(key, v, -1e6, 1e6);
+        const glm::vec3 d = vec3Of(key, v, kCoordinateRange.lo, kCoordinateRange.hi);
         if (glm::length(d) < 1e-6f) fail(key + ": must not be a zero-length vector");
         return d;
     }
@@ -705,7 +705,7 @@ private:
         if (!lightType)
             fail("unknown light type \"" + quoteInput(type) + "\" (expected " + namesList(kLightTypeNames, ", ", " or ") + ")");
         l_.type = *lightType;
-        const glm::vec3 where = vec3Of(type, xyz, -1e6, 1e6);
+        const glm::vec3 where = vec3Of(type, xyz, kCoordinateRange.lo, kCoordinateRange.hi);
         if (l_.type == LightType::Directional) {
             if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
             l_.direction = where;
@@ -724,7 +724,7 @@ private:
         }
         if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + quoteInput(kv) + "\"");
         if (key == "color") l_.color = vec3Of(key, value, 0.0, 1.0);
-        else if (key == "intensity") l_.intensity = number(key, value, 0.0, 1e9);
+        else if (key == "intensity") l_.intensity = number(key, value, kIntensityRange.lo, kIntensityRange.hi);
         else if (!readAttenuationKey(key, value) && !readAreaKey(key, value) && !readSpotKey(key, value))
             fail("unknown key \"" + quoteInput(key) + "\" for a " + parts_[0] + " light (" + keysOfType() + ")");
     }
@@ -738,7 +738,7 @@ private:
                      namesList(kAttenuationNames, ", ", " or ") + ")");
             l_.attenuation = *a;
         } else if (key == "range") {
-            l_.range = number(key, value, 1e-4, 1e9);
+            l_.range = number(key, value, kLightRangeRange.lo, kLightRangeRange.hi);
             rangeGiven_ = true;
         } else {
             return false;
@@ -750,7 +750,7 @@ private:
         if (key == "normal") {
             l_.normal = nonZeroVec3Of(key, value);
         } else if (key == "size") {
-            const std::vector<float> wh = numbers(key, value, 2, ',', 1e-4, 1e6);
+            const std::vector<float> wh = numbers(key, value, 2, ',', kSizeRange.lo, kSizeRange.hi);
             l_.size = {wh[0], wh[1]};
         } else if (key == "samples") {
             const std::vector<float> n = numbers(key, value, 2, 'x', 1, kAreaSamplesPerSideRange.hi);
@@ -766,9 +766,9 @@ private:
         if (key == "direction") {
             l_.direction = nonZeroVec3Of(key, value);
         } else if (key == "outer") {
-            l_.outerConeDeg = number(key, value, 0.01, kSpotConeDegRange.hi);
+            l_.outerConeDeg = number(key, value, kSpotOuterConeDegRange.lo, kSpotOuterConeDegRange.hi);
         } else if (key == "inner") {
-            l_.innerConeDeg = number(key, value, 0.0, kSpotConeDegRange.hi);
+            l_.innerConeDeg = number(key, value, kSpotConeDegRange.lo, kSpotConeDegRange.hi);
             innerGiven_ = true;
         } else {
             return false;

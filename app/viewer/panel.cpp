@@ -36,7 +36,7 @@ bool colorEdit(const char* label, glm::vec3& color) {
 
 bool coefficient(const char* label, float& value, float sliderMax) {
     if (!ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f")) return false;
-    value = std::clamp(value, 0.0f, 1000.0f);
+    value = std::clamp(value, kCoefficientRange.lo, kCoefficientRange.hi);
     return true;
 }
 
@@ -69,10 +69,15 @@ bool combo(const char* label, E& value, const EnumName<E> (&names)[N]) {
     return true;
 }
 
+// A position, direction or angle triple, within the range scene files allow.
+bool dragCoordinates(const char* label, glm::vec3& v, float speed, const char* format) {
+    return ImGui::DragFloat3(label, &v.x, speed, float(kCoordinateRange.lo), float(kCoordinateRange.hi), format);
+}
+
 // A vector edit that must not become (nearly) zero: light directions, scales.
 bool dragNonZero(const char* label, glm::vec3& v, float speed, bool perComponent) {
     glm::vec3 edited = v;
-    if (!ImGui::DragFloat3(label, &edited.x, speed, -1e6f, 1e6f, "%.3f")) return false;
+    if (!dragCoordinates(label, edited, speed, "%.3f")) return false;
     const bool zero = perComponent ? glm::any(glm::lessThan(glm::abs(edited), glm::vec3(1e-3f)))
                                    : glm::length(edited) < 1e-3f;
     if (zero) return false;
@@ -166,12 +171,17 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
 }
 
 void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& textures) {
-    // Procedural shapes, plus the glTF model the object was loaded with (its path is kept when the
-    // lecturer switches to a sphere, so they can switch back).
-    const char* names[] = {"uvsphere", "icosphere", "torus", "cube", "plane", "glTF model"};
-    const int count = m.path.empty() ? 5 : 6;
-    int type = int(m.type);
-    if (ImGui::Combo("mesh", &type, names, count)) m.type = MeshSpec::Type(type);
+    // Procedural shapes by their scene-file names, plus the glTF model the object was loaded with (its
+    // path is kept when the lecturer switches to a sphere, so they can switch back): the last name.
+    static_assert(std::end(kMeshTypeNames)[-1].second == MeshSpec::Type::Gltf, "the glTF model comes last");
+    const char* names[std::size(kMeshTypeNames)];
+    int type = 0;
+    for (std::size_t i = 0; i < std::size(kMeshTypeNames); ++i) {
+        names[i] = kMeshTypeNames[i].second == MeshSpec::Type::Gltf ? "glTF model" : kMeshTypeNames[i].first;
+        if (kMeshTypeNames[i].second == m.type) type = int(i);
+    }
+    const int count = int(std::size(kMeshTypeNames)) - (m.path.empty() ? 1 : 0);
+    if (ImGui::Combo("mesh", &type, names, count)) m.type = kMeshTypeNames[std::size_t(type)].second;
     const float r = 1e-3f, big = 1e3f;
     switch (m.type) {
     case MeshSpec::Type::UvSphere:
@@ -205,8 +215,8 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
     }
     ImGui::Text("%zu triangles", triangles);
     if (ImGui::TreeNode("transform")) {
-        ImGui::DragFloat3("translation", &t.translation.x, 0.01f, -1e6f, 1e6f, "%.3f");
-        ImGui::DragFloat3("rotation (deg)", &t.rotationDeg.x, 0.5f, -1e6f, 1e6f, "%.1f");
+        dragCoordinates("translation", t.translation, 0.01f, "%.3f");
+        dragCoordinates("rotation (deg)", t.rotationDeg, 0.5f, "%.1f");
         dragNonZero("scale", t.scale, 0.01f, true);
         ImGui::TreePop();
     }
@@ -232,12 +242,11 @@ void sectionLights(Scene& scene, int& selected) {
             if (l.type == LightType::Directional)
                 dragNonZero("direction", l.direction, 0.02f, false);
             else
-                ImGui::DragFloat3(l.type == LightType::Area ? "centre" : "position", &l.position.x, 0.05f, -1e6f,
-                                  1e6f, "%.2f");
+                dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
             if (l.type == LightType::Area) {
                 dragNonZero("normal", l.normal, 0.02f, false);
                 ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-                l.size = glm::max(l.size, glm::vec2(1e-4f));
+                l.size = glm::max(l.size, glm::vec2(float(kSizeRange.lo)));
                 // Sample counts are a specialisation constant: changing them recompiles (once per count).
                 ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kAreaSamplesPerSideRange.hi);
                 l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kAreaSamplesPerSideRange.hi));
@@ -259,7 +268,7 @@ void sectionLights(Scene& scene, int& selected) {
                     // 0 = no window; otherwise the light fades smoothly to zero at this distance.
                     ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f",
                                      ImGuiSliderFlags_AlwaysClamp);
-                    if (l.range > 0.0f && l.range < 1e-4f) l.range = 1e-4f;
+                    if (l.range > 0.0f && l.range < float(kLightRangeRange.lo)) l.range = float(kLightRangeRange.lo);
                 }
             }
             if (ImGui::Button("remove light")) remove = int(i);
@@ -282,14 +291,16 @@ void sectionShadows(ShadowSettings& s) {
     ImGui::BeginDisabled(!s.enabled);
     ImGui::SliderFloat("normal bias (texels)", &s.normalBias, 0.0f, 8.0f, "%.2f");
     ImGui::SliderFloat("depth bias (slope)", &s.depthBias, 0.0f, 8.0f, "%.2f");
-    s.normalBias = std::clamp(s.normalBias, 0.0f, 100.0f);
-    s.depthBias = std::clamp(s.depthBias, 0.0f, 100.0f);
+    s.normalBias = std::clamp(s.normalBias, float(kShadowBiasRange.lo), float(kShadowBiasRange.hi));
+    s.depthBias = std::clamp(s.depthBias, float(kShadowBiasRange.lo), float(kShadowBiasRange.hi));
     ImGui::SliderInt("PCF radius", &s.pcf, 0, kPcfRadiusRange.hi);
     s.pcf = std::clamp(s.pcf, 0, kPcfRadiusRange.hi);
-    // Powers of two from 64 to 4096, as an exponent slider.
+    // Powers of two over kShadowMapSizeRange (64 to 4096), as an exponent slider.
     auto sizeSlider = [](const char* label, int& size) {
-        int exponent = int(std::lround(std::log2(double(std::max(size, kShadowMapSizeRange.lo)))));
-        if (ImGui::SliderInt(label, &exponent, 6, 12, "")) size = 1 << std::clamp(exponent, 6, 12);
+        const auto log2 = [](int v) { return int(std::lround(std::log2(double(v)))); };
+        const int lo = log2(kShadowMapSizeRange.lo), hi = log2(kShadowMapSizeRange.hi);
+        int exponent = log2(std::max(size, kShadowMapSizeRange.lo));
+        if (ImGui::SliderInt(label, &exponent, lo, hi, "")) size = 1 << std::clamp(exponent, lo, hi);
         ImGui::SameLine();
         ImGui::Text("%d", size);
     };
@@ -352,10 +363,10 @@ void sectionCamera(Camera& c, int modelCamera, const PanelStatus& status, PanelR
     ImGui::SameLine();
     requests.frameModel |= ImGui::Button("frame model (F)");
     Camera edited = c;
-    bool changed = ImGui::DragFloat3("eye", &edited.eye.x, 0.02f, -1e6f, 1e6f, "%.2f");
-    changed |= ImGui::DragFloat3("target", &edited.target.x, 0.02f, -1e6f, 1e6f, "%.2f");
+    bool changed = dragCoordinates("eye", edited.eye, 0.02f, "%.2f");
+    changed |= dragCoordinates("target", edited.target, 0.02f, "%.2f");
     changed |= ImGui::SliderFloat("fov y (deg)", &edited.fovYDeg, 5.0f, 120.0f, "%.1f");
-    edited.fovYDeg = std::clamp(edited.fovYDeg, 1.0f, 179.0f);
+    edited.fovYDeg = std::clamp(edited.fovYDeg, kFovYDegRange.lo, kFovYDegRange.hi);
     if (changed && cameraValid(edited)) c = edited;
     // The viewer places them every frame around the model and the lights (zoom never slices it).
     ImGui::TextDisabled("near %.4g, far %.4g: follow the eye", double(c.nearPlane), double(c.farPlane));
