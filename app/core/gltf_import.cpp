@@ -527,7 +527,6 @@ std::vector<glm::vec3> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     return out;
 }
 
-namespace {
 // The triangles of a strip or a fan (or a list, its last partial triangle dropped) as a triangle list.
 std::vector<std::uint32_t> triangleList(int mode, std::vector<std::uint32_t> order) {
     std::vector<std::uint32_t> tris;
@@ -545,7 +544,6 @@ std::vector<std::uint32_t> triangleList(int mode, std::vector<std::uint32_t> ord
     }
     return tris;
 }
-}  // namespace
 
 // The order: read, check and triangulate the primitive; bake its vertices into *out_; then its
 // colour inputs, its indices and its part.
@@ -1169,51 +1167,57 @@ std::string prepareJson(std::string json, LoadContext& context, const std::strin
     return changed ? doc.dump() : json;
 }
 
+// tinygltf's file callbacks over a LoadContext: the .glb's BIN chunk and decoded data: URIs from
+// memory, other files only from inside the model's folder. FileExists answers "yes" for a path outside
+// the folder so that tinygltf goes on to read it and ReadWholeFile can refuse it with a message that
+// says why (rather than "file not found").
+bool modelFileExists(const std::string& p, void* user) {
+    const LoadContext& c = *static_cast<const LoadContext*>(user);
+    std::error_code ec;  // a symlink loop or an over-long name is "no such file", never an exception
+    return p == c.binPath || c.decoded.count(p) || !insideFolder(p, c.folder) || fs::is_regular_file(fs::path(p), ec);
+}
+
+bool readModelFile(std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
+    LoadContext& c = *static_cast<LoadContext*>(user);
+    if (const auto d = c.decoded.find(p); d != c.decoded.end()) {
+        out->swap(d->second);  // asked for once, by the buffer that names it
+        return true;
+    }
+    if (!c.binPath.empty() && p == c.binPath) {
+        out->resize(std::size_t(c.binLength));
+        (*c.read)(c.binOffset, out->size(), out->data());
+        return true;
+    }
+    if (!insideFolder(p, c.folder) || !insideFolderResolved(p, c.folder)) {
+        if (err) *err += "refused URI outside the model's folder: " + p;
+        return false;
+    }
+    std::error_code e;
+    const fs::path full(p);
+    const auto size = fs::file_size(full, e);
+    if (e || size > (std::uintmax_t(1) << 31)) {
+        if (err) *err += "cannot read " + p;
+        return false;
+    }
+    std::FILE* f = platform::openFile(full, "rb");
+    if (!f) {
+        if (err) *err += "cannot open " + p;
+        return false;
+    }
+    out->resize(size);
+    const bool ok = std::fread(out->data(), 1, size, f) == size;
+    std::fclose(f);
+    if (!ok && err) *err += "cannot read " + p;
+    return ok;
+}
+
 Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, GltfInfo* infoOut) {
     GltfInfo info;
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks fsc{};
-    // FileExists answers "yes" for a path outside the folder so that tinygltf goes on to read it and
-    // ReadWholeFile can refuse it with a message that says why (rather than "file not found").
-    fsc.FileExists = [](const std::string& p, void* user) {
-        const LoadContext& c = *static_cast<const LoadContext*>(user);
-        std::error_code ec;  // a symlink loop or an over-long name is "no such file", never an exception
-        return p == c.binPath || c.decoded.count(p) || !insideFolder(p, c.folder) || fs::is_regular_file(fs::path(p), ec);
-    };
+    fsc.FileExists = modelFileExists;
     fsc.ExpandFilePath = [](const std::string& p, void*) { return p; };
-    fsc.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
-        LoadContext& c = *static_cast<LoadContext*>(user);
-        if (const auto d = c.decoded.find(p); d != c.decoded.end()) {
-            out->swap(d->second);  // asked for once, by the buffer that names it
-            return true;
-        }
-        if (!c.binPath.empty() && p == c.binPath) {
-            out->resize(std::size_t(c.binLength));
-            (*c.read)(c.binOffset, out->size(), out->data());
-            return true;
-        }
-        if (!insideFolder(p, c.folder) || !insideFolderResolved(p, c.folder)) {
-            if (err) *err += "refused URI outside the model's folder: " + p;
-            return false;
-        }
-        std::error_code e;
-        const fs::path full(p);
-        const auto size = fs::file_size(full, e);
-        if (e || size > (std::uintmax_t(1) << 31)) {
-            if (err) *err += "cannot read " + p;
-            return false;
-        }
-        std::FILE* f = platform::openFile(full, "rb");
-        if (!f) {
-            if (err) *err += "cannot open " + p;
-            return false;
-        }
-        out->resize(size);
-        const bool ok = std::fread(out->data(), 1, size, f) == size;
-        std::fclose(f);
-        if (!ok && err) *err += "cannot read " + p;
-        return ok;
-    };
+    fsc.ReadWholeFile = readModelFile;
     fsc.WriteWholeFile = nullptr;
     fsc.user_data = &context;
     loader.SetFsCallbacks(fsc);
