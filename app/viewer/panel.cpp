@@ -695,21 +695,85 @@ int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float ra
     return best;
 }
 
+namespace {
+
+// How the light labels are drawn, and the part of a pane they keep inside (below the pane labels).
+struct LightLabelStyle {
+    ImDrawList* draw;
+    float font, thick, ring;  // text size, line width, marker radius
+};
+struct LightLabelArea {
+    ImVec2 lo, hi;
+    ImVec2 centre;
+};
+
+// A directional light: an arrow from `from` along the light's travel to `to`; its tail is the handle
+// that drags the direction, and the label sits beside it.
+UiRect drawDirectionArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 from, ImVec2 to,
+                          const std::string& label, ImU32 colour) {
+    s.draw->AddLine(from, to, colour, s.thick);
+    const ImVec2 d(to.x - from.x, to.y - from.y);
+    const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
+    const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
+    const float head = s.font * 0.7f;
+    s.draw->AddTriangleFilled(to, ImVec2(to.x - u.x * head + n.x * head * 0.5f, to.y - u.y * head + n.y * head * 0.5f),
+                              ImVec2(to.x - u.x * head - n.x * head * 0.5f, to.y - u.y * head - n.y * head * 0.5f), colour);
+    return labelBox(s.draw, s.font, ImVec2(from.x + s.ring * 0.5f, from.y - s.font * 1.4f), label, colour, a.lo, a.hi);
+}
+
+// A light in view: a ring and a dot at it, the label to its right.
+UiRect drawLightMarker(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, const std::string& label,
+                       ImU32 colour) {
+    s.draw->AddCircle(at, s.ring, colour, 24, s.thick);
+    s.draw->AddCircleFilled(at, s.thick, colour);
+    return labelBox(s.draw, s.font, ImVec2(at.x + s.ring * 1.4f, at.y - s.font * 0.5f), label, colour, a.lo, a.hi);
+}
+
+// A light outside the pane (or behind the eye, `behind`): an arrow at the border pointing toward `at`,
+// the label beside it along the border, on the side away from the pane's centre (where the model is):
+// toward the nearer corner.
+UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, bool behind,
+                       const std::string& label, ImU32 colour) {
+    ImVec2 d(at.x - a.centre.x, at.y - a.centre.y);
+    if (behind) d = ImVec2(-d.x, -d.y);
+    const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
+    const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
+    const float halfW = (a.hi.x - a.lo.x) * 0.5f - s.font * 0.5f, halfH = (a.hi.y - a.lo.y) * 0.5f - s.font * 0.5f;
+    const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
+                             std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
+    const ImVec2 tip(a.centre.x + u.x * t, a.centre.y + u.y * t);
+    const float head = s.font * 0.9f;
+    s.draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
+                              ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
+    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str());
+    const bool sideEdge = std::fabs(u.x) * halfH >= std::fabs(u.y) * halfW;  // left or right border
+    ImVec2 pos;
+    if (sideEdge) {
+        pos.x = u.x > 0.0f ? tip.x - head * 1.2f - size.x : tip.x + head * 1.2f;
+        pos.y = u.y < 0.0f ? tip.y - head * 0.6f - size.y : tip.y + head * 0.6f;
+    } else {
+        pos.x = u.x > 0.0f ? tip.x + head * 0.6f : tip.x - head * 0.6f - size.x;
+        pos.y = u.y > 0.0f ? tip.y - head * 1.2f - size.y : tip.y + head * 1.2f;
+    }
+    return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
+}
+
+}  // namespace
+
 std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
                                     float top) {
     std::vector<UiRect> boxes;
     if (scene.lights.empty()) return boxes;
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const float font = ImGui::GetFontSize();
-    const float thick = std::max(3.0f, font * 0.2f);  // 3 px at scale 1, thicker with the UI scale
-    const float ring = font * 0.6f;
+    // Lines 3 px at scale 1, thicker with the UI scale.
+    const LightLabelStyle style{ImGui::GetBackgroundDrawList(), font, std::max(3.0f, font * 0.2f), font * 0.6f};
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
         const float x0 = view.x + float(pane.x) / framebufferScale, paneTop = view.y + float(pane.y) / framebufferScale;
         const float x1 = x0 + float(pane.width) / framebufferScale, y1 = paneTop + float(pane.height) / framebufferScale;
         // Labels and border arrows stay below the pane labels (`top`).
         const float y0 = std::min(std::max(paneTop, top), y1);
-        draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
-        const ImVec2 centre((x0 + x1) * 0.5f, (y0 + y1) * 0.5f);
+        style.draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
+        const LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f)};
         // projectToImage gives image pixels of the whole view (the pane's offset included).
         auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -717,60 +781,21 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
             const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);
             const std::string label = std::to_string(i) + " " + toString(l.type);
             if (l.type == LightType::Directional) {
-                // An arrow along the light's travel toward the target (what it lights); its tail is
-                // the handle that drags the direction.
+                // Toward the target (what it lights), from the handle.
                 const glm::vec3 dir = glm::normalize(l.direction);
                 const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
                 const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
                 const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.4f));
-                if (a.z <= 0.0f || b.z <= 0.0f) continue;
-                const ImVec2 pa = toUi(a), pb = toUi(b);
-                draw->AddLine(pa, pb, colour, thick);
-                const ImVec2 d(pb.x - pa.x, pb.y - pa.y);
-                const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
-                const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
-                const float head = font * 0.7f;
-                draw->AddTriangleFilled(pb, ImVec2(pb.x - u.x * head + n.x * head * 0.5f, pb.y - u.y * head + n.y * head * 0.5f),
-                                        ImVec2(pb.x - u.x * head - n.x * head * 0.5f, pb.y - u.y * head - n.y * head * 0.5f), colour);
-                boxes.push_back(labelBox(draw, font, ImVec2(pa.x + ring * 0.5f, pa.y - font * 1.4f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
+                if (a.z > 0.0f && b.z > 0.0f) boxes.push_back(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));
                 continue;
             }
             const glm::vec3 p = projectToImage(scene.camera, pane, l.position);
             const ImVec2 at = toUi(p);
             const bool inside = p.z > 0.0f && at.x >= x0 && at.x <= x1 && at.y >= y0 && at.y <= y1;
-            if (inside) {
-                draw->AddCircle(at, ring, colour, 24, thick);
-                draw->AddCircleFilled(at, thick, colour);
-                boxes.push_back(labelBox(draw, font, ImVec2(at.x + ring * 1.4f, at.y - font * 0.5f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
-                continue;
-            }
-            // Outside the pane (or behind the eye): an arrow at the border, pointing toward it.
-            ImVec2 d(at.x - centre.x, at.y - centre.y);
-            if (p.z <= 0.0f) d = ImVec2(-d.x, -d.y);
-            const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
-            const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
-            const float halfW = (x1 - x0) * 0.5f - font * 0.5f, halfH = (y1 - y0) * 0.5f - font * 0.5f;
-            const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
-                                     std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
-            const ImVec2 tip(centre.x + u.x * t, centre.y + u.y * t);
-            const float head = font * 0.9f;
-            draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
-                                    ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
-            // The label beside the arrow along the border, on the side away from the pane's centre
-            // (where the model is): toward the nearer corner.
-            const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, label.c_str());
-            const bool sideEdge = std::fabs(u.x) * halfH >= std::fabs(u.y) * halfW;  // left or right border
-            ImVec2 pos;
-            if (sideEdge) {
-                pos.x = u.x > 0.0f ? tip.x - head * 1.2f - size.x : tip.x + head * 1.2f;
-                pos.y = u.y < 0.0f ? tip.y - head * 0.6f - size.y : tip.y + head * 0.6f;
-            } else {
-                pos.x = u.x > 0.0f ? tip.x + head * 0.6f : tip.x - head * 0.6f - size.x;
-                pos.y = u.y > 0.0f ? tip.y - head * 1.2f - size.y : tip.y + head * 1.2f;
-            }
-            boxes.push_back(labelBox(draw, font, pos, label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
+            boxes.push_back(inside ? drawLightMarker(style, area, at, label, colour)
+                                   : drawBorderArrow(style, area, at, p.z <= 0.0f, label, colour));
         }
-        draw->PopClipRect();
+        style.draw->PopClipRect();
     }
     return boxes;
 }
