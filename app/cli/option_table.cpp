@@ -8,6 +8,7 @@
 #include "core/figures/plot_image.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/scene/scene_names.hpp"
+#include "core/ui/view_names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +55,14 @@ E choice(const std::string& flag, const std::string& v, const EnumName<E> (&name
     throw InputError(flag + ": unknown value \"" + quoteInput(v) + "\" (expected one of " + namesList(names) + ")");
 }
 
-// A comma-separated list whose every item is one of `allowed`.
+// An entry's name in a list of names: the name itself, or an enum's (core/scene/scene_names.hpp).
+const char* entryName(const char* name) { return name; }
+template <typename E>
+const char* entryName(const EnumName<E>& name) {
+    return name.first;
+}
+
+// A comma-separated list whose every item is one of `allowed` (names, or an enum's names).
 // `what` and `expected` word the refusal: "unknown section \"x\" (expected some of a, b)".
 template <typename Allowed>
 std::vector<std::string> listOf(const std::string& flag, const std::string& v, const Allowed& allowed,
@@ -62,10 +70,10 @@ std::vector<std::string> listOf(const std::string& flag, const std::string& v, c
     std::vector<std::string> items;
     std::stringstream list(v);
     for (std::string item; std::getline(list, item, ',');) {
-        if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return item == a; }) ==
+        if (std::find_if(std::begin(allowed), std::end(allowed), [&](const auto& a) { return item == entryName(a); }) ==
             std::end(allowed)) {
             std::string names;
-            for (const char* a : allowed) names += std::string(names.empty() ? "" : ", ") + a;
+            for (const auto& a : allowed) names += std::string(names.empty() ? "" : ", ") + entryName(a);
             throw InputError(flag + ": unknown " + what + " \"" + quoteInput(item) + "\" (expected " + expected + " " +
                              names + ")");
         }
@@ -91,8 +99,6 @@ std::pair<std::string, std::string> pairOf(const std::string& flag, const std::s
 }
 
 const EnumName<int> kBackendNames[] = {{"auto", 0}, {"osmesa", 1}, {"egl", 2}};
-const EnumName<int> kMsaaNames[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}};
-const char* const kOverlayNames[] = {"wireframe", "vertex-normals", "face-normals", "lights"};
 
 std::string joined(const char* const* begin, const char* const* end, const char* separator) {
     std::string s;
@@ -310,10 +316,11 @@ const OptionSpec kOptions[] = {
     {"--hide-panel", "", "", G::Viewer, kNoBounds, nullptr, "", "start with the panel hidden (Tab shows it)",
      setTrue<&Options::hidePanel>},
     {"--overlays", "", "LIST", G::Viewer, kNoBounds,
-     [] { return joined(std::begin(kOverlayNames), std::end(kOverlayNames), ","); }, "",
+     [] { return namesList(kOverlayNames, ","); }, "",
      "start with these overlays on: {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) {
-         for (const std::string& name : listOf(self.name, v, kOverlayNames, "value", "one of")) o.overlays.push_back(name);
+         for (const std::string& name : listOf(self.name, v, kOverlayNames, "value", "one of"))
+             o.overlays.push_back(*valueNamed(kOverlayNames, name));
      }},
     {"--panel-sections", "", "LIST", G::Viewer, kNoBounds,
      [] { return joined(std::begin(kPanelSections), std::end(kPanelSections), ", "); }, "",

@@ -4,6 +4,7 @@
 #include "core/figures/plot.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/sweep.hpp"
+#include "core/ui/view_names.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -72,7 +73,7 @@ struct Options {
     std::optional<std::string> screenshotView;  // --screenshot-view FILE.png: the 3D view alone (as F12)
     std::optional<std::string> saveScene;   // --save-scene FILE.json: the scene as "save scene" writes it
     bool hidePanel = false;                 // --hide-panel: start with the panel hidden (as Tab)
-    std::vector<std::string> overlays;      // --overlays a,b: wireframe, vertex-normals, face-normals, lights
+    std::vector<Overlay> overlays;          // --overlays a,b: wireframe, vertex-normals, face-normals, lights
     std::optional<std::vector<std::string>> panelSections;  // --panel-sections a,b: open exactly these panel sections
     std::optional<int> selectLight;         // --select-light N: start with light N selected in the panel
     std::optional<float> uiScale;           // --ui-scale S (0.75..4): panel, captions, labels, HUD (x the monitor's scale)

@@ -21,12 +21,7 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
     viewer.saveScenePath = options.saveScene.value_or("");
     viewer.hidePanel = options.hidePanel;
     viewer.progressiveStride = options.progressiveStride;
-    for (const std::string& o : options.overlays) {
-        viewer.overlays.wireframe |= o == "wireframe";
-        viewer.overlays.vertexNormals |= o == "vertex-normals";
-        viewer.overlays.faceNormals |= o == "face-normals";
-        viewer.overlays.lightMarkers |= o == "lights";
-    }
+    for (Overlay o : options.overlays) viewer.overlays.shown(o) = true;
     viewer.plots = plotSettings(options);
     viewer.panelSections = options.panelSections;
     if (options.probe) viewer.probe = *options.probe;

@@ -98,93 +98,91 @@ void MeshCache::uploadAndRelease(const std::vector<ShadingMode>& modes, bool tex
     orderedMeshes_.clear();
 }
 
-const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mode) {
-    const bool flat = mode == ShadingMode::Flat;
-    GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
-    if (g.vao) return g;
-    if (!geometry_) throw std::logic_error("mesh cache: a shading mode that was not uploaded before the CPU geometry was released");
-    const Mesh* source = &drawnMesh(object);
-    if (options_.meshOrder == RendererOptions::MeshOrder::VertexCache) {
-        Mesh& ordered = orderedMeshes_[object];
-        if (ordered.indices.empty()) ordered = orderedForVertexCache(*source);
-        source = &ordered;
-    }
-    const Mesh& mesh = *source;
-    g.vao = gl::makeVertexArray();
-    g.indices = gl::makeBuffer();
-    glBindVertexArray(g.vao.get());
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.get());
-    // One interleaved buffer: a vertex's attributes side by side. llvmpipe fetches interleaved
-    // attributes faster (~10% of a Phong frame at 200k triangles than one buffer per attribute), and
-    // the layout (stride, offsets) does not depend on the mesh's size, so draw code llvmpipe compiled
-    // for one mesh serves the next (see renderSceneHeadless()).
-    FlatMesh flatMesh;
-    if (flat) flatMesh = options_.meshOrder == RendererOptions::MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
-    const std::vector<std::uint32_t>& indices = flat ? flatMesh.indices : mesh.indices;
+namespace {
+
+// One interleaved vertex buffer: a vertex's attributes side by side, `layout` saying which (each
+// `size` floats at its location, in order).
+struct InterleavedVertices {
     struct Attribute {
         GLuint location;
         GLint size;
     };
-    std::vector<float> interleaved;
+    std::vector<float> floats;
     std::vector<Attribute> layout;
-    // Where C varies (Mesh::variesColor), each vertex also carries its texture coordinates and colour.
-    const bool varies = mesh.variesColor();
-    const std::vector<glm::vec2>& texcoords = flat ? flatMesh.texcoords : mesh.texcoords;
-    const std::vector<glm::vec3>& colors = flat ? flatMesh.colors : mesh.colors;
-    // `floats` per vertex written by `write(v, i)`, then the texture coordinates and colour if C varies.
-    const auto interleave = [&](std::size_t count, std::size_t floats, auto write) {
-        const std::size_t stride = floats + (varies ? 5 : 0);
-        interleaved.resize(count * stride);
-        for (std::size_t i = 0; i < count; ++i) {
-            float* v = &interleaved[i * stride];
-            write(v, i);
-            if (!varies) continue;
-            v += floats;
-            v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
-        }
-    };
-    if (!flat) {
-        // position xyz, normal xyz
-        layout.push_back({SL_ATTRIB_POSITION, 3});
-        layout.push_back({SL_ATTRIB_NORMAL, 3});
-        interleave(mesh.positions.size(), 6, [&](float* v, std::size_t i) {
-            const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
-            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
-        });
-    } else if (!options_.packedFlatVertices) {
-        // position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert)
-        layout.push_back({SL_ATTRIB_POSITION, 3});
-        layout.push_back({SL_ATTRIB_CENTROID, 3});
-        layout.push_back({SL_ATTRIB_NORMAL, 3});
-        interleave(flatMesh.positions.size(), 9, [&](float* v, std::size_t i) {
-            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
-            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
-        });
-    } else {
-        // The same nine floats in two vec4s (shaders/flat_packed.vert): position xyz and centroid x;
-        // centroid yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the
-        // shader takes z from the unit length). llvmpipe fetches each attribute of each vertex on its
-        // own: two fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
-        layout.push_back({SL_ATTRIB_POSITION, 4});
-        layout.push_back({SL_ATTRIB_CENTROID, 4});
-        interleave(flatMesh.positions.size(), 8, [&](float* v, std::size_t i) {
-            const glm::vec3 &p = flatMesh.positions[i], &c = flatMesh.centroids[i], &n = flatMesh.normals[i];
-            v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
-            v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
-        });
+};
+
+// `count` vertices of `floats` each, written by `write(v, i)`, then (where C varies, `varies`) each
+// vertex's texture coordinates and colour.
+template <typename Write>
+void interleave(InterleavedVertices& out, std::size_t count, std::size_t floats, bool varies,
+                const std::vector<glm::vec2>& texcoords, const std::vector<glm::vec3>& colors, Write write) {
+    const std::size_t stride = floats + (varies ? 5 : 0);
+    out.floats.resize(count * stride);
+    for (std::size_t i = 0; i < count; ++i) {
+        float* v = &out.floats[i * stride];
+        write(v, i);
+        if (!varies) continue;
+        v += floats;
+        v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
     }
     if (varies) {
-        layout.push_back({SL_ATTRIB_TEXCOORD, 2});
-        layout.push_back({SL_ATTRIB_COLOR, 3});
+        out.layout.push_back({SL_ATTRIB_TEXCOORD, 2});
+        out.layout.push_back({SL_ATTRIB_COLOR, 3});
     }
+}
+
+// Gouraud and Phong: position xyz, normal xyz.
+InterleavedVertices smoothVertices(const Mesh& mesh) {
+    InterleavedVertices out;
+    out.layout = {{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_NORMAL, 3}};
+    interleave(out, mesh.positions.size(), 6, mesh.variesColor(), mesh.texcoords, mesh.colors, [&](float* v, std::size_t i) {
+        const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
+        v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
+    });
+    return out;
+}
+
+// Flat: position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert).
+InterleavedVertices flatVertices(const FlatMesh& flat, bool varies) {
+    InterleavedVertices out;
+    out.layout = {{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_CENTROID, 3}, {SL_ATTRIB_NORMAL, 3}};
+    interleave(out, flat.positions.size(), 9, varies, flat.texcoords, flat.colors, [&](float* v, std::size_t i) {
+        const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
+        v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
+    });
+    return out;
+}
+
+// Flat, packed: the same nine floats in two vec4s (shaders/flat_packed.vert): position xyz and
+// centroid x; centroid yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the
+// shader takes z from the unit length). llvmpipe fetches each attribute of each vertex on its own: two
+// fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
+InterleavedVertices packedFlatVertices(const FlatMesh& flat, bool varies) {
+    InterleavedVertices out;
+    out.layout = {{SL_ATTRIB_POSITION, 4}, {SL_ATTRIB_CENTROID, 4}};
+    interleave(out, flat.positions.size(), 8, varies, flat.texcoords, flat.colors, [&](float* v, std::size_t i) {
+        const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
+        v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
+        v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
+    });
+    return out;
+}
+
+// A vertex array of `vertices` (freed once uploaded) and `indices`, into `g`.
+void uploadVertexArray(MeshCache::GpuMesh& g, InterleavedVertices&& vertices, const std::vector<std::uint32_t>& indices) {
+    g.vao = gl::makeVertexArray();
+    g.indices = gl::makeBuffer();
+    glBindVertexArray(g.vao.get());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.get());
     g.vertices = gl::makeBuffer();
     glBindBuffer(GL_ARRAY_BUFFER, g.vertices.get());
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
-    interleaved = {};
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.floats.size() * sizeof(float)), vertices.floats.data(),
+                 GL_STATIC_DRAW);
+    vertices.floats = {};
     GLsizei stride = 0;
-    for (const Attribute& a : layout) stride += GLsizei(a.size * GLint(sizeof(float)));
+    for (const InterleavedVertices::Attribute& a : vertices.layout) stride += GLsizei(a.size * GLint(sizeof(float)));
     std::size_t offset = 0;
-    for (const Attribute& a : layout) {
+    for (const InterleavedVertices::Attribute& a : vertices.layout) {
         glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset));
         glEnableVertexAttribArray(a.location);
         offset += std::size_t(a.size) * sizeof(float);
@@ -193,6 +191,39 @@ const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mod
                  GL_STATIC_DRAW);
     glBindVertexArray(0);
     g.indexCount = GLsizei(indices.size());
+}
+
+}  // namespace
+
+const Mesh& MeshCache::uploadSource(std::size_t object) {
+    const Mesh& drawn = drawnMesh(object);
+    if (options_.meshOrder != RendererOptions::MeshOrder::VertexCache) return drawn;
+    Mesh& ordered = orderedMeshes_[object];
+    if (ordered.indices.empty()) ordered = orderedForVertexCache(drawn);
+    return ordered;
+}
+
+// One interleaved buffer per mesh and mode: llvmpipe fetches interleaved attributes faster (~10% of a
+// Phong frame at 200k triangles than one buffer per attribute), and the layout (stride, offsets) does
+// not depend on the mesh's size, so draw code llvmpipe compiled for one mesh serves the next (see
+// renderSceneHeadless()). Where C varies (Mesh::variesColor), each vertex also carries its texture
+// coordinates and colour.
+const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mode) {
+    const bool flat = mode == ShadingMode::Flat;
+    GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
+    if (g.vao) return g;
+    if (!geometry_) throw std::logic_error("mesh cache: a shading mode that was not uploaded before the CPU geometry was released");
+    const Mesh& mesh = uploadSource(object);
+    if (flat) {
+        const FlatMesh flatMesh =
+            options_.meshOrder == RendererOptions::MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
+        uploadVertexArray(g,
+                          options_.packedFlatVertices ? packedFlatVertices(flatMesh, mesh.variesColor())
+                                                      : flatVertices(flatMesh, mesh.variesColor()),
+                          flatMesh.indices);
+    } else {
+        uploadVertexArray(g, smoothVertices(mesh), mesh.indices);
+    }
     checkGl("mesh upload");
     if (gpuMeshes_[object][0].vao && gpuMeshes_[object][1].vao) orderedMeshes_[object] = Mesh{};  // both uploaded
     return g;

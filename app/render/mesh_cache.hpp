@@ -62,6 +62,9 @@ public:
 private:
     // The mesh an object's draws upload: its instanced form (Mesh::instanced) when it has one.
     const Mesh& drawnMesh(std::size_t object) const;
+    // What gpuMesh() uploads: drawnMesh(), in vertex-cache order when RendererOptions::meshOrder asks
+    // (kept in orderedMeshes_ until both of the object's uploads are done).
+    const Mesh& uploadSource(std::size_t object);
 
     const RendererOptions options_;
     std::shared_ptr<const SceneGeometry> geometry_;

@@ -5,7 +5,7 @@
 //   renderer.render(scene, t); overlays.render(scene, t, ...);
 //   msaa.resolveInto(view);                      // a blit; nothing to do when t was `view`
 #include "render/gl_handles.hpp"
-#include "render/renderer.hpp"
+#include "render/render_target.hpp"
 
 namespace shadelab {
 

@@ -5,6 +5,7 @@
 // own uniform buffer, into the same target and pane layout, testing against the depth Renderer left.
 #include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "core/ui/view_names.hpp"
 #include "render/gl_handles.hpp"
 #include "render/renderer.hpp"
 #include "render/shader_library.hpp"
@@ -34,6 +35,16 @@ struct OverlayOptions {
     int sampleMarkersLight = -1;
     float lineWidth = 1.0f;
     bool any() const { return wireframe || vertexNormals || faceNormals || lightMarkers || sampleMarkersLight >= 0; }
+    // The switch of an overlay the command line and the panel name (core/ui/view_names.hpp).
+    bool& shown(Overlay overlay) {
+        switch (overlay) {
+        case Overlay::Wireframe: return wireframe;
+        case Overlay::VertexNormals: return vertexNormals;
+        case Overlay::FaceNormals: return faceNormals;
+        case Overlay::LightMarkers: break;
+        }
+        return lightMarkers;
+    }
 };
 
 // An arrow in world space (the pixel probe's N, I, V, R, H), drawn with a head at `toWorld`. A zero

@@ -23,6 +23,10 @@ int lightKind(const Light& l) {
     return SL_LIGHT_POINT;
 }
 
+std::string encodingDefine(OutputEncoding encoding) {
+    return std::string("SL_ENCODING ") + (encoding == OutputEncoding::Srgb ? "SL_ENCODING_SRGB" : "SL_ENCODING_LINEAR");
+}
+
 std::vector<std::string> programDefines(const Scene& s) {
     const std::size_t count = std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS);
     static const char* const kKinds[] = {"SL_LIGHT_POINT", "SL_LIGHT_DIRECTIONAL", "SL_LIGHT_AREA", "SL_LIGHT_SPOT"};
@@ -51,8 +55,7 @@ std::vector<std::string> programDefines(const Scene& s) {
     if (area) d.push_back("SL_AREA_LIGHTS 1");
     d.push_back(std::string("SL_REFLECTION ") +
                 (s.reflection == ReflectionModel::Phong ? "SL_REFLECTION_PHONG" : "SL_REFLECTION_BLINN_PHONG"));
-    d.push_back(std::string("SL_ENCODING ") +
-                (s.outputEncoding == OutputEncoding::Srgb ? "SL_ENCODING_SRGB" : "SL_ENCODING_LINEAR"));
+    d.push_back(encodingDefine(s.outputEncoding));
     // The model extensions and term isolation: only scenes that use them get these defines, so every
     // other scene compiles to the programs it always did.
     if (s.specularNormalization == SpecularNormalization::Energy)

@@ -37,6 +37,9 @@ private:
 // light's first shadow-map layer. "NAME VALUE" each. Everything else is a uniform, so editing values
 // never recompiles.
 std::vector<std::string> programDefines(const Scene& scene);
+// The output encoding's define ("SL_ENCODING SL_ENCODING_SRGB"), shared by the shading programs and
+// progressive sampling's resolve.
+std::string encodingDefine(OutputEncoding encoding);
 
 // The constants the shaders know a light by (shaders/shared_defs.glsl): SL_LIGHT_* and SL_ATTENUATION_*.
 int lightKind(const Light& light);

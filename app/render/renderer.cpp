@@ -5,7 +5,6 @@
 #include "core/geometry/camera.hpp"
 #include "core/shading/lighting.hpp"
 #include "render/gpu_blocks.hpp"
-#include "render/multisample_target.hpp"
 #include "render/program.hpp"
 #include "render/program_cache.hpp"
 
@@ -13,8 +12,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 namespace shadelab {
@@ -83,40 +82,6 @@ gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, const
         copyVec(b.lightSpecular[l], radiance * o.material.ks * o.material.specularColor);
     }
     return b;
-}
-
-// A width x height texture read with texelFetch (nearest, one level).
-gl::Texture makeImageTexture(GLint internalFormat, GLenum format, GLenum type, int width, int height) {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    gl::Texture t(id);
-    glBindTexture(GL_TEXTURE_2D, id);
-    glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    return t;
-}
-
-gl::Framebuffer makeFramebuffer(GLuint color, GLuint depth, const char* what) {
-    GLuint id = 0;
-    glGenFramebuffers(1, &id);
-    gl::Framebuffer f(id);
-    glBindFramebuffer(GL_FRAMEBUFFER, id);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
-    if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error(std::string(what) + ": the framebuffer is not complete on this GL");
-    return f;
-}
-
-// The ordered-dither rank of (x, y) in a 2^bits square: bit-reversed interleaving of y and x ^ y.
-unsigned bayerRank(unsigned x, unsigned y, int bits) {
-    unsigned rank = 0;
-    for (int b = 0; b < bits; ++b) {
-        rank = (rank << 2) | (((x ^ y) >> b & 1u) << 1) | (y >> b & 1u);
-    }
-    return rank;
 }
 
 }  // namespace
@@ -203,7 +168,7 @@ bool Renderer::interpolatesInputs(std::size_t object, const Pane& pane, const Sc
 void Renderer::render(const Scene& scene, const RenderTarget& target) {
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
     drawPanes(scene, panes, target, nullptr, false);
-    if (panes.size() == 3 && panes[2].difference) drawDifference(panes[2], panes[0], panes[1], scene.diff.factor, target);
+    difference_.draw(panes, scene.diff.factor, target, programs_.shaders());
     checkGl("render");
 }
 
@@ -370,147 +335,21 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
     }
 }
 
-std::vector<glm::ivec2> progressivePassOrder(const glm::ivec2& stride) {
-    std::vector<glm::ivec2> order;
-    for (int y = 0; y < stride.y; ++y)
-        for (int x = 0; x < stride.x; ++x) order.emplace_back(x, y);
-    int bits = 0;
-    while ((1 << bits) < std::max(stride.x, stride.y)) ++bits;
-    std::stable_sort(order.begin(), order.end(), [bits](const glm::ivec2& a, const glm::ivec2& b) {
-        return bayerRank(unsigned(a.x), unsigned(a.y), bits) < bayerRank(unsigned(b.x), unsigned(b.y), bits);
-    });
-    return order;
-}
-
 Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, const RenderTarget& target, int stride,
                                                         bool restart) {
-    Progressive& pr = progressive_;
-    const int w = target.width, h = target.height;
-    // Along each axis no stride beyond the largest sample count: such passes would have no samples.
-    glm::ivec2 maxSamples(1);
-    for (const Light& l : scene.lights)
-        if (l.type == LightType::Area) maxSamples = glm::max(maxSamples, l.samples);
-    const glm::ivec2 s = glm::clamp(glm::ivec2(stride), glm::ivec2(1), maxSamples);
-    if (pr.width != w || pr.height != h) {
-        pr.sumColor = makeImageTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
-        pr.depth = makeImageTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
-        pr.sumFbo = makeFramebuffer(pr.sumColor.get(), pr.depth.get(), "progressive sampling (float sum)");
-        pr.width = w, pr.height = h;
-        restart = true;
-    }
-    if (restart || s != pr.stride) {
-        pr.stride = s;
-        pr.order = progressivePassOrder(s);
-        pr.done = 0;
-    }
-    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, w, h, scene.diff);
-    if (pr.done < int(pr.order.size())) {
+    progressive_.prepare(scene, target.width, target.height, stride, restart);
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
+    if (const std::optional<AreaSamplePass> pass = progressive_.nextPass()) {
         // The first pass draws the sum's surfaces and depth as a frame does. The others add into it:
         // the same programs draw the same surfaces at the same depths, so with GL_EQUAL exactly the
         // visible fragment of each pixel is shaded and added (and hidden ones cost nothing).
-        const AreaSamplePass pass{pr.order[std::size_t(pr.done)], s};
-        drawPanes(scene, panes, RenderTarget{pr.sumFbo.get(), w, h}, &pass, pr.done > 0);
-        ++pr.done;
+        drawPanes(scene, panes, progressive_.sumTarget(), &*pass, !progressive_.firstPass());
+        progressive_.passDrawn();
     }
-
-    // The image so far, with the surfaces' depth for the overlays.
-    const std::size_t encoding = scene.outputEncoding == OutputEncoding::Srgb ? 1 : 0;
-    gl::Program& resolve = pr.resolve[encoding];
-    if (!resolve) {
-        resolve = buildProgram("resolve", programs_.shaders(), {encoding ? "SL_ENCODING SL_ENCODING_SRGB" : "SL_ENCODING SL_ENCODING_LINEAR"},
-                               kFullscreenVertex);
-        glUseProgram(resolve.get());
-        glUniform1i(glGetUniformLocation(resolve.get(), "u_sum"), 0);
-        glUniform1i(glGetUniformLocation(resolve.get(), "u_depth"), 1);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    glViewport(0, 0, w, h);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, pr.sumColor.get());
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, pr.depth.get());
-    glActiveTexture(GL_TEXTURE0);
-    glUseProgram(resolve.get());
-    glUniform3f(glGetUniformLocation(resolve.get(), "u_background"), scene.background.r, scene.background.g,
-                scene.background.b);
-    drawFullscreen(resolve.get());
-    glDepthFunc(GL_LESS);
-    if (panes.size() == 3 && panes[2].difference) drawDifference(panes[2], panes[0], panes[1], scene.diff.factor, target);
+    progressive_.resolveInto(scene, target, programs_.shaders());  // the image so far, depth included
+    difference_.draw(panes, scene.diff.factor, target, programs_.shaders());
     checkGl("progressive render");
-    return {pr.done, int(pr.order.size())};
-}
-
-void Renderer::drawFullscreen(GLuint program) {
-    if (!emptyVao_) emptyVao_ = gl::makeVertexArray();
-    glDisable(GL_CULL_FACE);
-    glUseProgram(program);
-    glBindVertexArray(emptyVao_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glEnable(GL_CULL_FACE);
-}
-
-void Renderer::drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target) {
-    if (pane.width <= 0 || pane.height <= 0) return;
-    if (!diffProgram_) {
-        diffProgram_ = buildProgram("difference", programs_.shaders(), {}, kFullscreenVertex);
-        glUseProgram(diffProgram_.get());
-        glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceA"), 0);
-        glUniform1i(glGetUniformLocation(diffProgram_.get(), "u_sourceB"), 1);
-    }
-    if (!diffSources_[0] || diffWidth_ != pane.width || diffHeight_ != pane.height) {
-        for (std::size_t k = 0; k < 2; ++k) {
-            diffSources_[k] = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, pane.width, pane.height);
-            diffSourceFbos_[k] = makeFramebuffer(diffSources_[k].get(), 0, "layout diff");
-        }
-        diffWidth_ = pane.width, diffHeight_ = pane.height;
-    }
-    // Copy both source panes out of the target (GL's rows run bottom-up: y flips). A blit, not
-    // glCopyTexSubImage2D: it also reads a multisampled target (MSAA), resolving the panes.
-    const Pane* sources[2] = {&a, &b};
-    for (std::size_t k = 0; k < 2; ++k) {
-        blitColor(target.framebuffer, sources[k]->x, target.height - sources[k]->y - sources[k]->height,
-                  diffSourceFbos_[k].get(), 0, 0, pane.width, pane.height);
-        glActiveTexture(GLenum(GL_TEXTURE0 + k));
-        glBindTexture(GL_TEXTURE_2D, diffSources_[k].get());
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    const int originY = target.height - pane.y - pane.height;
-    glViewport(pane.x, originY, pane.width, pane.height);
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(diffProgram_.get());
-    glUniform2i(glGetUniformLocation(diffProgram_.get(), "u_paneOrigin"), pane.x, originY);
-    glUniform1f(glGetUniformLocation(diffProgram_.get(), "u_factor"), factor);
-    drawFullscreen(diffProgram_.get());
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_DEPTH_TEST);
-}
-
-Image readPixels(const RenderTarget& target) {
-    Image img(target.width, target.height);
-    // glReadPixels cannot read a multisampled framebuffer (MSAA): resolve it into a plain one first.
-    gl::Framebuffer resolved;
-    gl::Texture resolvedColor;
-    if (isMultisampled(target.framebuffer)) {
-        resolvedColor = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, target.width, target.height);
-        resolved = makeFramebuffer(resolvedColor.get(), 0, "readPixels (MSAA resolve)");
-        blitColor(target.framebuffer, 0, 0, resolved.get(), 0, 0, target.width, target.height);
-    }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved ? resolved.get() : target.framebuffer);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    std::vector<std::uint8_t> bottomUp(img.rgba.size());
-    glReadPixels(0, 0, target.width, target.height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
-    const std::size_t row = std::size_t(target.width) * 4;
-    for (int y = 0; y < target.height; ++y)
-        std::memcpy(img.pixel(0, y), bottomUp.data() + std::size_t(target.height - 1 - y) * row, row);
-    checkGl("readPixels");
-    return img;
+    return progressive_.status();
 }
 
 }  // namespace shadelab

@@ -2,31 +2,30 @@
 // The GL renderer: draws a Scene into a framebuffer it is handed. It never creates a context; the
 // front end (the GLFW viewer, the OSMesa or any other headless context) makes one current and passes
 // its get-proc-address function. All GL state the renderer relies on is set in render().
+// A frame's passes are its parts: ShadowMaps, the scene's panes (drawPanes), DifferencePass and, in
+// the viewer, ProgressivePass; readPixels() (render/readback.hpp) reads the frame back.
 #include "core/geometry/camera.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "render/difference_pass.hpp"
 #include "render/gl_handles.hpp"
 #include "render/mesh_cache.hpp"
 #include "render/program_cache.hpp"
+#include "render/progressive_pass.hpp"
+#include "render/readback.hpp"
+#include "render/render_target.hpp"
 #include "render/renderer_options.hpp"
 #include "render/shader_library.hpp"
 #include "render/shadow_maps.hpp"
 #include "render/uniform_stager.hpp"
 
-#include <array>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace shadelab {
-
-struct RenderTarget {
-    GLuint framebuffer = 0;  // 0: the context's default framebuffer
-    int width = 0;
-    int height = 0;
-};
 
 class Renderer {
 public:
@@ -56,11 +55,7 @@ public:
     // `target`, depth included. After passCount calls the image is render()'s, within float rounding.
     // `restart` (the scene, camera or size changed) starts a new sum; a complete image is redrawn
     // without drawing the scene. `stride` is clamped per axis to the largest sample count there.
-    struct ProgressiveStatus {
-        int passesDone = 0;
-        int passCount = 1;
-        bool complete() const { return passesDone >= passCount; }
-    };
+    using ProgressiveStatus = shadelab::ProgressiveStatus;
     ProgressiveStatus renderProgressive(const Scene& scene, const RenderTarget& target, int stride, bool restart);
     // Compiles the flat, gouraud and phong programs for `scene`'s specialisation now, Phong's
     // interpolated-inputs variant included (render() otherwise compiles each on first use). Throws
@@ -79,11 +74,6 @@ public:
 
 private:
     void drawTriangles(GLsizei firstIndex, GLsizei indexCount);  // from the bound vertex array, see drawChunkTriangles
-    // The samples one progressive pass evaluates: i = first.x + k stride.x, j = first.y + m stride.y.
-    struct AreaSamplePass {
-        glm::ivec2 first{0};
-        glm::ivec2 stride{1};
-    };
     // Shadow maps, then every pane but the difference into `target`; with `pass`, the accumulating
     // programs (linear output, alpha 0 where nothing was drawn) evaluate that pass's samples, and
     // with `add` they are added to what the target holds, where its depth equals theirs. In steps:
@@ -110,37 +100,8 @@ private:
     MeshCache meshes_;
     ShadowMaps shadowMaps_;
     std::unique_ptr<UniformStager> uniforms_;  // made once the GL is loaded
-    // Layout diff: copies of the two source panes (blitted through their framebuffers) and the
-    // program that subtracts them.
-    void drawDifference(const Pane& pane, const Pane& a, const Pane& b, float factor, const RenderTarget& target);
-    std::array<gl::Texture, 2> diffSources_;
-    std::array<gl::Framebuffer, 2> diffSourceFbos_;
-    int diffWidth_ = 0, diffHeight_ = 0;
-    gl::Program diffProgram_;
-    gl::VertexArray emptyVao_;                            // core profile draws need a bound VAO
-    // Progressive sampling: the passes are summed in sumColor (alpha counts them), over the depth
-    // the first pass wrote.
-    struct Progressive {
-        gl::Framebuffer sumFbo;
-        gl::Texture sumColor, depth;                     // RGBA32F, DEPTH24
-        int width = 0, height = 0;
-        glm::ivec2 stride{0};
-        std::vector<glm::ivec2> order;                   // each pass's first sample
-        int done = 0;
-        std::array<gl::Program, 2> resolve;              // by output encoding (linear, sRGB)
-    } progressive_;
-    // One triangle over the viewport with `program` (shaders/fullscreen.vert): the image passes.
-    void drawFullscreen(GLuint program);
+    DifferencePass difference_;                 // layout diff's third pane, after the others
+    ProgressivePass progressive_;               // renderProgressive()'s sum and its resolve
 };
-
-// The order of progressive sampling's passes for `stride` (x, y): every first sample in
-// [0, stride.x) x [0, stride.y) once, in ordered-dither (Bayer) order, so the passes drawn so far are
-// spread over the light instead of filling it row by row.
-std::vector<glm::ivec2> progressivePassOrder(const glm::ivec2& stride);
-
-
-// Reads the colour buffer of `target` (bottom-up in GL) into a top-down RGBA image; a multisampled
-// target (render/multisample_target.hpp) is resolved into a temporary copy first.
-Image readPixels(const RenderTarget& target);
 
 }  // namespace shadelab

@@ -4,6 +4,7 @@
 #include "core/ui/controls.hpp"
 #include "core/ui/panel_sections.hpp"
 #include "core/scene/scene_names.hpp"
+#include "core/ui/view_names.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -35,7 +36,7 @@ bool colorEdit(const char* label, glm::vec3& color) {
 
 bool coefficient(const char* label, float& value, float sliderMax) {
     if (!ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f")) return false;
-    value = std::clamp(value, 0.0f, 1000.0f);
+    value = std::clamp(value, kCoefficientRange.lo, kCoefficientRange.hi);
     return true;
 }
 
@@ -68,10 +69,15 @@ bool combo(const char* label, E& value, const EnumName<E> (&names)[N]) {
     return true;
 }
 
+// A position, direction or angle triple, within the range scene files allow.
+bool dragCoordinates(const char* label, glm::vec3& v, float speed, const char* format) {
+    return ImGui::DragFloat3(label, &v.x, speed, float(kCoordinateRange.lo), float(kCoordinateRange.hi), format);
+}
+
 // A vector edit that must not become (nearly) zero: light directions, scales.
 bool dragNonZero(const char* label, glm::vec3& v, float speed, bool perComponent) {
     glm::vec3 edited = v;
-    if (!ImGui::DragFloat3(label, &edited.x, speed, -1e6f, 1e6f, "%.3f")) return false;
+    if (!dragCoordinates(label, edited, speed, "%.3f")) return false;
     const bool zero = perComponent ? glm::any(glm::lessThan(glm::abs(edited), glm::vec3(1e-3f)))
                                    : glm::length(edited) < 1e-3f;
     if (zero) return false;
@@ -165,12 +171,17 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
 }
 
 void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& textures) {
-    // Procedural shapes, plus the glTF model the object was loaded with (its path is kept when the
-    // lecturer switches to a sphere, so they can switch back).
-    const char* names[] = {"uvsphere", "icosphere", "torus", "cube", "plane", "glTF model"};
-    const int count = m.path.empty() ? 5 : 6;
-    int type = int(m.type);
-    if (ImGui::Combo("mesh", &type, names, count)) m.type = MeshSpec::Type(type);
+    // Procedural shapes by their scene-file names, plus the glTF model the object was loaded with (its
+    // path is kept when the lecturer switches to a sphere, so they can switch back): the last name.
+    static_assert(std::end(kMeshTypeNames)[-1].second == MeshSpec::Type::Gltf, "the glTF model comes last");
+    const char* names[std::size(kMeshTypeNames)];
+    int type = 0;
+    for (std::size_t i = 0; i < std::size(kMeshTypeNames); ++i) {
+        names[i] = kMeshTypeNames[i].second == MeshSpec::Type::Gltf ? "glTF model" : kMeshTypeNames[i].first;
+        if (kMeshTypeNames[i].second == m.type) type = int(i);
+    }
+    const int count = int(std::size(kMeshTypeNames)) - (m.path.empty() ? 1 : 0);
+    if (ImGui::Combo("mesh", &type, names, count)) m.type = kMeshTypeNames[std::size_t(type)].second;
     const float r = 1e-3f, big = 1e3f;
     switch (m.type) {
     case MeshSpec::Type::UvSphere:
@@ -204,8 +215,8 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
     }
     ImGui::Text("%zu triangles", triangles);
     if (ImGui::TreeNode("transform")) {
-        ImGui::DragFloat3("translation", &t.translation.x, 0.01f, -1e6f, 1e6f, "%.3f");
-        ImGui::DragFloat3("rotation (deg)", &t.rotationDeg.x, 0.5f, -1e6f, 1e6f, "%.1f");
+        dragCoordinates("translation", t.translation, 0.01f, "%.3f");
+        dragCoordinates("rotation (deg)", t.rotationDeg, 0.5f, "%.1f");
         dragNonZero("scale", t.scale, 0.01f, true);
         ImGui::TreePop();
     }
@@ -231,12 +242,11 @@ void sectionLights(Scene& scene, int& selected) {
             if (l.type == LightType::Directional)
                 dragNonZero("direction", l.direction, 0.02f, false);
             else
-                ImGui::DragFloat3(l.type == LightType::Area ? "centre" : "position", &l.position.x, 0.05f, -1e6f,
-                                  1e6f, "%.2f");
+                dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
             if (l.type == LightType::Area) {
                 dragNonZero("normal", l.normal, 0.02f, false);
                 ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-                l.size = glm::max(l.size, glm::vec2(1e-4f));
+                l.size = glm::max(l.size, glm::vec2(float(kSizeRange.lo)));
                 // Sample counts are a specialisation constant: changing them recompiles (once per count).
                 ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kAreaSamplesPerSideRange.hi);
                 l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kAreaSamplesPerSideRange.hi));
@@ -258,7 +268,7 @@ void sectionLights(Scene& scene, int& selected) {
                     // 0 = no window; otherwise the light fades smoothly to zero at this distance.
                     ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f",
                                      ImGuiSliderFlags_AlwaysClamp);
-                    if (l.range > 0.0f && l.range < 1e-4f) l.range = 1e-4f;
+                    if (l.range > 0.0f && l.range < float(kLightRangeRange.lo)) l.range = float(kLightRangeRange.lo);
                 }
             }
             if (ImGui::Button("remove light")) remove = int(i);
@@ -281,14 +291,16 @@ void sectionShadows(ShadowSettings& s) {
     ImGui::BeginDisabled(!s.enabled);
     ImGui::SliderFloat("normal bias (texels)", &s.normalBias, 0.0f, 8.0f, "%.2f");
     ImGui::SliderFloat("depth bias (slope)", &s.depthBias, 0.0f, 8.0f, "%.2f");
-    s.normalBias = std::clamp(s.normalBias, 0.0f, 100.0f);
-    s.depthBias = std::clamp(s.depthBias, 0.0f, 100.0f);
+    s.normalBias = std::clamp(s.normalBias, float(kShadowBiasRange.lo), float(kShadowBiasRange.hi));
+    s.depthBias = std::clamp(s.depthBias, float(kShadowBiasRange.lo), float(kShadowBiasRange.hi));
     ImGui::SliderInt("PCF radius", &s.pcf, 0, kPcfRadiusRange.hi);
     s.pcf = std::clamp(s.pcf, 0, kPcfRadiusRange.hi);
-    // Powers of two from 64 to 4096, as an exponent slider.
+    // Powers of two over kShadowMapSizeRange (64 to 4096), as an exponent slider.
     auto sizeSlider = [](const char* label, int& size) {
-        int exponent = int(std::lround(std::log2(double(std::max(size, kShadowMapSizeRange.lo)))));
-        if (ImGui::SliderInt(label, &exponent, 6, 12, "")) size = 1 << std::clamp(exponent, 6, 12);
+        const auto log2 = [](int v) { return int(std::lround(std::log2(double(v)))); };
+        const int lo = log2(kShadowMapSizeRange.lo), hi = log2(kShadowMapSizeRange.hi);
+        int exponent = log2(std::max(size, kShadowMapSizeRange.lo));
+        if (ImGui::SliderInt(label, &exponent, lo, hi, "")) size = 1 << std::clamp(exponent, lo, hi);
         ImGui::SameLine();
         ImGui::Text("%d", size);
     };
@@ -298,14 +310,15 @@ void sectionShadows(ShadowSettings& s) {
 }
 
 void sectionOverlays(ViewSettings& s) {
-    ImGui::Checkbox("wireframe (W)", &s.overlays.wireframe);
-    ImGui::Checkbox("vertex normals (N)", &s.overlays.vertexNormals);
+    const auto overlay = [&s](Overlay o) { ImGui::Checkbox(nameOf(kOverlayLabels, o), &s.overlays.shown(o)); };
+    overlay(Overlay::Wireframe);
+    overlay(Overlay::VertexNormals);
     ImGui::SameLine();
-    ImGui::Checkbox("face normals (Shift+N)", &s.overlays.faceNormals);
+    overlay(Overlay::FaceNormals);
     ImGui::SliderFloat("normal length", &s.overlays.normalScale, 0.02f, 0.5f, "%.2f x radius");
     ImGui::Checkbox("light labels (L)", &s.lightLabels);
     ImGui::SameLine();
-    ImGui::Checkbox("3D light crosses", &s.overlays.lightMarkers);
+    overlay(Overlay::LightMarkers);
     ImGui::Checkbox("pane labels", &s.paneLabels);
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);
@@ -316,11 +329,19 @@ void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
     float scale = status.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, kUiScaleRange.lo, kUiScaleRange.hi, "%.2f x  (Ctrl+= / Ctrl+-)"))
         requests.uiScale = std::clamp(scale, kUiScaleRange.lo, kUiScaleRange.hi);
-    // Anti-aliasing of the 3D view (on a software renderer only the still view is drawn with it).
-    static const char* const kMsaa[] = {"off", "2x", "4x", "8x"};
-    static const int kSamples[] = {1, 2, 4, 8};
-    int choice = status.msaa >= 8 ? 3 : status.msaa >= 4 ? 2 : status.msaa >= 2 ? 1 : 0;
-    if (ImGui::Combo("anti-aliasing", &choice, kMsaa, 4)) requests.msaa = kSamples[choice];
+    // Anti-aliasing of the 3D view (on a software renderer only the still view is drawn with it): --msaa's
+    // sample counts from 1 on, the largest not above what the driver gave shown as chosen.
+    std::vector<int> samples;
+    std::vector<std::string> labels;
+    for (const auto& n : kMsaaNames)
+        if (n.second >= 1) samples.push_back(n.second), labels.push_back(msaaLabel(n.second));
+    std::vector<const char*> items;
+    int choice = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        items.push_back(labels[i].c_str());
+        if (status.msaa >= samples[i]) choice = int(i);
+    }
+    if (ImGui::Combo("anti-aliasing", &choice, items.data(), int(items.size()))) requests.msaa = samples[std::size_t(choice)];
     requests.toggleFullscreen |= ImGui::Button("fullscreen (F11)");
     if (!status.trueTypeFont) ImGui::TextWrapped("DejaVu Sans not found (Debian: fonts-dejavu-core): bitmap font");
 }
@@ -342,10 +363,10 @@ void sectionCamera(Camera& c, int modelCamera, const PanelStatus& status, PanelR
     ImGui::SameLine();
     requests.frameModel |= ImGui::Button("frame model (F)");
     Camera edited = c;
-    bool changed = ImGui::DragFloat3("eye", &edited.eye.x, 0.02f, -1e6f, 1e6f, "%.2f");
-    changed |= ImGui::DragFloat3("target", &edited.target.x, 0.02f, -1e6f, 1e6f, "%.2f");
+    bool changed = dragCoordinates("eye", edited.eye, 0.02f, "%.2f");
+    changed |= dragCoordinates("target", edited.target, 0.02f, "%.2f");
     changed |= ImGui::SliderFloat("fov y (deg)", &edited.fovYDeg, 5.0f, 120.0f, "%.1f");
-    edited.fovYDeg = std::clamp(edited.fovYDeg, 1.0f, 179.0f);
+    edited.fovYDeg = std::clamp(edited.fovYDeg, kFovYDegRange.lo, kFovYDegRange.hi);
     if (changed && cameraValid(edited)) c = edited;
     // The viewer places them every frame around the model and the lights (zoom never slices it).
     ImGui::TextDisabled("near %.4g, far %.4g: follow the eye", double(c.nearPlane), double(c.farPlane));
@@ -674,21 +695,85 @@ int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float ra
     return best;
 }
 
+namespace {
+
+// How the light labels are drawn, and the part of a pane they keep inside (below the pane labels).
+struct LightLabelStyle {
+    ImDrawList* draw;
+    float font, thick, ring;  // text size, line width, marker radius
+};
+struct LightLabelArea {
+    ImVec2 lo, hi;
+    ImVec2 centre;
+};
+
+// A directional light: an arrow from `from` along the light's travel to `to`; its tail is the handle
+// that drags the direction, and the label sits beside it.
+UiRect drawDirectionArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 from, ImVec2 to,
+                          const std::string& label, ImU32 colour) {
+    s.draw->AddLine(from, to, colour, s.thick);
+    const ImVec2 d(to.x - from.x, to.y - from.y);
+    const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
+    const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
+    const float head = s.font * 0.7f;
+    s.draw->AddTriangleFilled(to, ImVec2(to.x - u.x * head + n.x * head * 0.5f, to.y - u.y * head + n.y * head * 0.5f),
+                              ImVec2(to.x - u.x * head - n.x * head * 0.5f, to.y - u.y * head - n.y * head * 0.5f), colour);
+    return labelBox(s.draw, s.font, ImVec2(from.x + s.ring * 0.5f, from.y - s.font * 1.4f), label, colour, a.lo, a.hi);
+}
+
+// A light in view: a ring and a dot at it, the label to its right.
+UiRect drawLightMarker(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, const std::string& label,
+                       ImU32 colour) {
+    s.draw->AddCircle(at, s.ring, colour, 24, s.thick);
+    s.draw->AddCircleFilled(at, s.thick, colour);
+    return labelBox(s.draw, s.font, ImVec2(at.x + s.ring * 1.4f, at.y - s.font * 0.5f), label, colour, a.lo, a.hi);
+}
+
+// A light outside the pane (or behind the eye, `behind`): an arrow at the border pointing toward `at`,
+// the label beside it along the border, on the side away from the pane's centre (where the model is):
+// toward the nearer corner.
+UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, bool behind,
+                       const std::string& label, ImU32 colour) {
+    ImVec2 d(at.x - a.centre.x, at.y - a.centre.y);
+    if (behind) d = ImVec2(-d.x, -d.y);
+    const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
+    const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
+    const float halfW = (a.hi.x - a.lo.x) * 0.5f - s.font * 0.5f, halfH = (a.hi.y - a.lo.y) * 0.5f - s.font * 0.5f;
+    const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
+                             std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
+    const ImVec2 tip(a.centre.x + u.x * t, a.centre.y + u.y * t);
+    const float head = s.font * 0.9f;
+    s.draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
+                              ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
+    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str());
+    const bool sideEdge = std::fabs(u.x) * halfH >= std::fabs(u.y) * halfW;  // left or right border
+    ImVec2 pos;
+    if (sideEdge) {
+        pos.x = u.x > 0.0f ? tip.x - head * 1.2f - size.x : tip.x + head * 1.2f;
+        pos.y = u.y < 0.0f ? tip.y - head * 0.6f - size.y : tip.y + head * 0.6f;
+    } else {
+        pos.x = u.x > 0.0f ? tip.x + head * 0.6f : tip.x - head * 0.6f - size.x;
+        pos.y = u.y > 0.0f ? tip.y - head * 1.2f - size.y : tip.y + head * 1.2f;
+    }
+    return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
+}
+
+}  // namespace
+
 std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
                                     float top) {
     std::vector<UiRect> boxes;
     if (scene.lights.empty()) return boxes;
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const float font = ImGui::GetFontSize();
-    const float thick = std::max(3.0f, font * 0.2f);  // 3 px at scale 1, thicker with the UI scale
-    const float ring = font * 0.6f;
+    // Lines 3 px at scale 1, thicker with the UI scale.
+    const LightLabelStyle style{ImGui::GetBackgroundDrawList(), font, std::max(3.0f, font * 0.2f), font * 0.6f};
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
         const float x0 = view.x + float(pane.x) / framebufferScale, paneTop = view.y + float(pane.y) / framebufferScale;
         const float x1 = x0 + float(pane.width) / framebufferScale, y1 = paneTop + float(pane.height) / framebufferScale;
         // Labels and border arrows stay below the pane labels (`top`).
         const float y0 = std::min(std::max(paneTop, top), y1);
-        draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
-        const ImVec2 centre((x0 + x1) * 0.5f, (y0 + y1) * 0.5f);
+        style.draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
+        const LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f)};
         // projectToImage gives image pixels of the whole view (the pane's offset included).
         auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -696,60 +781,21 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
             const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);
             const std::string label = std::to_string(i) + " " + toString(l.type);
             if (l.type == LightType::Directional) {
-                // An arrow along the light's travel toward the target (what it lights); its tail is
-                // the handle that drags the direction.
+                // Toward the target (what it lights), from the handle.
                 const glm::vec3 dir = glm::normalize(l.direction);
                 const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
                 const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
                 const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.4f));
-                if (a.z <= 0.0f || b.z <= 0.0f) continue;
-                const ImVec2 pa = toUi(a), pb = toUi(b);
-                draw->AddLine(pa, pb, colour, thick);
-                const ImVec2 d(pb.x - pa.x, pb.y - pa.y);
-                const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
-                const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
-                const float head = font * 0.7f;
-                draw->AddTriangleFilled(pb, ImVec2(pb.x - u.x * head + n.x * head * 0.5f, pb.y - u.y * head + n.y * head * 0.5f),
-                                        ImVec2(pb.x - u.x * head - n.x * head * 0.5f, pb.y - u.y * head - n.y * head * 0.5f), colour);
-                boxes.push_back(labelBox(draw, font, ImVec2(pa.x + ring * 0.5f, pa.y - font * 1.4f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
+                if (a.z > 0.0f && b.z > 0.0f) boxes.push_back(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));
                 continue;
             }
             const glm::vec3 p = projectToImage(scene.camera, pane, l.position);
             const ImVec2 at = toUi(p);
             const bool inside = p.z > 0.0f && at.x >= x0 && at.x <= x1 && at.y >= y0 && at.y <= y1;
-            if (inside) {
-                draw->AddCircle(at, ring, colour, 24, thick);
-                draw->AddCircleFilled(at, thick, colour);
-                boxes.push_back(labelBox(draw, font, ImVec2(at.x + ring * 1.4f, at.y - font * 0.5f), label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
-                continue;
-            }
-            // Outside the pane (or behind the eye): an arrow at the border, pointing toward it.
-            ImVec2 d(at.x - centre.x, at.y - centre.y);
-            if (p.z <= 0.0f) d = ImVec2(-d.x, -d.y);
-            const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
-            const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
-            const float halfW = (x1 - x0) * 0.5f - font * 0.5f, halfH = (y1 - y0) * 0.5f - font * 0.5f;
-            const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
-                                     std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
-            const ImVec2 tip(centre.x + u.x * t, centre.y + u.y * t);
-            const float head = font * 0.9f;
-            draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
-                                    ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
-            // The label beside the arrow along the border, on the side away from the pane's centre
-            // (where the model is): toward the nearer corner.
-            const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, label.c_str());
-            const bool sideEdge = std::fabs(u.x) * halfH >= std::fabs(u.y) * halfW;  // left or right border
-            ImVec2 pos;
-            if (sideEdge) {
-                pos.x = u.x > 0.0f ? tip.x - head * 1.2f - size.x : tip.x + head * 1.2f;
-                pos.y = u.y < 0.0f ? tip.y - head * 0.6f - size.y : tip.y + head * 0.6f;
-            } else {
-                pos.x = u.x > 0.0f ? tip.x + head * 0.6f : tip.x - head * 0.6f - size.x;
-                pos.y = u.y > 0.0f ? tip.y - head * 1.2f - size.y : tip.y + head * 1.2f;
-            }
-            boxes.push_back(labelBox(draw, font, pos, label, colour, ImVec2(x0, y0), ImVec2(x1, y1)));
+            boxes.push_back(inside ? drawLightMarker(style, area, at, label, colour)
+                                   : drawBorderArrow(style, area, at, p.z <= 0.0f, label, colour));
         }
-        draw->PopClipRect();
+        style.draw->PopClipRect();
     }
     return boxes;
 }

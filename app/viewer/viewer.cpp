@@ -193,9 +193,7 @@ bool Viewer::frame(bool last) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<KeyPress> keys = window_.takePressedKeys();
     imgui_.holdTappedKeys(keys);
-    const bool still = window_.eventCount() == eventsSeen_;
-    if (!still) eventsSeen_ = window_.eventCount(), framesToDraw_ = kFramesAfterEvent;
-    framesToDraw_ = std::max(framesToDraw_ - 1, 0);
+    const bool still = countEvents();
     imgui_.setScale(window_.contentScale() * uiScale_);  // rebuilds the font only when it changed
     imgui_.newFrame();
     const FrameLayout l = layout();
@@ -203,6 +201,33 @@ bool Viewer::frame(bool last) {
     if (pendingProbe_) setProbe(pendingProbe_->x, pendingProbe_->y), pendingProbe_.reset();
     handleInput(l, keys);
     evaluateProbe();
+    apply(panelEdits(l));
+    last = last || window_.shouldClose();
+    uploadGeometryIfChanged();
+    const float labelsBottom = followView(l);
+    const std::vector<OverlayArrow> arrows = probeOverlays(l, drawViewText(l, labelsBottom));
+    const Image view = drawView(l, still, last, arrows);
+    status_.frameMs = frameMs_;
+    drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
+    imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
+    if (screenshotRequested_) saveScreenshot(view);
+    if (last) writeLastFrameFiles(l, view);
+    window_.swapBuffers();
+    recordFrameTime(start, last);
+    return last;
+}
+
+// Whether no event came since the last frame; after one, a few more frames are drawn.
+bool Viewer::countEvents() {
+    const bool still = window_.eventCount() == eventsSeen_;
+    if (!still) eventsSeen_ = window_.eventCount(), framesToDraw_ = kFramesAfterEvent;
+    framesToDraw_ = std::max(framesToDraw_ - 1, 0);
+    return still;
+}
+
+// The panel, when shown, with what it edited: the scene is marked edited, and the camera stops
+// following the view where a camera value or a transform was typed in.
+PanelRequests Viewer::panelEdits(const FrameLayout& l) {
     status_.presetTitles.clear();
     for (std::size_t i = 0; i < playlist_.size(); ++i) status_.presetTitles.push_back(presetTitle(playlist_.preset(i)));
     status_.currentPreset = int(playlist_.current());
@@ -224,11 +249,12 @@ bool Viewer::frame(bool last) {
     bool transformed = objects.size() != transformsBefore.size();
     for (std::size_t i = 0; !transformed && i < objects.size(); ++i) transformed = !sameTransform(objects[i].transform, transformsBefore[i]);
     if (transformed) document_.stopFollowing();
-    apply(requests);
-    last = last || window_.shouldClose();
-    uploadGeometryIfChanged();
-    // The camera follows the view (size, layout, bands, pane labels) until zoomed or panned; near and
-    // far follow the eye.
+    return requests;
+}
+
+// The camera follows the view (size, layout, bands, pane labels) until zoomed or panned; near and far
+// follow the eye. Draws the pane labels first, since they push the framing down; returns where they end.
+float Viewer::followView(const FrameLayout& l) {
     const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
     const auto panes = layoutPanes(document_.scene().layout, document_.scene().shading, document_.scene().width,
                                    document_.scene().height, document_.scene().diff);
@@ -236,6 +262,12 @@ bool Viewer::frame(bool last) {
     document_.setLabelInset((labelsBottom - l.view.y) / paneUnits);
     document_.followView();
     document_.fitClipPlanes();
+    return labelsBottom;
+}
+
+// The text over the view below the pane labels: the light labels, the caption, the status message and
+// the help. Returns the light labels' boxes (the probe's labels keep off them).
+std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
     const std::vector<UiRect> lightBoxes =
         settings_.lightLabels ? drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight, labelsBottom)
                               : std::vector<UiRect>{};
@@ -248,29 +280,31 @@ bool Viewer::frame(bool last) {
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, l.view);
     if (showHelp_) drawHelpOverlay(l.view);
-    const std::vector<OverlayArrow> arrows = probeOverlays(l, lightBoxes);
+    return lightBoxes;
+}
+
+// The 3D view, anti-aliased where it pays: always on a GPU; on a software rasterizer only once the
+// view is still (and for files). Returns it as drawn when it is captured (a screenshot, a file).
+Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::vector<OverlayArrow>& arrows) {
     const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
-    // MSAA: always on a GPU; on a software rasterizer only once the view is still (and for files).
     bool mouseDown = false;
     for (bool down : ImGui::GetIO().MouseDown) mouseDown = mouseDown || down;
     antiAliasThisFrame_ = msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown) || captureView || last);
     const Image view = renderView(l, captureView, last, arrows);
     antiAliased_ = antiAliasThisFrame_;
-    status_.frameMs = frameMs_;
-    drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
-    imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
-    if (screenshotRequested_) saveScreenshot(view);
-    if (last) writeLastFrameFiles(l, view);
-    window_.swapBuffers();
+    return view;
+}
+
+// The frame's own time (polling to swap, no waiting), for the status strip and -v's median.
+void Viewer::recordFrameTime(std::chrono::steady_clock::time_point start, bool last) {
     frameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (frameTimes_.size() < 100000) frameTimes_.push_back(frameMs_);
     if (last && options_.verbose && !frameTimes_.empty()) {
-        // The median frame's own time (polling to swap, no waiting): bench/README.md's panel figures.
+        // The median frame's own time: bench/README.md's panel figures.
         std::vector<double> sorted = frameTimes_;
         std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
         std::cerr << "shadelab: " << frameTimes_.size() << " frames, median " << sorted[sorted.size() / 2] << " ms\n";
     }
-    return last;
 }
 
 Viewer::FrameLayout Viewer::layout() const {

@@ -88,6 +88,13 @@ private:
     };
 
     bool frame(bool last);
+    // frame()'s steps.
+    bool countEvents();
+    PanelRequests panelEdits(const FrameLayout& layout);
+    float followView(const FrameLayout& layout);
+    std::vector<UiRect> drawViewText(const FrameLayout& layout, float labelsBottom);
+    Image drawView(const FrameLayout& layout, bool still, bool last, const std::vector<OverlayArrow>& arrows);
+    void recordFrameTime(std::chrono::steady_clock::time_point start, bool last);
     // Whether the next frame can wait for an event: nothing moves, nothing is pending.
     bool idle() const;
     FrameLayout layout() const;
@@ -133,8 +140,8 @@ private:
     ViewSettings settings_;
     PanelStatus status_;
     float uiScale_ = 1.0f;
-    bool showHelp_ = false;
-    bool panelDrawn_ = false;                   // the panel was shown at least once this session                     // F1 / ?: every key and mouse action over the view
+    bool showHelp_ = false;                     // F1 / ?: every key and mouse action over the view
+    bool panelDrawn_ = false;                   // the panel was shown at least once this session
     std::chrono::steady_clock::time_point messageUntil_;  // the status message shows over the view until then
     bool messageShown_ = false;                 // ... and the last frame drew it
     // Render on demand: events seen so far, frames still to draw after the last one, the last

@@ -36,7 +36,9 @@ void expectRefused(const test::RunResult& r, const std::string& what, const std:
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
-    if (!file.empty()) EXPECT_FALSE(fs::exists(file)) << file;
+    if (!file.empty()) {
+        EXPECT_FALSE(fs::exists(file)) << file;
+    }
 }
 
 }  // namespace

@@ -892,6 +892,9 @@ TEST_F(Gltf, PunctualLightsArePlacedByTheirNodes) {
     d.j["nodes"][3]["extensions"]["KHR_lights_punctual"]["light"] = 1;
     d.j["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.6;
     expectRefused(writeGltf("bad_cone", d), {"light 1", "innerConeAngle < outerConeAngle"});
+    // The extension's types are point, directional and spot: shadelab's "area" is not one of them.
+    d.j["extensions"]["KHR_lights_punctual"]["lights"][1] = {{"type", "area"}, {"intensity", 1}};
+    expectRefused(writeGltf("area", d), {"light 1", "type \"area\" is not point, directional or spot"});
 }
 
 // A textured model is written sRGB-encoded unless the scene chooses its encoding (or draws it

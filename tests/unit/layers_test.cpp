@@ -26,7 +26,7 @@ const std::map<std::string, std::vector<std::string>> kBelow = {
     {"core/probe", {"core/geometry"}},
     {"core/figures", {"core/shading"}},
     {"render/cpu", {"core/geometry"}},
-    {"render", {"render/cpu"}},
+    {"render", {"render/cpu", "core/ui"}},
     {"headless", {"render"}},
     {"viewer", {"render", "core/ui", "core/probe", "core/figures"}},
     {"cli", {"core/ui", "core/probe", "core/figures"}},

@@ -17,7 +17,7 @@ TEST(ViewerOptions, ParseWithEveryOtherOption) {
     EXPECT_EQ(o.screenshotView.value_or(""), "v.png");
     EXPECT_EQ(o.saveScene.value_or(""), "s.json");
     EXPECT_TRUE(o.hidePanel);
-    EXPECT_EQ(o.overlays, (std::vector<std::string>{"wireframe", "lights"}));
+    EXPECT_EQ(o.overlays, (std::vector<Overlay>{Overlay::Wireframe, Overlay::LightMarkers}));
     EXPECT_EQ(o.layout, Layout::Compare);
     EXPECT_EQ(o.width, 640);
 }

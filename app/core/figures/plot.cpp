@@ -255,12 +255,12 @@ glm::vec2 PlotLayout::labelAt(const PlotLabel& l, glm::vec2 textSize) const {
     return toPixels(l.at) - l.align * textSize + l.offset * lineHeight;
 }
 
-PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const MeasureText& measure) {
-    PlotLayout out;
-    out.lineHeight = lineHeight;
-    const float pad = 0.6f * lineHeight;
-    float y = pad;
-    // Title and subtitle, each wrapped at spaces (a single word wider than the plot stays whole).
+namespace {
+
+// The title and subtitle from `y` down, each wrapped at spaces to `width` (a single word wider than
+// the plot stays whole); returns the y below them.
+float layoutHeader(const Plot& plot, float width, float pad, const MeasureText& measure, PlotLayout& out, float y) {
+    const float lineHeight = out.lineHeight;
     for (const auto& [text, color] : {std::pair{plot.title, kPlotText}, std::pair{plot.subtitle, kPlotAxis}}) {
         std::string row;
         std::size_t start = 0;
@@ -269,7 +269,7 @@ PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const 
             if (end == std::string::npos) end = text.size();
             const std::string word = text.substr(start, end - start);
             const std::string longer = row.empty() ? word : row + " " + word;
-            if (!row.empty() && measure(longer).x > size.x - 2.0f * pad) {
+            if (!row.empty() && measure(longer).x > width - 2.0f * pad) {
                 out.header.push_back({row, {pad, y}, color});
                 y += lineHeight * 1.2f;
                 row = word;
@@ -283,15 +283,19 @@ PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const 
             y += lineHeight * 1.2f;
         }
     }
-    // The legend flows left to right and wraps.
-    y += 0.3f * lineHeight;
+    return y;
+}
+
+// The legend from `y` down, flowing left to right and wrapping at `width`; returns the y below it.
+float layoutLegend(const Plot& plot, float width, float pad, const MeasureText& measure, PlotLayout& out, float y) {
+    const float lineHeight = out.lineHeight;
     float x = pad;
     bool rowUsed = false;
     for (std::size_t i = 0; i < plot.lines.size(); ++i) {
         if (!plot.lines[i].inLegend) continue;
         const float swatch = 2.2f * lineHeight, textWidth = measure(plot.lines[i].name).x;
         const float entryWidth = swatch + 0.4f * lineHeight + textWidth;
-        if (rowUsed && x + entryWidth > size.x - pad) x = pad, y += lineHeight * 1.2f;
+        if (rowUsed && x + entryWidth > width - pad) x = pad, y += lineHeight * 1.2f;
         PlotLegendEntry e;
         e.line = i;
         e.swatchFrom = {x, y + 0.5f * lineHeight};
@@ -302,11 +306,13 @@ PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const 
         rowUsed = true;
     }
     if (rowUsed) y += lineHeight * 1.2f;
-    y += 0.4f * lineHeight;
+    return y;
+}
 
-    // The plot area starts as the rest of the rectangle and shrinks until every label fits inside it
-    // with `pad` to spare (axis labels sit outside the plotted range).
-    glm::vec2 lo(pad, y), hi(size.x - pad, size.y - pad);
+// The plot area below `top`: it starts as the rest of the rectangle and shrinks until every label fits
+// inside it with `pad` to spare (axis labels sit outside the plotted range).
+void fitPlotArea(const Plot& plot, glm::vec2 size, float pad, float top, const MeasureText& measure, PlotLayout& out) {
+    glm::vec2 lo(pad, top), hi(size.x - pad, size.y - pad);
     for (int pass = 0; pass < 4; ++pass) {
         const glm::vec2 extent = glm::max(hi - lo, glm::vec2(1.0f));
         const glm::vec2 range = plot.max - plot.min;
@@ -324,13 +330,26 @@ PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const 
         for (const PlotLabel& l : plot.labels) {
             const glm::vec2 textSize = measure(l.text);
             const glm::vec2 at = out.labelAt(l, textSize);
-            overflowLo = glm::max(overflowLo, glm::vec2(pad, y) - at);
+            overflowLo = glm::max(overflowLo, glm::vec2(pad, top) - at);
             overflowHi = glm::max(overflowHi, at + textSize - (size - glm::vec2(pad)));
         }
         if (overflowLo == glm::vec2(0.0f) && overflowHi == glm::vec2(0.0f)) break;
         lo += overflowLo;
         hi -= overflowHi;
     }
+}
+
+}  // namespace
+
+// From the top: the header, the legend, then the plot area in what is left.
+PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const MeasureText& measure) {
+    PlotLayout out;
+    out.lineHeight = lineHeight;
+    const float pad = 0.6f * lineHeight;
+    float y = layoutHeader(plot, size.x, pad, measure, out, pad);
+    y = layoutLegend(plot, size.x, pad, measure, out, y + 0.3f * lineHeight);
+    y += 0.4f * lineHeight;
+    fitPlotArea(plot, size, pad, y, measure, out);
     return out;
 }
 

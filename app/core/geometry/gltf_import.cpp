@@ -4,6 +4,7 @@
 #include "core/base/file_io.hpp"
 #include "core/geometry/gltf_extensions.hpp"
 #include "core/base/json_depth.hpp"
+#include "core/scene/scene_names.hpp"
 #include "platform/platform.hpp"
 
 #include <nlohmann/json.hpp>
@@ -118,6 +119,18 @@ private:
     // transforms of its copies relative to that (a part drawn with instances, see read()).
     void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& worldFromObject, const std::string& where,
                       const std::vector<glm::mat4>& instances = {});
+    // addPrimitive's steps.
+    std::vector<glm::vec3> readPositions(int accessorIndex, const std::string& where) const;
+    std::vector<std::uint32_t> triangles(const tinygltf::Primitive& p, int mode, std::size_t vertexCount,
+                                         const std::string& where) const;
+    std::vector<glm::vec3> readNormals(const tinygltf::Primitive& p, const std::vector<glm::vec3>& positions,
+                                       const std::vector<std::uint32_t>& triangles, const std::string& where);
+    void bakeVertices(std::vector<glm::vec3>&& positions, std::vector<glm::vec3>&& normals, const glm::mat4& worldFromObject,
+                      int positionAccessor, const std::string& where);
+    void appendColorInputs(std::uint32_t base, std::size_t count, const std::vector<glm::vec2>& uvs,
+                           const std::vector<glm::vec3>& colors);
+    std::uint32_t appendIndices(std::vector<std::uint32_t>&& triangles, std::uint32_t base, bool mirrored);
+    void addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot, const std::vector<glm::mat4>& instances);
     void visit(int nodeIndex, const glm::mat4& parent, int depth);
     // The object texture of the lecture's C: the material's baseColorTexture, decoded once per image
     // and sampler into Mesh::textures; -1 (with a warning) where it cannot be drawn.
@@ -514,36 +527,8 @@ std::vector<glm::vec3> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     return out;
 }
 
-void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where,
-                              const std::vector<glm::mat4>& instances) {
-    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
-    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-        static const char* kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
-        info_.warnings.push_back(where + ": " + (mode >= 0 && mode < 4 ? kNames[mode] : "unknown-mode") +
-                                 " primitive skipped (only triangles are shaded)");
-        return;
-    }
-    const auto posIt = p.attributes.find("POSITION");
-    // The validator only warns about this, but a triangle primitive without positions cannot be drawn,
-    // and its indices (if any) point at nothing: refuse the file rather than guess.
-    if (posIt == p.attributes.end()) fail(where, "has no POSITION attribute");
-    // FLOAT, or any 8- or 16-bit integer type (KHR_mesh_quantization; the node transform dequantizes).
-    const View pos = view(posIt->second, where + " POSITION", {TINYGLTF_TYPE_VEC3},
-                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
-    std::vector<glm::vec3> positions = readVec3(pos);
-    for (std::size_t i = 0; i < pos.count; ++i) {
-        if (!isFinite(positions[i]))
-            fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
-                 "vertex " + std::to_string(i) + " is not finite");
-    }
-    std::vector<std::uint32_t> order;
-    if (p.indices >= 0) {
-        order = indices(p.indices, positions.size(), where);
-    } else {
-        order.resize(positions.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
-    }
+// The triangles of a strip or a fan (or a list, its last partial triangle dropped) as a triangle list.
+std::vector<std::uint32_t> triangleList(int mode, std::vector<std::uint32_t> order) {
     std::vector<std::uint32_t> tris;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
         order.resize(order.size() / 3 * 3);
@@ -557,32 +542,27 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     } else {
         for (std::size_t i = 2; i < order.size(); ++i) tris.insert(tris.end(), {order[i - 1], order[i], order[0]});
     }
-    if (info_.triangles + tris.size() / 3 > kMaxTriangles)
-        fail(where, "more than " + std::to_string(kMaxTriangles) + " triangles in total");
+    return tris;
+}
 
-    std::vector<glm::vec3> normals;
-    const auto nrmIt = p.attributes.find("NORMAL");
-    if (nrmIt != p.attributes.end()) {
-        // FLOAT, or normalized BYTE or SHORT (KHR_mesh_quantization).
-        const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
-                             {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
-        if (nv.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !nv.normalized)
-            fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")", "integer normals must be normalized");
-        if (nv.count != pos.count)
-            fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
-                 "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(pos.count));
-        normals = readVec3(nv);
-        for (std::size_t i = 0; i < normals.size(); ++i) {
-            glm::vec3& n = normals[i];
-            if (!isFinite(n))
-                fail(where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")",
-                     "normal " + std::to_string(i) + " is not finite");
-            n = safeNormalize(n);
-        }
-    } else {
-        angleWeightedNormals(positions, tris, normals);
-        info_.generatedNormals += normals.size();
+// The order: read, check and triangulate the primitive; bake its vertices into *out_; then its
+// colour inputs, its indices and its part.
+void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& where,
+                              const std::vector<glm::mat4>& instances) {
+    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        static const char* kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+        info_.warnings.push_back(where + ": " + (mode >= 0 && mode < 4 ? kNames[mode] : "unknown-mode") +
+                                 " primitive skipped (only triangles are shaded)");
+        return;
     }
+    const auto posIt = p.attributes.find("POSITION");
+    // The validator only warns about this, but a triangle primitive without positions cannot be drawn,
+    // and its indices (if any) point at nothing: refuse the file rather than guess.
+    if (posIt == p.attributes.end()) fail(where, "has no POSITION attribute");
+    std::vector<glm::vec3> positions = readPositions(posIt->second, where);
+    std::vector<std::uint32_t> tris = triangles(p, mode, positions.size(), where);
+    std::vector<glm::vec3> normals = readNormals(p, positions, tris, where);
 
     // C where it varies over the surface: the base colour texture's coordinates and COLOR_0.
     const std::size_t vertexCount = positions.size();
@@ -591,72 +571,155 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     const int textureSlot = uvs.empty() ? -1 : texture.slot;
     const std::vector<glm::vec3> colors = vertexColors(p, vertexCount, where);
 
-    // Bake the node transform. A mirroring transform (negative determinant) turns counter-clockwise
-    // triangles clockwise, so their winding is flipped back.
-    const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
-    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
     const auto base = std::uint32_t(out_->positions.size());
+    bakeVertices(std::move(positions), std::move(normals), world, posIt->second, where);
+    appendColorInputs(base, vertexCount, uvs, colors);
+    // A mirroring transform (negative determinant) turns counter-clockwise triangles clockwise, so
+    // their winding is flipped back.
+    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    const std::uint32_t firstIndex = appendIndices(std::move(tris), base, mirrored);
+    addPart(p.material, firstIndex, textureSlot, instances);
+    info_.primitives += 1;
+    info_.triangles += (out_->indices.size() - firstIndex) / 3;
+}
+
+// POSITION: FLOAT, or any 8- or 16-bit integer type (KHR_mesh_quantization; the node transform dequantizes).
+std::vector<glm::vec3> GltfReader::readPositions(int accessor, const std::string& where) const {
+    const View pos = view(accessor, where + " POSITION", {TINYGLTF_TYPE_VEC3},
+                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    std::vector<glm::vec3> positions = readVec3(pos);
+    for (std::size_t i = 0; i < pos.count; ++i) {
+        if (!isFinite(positions[i]))
+            fail(where + " POSITION (accessor " + std::to_string(accessor) + ")", "vertex " + std::to_string(i) + " is not finite");
+    }
+    return positions;
+}
+
+// The primitive's triangles as a list (its indices, or its vertices in order), within kMaxTriangles.
+std::vector<std::uint32_t> GltfReader::triangles(const tinygltf::Primitive& p, int mode, std::size_t vertexCount,
+                                                 const std::string& where) const {
+    std::vector<std::uint32_t> order;
+    if (p.indices >= 0) {
+        order = indices(p.indices, vertexCount, where);
+    } else {
+        order.resize(vertexCount);
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
+    }
+    std::vector<std::uint32_t> tris = triangleList(mode, std::move(order));
+    if (info_.triangles + tris.size() / 3 > kMaxTriangles)
+        fail(where, "more than " + std::to_string(kMaxTriangles) + " triangles in total");
+    return tris;
+}
+
+// NORMAL (FLOAT, or normalized BYTE or SHORT: KHR_mesh_quantization), normalised; generated from the
+// triangles (angleWeightedNormals) when the primitive has none.
+std::vector<glm::vec3> GltfReader::readNormals(const tinygltf::Primitive& p, const std::vector<glm::vec3>& positions,
+                                               const std::vector<std::uint32_t>& tris, const std::string& where) {
+    std::vector<glm::vec3> normals;
+    const auto nrmIt = p.attributes.find("NORMAL");
+    if (nrmIt == p.attributes.end()) {
+        angleWeightedNormals(positions, tris, normals);
+        info_.generatedNormals += normals.size();
+        return normals;
+    }
+    const std::string name = where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")";
+    const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
+                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
+    if (nv.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !nv.normalized) fail(name, "integer normals must be normalized");
+    if (nv.count != positions.size())
+        fail(name, "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(positions.size()));
+    normals = readVec3(nv);
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+        glm::vec3& n = normals[i];
+        if (!isFinite(n)) fail(name, "normal " + std::to_string(i) + " is not finite");
+        n = safeNormalize(n);
+    }
+    return normals;
+}
+
+// Appends the vertices to *out_ baked with the node transform `world` (normals with its inverse
+// transpose); the first untransformed primitive's arrays are taken as they are.
+void GltfReader::bakeVertices(std::vector<glm::vec3>&& positions, std::vector<glm::vec3>&& normals,
+                              const glm::mat4& world, int positionAccessor, const std::string& where) {
     if (world == glm::mat4(1.0f) && out_->positions.empty()) {
         // One untransformed primitive (most models): take the arrays as they are.
         out_->positions = std::move(positions);
         out_->normals = std::move(normals);
-    } else {
-        // Room for this primitive, growing geometrically: an exact reserve per primitive copied the
-        // whole mesh every time (quadratic in the number of node instances).
-        const std::size_t needed = out_->positions.size() + positions.size();
-        // Every instance is baked: the vertices the file asks for, not its size, set the memory.
-        if (needed > kMaxBakedVertices)
-            fail(where, "the scene bakes to more than " + std::to_string(kMaxBakedVertices) + " vertices");
-        if (needed > out_->positions.capacity()) {
-            out_->positions.reserve(std::max(needed, 2 * out_->positions.capacity()));
-            out_->normals.reserve(std::max(needed, 2 * out_->normals.capacity()));
-        }
-        for (std::size_t i = 0; i < positions.size(); ++i) {
-            const glm::vec3 baked = glm::vec3(world * glm::vec4(positions[i], 1.0f));
-            // Finite positions times a finite matrix can still overflow.
-            if (!isFinite(baked))
-                fail(where + " POSITION (accessor " + std::to_string(posIt->second) + ")",
-                     "vertex " + std::to_string(i) + " is not finite after node " + std::to_string(currentNode_) +
-                         "'s transform");
-            out_->positions.push_back(baked);
-            const glm::vec3 n = nrmWorld * normals[i];
-            out_->normals.push_back(safeNormalize(n));
-        }
+        return;
     }
-    if (!uvs.empty() || !colors.empty() || out_->variesColor()) {
-        // Defaults for the vertices before (the first primitive that varies) and for this one where
-        // it has no texture or no COLOR_0: coordinates 0 (an untextured part samples no texture) and white.
-        if (!out_->variesColor()) {
-            out_->texcoords.assign(base, glm::vec2(0.0f));
-            out_->colors.assign(base, glm::vec3(1.0f));
-        }
-        out_->texcoords.reserve(out_->positions.capacity());
-        out_->colors.reserve(out_->positions.capacity());
-        if (uvs.empty()) out_->texcoords.resize(base + vertexCount, glm::vec2(0.0f));
-        else out_->texcoords.insert(out_->texcoords.end(), uvs.begin(), uvs.end());
-        if (colors.empty()) out_->colors.resize(base + vertexCount, glm::vec3(1.0f));
-        else out_->colors.insert(out_->colors.end(), colors.begin(), colors.end());
+    // Room for this primitive, growing geometrically: an exact reserve per primitive copied the
+    // whole mesh every time (quadratic in the number of node instances).
+    const std::size_t needed = out_->positions.size() + positions.size();
+    // Every instance is baked: the vertices the file asks for, not its size, set the memory.
+    if (needed > kMaxBakedVertices)
+        fail(where, "the scene bakes to more than " + std::to_string(kMaxBakedVertices) + " vertices");
+    if (needed > out_->positions.capacity()) {
+        out_->positions.reserve(std::max(needed, 2 * out_->positions.capacity()));
+        out_->normals.reserve(std::max(needed, 2 * out_->normals.capacity()));
     }
+    const glm::mat3 nrmWorld = glm::transpose(glm::inverse(glm::mat3(world)));
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const glm::vec3 baked = glm::vec3(world * glm::vec4(positions[i], 1.0f));
+        // Finite positions times a finite matrix can still overflow.
+        if (!isFinite(baked))
+            fail(where + " POSITION (accessor " + std::to_string(positionAccessor) + ")",
+                 "vertex " + std::to_string(i) + " is not finite after node " + std::to_string(currentNode_) +
+                     "'s transform");
+        out_->positions.push_back(baked);
+        const glm::vec3 n = nrmWorld * normals[i];
+        out_->normals.push_back(safeNormalize(n));
+    }
+}
+
+// The texture coordinates and vertex colours of the `count` vertices from `base` on, once any
+// primitive has them.
+void GltfReader::appendColorInputs(std::uint32_t base, std::size_t count, const std::vector<glm::vec2>& uvs,
+                                   const std::vector<glm::vec3>& colors) {
+    if (uvs.empty() && colors.empty() && !out_->variesColor()) return;
+    // Defaults for the vertices before (the first primitive that varies) and for this one where
+    // it has no texture or no COLOR_0: coordinates 0 (an untextured part samples no texture) and white.
+    if (!out_->variesColor()) {
+        out_->texcoords.assign(base, glm::vec2(0.0f));
+        out_->colors.assign(base, glm::vec3(1.0f));
+    }
+    out_->texcoords.reserve(out_->positions.capacity());
+    out_->colors.reserve(out_->positions.capacity());
+    if (uvs.empty()) out_->texcoords.resize(base + count, glm::vec2(0.0f));
+    else out_->texcoords.insert(out_->texcoords.end(), uvs.begin(), uvs.end());
+    if (colors.empty()) out_->colors.resize(base + count, glm::vec3(1.0f));
+    else out_->colors.insert(out_->colors.end(), colors.begin(), colors.end());
+}
+
+// Appends the triangles to *out_'s indices, offset by the vertices before them (`base`) and flipped
+// when `mirrored`; returns where they start.
+std::uint32_t GltfReader::appendIndices(std::vector<std::uint32_t>&& tris, std::uint32_t base, bool mirrored) {
     const auto firstIndex = std::uint32_t(out_->indices.size());
     if (firstIndex == 0 && base == 0 && !mirrored) {
         out_->indices = std::move(tris);  // the first primitive, winding kept: its indices as they are
-    } else {
-        out_->indices.resize(firstIndex + tris.size());  // tris holds whole triangles
-        std::uint32_t* out = out_->indices.data() + firstIndex;
-        for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
-            out[0] = base + tris[t];
-            out[1] = base + tris[t + (mirrored ? 2 : 1)];
-            out[2] = base + tris[t + (mirrored ? 1 : 2)];
-        }
+        return firstIndex;
     }
-    // The primitive's base colour (glTF's default is white); consecutive primitives of one colour
-    // share a part, so a many-primitive model does not cost a draw call per primitive.
+    out_->indices.resize(firstIndex + tris.size());  // tris holds whole triangles
+    std::uint32_t* out = out_->indices.data() + firstIndex;
+    for (std::size_t t = 0; t + 2 < tris.size(); t += 3, out += 3) {
+        out[0] = base + tris[t];
+        out[1] = base + tris[t + (mirrored ? 2 : 1)];
+        out[2] = base + tris[t + (mirrored ? 1 : 2)];
+    }
+    return firstIndex;
+}
+
+// The part of the indices from `firstIndex` on, with the material's base colour (glTF's default is
+// white); consecutive primitives of one colour share a part, so a many-primitive model does not cost
+// a draw call per primitive.
+void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot,
+                         const std::vector<glm::mat4>& instances) {
     MeshPart part;
     part.firstIndex = firstIndex;
     part.indexCount = std::uint32_t(out_->indices.size()) - firstIndex;
     part.hasBaseColor = true;
-    if (p.material >= 0 && std::size_t(p.material) < model_.materials.size()) {
-        const auto& f = model_.materials[std::size_t(p.material)].pbrMetallicRoughness.baseColorFactor;
+    if (materialIndex >= 0 && std::size_t(materialIndex) < model_.materials.size()) {
+        const auto& f = model_.materials[std::size_t(materialIndex)].pbrMetallicRoughness.baseColorFactor;
         if (f.size() >= 3)
             part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
     }
@@ -668,8 +731,6 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
         out_->parts.back().indexCount += part.indexCount;
     else if (part.indexCount > 0)
         out_->parts.push_back(part);
-    info_.primitives += 1;
-    info_.triangles += (out_->indices.size() - firstIndex) / 3;
 }
 
 // A glTF camera looks down its node's -Z with +Y up (glTF 2.0, 3.10.1); only the first node using it counts.
@@ -713,10 +774,9 @@ void GltfReader::addLight(const tinygltf::Node& n, int ni, const glm::mat4& worl
     GltfLight out;
     out.name = src.name.empty() ? name : src.name;
     Light& l = out.light;
-    if (src.type == "point") l.type = LightType::Point;
-    else if (src.type == "directional") l.type = LightType::Directional;
-    else if (src.type == "spot") l.type = LightType::Spot;
-    else fail(name, "type \"" + src.type + "\" is not point, directional or spot");
+    const std::optional<LightType> type = valueNamed(kPunctualLightTypeNames, src.type);
+    if (!type) fail(name, "type \"" + src.type + "\" is not " + namesList(kPunctualLightTypeNames, ", ", " or "));
+    l.type = *type;
     if (!std::isfinite(src.intensity) || src.intensity < 0.0) fail(name, "intensity must be a finite number >= 0");
     l.intensity = float(src.intensity);
     if (src.color.size() >= 3) {
@@ -738,7 +798,7 @@ void GltfReader::addLight(const tinygltf::Node& n, int ni, const glm::mat4& worl
         const double inner = src.spot.innerConeAngle, outer = src.spot.outerConeAngle;
         if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || outer <= inner || outer > 1.5707963268 + 1e-6)
             fail(name, "spot cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2");
-        l.outerConeDeg = std::clamp(float(glm::degrees(outer)), 0.01f, kSpotConeDegRange.hi);
+        l.outerConeDeg = std::clamp(float(glm::degrees(outer)), float(kSpotOuterConeDegRange.lo), kSpotConeDegRange.hi);
         l.innerConeDeg = std::clamp(float(glm::degrees(inner)), 0.0f, std::max(l.outerConeDeg - 0.01f, 0.0f));
     }
     info_.lights.push_back(std::move(out));
@@ -1107,51 +1167,57 @@ std::string prepareJson(std::string json, LoadContext& context, const std::strin
     return changed ? doc.dump() : json;
 }
 
+// tinygltf's file callbacks over a LoadContext: the .glb's BIN chunk and decoded data: URIs from
+// memory, other files only from inside the model's folder. FileExists answers "yes" for a path outside
+// the folder so that tinygltf goes on to read it and ReadWholeFile can refuse it with a message that
+// says why (rather than "file not found").
+bool modelFileExists(const std::string& p, void* user) {
+    const LoadContext& c = *static_cast<const LoadContext*>(user);
+    std::error_code ec;  // a symlink loop or an over-long name is "no such file", never an exception
+    return p == c.binPath || c.decoded.count(p) || !insideFolder(p, c.folder) || fs::is_regular_file(fs::path(p), ec);
+}
+
+bool readModelFile(std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
+    LoadContext& c = *static_cast<LoadContext*>(user);
+    if (const auto d = c.decoded.find(p); d != c.decoded.end()) {
+        out->swap(d->second);  // asked for once, by the buffer that names it
+        return true;
+    }
+    if (!c.binPath.empty() && p == c.binPath) {
+        out->resize(std::size_t(c.binLength));
+        (*c.read)(c.binOffset, out->size(), out->data());
+        return true;
+    }
+    if (!insideFolder(p, c.folder) || !insideFolderResolved(p, c.folder)) {
+        if (err) *err += "refused URI outside the model's folder: " + p;
+        return false;
+    }
+    std::error_code e;
+    const fs::path full(p);
+    const auto size = fs::file_size(full, e);
+    if (e || size > (std::uintmax_t(1) << 31)) {
+        if (err) *err += "cannot read " + p;
+        return false;
+    }
+    std::FILE* f = platform::openFile(full, "rb");
+    if (!f) {
+        if (err) *err += "cannot open " + p;
+        return false;
+    }
+    out->resize(size);
+    const bool ok = std::fread(out->data(), 1, size, f) == size;
+    std::fclose(f);
+    if (!ok && err) *err += "cannot read " + p;
+    return ok;
+}
+
 Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, GltfInfo* infoOut) {
     GltfInfo info;
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks fsc{};
-    // FileExists answers "yes" for a path outside the folder so that tinygltf goes on to read it and
-    // ReadWholeFile can refuse it with a message that says why (rather than "file not found").
-    fsc.FileExists = [](const std::string& p, void* user) {
-        const LoadContext& c = *static_cast<const LoadContext*>(user);
-        std::error_code ec;  // a symlink loop or an over-long name is "no such file", never an exception
-        return p == c.binPath || c.decoded.count(p) || !insideFolder(p, c.folder) || fs::is_regular_file(fs::path(p), ec);
-    };
+    fsc.FileExists = modelFileExists;
     fsc.ExpandFilePath = [](const std::string& p, void*) { return p; };
-    fsc.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& p, void* user) {
-        LoadContext& c = *static_cast<LoadContext*>(user);
-        if (const auto d = c.decoded.find(p); d != c.decoded.end()) {
-            out->swap(d->second);  // asked for once, by the buffer that names it
-            return true;
-        }
-        if (!c.binPath.empty() && p == c.binPath) {
-            out->resize(std::size_t(c.binLength));
-            (*c.read)(c.binOffset, out->size(), out->data());
-            return true;
-        }
-        if (!insideFolder(p, c.folder) || !insideFolderResolved(p, c.folder)) {
-            if (err) *err += "refused URI outside the model's folder: " + p;
-            return false;
-        }
-        std::error_code e;
-        const fs::path full(p);
-        const auto size = fs::file_size(full, e);
-        if (e || size > (std::uintmax_t(1) << 31)) {
-            if (err) *err += "cannot read " + p;
-            return false;
-        }
-        std::FILE* f = platform::openFile(full, "rb");
-        if (!f) {
-            if (err) *err += "cannot open " + p;
-            return false;
-        }
-        out->resize(size);
-        const bool ok = std::fread(out->data(), 1, size, f) == size;
-        std::fclose(f);
-        if (!ok && err) *err += "cannot read " + p;
-        return ok;
-    };
+    fsc.ReadWholeFile = readModelFile;
     fsc.WriteWholeFile = nullptr;
     fsc.user_data = &context;
     loader.SetFsCallbacks(fsc);

@@ -146,6 +146,11 @@ private:
     Light light(const json& j, const std::string& path) const;
     ShadowSettings shadowSettings(const json& j, const std::string& path) const;
     Camera camera(const json& j, const std::string& path) const;
+    void readObjects(const json& root, Scene& scene) const;
+    DiffSettings diff(const json& j, const std::string& path) const;
+    std::vector<Light> lights(const json& j, const std::string& path) const;
+    TermView show(const json& j, const std::string& path, std::size_t lightCount) const;
+    glm::ivec2 imageSize(const json& j, const std::string& path) const;
 
     std::string file_;
     std::string baseDir_;
@@ -160,27 +165,27 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
         requireObject(j, path, {"type", "slices", "stacks", "radius"});
         integer(j, "slices", path, m.slices, kUvSphereSlicesRange.lo, kUvSphereSlicesRange.hi);
         integer(j, "stacks", path, m.stacks, kUvSphereStacksRange.lo, kUvSphereStacksRange.hi);
-        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        number(j, "radius", path, m.radius, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::IcoSphere:
         requireObject(j, path, {"type", "subdivisions", "radius"});
         integer(j, "subdivisions", path, m.subdivisions, kIcoSphereSubdivisionsRange.lo, kIcoSphereSubdivisionsRange.hi);
-        number(j, "radius", path, m.radius, 1e-4, 1e6);
+        number(j, "radius", path, m.radius, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::Torus:
         requireObject(j, path, {"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
-        number(j, "major_radius", path, m.majorRadius, 1e-4, 1e6);
-        number(j, "minor_radius", path, m.minorRadius, 1e-4, 1e6);
+        number(j, "major_radius", path, m.majorRadius, kSizeRange.lo, kSizeRange.hi);
+        number(j, "minor_radius", path, m.minorRadius, kSizeRange.lo, kSizeRange.hi);
         integer(j, "major_segments", path, m.majorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
         integer(j, "minor_segments", path, m.minorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
         break;
     case MeshSpec::Type::Cube:
         requireObject(j, path, {"type", "size"});
-        number(j, "size", path, m.size, 1e-4, 1e6);
+        number(j, "size", path, m.size, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::Plane:
         requireObject(j, path, {"type", "size", "subdivisions"});
-        number(j, "size", path, m.size, 1e-4, 1e6);
+        number(j, "size", path, m.size, kSizeRange.lo, kSizeRange.hi);
         integer(j, "subdivisions", path, m.planeSubdivisions, kPlaneSubdivisionsRange.lo, kPlaneSubdivisionsRange.hi);
         break;
     case MeshSpec::Type::Gltf: {
@@ -213,9 +218,9 @@ Material SceneReader::material(const json& j, const std::string& path) const {
 Transform SceneReader::transform(const json& j, const std::string& path) const {
     Transform t;
     requireObject(j, path, {"translation", "rotation_deg", "scale"});
-    vec3(j, "translation", path, t.translation, -1e6, 1e6);
-    vec3(j, "rotation_deg", path, t.rotationDeg, -1e6, 1e6);
-    vec3(j, "scale", path, t.scale, -1e6, 1e6);
+    vec3(j, "translation", path, t.translation, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "rotation_deg", path, t.rotationDeg, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "scale", path, t.scale, kCoordinateRange.lo, kCoordinateRange.hi);
     for (int i = 0; i < 3; ++i)
         if (std::fabs(t.scale[i]) < 1e-6f) fail(join(path, "scale"), "components must not be 0");
     return t;
@@ -228,31 +233,31 @@ Light SceneReader::light(const json& j, const std::string& path) const {
     switch (l.type) {
     case LightType::Point:
         requireObject(j, path, {"type", "position", "color", "intensity", "attenuation", "range"});
-        vec3(j, "position", path, l.position, -1e6, 1e6);
+        vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
         break;
     case LightType::Directional:
         requireObject(j, path, {"type", "direction", "color", "intensity"});
-        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        vec3(j, "direction", path, l.direction, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.direction, join(path, "direction"));
         break;
     case LightType::Area:
         requireObject(j, path, {"type", "position", "normal", "size", "samples", "color", "intensity", "two_sided",
                                 "attenuation", "range"});
-        vec3(j, "position", path, l.position, -1e6, 1e6);
-        vec3(j, "normal", path, l.normal, -1e6, 1e6);
+        vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
+        vec3(j, "normal", path, l.normal, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.normal, join(path, "normal"));
-        vec2(j, "size", path, l.size, 1e-4, 1e6);
+        vec2(j, "size", path, l.size, kSizeRange.lo, kSizeRange.hi);
         ivec2(j, "samples", path, l.samples, 1, kAreaSamplesPerSideRange.hi);
         boolean(j, "two_sided", path, l.twoSided);
         break;
     case LightType::Spot:
         requireObject(j, path, {"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "color", "intensity",
                                 "attenuation", "range"});
-        vec3(j, "position", path, l.position, -1e6, 1e6);
-        vec3(j, "direction", path, l.direction, -1e6, 1e6);
+        vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
+        vec3(j, "direction", path, l.direction, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.direction, join(path, "direction"));
-        number(j, "outer_cone_deg", path, l.outerConeDeg, 0.01, kSpotConeDegRange.hi);
-        number(j, "inner_cone_deg", path, l.innerConeDeg, 0.0, kSpotConeDegRange.hi);
+        number(j, "outer_cone_deg", path, l.outerConeDeg, kSpotOuterConeDegRange.lo, kSpotOuterConeDegRange.hi);
+        number(j, "inner_cone_deg", path, l.innerConeDeg, kSpotConeDegRange.lo, kSpotConeDegRange.hi);
         if (!j.contains("inner_cone_deg")) l.innerConeDeg = 0.5f * l.outerConeDeg;
         if (l.innerConeDeg >= l.outerConeDeg)
             fail(join(path, "inner_cone_deg"), "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
@@ -260,20 +265,20 @@ Light SceneReader::light(const json& j, const std::string& path) const {
     }
     if (l.type != LightType::Directional) {
         choice(j, "attenuation", path, l.attenuation, kAttenuationNames);
-        number(j, "range", path, l.range, 1e-4, 1e9);
+        number(j, "range", path, l.range, kLightRangeRange.lo, kLightRangeRange.hi);
         if (j.contains("range") && l.attenuation != Attenuation::InverseSquare)
             fail(join(path, "range"), "a range needs \"attenuation\": \"inverse-square\"");
     }
     vec3(j, "color", path, l.color, 0.0, 1.0);
-    number(j, "intensity", path, l.intensity, 0.0, 1e9);
+    number(j, "intensity", path, l.intensity, kIntensityRange.lo, kIntensityRange.hi);
     return l;
 }
 
 ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& path) const {
     ShadowSettings s;
     requireObject(j, path, {"normal_bias", "depth_bias", "pcf", "map_size", "area_map_size"});
-    number(j, "normal_bias", path, s.normalBias, 0.0, 100.0);
-    number(j, "depth_bias", path, s.depthBias, 0.0, 100.0);
+    number(j, "normal_bias", path, s.normalBias, kShadowBiasRange.lo, kShadowBiasRange.hi);
+    number(j, "depth_bias", path, s.depthBias, kShadowBiasRange.lo, kShadowBiasRange.hi);
     integer(j, "pcf", path, s.pcf, 0, kPcfRadiusRange.hi);
     integer(j, "map_size", path, s.mapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
     integer(j, "area_map_size", path, s.areaMapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
@@ -283,10 +288,10 @@ ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& pat
 Camera SceneReader::camera(const json& j, const std::string& path) const {
     Camera c;
     requireObject(j, path, {"eye", "target", "up", "fov_y_deg", "near", "far"});
-    vec3(j, "eye", path, c.eye, -1e6, 1e6);
-    vec3(j, "target", path, c.target, -1e6, 1e6);
-    vec3(j, "up", path, c.up, -1e6, 1e6);
-    number(j, "fov_y_deg", path, c.fovYDeg, 1.0, 179.0);
+    vec3(j, "eye", path, c.eye, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "target", path, c.target, kCoordinateRange.lo, kCoordinateRange.hi);
+    vec3(j, "up", path, c.up, kCoordinateRange.lo, kCoordinateRange.hi);
+    number(j, "fov_y_deg", path, c.fovYDeg, kFovYDegRange.lo, kFovYDegRange.hi);
     number(j, "near", path, c.nearPlane, 1e-6, 1e6);
     number(j, "far", path, c.farPlane, 1e-6, 1e7);
     if (c.farPlane <= c.nearPlane) fail(join(path, "far"), "must be greater than near");
@@ -298,42 +303,17 @@ Camera SceneReader::camera(const json& j, const std::string& path) const {
     return c;
 }
 
+// The fields in the order their checks depend on: "show" names a light, so it comes after "lights".
 Scene SceneReader::read(const json& root) {
     Scene s;
     requireObject(root, "",
                   {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
                    "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
                    "fresnel", "ior", "show", "diff", "title", "caption", "textures"});
-    if (root.contains("objects")) {
-        if (root.contains("mesh") || root.contains("material"))
-            fail("objects", "give either \"objects\" or the one-object shorthand \"mesh\"/\"material\", not both");
-        const json& list = root["objects"];
-        if (!list.is_array()) fail("objects", std::string("expected an array, got ") + typeName(list));
-        if (list.size() > 256) fail("objects", "at most 256 objects (got " + std::to_string(list.size()) + ")");
-        s.objects.clear();
-        s.usesObjectList = true;
-        for (size_t i = 0; i < list.size(); ++i) {
-            const std::string p = "objects[" + std::to_string(i) + "]";
-            requireObject(list[i], p, {"mesh", "material", "transform"});
-            SceneObject o;
-            if (list[i].contains("mesh")) o.mesh = mesh(list[i]["mesh"], p + ".mesh");
-            if (list[i].contains("material")) o.material = material(list[i]["material"], p + ".material");
-            if (list[i].contains("transform")) o.transform = transform(list[i]["transform"], p + ".transform");
-            s.objects.push_back(o);
-        }
-    } else {
-        if (root.contains("mesh")) s.objects[0].mesh = mesh(root["mesh"], "mesh");
-        if (root.contains("material")) s.objects[0].material = material(root["material"], "material");
-    }
+    readObjects(root, s);
     choice(root, "shading", "", s.shading, kShadingModeNames);
     choice(root, "layout", "", s.layout, kLayoutNames);
-    if (root.contains("diff")) {
-        const json& d = root["diff"];
-        requireObject(d, "diff", {"a", "b", "factor"});
-        choice(d, "a", "diff", s.diff.a, kShadingModeNames);
-        choice(d, "b", "diff", s.diff.b, kShadingModeNames);
-        number(d, "factor", "diff", s.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
-    }
+    if (root.contains("diff")) s.diff = diff(root["diff"], "diff");
     choice(root, "specular_normalization", "", s.specularNormalization, kSpecularNormalizationNames);
     choice(root, "fresnel", "", s.fresnel, kFresnelModeNames);
     number(root, "ior", "", s.ior, kIorRange.lo, kIorRange.hi);
@@ -345,25 +325,10 @@ Scene SceneReader::read(const json& root) {
     vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
     vec3(root, "background", "", s.background, 0.0, 1.0);
     if (root.contains("lights")) {
-        const json& list = root["lights"];
-        if (!list.is_array()) fail("lights", std::string("expected an array, got ") + typeName(list));
-        if (list.size() > static_cast<size_t>(kMaxLights))
-            fail("lights", "at most " + std::to_string(kMaxLights) + " lights (got " + std::to_string(list.size()) + ")");
-        s.lights.clear();
-        for (size_t i = 0; i < list.size(); ++i) s.lights.push_back(light(list[i], "lights[" + std::to_string(i) + "]"));
+        s.lights = lights(root["lights"], "lights");
         s.lightsGiven = true;
     }
-    if (root.contains("show")) {
-        if (!root["show"].is_string()) fail("show", std::string("expected a string, got ") + typeName(root["show"]));
-        try {
-            s.show = parseTermView(root["show"].get<std::string>(), "");
-        } catch (const InputError& e) {
-            fail("show", e.what());
-        }
-        if (s.show.term == ShowTerm::Light && s.show.light >= int(s.lights.size()))
-            fail("show", "light " + std::to_string(s.show.light) + " does not exist (the scene has " +
-                             std::to_string(s.lights.size()) + " light(s))");
-    }
+    if (root.contains("show")) s.show = show(root["show"], "show", s.lights.size());
     if (root.contains("shadow_settings")) s.shadows = shadowSettings(root["shadow_settings"], "shadow_settings");
     boolean(root, "shadows", "", s.shadows.enabled);
     boolean(root, "textures", "", s.textures);
@@ -372,17 +337,80 @@ Scene SceneReader::read(const json& root) {
         s.cameraGiven = true;
     }
     if (root.contains("size")) {
-        const json& sz = root["size"];
-        if (!sz.is_array() || sz.size() != 2 || !sz[0].is_number_integer() || !sz[1].is_number_integer())
-            fail("size", "expected [width, height] as two integers");
-        const long long w = sz[0].get<long long>(), h = sz[1].get<long long>();
-        if (w < 1 || h < 1 || w > kImageSideRange.hi || h > kImageSideRange.hi)
-            fail("size", "width and height must be between 1 and " + std::to_string(kImageSideRange.hi) + " (got " +
-                             std::to_string(w) + "x" + std::to_string(h) + ")");
-        s.width = static_cast<int>(w);
-        s.height = static_cast<int>(h);
+        const glm::ivec2 size = imageSize(root["size"], "size");
+        s.width = size.x;
+        s.height = size.y;
     }
     return s;
+}
+
+// "objects", or the one-object shorthand "mesh" and "material" (not both).
+void SceneReader::readObjects(const json& root, Scene& s) const {
+    if (!root.contains("objects")) {
+        if (root.contains("mesh")) s.objects[0].mesh = mesh(root["mesh"], "mesh");
+        if (root.contains("material")) s.objects[0].material = material(root["material"], "material");
+        return;
+    }
+    if (root.contains("mesh") || root.contains("material"))
+        fail("objects", "give either \"objects\" or the one-object shorthand \"mesh\"/\"material\", not both");
+    const json& list = root["objects"];
+    if (!list.is_array()) fail("objects", std::string("expected an array, got ") + typeName(list));
+    if (list.size() > 256) fail("objects", "at most 256 objects (got " + std::to_string(list.size()) + ")");
+    s.objects.clear();
+    s.usesObjectList = true;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const std::string p = "objects[" + std::to_string(i) + "]";
+        requireObject(list[i], p, {"mesh", "material", "transform"});
+        SceneObject o;
+        if (list[i].contains("mesh")) o.mesh = mesh(list[i]["mesh"], p + ".mesh");
+        if (list[i].contains("material")) o.material = material(list[i]["material"], p + ".material");
+        if (list[i].contains("transform")) o.transform = transform(list[i]["transform"], p + ".transform");
+        s.objects.push_back(o);
+    }
+}
+
+DiffSettings SceneReader::diff(const json& j, const std::string& path) const {
+    DiffSettings d;
+    requireObject(j, path, {"a", "b", "factor"});
+    choice(j, "a", path, d.a, kShadingModeNames);
+    choice(j, "b", path, d.b, kShadingModeNames);
+    number(j, "factor", path, d.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
+    return d;
+}
+
+std::vector<Light> SceneReader::lights(const json& j, const std::string& path) const {
+    if (!j.is_array()) fail(path, std::string("expected an array, got ") + typeName(j));
+    if (j.size() > static_cast<size_t>(kMaxLights))
+        fail(path, "at most " + std::to_string(kMaxLights) + " lights (got " + std::to_string(j.size()) + ")");
+    std::vector<Light> list;
+    for (size_t i = 0; i < j.size(); ++i) list.push_back(light(j[i], path + "[" + std::to_string(i) + "]"));
+    return list;
+}
+
+// "show": a term of the formula, or "light:N" for one of the scene's `lightCount` lights.
+TermView SceneReader::show(const json& j, const std::string& path, std::size_t lightCount) const {
+    if (!j.is_string()) fail(path, std::string("expected a string, got ") + typeName(j));
+    TermView t;
+    try {
+        t = parseTermView(j.get<std::string>(), "");
+    } catch (const InputError& e) {
+        fail(path, e.what());
+    }
+    if (t.term == ShowTerm::Light && t.light >= int(lightCount))
+        fail(path, "light " + std::to_string(t.light) + " does not exist (the scene has " + std::to_string(lightCount) +
+                       " light(s))");
+    return t;
+}
+
+// [width, height] in pixels, each in kImageSideRange.
+glm::ivec2 SceneReader::imageSize(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 2 || !j[0].is_number_integer() || !j[1].is_number_integer())
+        fail(path, "expected [width, height] as two integers");
+    const long long w = j[0].get<long long>(), h = j[1].get<long long>();
+    if (w < 1 || h < 1 || w > kImageSideRange.hi || h > kImageSideRange.hi)
+        fail(path, "width and height must be between 1 and " + std::to_string(kImageSideRange.hi) + " (got " +
+                       std::to_string(w) + "x" + std::to_string(h) + ")");
+    return {static_cast<int>(w), static_cast<int>(h)};
 }
 
 json vecJson(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
@@ -612,14 +640,37 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
     return m;
 }
 
-Light parseLightShorthand(const std::string& text, const std::string& opt) {
-    std::vector<std::string> parts;
-    std::stringstream ss(text);
-    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
-    auto fail = [&](const std::string& what) -> void { throw InputError(opt + ": " + what + " (in \"" + quoteInput(text) + "\")"); };
-    if (parts.size() < 2) fail("expected TYPE:X,Y,Z[:KEY=VALUE...], e.g. point:1,2,3:intensity=2");
-    auto numbers = [&](const std::string& key, const std::string& v, std::size_t count, char sep, double lo,
-                       double hi) {
+namespace {
+
+// The --light shorthand TYPE:X,Y,Z[:KEY=VALUE]... read into a Light; every error names the option and
+// quotes the text.
+class LightShorthand {
+public:
+    LightShorthand(const std::string& text, const std::string& opt) : text_(text), opt_(opt) {
+        std::stringstream ss(text);
+        for (std::string p; std::getline(ss, p, ':');) parts_.push_back(p);
+    }
+
+    Light read() {
+        if (parts_.size() < 2) fail("expected TYPE:X,Y,Z[:KEY=VALUE...], e.g. point:1,2,3:intensity=2");
+        readTypeAndPlace(parts_[0], parts_[1]);
+        for (std::size_t i = 2; i < parts_.size(); ++i) readKey(parts_[i]);
+        if (rangeGiven_ && l_.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
+        if (l_.type == LightType::Spot) {
+            if (!innerGiven_) l_.innerConeDeg = 0.5f * l_.outerConeDeg;
+            if (l_.innerConeDeg >= l_.outerConeDeg) fail("inner must be less than outer (degrees from the axis)");
+        }
+        return l_;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw InputError(opt_ + ": " + what + " (in \"" + quoteInput(text_) + "\")");
+    }
+
+    // `count` numbers in lo..hi separated by `sep`.
+    std::vector<float> numbers(const std::string& key, const std::string& v, std::size_t count, char sep, double lo,
+                               double hi) const {
         std::vector<float> out;
         std::stringstream vs(v);
         for (std::string item; std::getline(vs, item, sep);) {
@@ -633,79 +684,117 @@ Light parseLightShorthand(const std::string& text, const std::string& opt) {
         if (out.size() != count || (!v.empty() && v.back() == sep))
             fail(key + ": expected " + std::to_string(count) + " numbers separated by '" + std::string(1, sep) + "'");
         return out;
-    };
-    auto vec3Of = [&](const std::string& key, const std::string& v, double lo, double hi) {
+    }
+    float number(const std::string& key, const std::string& v, double lo, double hi) const {
+        return numbers(key, v, 1, ',', lo, hi)[0];
+    }
+    glm::vec3 vec3Of(const std::string& key, const std::string& v, double lo, double hi) const {
         const std::vector<float> n = numbers(key, v, 3, ',', lo, hi);
         return glm::vec3(n[0], n[1], n[2]);
-    };
-    Light l;
-    const std::string& type = parts[0];
-    const std::optional<LightType> lightType = valueNamed(kLightTypeNames, type);
-    if (!lightType)
-        fail("unknown light type \"" + quoteInput(type) + "\" (expected " + namesList(kLightTypeNames, ", ", " or ") + ")");
-    l.type = *lightType;
-    const glm::vec3 where = vec3Of(type, parts[1], -1e6, 1e6);
-    if (l.type == LightType::Directional) {
-        if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
-        l.direction = where;
-    } else {
-        l.position = where;
     }
-    bool rangeGiven = false, innerGiven = false;
-    for (std::size_t i = 2; i < parts.size(); ++i) {
-        const std::string& kv = parts[i];
+    // A direction or normal: not (nearly) zero.
+    glm::vec3 nonZeroVec3Of(const std::string& key, const std::string& v) const {
+        const glm::vec3 d = vec3Of(key, v, kCoordinateRange.lo, kCoordinateRange.hi);
+        if (glm::length(d) < 1e-6f) fail(key + ": must not be a zero-length vector");
+        return d;
+    }
+
+    // TYPE and X,Y,Z: a directional light's travel direction, the others' position (an area light's centre).
+    void readTypeAndPlace(const std::string& type, const std::string& xyz) {
+        const std::optional<LightType> lightType = valueNamed(kLightTypeNames, type);
+        if (!lightType)
+            fail("unknown light type \"" + quoteInput(type) + "\" (expected " + namesList(kLightTypeNames, ", ", " or ") + ")");
+        l_.type = *lightType;
+        const glm::vec3 where = vec3Of(type, xyz, kCoordinateRange.lo, kCoordinateRange.hi);
+        if (l_.type == LightType::Directional) {
+            if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
+            l_.direction = where;
+        } else {
+            l_.position = where;
+        }
+    }
+
+    // One KEY=VALUE (or "two-sided"); which keys a light takes depends on its type.
+    void readKey(const std::string& kv) {
         const std::size_t eq = kv.find('=');
         const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
-        const bool positional = l.type != LightType::Directional, area = l.type == LightType::Area,
-                   spot = l.type == LightType::Spot;
-        if (key == "two-sided" && area && eq == std::string::npos) {
-            l.twoSided = true;
-            continue;
+        if (key == "two-sided" && l_.type == LightType::Area && eq == std::string::npos) {
+            l_.twoSided = true;
+            return;
         }
         if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + quoteInput(kv) + "\"");
-        if (key == "color") l.color = vec3Of(key, value, 0.0, 1.0);
-        else if (key == "intensity") l.intensity = numbers(key, value, 1, ',', 0.0, 1e9)[0];
-        else if (key == "attenuation" && positional) {
+        if (key == "color") l_.color = vec3Of(key, value, 0.0, 1.0);
+        else if (key == "intensity") l_.intensity = number(key, value, kIntensityRange.lo, kIntensityRange.hi);
+        else if (!readAttenuationKey(key, value) && !readAreaKey(key, value) && !readSpotKey(key, value))
+            fail("unknown key \"" + quoteInput(key) + "\" for a " + parts_[0] + " light (" + keysOfType() + ")");
+    }
+    // attenuation, range: point, spot and area lights.
+    bool readAttenuationKey(const std::string& key, const std::string& value) {
+        if (l_.type == LightType::Directional) return false;
+        if (key == "attenuation") {
             const std::optional<Attenuation> a = valueNamed(kAttenuationNames, value);
             if (!a)
                 fail("attenuation: unknown value \"" + quoteInput(value) + "\" (expected " +
                      namesList(kAttenuationNames, ", ", " or ") + ")");
-            l.attenuation = *a;
-        } else if (key == "range" && positional) {
-            l.range = numbers(key, value, 1, ',', 1e-4, 1e9)[0];
-            rangeGiven = true;
-        } else if (key == "normal" && area) {
-            l.normal = vec3Of(key, value, -1e6, 1e6);
-            if (glm::length(l.normal) < 1e-6f) fail("normal: must not be a zero-length vector");
-        } else if (key == "size" && area) {
-            const std::vector<float> wh = numbers(key, value, 2, ',', 1e-4, 1e6);
-            l.size = {wh[0], wh[1]};
-        } else if (key == "direction" && spot) {
-            l.direction = vec3Of(key, value, -1e6, 1e6);
-            if (glm::length(l.direction) < 1e-6f) fail("direction: must not be a zero-length vector");
-        } else if (key == "outer" && spot) {
-            l.outerConeDeg = numbers(key, value, 1, ',', 0.01, kSpotConeDegRange.hi)[0];
-        } else if (key == "inner" && spot) {
-            l.innerConeDeg = numbers(key, value, 1, ',', 0.0, kSpotConeDegRange.hi)[0];
-            innerGiven = true;
-        } else if (key == "samples" && area) {
+            l_.attenuation = *a;
+        } else if (key == "range") {
+            l_.range = number(key, value, kLightRangeRange.lo, kLightRangeRange.hi);
+            rangeGiven_ = true;
+        } else {
+            return false;
+        }
+        return true;
+    }
+    bool readAreaKey(const std::string& key, const std::string& value) {
+        if (l_.type != LightType::Area) return false;
+        if (key == "normal") {
+            l_.normal = nonZeroVec3Of(key, value);
+        } else if (key == "size") {
+            const std::vector<float> wh = numbers(key, value, 2, ',', kSizeRange.lo, kSizeRange.hi);
+            l_.size = {wh[0], wh[1]};
+        } else if (key == "samples") {
             const std::vector<float> n = numbers(key, value, 2, 'x', 1, kAreaSamplesPerSideRange.hi);
             if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
-            l.samples = {int(n[0]), int(n[1])};
+            l_.samples = {int(n[0]), int(n[1])};
         } else {
-            fail("unknown key \"" + quoteInput(key) + "\" for a " + type + " light (" +
-                 (area ? "color, intensity, attenuation, range, normal, size, samples, two-sided"
-                  : spot ? "direction, inner, outer, color, intensity, attenuation, range"
-                  : positional ? "color, intensity, attenuation, range" : "color, intensity") + ")");
+            return false;
         }
+        return true;
     }
-    if (rangeGiven && l.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
-    if (l.type == LightType::Spot) {
-        if (!innerGiven) l.innerConeDeg = 0.5f * l.outerConeDeg;
-        if (l.innerConeDeg >= l.outerConeDeg) fail("inner must be less than outer (degrees from the axis)");
+    bool readSpotKey(const std::string& key, const std::string& value) {
+        if (l_.type != LightType::Spot) return false;
+        if (key == "direction") {
+            l_.direction = nonZeroVec3Of(key, value);
+        } else if (key == "outer") {
+            l_.outerConeDeg = number(key, value, kSpotOuterConeDegRange.lo, kSpotOuterConeDegRange.hi);
+        } else if (key == "inner") {
+            l_.innerConeDeg = number(key, value, kSpotConeDegRange.lo, kSpotConeDegRange.hi);
+            innerGiven_ = true;
+        } else {
+            return false;
+        }
+        return true;
     }
-    return l;
-}
+    const char* keysOfType() const {
+        switch (l_.type) {
+        case LightType::Area: return "color, intensity, attenuation, range, normal, size, samples, two-sided";
+        case LightType::Spot: return "direction, inner, outer, color, intensity, attenuation, range";
+        case LightType::Point: return "color, intensity, attenuation, range";
+        case LightType::Directional: break;
+        }
+        return "color, intensity";
+    }
+
+    const std::string& text_;
+    const std::string& opt_;
+    std::vector<std::string> parts_;
+    Light l_;
+    bool rangeGiven_ = false, innerGiven_ = false;
+};
+
+}  // namespace
+
+Light parseLightShorthand(const std::string& text, const std::string& opt) { return LightShorthand(text, opt).read(); }
 
 TermView parseTermView(const std::string& text, const std::string& where) {
     const std::string prefix = where.empty() ? std::string() : where + ": ";

@@ -31,6 +31,16 @@ inline constexpr Range<int> kShadowMapSizeRange{64, 4096};       // shadow-map s
 inline constexpr Range<int> kPcfRadiusRange{0, 2};               // percentage-closer filtering: (2r+1)^2 lookups
 inline constexpr Range<float> kIorRange{1.0f, 10.0f};            // relative index of refraction eta2 / eta1
 inline constexpr Range<float> kDiffFactorRange{1.0f, 1000.0f};   // layout "diff": |A - B| is multiplied by this
+inline constexpr Range<float> kFovYDegRange{1.0f, 179.0f};       // the camera's vertical field of view
+// Places, directions and sizes in world units, and the lights' values: the scene reader, --light and
+// the panel. double, as the reader compares: 1e-4 has no exact float.
+// Positions, directions, normals, the camera; an object's translation, rotation (degrees) and scale.
+inline constexpr Range<double> kCoordinateRange{-1e6, 1e6};
+inline constexpr Range<double> kSizeRange{1e-4, 1e6};        // radii, cube and plane sizes, area lights' sides
+inline constexpr Range<double> kIntensityRange{0.0, 1e9};    // a light's intensity
+inline constexpr Range<double> kLightRangeRange{1e-4, 1e9};  // a light's "range": 1/r^2 reaches zero there
+inline constexpr Range<double> kSpotOuterConeDegRange{0.01, kSpotConeDegRange.hi};  // the inner cone: kSpotConeDegRange
+inline constexpr Range<double> kShadowBiasRange{0.0, 100.0};  // normal bias (texels) and depth bias (slope)
 // The lobe plot's angle between I and N: at 90 the light grazes the surface and spec is 0.
 inline constexpr Range<float> kIncidenceDegRange{0.0f, 89.0f};
 

@@ -48,6 +48,13 @@ constexpr const char* nameOf(const EnumName<E> (&names)[N], E value) {
     return "?";
 }
 
+// KHR_lights_punctual's light types (glTF): the point, directional and spot lights under the names
+// above, which shadelab's scene format took from glTF; glTF has no area lights.
+inline constexpr EnumName<LightType> kPunctualLightTypeNames[] = {
+    {nameOf(kLightTypeNames, LightType::Point), LightType::Point},
+    {nameOf(kLightTypeNames, LightType::Directional), LightType::Directional},
+    {nameOf(kLightTypeNames, LightType::Spot), LightType::Spot}};
+
 // The value named `text`, if any.
 template <typename E, std::size_t N>
 std::optional<E> valueNamed(const EnumName<E> (&names)[N], const std::string& text) {

@@ -1,0 +1,35 @@
+#pragma once
+// The names of the view's choices that both the command line and the viewer's panel offer, defined
+// once: the overlays (--overlays, the panel's Overlays section) and multisample anti-aliasing (--msaa,
+// the panel's Display section). GL-free, header-only; in core so the command line needs no viewer
+// header (like core/ui/controls.hpp and core/ui/panel_sections.hpp).
+#include "core/scene/scene_names.hpp"
+
+#include <string>
+
+namespace shadelab {
+
+// The overlays a session can start with; render/overlay_renderer.hpp's OverlayOptions switches them.
+enum class Overlay { Wireframe, VertexNormals, FaceNormals, LightMarkers };
+
+// --overlays' names.
+inline constexpr EnumName<Overlay> kOverlayNames[] = {
+    {"wireframe", Overlay::Wireframe},
+    {"vertex-normals", Overlay::VertexNormals},
+    {"face-normals", Overlay::FaceNormals},
+    {"lights", Overlay::LightMarkers}};
+// The panel's checkboxes, with the key that toggles each (core/ui/controls.hpp).
+inline constexpr EnumName<Overlay> kOverlayLabels[] = {
+    {"wireframe (W)", Overlay::Wireframe},
+    {"vertex normals (N)", Overlay::VertexNormals},
+    {"face normals (Shift+N)", Overlay::FaceNormals},
+    {"3D light crosses", Overlay::LightMarkers}};
+
+// Samples per pixel as --msaa takes them (0 and 1: off; the driver may round up). The panel offers
+// the same counts from 1 on, labelled by msaaLabel().
+inline constexpr EnumName<int> kMsaaNames[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}};
+
+// How the panel shows a sample count: "off" for 0 and 1, else "4x".
+inline std::string msaaLabel(int samples) { return samples <= 1 ? "off" : std::to_string(samples) + "x"; }
+
+}  // namespace shadelab

@@ -1,0 +1,12 @@
+#pragma once
+// The readback: a rendered frame back from GL as an Image (for PNG files, tests and screenshots).
+#include "core/image/image.hpp"
+#include "render/render_target.hpp"
+
+namespace shadelab {
+
+// Reads the colour buffer of `target` (bottom-up in GL) into a top-down RGBA image; a multisampled
+// target (render/multisample_target.hpp) is resolved into a temporary copy first.
+Image readPixels(const RenderTarget& target);
+
+}  // namespace shadelab
