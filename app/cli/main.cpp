@@ -1,8 +1,10 @@
 // shadelab's entry point: parse the command line, run the mode it asks for, report errors as one line.
-// Exit status: 0 ok, 2 bad input, 1 anything else. What needs no GL runs here; rendering and the viewer
+// Exit status: 0 ok, 2 bad input, 1 anything else (and, with --reference, an image that differs from it:
+// cli/reference.hpp; its line on stdout tells the two apart). What needs no GL runs here; rendering and the viewer
 // are in run_headless.cpp and run_viewer.cpp, built where their parts are (program.hpp).
 #include "cli/options.hpp"
 #include "cli/program.hpp"
+#include "cli/reference.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/message.hpp"
@@ -15,6 +17,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #ifndef SHADELAB_VERSION
 #define SHADELAB_VERSION "0"
@@ -50,13 +53,14 @@ namespace {
 
 // --plot: drawn on the CPU from core/shading/lighting's formulas: no GL, no context, no shaders.
 int runPlot(const Options& options, const Scene& scene) {
+    const std::optional<Image> reference = readReference(options);
     const Material material = scene.objects.empty() ? Material{} : scene.objects.front().material;
     const Image image = renderPlotImage(scenePlot(*options.plot, scene, material, plotSettings(options)),
                                         options.width.value_or(kPlotDefaultWidth),
                                         options.height.value_or(kPlotDefaultHeight));
-    writePng(*options.output, image);
+    const int status = writeOutputAndCompare(options, image, reference, scene.diff.factor);
     if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
-    return 0;
+    return status;
 }
 
 int runInfo(const Options& options) {

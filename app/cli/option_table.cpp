@@ -6,6 +6,7 @@
 #include "core/base/message.hpp"
 #include "core/ui/panel_sections.hpp"
 #include "core/figures/plot_image.hpp"
+#include "core/image/image.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/view_names.hpp"
@@ -99,6 +100,8 @@ std::pair<std::string, std::string> pairOf(const std::string& flag, const std::s
 }
 
 const EnumName<int> kBackendNames[] = {{"auto", 0}, {"osmesa", 1}, {"egl", 2}};
+const EnumName<MissingReference> kMissingReferenceNames[] = {{"fail", MissingReference::Fail},
+                                                             {"write", MissingReference::Write}};
 
 std::string joined(const char* const* begin, const char* const* end, const char* separator) {
     std::string s;
@@ -144,6 +147,31 @@ const OptionSpec kOptions[] = {
      "with `--output`: a strip under the image with the scene's title (for a preset without one, its file name) "
      "and caption",
      setTrue<&Options::captions>},
+    {"--reference", "", "REF.png", G::General, kNoBounds, nullptr, "",
+     "with `--output` (one frame, or a `--plot`): after writing the image, compare it with REF.png and print one "
+     "line on stdout with the largest and the mean channel difference against `--max-diff` and `--mean-diff`, "
+     "ending `matches` or `differs`; exit status 0 when they match, 1 when they differ or their sizes do, 2 when "
+     "REF.png is missing or not a PNG (see *Screenshot tests in your CI*)",
+     setPath<&Options::reference>},
+    {"--reference-missing", "", "ACTION", G::General, kNoBounds, [] { return namesList(kMissingReferenceNames, " | "); },
+     "", "what a `--reference` that does not exist does: {names}: fail (the default: one line, exit status 2, "
+     "nothing written) or write it from this render (exit status 0, and says so)",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.referenceMissing = choice(self.name, v, kMissingReferenceNames);
+     }},
+    {"--max-diff", "", "D", G::General, bounds(kMaxDiffRange), nullptr, "",
+     "with `--reference`: the largest difference allowed in any channel (R, G, B, A) of any pixel, in /255 "
+     "({range}, default {max-diff})",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.maxDiff = intIn(self, v); }},
+    {"--mean-diff", "", "M", G::General, bounds(kMeanDiffRange), nullptr, "",
+     "with `--reference`: the largest mean difference allowed, over every channel of every pixel, in /255 "
+     "({range}, default {mean-diff})",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.meanDiff = floatIn(self, v); }},
+    {"--diff-output", "", "DIFF.png", G::General, kNoBounds, nullptr, "",
+     "with `--reference`: also write the difference as the diff layout's third pane draws it, per channel "
+     "|image - reference| x the layout's factor (`--diff-factor`, default {diff-factor}); not written when the "
+     "sizes differ",
+     setPath<&Options::diffOutput>},
     {"--shading", "", "MODE", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "shading",
      "shading mode (single layout): {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); }},
@@ -159,7 +187,7 @@ const OptionSpec kOptions[] = {
          o.diffB = choice(self.name, ab.second, kShadingModeNames);
      }},
     {"--diff-factor", "", "X", G::General, bounds(kDiffFactorRange), nullptr, "diff.factor",
-     "layout diff: |A - B| is multiplied by X ({range}, default 4)",
+     "layout diff: |A - B| is multiplied by X ({range}, default {diff-factor})",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.diffFactor = floatIn(self, v); }},
     {"--reflection", "", "MODEL", G::General, kNoBounds, [] { return namesList(kReflectionModelNames, " | "); },
      "reflection", "the specular lobe: {names}",
@@ -370,6 +398,9 @@ std::string optionHelp(const OptionSpec& spec) {
     if (spec.names) fill("{names}", spec.names());
     fill("{plot-size}", std::to_string(kPlotDefaultWidth) + "x" + std::to_string(kPlotDefaultHeight));
     fill("{plot-sizes}", plotSizesText());
+    fill("{max-diff}", formatNumber(ReferenceTolerance{}.maxDiff));
+    fill("{mean-diff}", formatNumber(ReferenceTolerance{}.meanDiff));
+    fill("{diff-factor}", formatNumber(DiffSettings{}.factor));
     return text;
 }
 

@@ -78,6 +78,32 @@ void checkViewerAndPlot(const Options& o, const std::vector<const OptionSpec*>& 
     }
 }
 
+// --reference compares one image: a frame (--output) or a plot (--plot --output). Its settings need it.
+void checkReference(const Options& o) {
+    if (!o.reference) {
+        const char* flag = o.referenceMissing ? "--reference-missing"
+                           : o.maxDiff        ? "--max-diff"
+                           : o.meanDiff       ? "--mean-diff"
+                           : o.diffOutput     ? "--diff-output"
+                                              : nullptr;
+        if (flag) throw InputError(std::string(flag) + ": sets up the comparison with a reference: give --reference REF.png");
+        return;
+    }
+    const char* other = o.playlist            ? "--playlist"
+                        : !o.sweeps.empty()   ? "--sweep"
+                        : o.probe             ? "--probe"
+                        : o.benchmarkFrames   ? "--benchmark"
+                        : o.info              ? "--info"
+                                              : nullptr;
+    if (other)
+        throw InputError(std::string("--reference: compares one --output image (a frame or a --plot); not with ") + other);
+    if (!o.output) throw InputError("--reference: compares the --output image with it: give --output FILE.png");
+    if (!hasExtension(*o.reference, ".png"))
+        throw InputError("--reference: " + *o.reference + ": only .png references are supported");
+    if (o.diffOutput && !hasExtension(*o.diffOutput, ".png"))
+        throw InputError("--diff-output: " + *o.diffOutput + ": only .png output is supported");
+}
+
 // The one place the run mode is worked out (the checks above have refused what does not go together).
 RunMode runMode(const Options& o) {
     if (o.help) return RunMode::Help;
@@ -124,6 +150,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     checkPlaylist(o);
     checkOutputs(o);
     checkViewerAndPlot(o, given);
+    checkReference(o);
     o.mode = runMode(o);
     return o;
 }

@@ -30,11 +30,25 @@ enum class RunMode {
     Viewer,          // anything else: the interactive viewer
 };
 
+// --reference-missing: what a reference that does not exist does.
+enum class MissingReference {
+    Fail,   // one line, exit status 2 (the default)
+    Write,  // the render becomes the reference, exit status 0
+};
+
 struct Options {
     std::string input;                      // scene or model file; empty: the built-in default scene
     std::optional<std::string> output;      // --output FILE.png: render one frame headless (a folder with --playlist)
     std::optional<std::string> playlist;    // --playlist DIR: the lecture presets in DIR (core/scene/playlist.hpp)
     bool captions = false;                  // --captions: --output PNGs get a strip with the title and caption
+    // --reference REF.png: the --output image compared with REF.png (cli/reference.hpp); the thresholds,
+    // what a missing reference does and where the amplified difference goes. Unset: the defaults
+    // (core/image/image.hpp, ReferenceTolerance); each is refused without --reference.
+    std::optional<std::string> reference;
+    std::optional<MissingReference> referenceMissing;
+    std::optional<int> maxDiff;             // --max-diff D (0..255)
+    std::optional<float> meanDiff;          // --mean-diff M (0..255)
+    std::optional<std::string> diffOutput;  // --diff-output DIFF.png
     std::optional<ShadingMode> shading;
     std::optional<Layout> layout;
     std::optional<ReflectionModel> reflection;

@@ -1,6 +1,7 @@
 // The run modes that render without a window (program.hpp): one frame, a sweep sheet, a probed frame,
 // a benchmark, a playlist's images. Built where a headless context is (SHADELAB_OSMESA or SHADELAB_EGL).
 #include "cli/program.hpp"
+#include "cli/reference.hpp"
 #include "core/base/file_io.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace shadelab {
 namespace {
@@ -87,18 +89,21 @@ int runProbeImage(const RunContext& run, Scene scene) {
     return 0;
 }
 
+// --output, with --reference: compared with it (cli/reference.hpp), which is read before the render.
 int runImage(const RunContext& run, Scene scene) {
     const Options& options = run.options;
+    const std::optional<Image> reference = readReference(options);
     const Stopwatch clock;
     const HeadlessFrame frame = renderSceneHeadless(std::move(scene), run.shaders, run.backend, headlessMsaa(options));
     report(options, frame.scene, frame.gltfInfo, frame.triangles);
     const double renderedMs = clock.ms();
-    writePng(*options.output, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption)
-                                               : frame.image);
+    const int status = writeOutputAndCompare(
+        options, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption) : frame.image,
+        reference, frame.scene.diff.factor);
     if (options.verbose)
         std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
-                  << " ms, PNG " << clock.ms() - renderedMs << " ms)\n";
-    return 0;
+                  << " ms, PNG and comparison " << clock.ms() - renderedMs << " ms)\n";
+    return status;
 }
 
 int runBenchmark(const RunContext& run, Scene scene) {

@@ -1,5 +1,6 @@
 // The shadelab executable as a user (or CI) runs it: headless output with no display, one-line errors
 // with exit status 2 and no output file for every kind of bad input, the benchmark's JSON lines.
+#include "cli/cli_fixture.hpp"
 #include "cli/run_shadelab.hpp"
 #include "core/image/image.hpp"
 
@@ -18,38 +19,9 @@
 using namespace shadelab;
 namespace fs = std::filesystem;
 
-namespace {
-
+using test::Cli;
 using test::RunResult;
 using test::slurp;
-
-class Cli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::path(SHADELAB_TEST_OUTPUT_DIR) / "cli" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    // Runs shadelab with no display (DISPLAY and WAYLAND_DISPLAY unset), as CI does.
-    RunResult run(const std::vector<std::string>& args, const std::vector<std::string>& env = {}) const {
-        return test::runShadelab(args, fs::current_path(), dir_, env);
-    }
-    std::string file(const std::string& name, const std::string& contents) const {
-        std::ofstream(dir_ / name) << contents;
-        return (dir_ / name).string();
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    // Runs `args` plus --output NAME and reads the PNG it wrote (an empty image if it failed).
-    Image runToPng(std::vector<std::string> args, const std::string& name) const {
-        args.insert(args.end(), {"--output", path(name)});
-        const RunResult r = run(args);
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        return r.exitCode == 0 ? readPng(path(name)) : Image();
-    }
-    fs::path dir_;
-};
-
-}  // namespace
 
 TEST_F(Cli, RendersTheDefaultCompareLayoutWithoutADisplay) {
     const RunResult r = run({"--layout", "compare", "--size", "240x80", "--output", path("x.png")});

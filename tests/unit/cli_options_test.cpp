@@ -223,6 +223,59 @@ TEST(CliOptions, PlaylistFlags) {
     EXPECT_NE(errorOf({"--output", "dir/"}).find("only .png output"), std::string::npos);  // a folder only with --playlist
 }
 
+// Issue 19: --reference and its settings, with one --output image (a frame or a plot) and nothing else.
+TEST(CliOptions, Reference) {
+    const Options o = parseOptions({"--output", "x.png", "--reference", "r.png", "--max-diff", "3", "--mean-diff",
+                                    "0.5", "--diff-output", "d.png", "--reference-missing=write"});
+    EXPECT_EQ(o.mode, RunMode::Image);
+    EXPECT_EQ(o.reference.value_or(""), "r.png");
+    EXPECT_EQ(o.maxDiff.value_or(-1), 3);
+    EXPECT_FLOAT_EQ(o.meanDiff.value_or(-1), 0.5f);
+    EXPECT_EQ(o.diffOutput.value_or(""), "d.png");
+    EXPECT_EQ(o.referenceMissing, MissingReference::Write);
+    EXPECT_EQ(parseOptions({"--plot", "lobe", "-o", "x.png", "--reference", "r.png"}).mode, RunMode::Plot);
+    EXPECT_FALSE(parseOptions({"-o", "x.png", "--reference", "r.png"}).referenceMissing.has_value());  // fail
+    EXPECT_NO_THROW(parseOptions({"-o", "x.png", "--reference", "r.png", "--captions", "--layout", "diff"}));
+
+    // Each of its settings needs it; it needs one --output image.
+    for (const char* flag : {"--max-diff", "--mean-diff", "--diff-output", "--reference-missing"}) {
+        const std::string value = std::string(flag) == "--diff-output" ? "d.png" : std::string(flag) == "--reference-missing" ? "write" : "1";
+        EXPECT_NE(errorOf({"-o", "x.png", flag, value}).find(std::string(flag) + ": sets up the comparison with a "
+                                                             "reference: give --reference REF.png"),
+                  std::string::npos)
+            << flag;
+    }
+    EXPECT_NE(errorOf({"--reference", "r.png"}).find("--reference: compares the --output image with it: give --output"),
+              std::string::npos);
+    const std::vector<std::vector<std::string>> others = {
+        {"--sweep", "ke=1,2", "-o", "x.png"}, {"--probe", "1,2", "-o", "x.png"}, {"--benchmark", "3"},
+        {"--info", "-o", "x.png"}, {"--playlist", "lecture", "-o", "out/"}};
+    for (std::vector<std::string> args : others) {
+        const std::string flag = args[0];
+        args.insert(args.end(), {"--reference", "r.png"});
+        EXPECT_NE(errorOf(args).find("--reference: compares one --output image (a frame or a --plot); not with " + flag),
+                  std::string::npos)
+            << flag << ": " << errorOf(args);
+    }
+    EXPECT_NE(errorOf({"-o", "x.png", "--reference", "r.jpg"}).find("--reference: r.jpg: only .png references"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png", "--reference", "r.png", "--diff-output", "d"}).find("--diff-output: d: only .png"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png", "--reference", "r.png", "--max-diff", "256"}).find("--max-diff: 256 is out of range (0..255)"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png", "--reference", "r.png", "--max-diff", "1.5"}).find("--max-diff: \"1.5\" is not an integer"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png", "--reference", "r.png", "--mean-diff", "-1"}).find("--mean-diff: must be between 0 and 255 (got -1)"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png", "--reference", "r.png", "--reference-missing", "create"})
+                  .find("--reference-missing: unknown value \"create\" (expected one of fail, write)"),
+              std::string::npos);
+    // --help gives the defaults, from core/image/image.hpp (ReferenceTolerance).
+    const std::string help = usage();
+    EXPECT_NE(help.find("(0..255, default " + std::to_string(ReferenceTolerance{}.maxDiff) + ")"), std::string::npos) << help;
+    EXPECT_NE(help.find("default 0.002)"), std::string::npos) << help;
+}
+
 // The overrides a playlist applies to each preset are the ones a scene file gets.
 TEST(CliOptions, OverridesApplyToAnyScene) {
     const Options o = parseOptions({"--size", "96x54", "--shading", "flat", "--ke", "7", "--no-shadows"});

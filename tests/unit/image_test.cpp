@@ -119,3 +119,48 @@ TEST(FileIo, OutputFolderChecks) {
     EXPECT_THROW(createOutputFolder((dir.path / "no" / "new/").string(), "--output"), InputError);
     EXPECT_FALSE(fs::exists(dir.path / "no"));
 }
+
+// Issue 19: --reference's numbers, per channel as magnum's CompareImage: the largest difference of any
+// channel (alpha too) and the mean over every channel of every pixel.
+TEST(Image, ChannelDifferences) {
+    Image a(4, 2), b(4, 2);
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) a.rgba[i] = b.rgba[i] = 100;
+    CompareResult r = compareImages(a, b, 0);
+    EXPECT_TRUE(r.sizeMatches);
+    EXPECT_EQ(r.channelMax, 0);
+    EXPECT_EQ(r.channelMean, 0.0);
+    b.pixel(1, 0)[0] = 103;  // 3 in red
+    b.pixel(2, 1)[2] = 95;   // 5 in blue
+    b.pixel(3, 1)[3] = 98;   // 2 in alpha
+    r = compareImages(a, b, 0);
+    EXPECT_EQ(r.channelMax, 5);
+    EXPECT_DOUBLE_EQ(r.channelMean, (3.0 + 5.0 + 2.0) / 32.0);  // 8 pixels x 4 channels
+    EXPECT_EQ(r.maxDifference, 5);                               // the golden metric's, RGB only, as before
+    EXPECT_DOUBLE_EQ(r.meanDifference, (3.0 + 5.0) / 8.0);
+
+    const ReferenceTolerance t{5, 10.0 / 32.0};
+    EXPECT_TRUE(t.matches(r));
+    EXPECT_FALSE((ReferenceTolerance{4, 1.0}).matches(r));          // the max over its limit
+    EXPECT_FALSE((ReferenceTolerance{255, 9.9 / 32.0}).matches(r));  // the mean over its limit
+    EXPECT_FALSE(t.matches(compareImages(a, Image(4, 3), 0)));      // another size never matches
+    EXPECT_FALSE(compareImages(a, Image(2, 4), 0).sizeMatches);
+}
+
+// Issue 19: --diff-output is the diff layout's pane on the CPU (shaders/difference.frag): per channel
+// |a - b| x factor, rounded and clamped to 255, alpha 255, whichever image is brighter.
+TEST(Image, AmplifiedDifferenceIsTheDiffPane) {
+    Image a(3, 1), b(3, 1);
+    const std::uint8_t pa[3][4] = {{10, 20, 30, 255}, {200, 0, 255, 255}, {7, 7, 7, 0}};
+    const std::uint8_t pb[3][4] = {{10, 21, 27, 255}, {100, 70, 250, 255}, {7, 7, 7, 255}};
+    for (int x = 0; x < 3; ++x)
+        for (int c = 0; c < 4; ++c) a.pixel(x, 0)[c] = pa[x][c], b.pixel(x, 0)[c] = pb[x][c];
+    const Image d = amplifiedDifference(a, b, 4.0f);
+    ASSERT_EQ(d.width, 3);
+    const std::uint8_t expected[3][4] = {{0, 4, 12, 255}, {255, 255, 20, 255}, {0, 0, 0, 255}};
+    for (int x = 0; x < 3; ++x)
+        for (int c = 0; c < 4; ++c) EXPECT_EQ(d.pixel(x, 0)[c], expected[x][c]) << x << "," << c;
+    EXPECT_EQ(amplifiedDifference(b, a, 4.0f).rgba, d.rgba);                // symmetric
+    EXPECT_EQ(amplifiedDifference(a, b, 2.5f).pixel(0, 0)[2], 8);           // 3 x 2.5 = 7.5, rounded up
+    EXPECT_EQ(amplifiedDifference(a, a, 1000.0f).pixel(1, 0)[0], 0);       // equal is black at any factor
+    EXPECT_THROW(amplifiedDifference(a, Image(3, 2), 4.0f), std::invalid_argument);
+}

@@ -12,12 +12,14 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace shadelab {
 
@@ -146,17 +148,24 @@ CompareResult compareImages(const Image& a, const Image& e, int threshold) {
     CompareResult r;
     r.sizeMatches = a.width == e.width && a.height == e.height;
     if (!r.sizeMatches) return r;
-    double sum = 0.0;
+    double sum = 0.0, channelSum = 0.0;
     for (int y = 0; y < a.height; ++y)
         for (int x = 0; x < a.width; ++x) {
-            const int d = pixelDifference(a.pixel(x, y), e.pixel(x, y));
+            const std::uint8_t *pa = a.pixel(x, y), *pe = e.pixel(x, y);
+            const int d = pixelDifference(pa, pe);
             sum += d;
             r.maxDifference = std::max(r.maxDifference, d);
             if (d > threshold) ++r.failingPixels;
+            for (int c = 0; c < 4; ++c) {
+                const int dc = std::abs(int(pa[c]) - int(pe[c]));
+                channelSum += dc;
+                r.channelMax = std::max(r.channelMax, dc);
+            }
         }
     const double n = double(a.width) * double(a.height);
     r.meanDifference = n > 0 ? sum / n : 0.0;
     r.failingShare = n > 0 ? double(r.failingPixels) / n : 0.0;
+    r.channelMean = n > 0 ? channelSum / (4.0 * n) : 0.0;
     return r;
 }
 
@@ -178,6 +187,19 @@ Image differenceImage(const Image& a, const Image& e, int threshold) {
             }
             out[3] = 255;
         }
+    return d;
+}
+
+Image amplifiedDifference(const Image& a, const Image& b, float factor) {
+    if (a.width != b.width || a.height != b.height) throw std::invalid_argument("amplifiedDifference: sizes differ");
+    Image d(a.width, a.height);
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+        // As difference.frag: clamp(|a - b| x factor, 0, 1), stored to 8 bits rounded to nearest.
+        for (std::size_t c = 0; c < 3; ++c)
+            d.rgba[i + c] = std::uint8_t(
+                std::min(255L, std::lround(float(std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]))) * factor)));
+        d.rgba[i + 3] = 255;
+    }
     return d;
 }
 

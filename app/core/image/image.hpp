@@ -1,5 +1,6 @@
 #pragma once
-// 8-bit RGBA images, PNG input/output (libpng; stb on Windows) and the image comparison used by the golden tests.
+// 8-bit RGBA images, PNG input/output (libpng; stb on Windows) and the image comparisons: the golden tests'
+// and --reference's (cli/reference.hpp).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,14 +38,46 @@ struct CompareResult {
     double meanDifference = 0.0;
     std::size_t failingPixels = 0;
     double failingShare = 0.0;
+    // Per channel, as magnum's DebugTools::CompareImage (--reference, --max-diff, --mean-diff): the largest
+    // difference of any channel (R, G, B or A) of any pixel, and the mean over every channel of every pixel.
+    int channelMax = 0;
+    double channelMean = 0.0;
     bool matches(const CompareTolerance& t) const {
         return sizeMatches && failingShare <= t.maxFailingShare && meanDifference <= t.maxMean;
     }
 };
 CompareResult compareImages(const Image& actual, const Image& expected, int pixelThreshold);
+
+// --reference's thresholds (cli/reference.hpp, --max-diff and --mean-diff), per channel in /255: the
+// images match when they are of one size, no channel of any pixel differs by more than maxDiff and the
+// mean over every channel of every pixel is at most meanDiff.
+//
+// The defaults, measured with llvmpipe (Mesa 22.3, Debian 12) on the default scene, the default in the
+// compare layout, lecture presets 06 (k_e 32), 14 (two objects) and 03 (layout diff, k_e 100) and the
+// Suzanne glTF model, each at 1280x720, 320x240 and 160x120 (18 cases; max /255, mean):
+//   llvmpipe against llvmpipe (EGL against OSMesa)   max 0-2 (2: layout diff), mean 0 - 2.3e-4 (Suzanne, 160x120)
+//   k_e + 1 (32 -> 33, 100 -> 101)                  max 2,    mean 0.0084 - 0.064
+//   k_e + 0.1 (the slider's displayed precision)    max 1-2,  mean 0.0008 - 0.0057 (about half fail)
+//   the light moved 0.05 (a pixel of its drag)       max 2-46, mean 0.019 - 0.73
+//   another shading mode (phong -> gouraud; diff's A) max 48-255, mean 0.13 - 9.9
+// A one-step k_e change moves no channel more than the two backends do, so the mean is what tells
+// them apart: 0.002 is 8x the largest llvmpipe mean and a quarter of the smallest k_e + 1 one. The max
+// of 4 lets a 1/255 flicker through layout diff's x4 pane, twice the largest measured, and still fails
+// every mode change; OSMesa against EGL differs by 1/255 at a handful of pixels (cli_test.cpp).
+struct ReferenceTolerance {
+    int maxDiff = 4;
+    double meanDiff = 0.002;
+    bool matches(const CompareResult& r) const {
+        return r.sizeMatches && r.channelMax <= maxDiff && r.channelMean <= meanDiff;
+    }
+};
 // Visualises a comparison: grey copy of `expected`, failing pixels in red, smaller differences in
 // yellow with brightness proportional to the difference.
 Image differenceImage(const Image& actual, const Image& expected, int pixelThreshold);
 std::string describe(const CompareResult& r, const CompareTolerance& t);
+
+// The difference pane's look (layout diff, shaders/difference.frag) on the CPU: per channel
+// min(255, round(|a - b| x factor)), alpha 255. Both images of one size (else std::invalid_argument).
+Image amplifiedDifference(const Image& a, const Image& b, float factor);
 
 }  // namespace shadelab

@@ -49,6 +49,9 @@ inline constexpr Range<int> kBenchmarkFramesRange{1, 1000000};
 inline constexpr Range<int> kViewerFramesRange{1, 100000000};
 inline constexpr Range<int> kProgressiveStrideRange{1, 16};  // area-light samples spread over S*S frames
 inline constexpr Range<float> kUiScaleRange{0.75f, 4.0f};     // on top of the monitor's content scale
+// --reference's thresholds, in /255 (the defaults, and what they were measured against: core/image/image.hpp).
+inline constexpr Range<int> kMaxDiffRange{0, 255};           // --max-diff: any channel of any pixel
+inline constexpr Range<float> kMeanDiffRange{0.0f, 255.0f};  // --mean-diff: over every channel of every pixel
 
 // The light count's bound under the name the renderer and shaders/shared_defs.glsl (SL_MAX_LIGHTS) use.
 inline constexpr int kMaxLights = kLightCountRange.hi;
