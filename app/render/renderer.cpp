@@ -19,6 +19,11 @@
 namespace shadelab {
 namespace {
 
+// "llvmpipe (LLVM 15.0.6, 128 bits)": Mesa's software rasteriser on its SSE path (see autoMayInterpolate_).
+bool llvmpipeOn128Bits(const std::string& glRenderer) {
+    return glRenderer.find("llvmpipe") != std::string::npos && glRenderer.find("128 bits") != std::string::npos;
+}
+
 void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
     dst[0] = v.x, dst[1] = v.y, dst[2] = v.z, dst[3] = w;
 }
@@ -95,6 +100,7 @@ Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders, RendererO
                                  std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
                                  std::to_string(GLAD_VERSION_MINOR(version)));
     uniforms_ = std::make_unique<UniformStager>();
+    autoMayInterpolate_ = !llvmpipeOn128Bits(glRenderer());
     checkGl("renderer set-up");
 }
 
@@ -122,7 +128,7 @@ void Renderer::preparePrograms(const Scene& scene) {
         for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
             programs_.get(mode, scene, {false, false, t, false});
         // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
-        if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && options_.phongInputs != PhongInputs::Uniform)
+        if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && mayInterpolate())
             programs_.get(ShadingMode::Phong, scene, {false, true, t, false});
     }
 }
@@ -153,8 +159,7 @@ void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
 }
 
 bool Renderer::interpolatesInputs(std::size_t object, const Pane& pane, const Scene& scene) const {
-    if (pane.mode != ShadingMode::Phong || scene.lights.size() > SL_MAX_INTERPOLATED_LIGHTS ||
-        options_.phongInputs == PhongInputs::Uniform)
+    if (pane.mode != ShadingMode::Phong || scene.lights.size() > SL_MAX_INTERPOLATED_LIGHTS || !mayInterpolate())
         return false;
     if (options_.phongInputs == PhongInputs::Interpolated) return true;
     // Each input costs llvmpipe set-up work per triangle, each uniform read work per fragment: the

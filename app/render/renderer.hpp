@@ -96,6 +96,15 @@ private:
                   const std::vector<Draw>& draws, bool accumulate);
 
     const RendererOptions options_;
+    // PhongInputs::Auto may pick the interpolated-inputs variant: not on llvmpipe's 128-bit path
+    // (LP_NATIVE_VECTOR_WIDTH=128, a CPU without AVX), where Mesa 22.3 corrupts its own heap drawing
+    // that program (glibc aborts in the first large Phong draw; the uniform variant, the same picture,
+    // is fine). Decided once from GL_RENDERER.
+    bool autoMayInterpolate_ = true;
+    bool mayInterpolate() const {
+        return options_.phongInputs == PhongInputs::Interpolated ||
+               (options_.phongInputs == PhongInputs::Auto && autoMayInterpolate_);
+    }
     ProgramCache programs_;
     MeshCache meshes_;
     ShadowMaps shadowMaps_;
