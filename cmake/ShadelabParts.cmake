@@ -75,9 +75,9 @@ shadelab_part(SHADELAB_VIEWER "the viewer (GLFW, Dear ImGui)"
               "there is no window: shadelab renders only with --output, and the viewer tests are not built"
               ${_missing_viewer})
 shadelab_part(SHADELAB_OSMESA "the OSMesa headless context"
-              "--backend osmesa is refused and the GL tests run on EGL only" ${_missing_osmesa})
+              "--backend osmesa is refused and the GL tests on OSMesa are not built" ${_missing_osmesa})
 shadelab_part(SHADELAB_EGL "the EGL headless context"
-              "--backend egl is refused and the GL tests run on OSMesa only" ${_missing_egl})
+              "--backend egl is refused and the GL tests on EGL (gl.egl.*) are not built" ${_missing_egl})
 
 if(SHADELAB_OSMESA OR SHADELAB_EGL)
   set(SHADELAB_HEADLESS ON)
