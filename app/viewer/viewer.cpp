@@ -7,6 +7,7 @@
 #include "core/scene/scene_json.hpp"
 #include "core/ui/controls.hpp"
 #include "platform/platform.hpp"
+#include "viewer/formula_view.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -129,6 +130,7 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     uiScale_ = startUiScale(options_, prefs_);
     if (!settings_.startSections && prefs_.openSections) settings_.startSections = prefs_.openSections;
     if (options_.noLabels) settings_.paneLabels = settings_.lightLabels = false;
+    settings_.showFormula = options_.formula;
     status_.glRenderer = renderer_->glRenderer();
     msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : std::max(prefs_.msaa.value_or(4), 1);
     for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
@@ -271,6 +273,13 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
     const std::vector<UiRect> lightBoxes =
         settings_.lightLabels ? drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight, labelsBottom)
                               : std::vector<UiRect>{};
+    UiRect messageArea = l.view;  // above the formula when it is shown
+    if (settings_.showFormula) {
+        const Scene& scene = document_.scene();
+        const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
+        const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
+        messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale) - l.view.y;
+    }
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
                                                              std::to_string(playlist_.size())
@@ -278,7 +287,7 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
         drawCaption(document_.scene(), counter, l.captionText, l.caption);
     }
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
-    if (messageShown_) drawMessage(status_, l.view);
+    if (messageShown_) drawMessage(status_, messageArea);
     if (showHelp_) drawHelpOverlay(l.view);
     return lightBoxes;
 }
@@ -446,6 +455,7 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
         case 'n': overlays.vertexNormals = !overlays.vertexNormals; break;
         case 'N': overlays.faceNormals = !overlays.faceNormals; break;
         case 'l': case 'L': settings_.lightLabels = !settings_.lightLabels; break;
+        case 'e': case 'E': settings_.showFormula = !settings_.showFormula; break;
         case 'r': case 'R': document_.resetCamera(); break;
         case 'f': case 'F': document_.frameModel(); break;
         case '?': showHelp_ = !showHelp_; break;
