@@ -18,6 +18,8 @@ namespace {
 
 // Debian's fonts-dejavu-core. DejaVu Sans has every letter the lecture writes: θ, η₁, k_e, N·I, →.
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+// Its monospaced cut, for GLSL in the Shader section (ImGui's second font, when present).
+constexpr const char* kMonoFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 // Text size at scale 1, in pixels: larger than ImGui's 13 px default, for a projector.
 constexpr float kFontPixels = 16.0f;
 
@@ -72,6 +74,8 @@ void ImGuiLayer::buildFonts() {
     // Checked first: Debian's Dear ImGui is built with asserts, and a missing file aborts in it.
     trueType_ = std::filesystem::is_regular_file(kFontPath) &&
                 io.Fonts->AddFontFromFileTTF(kFontPath, pixels, &config, kGlyphRanges) != nullptr;
+    if (trueType_ && std::filesystem::is_regular_file(kMonoFontPath))
+        io.Fonts->AddFontFromFileTTF(kMonoFontPath, std::round(0.9f * pixels), &config, kGlyphRanges);
     if (!trueType_) {
         std::fprintf(stderr, "shadelab: %s not found (Debian: fonts-dejavu-core): using ImGui's bitmap font\n", kFontPath);
         ImFontConfig fallback;

@@ -5,6 +5,7 @@
 #include "core/base/file_io.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene_json.hpp"
+#include "core/figures/shader_listing.hpp"
 #include "core/ui/controls.hpp"
 #include "platform/platform.hpp"
 #include "viewer/formula_view.hpp"
@@ -131,6 +132,7 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     if (!settings_.startSections && prefs_.openSections) settings_.startSections = prefs_.openSections;
     if (options_.noLabels) settings_.paneLabels = settings_.lightLabels = false;
     settings_.showFormula = options_.formula;
+    readShaderSources(ShaderLibrary(options_.shaderDir));
     status_.glRenderer = renderer_->glRenderer();
     msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : std::max(prefs_.msaa.value_or(4), 1);
     for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
@@ -456,6 +458,14 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
         case 'N': overlays.faceNormals = !overlays.faceNormals; break;
         case 'l': case 'L': settings_.lightLabels = !settings_.lightLabels; break;
         case 'e': case 'E': settings_.showFormula = !settings_.showFormula; break;
+        case 's': case 'S': {
+            // The Shader section: opened (and the panel shown) or closed again.
+            const auto& open = settings_.openSections;
+            const bool isOpen = settings_.showPanel && std::find(open.begin(), open.end(), "shader") != open.end();
+            settings_.openShader = !isOpen;
+            settings_.showPanel = true;
+            break;
+        }
         case 'r': case 'R': document_.resetCamera(); break;
         case 'f': case 'F': document_.frameModel(); break;
         case '?': showHelp_ = !showHelp_; break;
@@ -714,12 +724,27 @@ void Viewer::writeLastFrameFiles(const FrameLayout& l, const Image& view) {
     }
 }
 
+// The files the Shader section lists, as they are now (a reload shows the text it compiled, also when
+// it failed: the error's line is in it).
+void Viewer::readShaderSources(const ShaderLibrary& shaders) {
+    status_.shaderSources.clear();
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+        for (const std::string& file : shaderFilesOf(mode)) {
+            try {
+                status_.shaderSources[file] = shaders.load(file);
+            } catch (const std::exception&) {
+                // Not there: the section says so.
+            }
+        }
+}
+
 void Viewer::reloadShaders() {
     // Build the new programs first; on any error the running ones stay (the lecture goes on).
     try {
         // A trial frame builds every program the scene needs (render() compiles on first use and
         // throws ShaderError); the frame's own render draws over it.
         const ShaderLibrary shaders(options_.shaderDir);
+        readShaderSources(shaders);
         auto renderer = makeRenderer(shaders);
         auto overlays = std::make_unique<OverlayRenderer>(shaders);
         renderer->setGeometry(document_.geometry());
@@ -734,7 +759,9 @@ void Viewer::reloadShaders() {
         setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (no shaders/ folder: start with --shader-dir DIR to edit them)"
                                              : "reloaded shaders from " + options_.shaderDir,
                   false);
+        status_.shaderError.clear();
     } catch (const std::exception& e) {
+        status_.shaderError = e.what();
         setStatus(std::string("shaders not reloaded, the previous ones stay:\n") + e.what(), true);
     }
 }

@@ -113,6 +113,7 @@ private:
     void resetPreset();
     void showingPreset(const std::string& what);
     void reloadShaders();
+    void readShaderSources(const ShaderLibrary& shaders);  // for the panel's Shader section
     void setStatus(std::string message, bool isError);
     // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
     // the same surface point with the scene as it is then.

@@ -3,6 +3,7 @@
 #include "cli/cli_fixture.hpp"
 #include "cli/run_shadelab.hpp"
 #include "core/figures/formula_image.hpp"
+#include "core/figures/shader_listing.hpp"
 #include "core/image/image.hpp"
 
 #include <gtest/gtest.h>
@@ -648,4 +649,36 @@ TEST_F(Cli, FormulaOverlayHighlightsTheShownTerm) {
                 break;
             }
     EXPECT_LT(probedTop, top);
+}
+
+// The shader view's error marks come from the driver's log as the renderer words it: a real compile
+// error of tests/bad-inputs/broken_shaders/phong.frag (lines 1 and 2 are wrong) is found at its lines.
+TEST_F(Cli, ShaderCompileErrorsNameTheirLines) {
+    const std::string broken = std::string(SHADELAB_SOURCE_DIR) + "/tests/bad-inputs/broken_shaders";
+    const RunResult r = run({"--shader-dir", broken, "--shading", "phong", "--size", "16x16", "--output", path("x.png")});
+    ASSERT_EQ(r.exitCode, 2) << r.err;
+    const std::vector<GlslError> errors = glslErrors(r.err);
+    ASSERT_GE(errors.size(), 2u) << r.err;
+    EXPECT_EQ(errors[0].file, "phong.frag");
+    EXPECT_EQ(errors[0].line, 1);
+    EXPECT_EQ(errors[1].line, 2);
+    const std::vector<GlslLine> lines = listGlsl("phong.frag", slurp(broken + "/phong.frag"), errors);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_FALSE(lines[0].error.empty());
+    EXPECT_FALSE(lines[1].error.empty());
+
+    // An error inside a function of the lighting include is that file's line (Mesa loses the source
+    // number there; the include step's line numbers keep it).
+    fs::copy(fs::path(SHADELAB_SOURCE_DIR) / "shaders", dir_ / "shaders");
+    const std::string lighting = slurp(dir_ / "shaders" / "lighting.glsl");
+    const std::string code = "float spec = pow(max(cosLobe, 0.0), specularExponent());";
+    const std::size_t at = lighting.find(code);
+    ASSERT_NE(at, std::string::npos);
+    const int line = 1 + int(std::count(lighting.begin(), lighting.begin() + std::ptrdiff_t(at), '\n'));
+    std::ofstream(dir_ / "shaders" / "lighting.glsl") << std::string(lighting).insert(at + code.size() - 1, " + oops");
+    const RunResult inFunction = run({"--shader-dir", path("shaders"), "--size", "16x16", "--output", path("y.png")});
+    const std::vector<GlslError> there = glslErrors(inFunction.err);
+    ASSERT_FALSE(there.empty()) << inFunction.err;
+    EXPECT_EQ(there[0].file, "lighting.glsl") << inFunction.err;
+    EXPECT_EQ(there[0].line, line) << inFunction.err;
 }
