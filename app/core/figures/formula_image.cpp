@@ -32,7 +32,8 @@ void blendRoundedRect(Image& image, float x0, float y0, float x1, float y1, floa
 TextMetrics trueTypeMetrics(const TrueTypeFont& font) {
     // stb_truetype sizes by the em, ImGui (and the layout) by the line height: em = size / lineHeight(1).
     const float linePerEm = font.height(1.0f);
-    return TextMetrics{[&font, linePerEm](const std::string& s, float size) { return font.width(s, size / linePerEm); },
+    const TrueTypeFont* f = &font;
+    return TextMetrics{[f, linePerEm](const std::string& s, float size) { return f->width(s, size / linePerEm); },
                        font.ascent(1.0f) / linePerEm};
 }
 
