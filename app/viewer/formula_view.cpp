@@ -17,8 +17,8 @@ ImU32 imColor(Rgba8 c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 }  // namespace
 
 float drawFormulaOverView(const Scene& scene, const Material& material, const ProbeResult* probe, const UiRect& view,
-                         float framebufferScale) {
-    ImFont* font = ImGui::GetFont();
+                          float framebufferScale, ImFont* font) {
+    if (!font) font = ImGui::GetFont();
     const TextMetrics metrics{[font](const std::string& s, float size) {
                                   return font->CalcTextSizeA(size, FLT_MAX, 0.0f, s.c_str()).x;
                               },

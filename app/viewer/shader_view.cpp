@@ -37,6 +37,13 @@ ShadingMode chosenMode(const Scene& scene, ViewSettings& settings, const ProbeRe
     return panes[std::size_t(settings.shaderPane)].mode;
 }
 
+// DejaVu Sans Mono, where ImGuiLayer loaded it (null: the panel's font).
+ImFont* monoFont() {
+    for (ImFont* f : ImGui::GetIO().Fonts->Fonts)
+        if (std::string(f->GetDebugName()).rfind("DejaVuSansMono", 0) == 0) return f;
+    return nullptr;
+}
+
 void legend() {
     ImGui::TextUnformatted("terms:");
     for (const auto& [name, term] : {std::pair{"ambient", FormulaTerm::Ambient}, std::pair{"diffuse", FormulaTerm::Diffuse},
@@ -94,7 +101,7 @@ void sectionShader(const Scene& scene, ViewSettings& settings, const PanelStatus
         if (text == status.shaderSources.end()) {
             ImGui::TextDisabled("%s: not found", file.c_str());
         } else {
-            ImFont* mono = ImGui::GetIO().Fonts->Fonts.Size > 1 ? ImGui::GetIO().Fonts->Fonts[1] : nullptr;
+            ImFont* mono = monoFont();
             if (mono) ImGui::PushFont(mono);
             const float rows = 26.0f;
             ImGui::BeginChild("##listing", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()), true,

@@ -280,7 +280,8 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
         const Scene& scene = document_.scene();
         const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
         const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
-        messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale) - l.view.y;
+        messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale,
+                                                  imgui_.formulaFont()) - l.view.y;
     }
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
