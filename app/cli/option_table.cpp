@@ -147,6 +147,13 @@ const OptionSpec kOptions[] = {
      "with `--output`: a strip under the image with the scene's title (for a preset without one, its file name) "
      "and caption",
      setTrue<&Options::captions>},
+    // Issue 18, the formula overlay.
+    {"--formula", "", "", G::General, kNoBounds, nullptr, "",
+     "the lecture's formula over the bottom of the view, for the scene's reflection model, normalisation and "
+     "Fresnel: the term `--show` isolates highlighted, the others dimmed; k_a, k_d, k_s, k_e's values under their "
+     "symbols; with `--probe`, each term's value at that pixel; over each pane, where its mode evaluates the "
+     "formula. The viewer starts with it on (key E); with `--output` it is drawn into the PNG",
+     setTrue<&Options::formula>},
     {"--reference", "", "REF.png", G::General, kNoBounds, nullptr, "",
      "with `--output` (one frame, or a `--plot`): after writing the image, compare it with REF.png and print one "
      "line on stdout with the largest and the mean channel difference against `--max-diff` and `--mean-diff`, "

@@ -42,6 +42,9 @@ void checkPlaylist(const Options& o) {
 void checkOutputs(const Options& o) {
     if (o.captions && (!o.output || !o.sweeps.empty()))
         throw InputError("--captions: adds a title strip to --output images (not to sweep sheets); give --output");
+    if (o.formula && (!o.sweeps.empty() || o.benchmarkFrames || o.plot || o.info))
+        throw InputError(std::string("--formula: draws over a frame (the viewer's or --output's); not with ") +
+                         (!o.sweeps.empty() ? "--sweep" : o.benchmarkFrames ? "--benchmark" : o.plot ? "--plot" : "--info"));
     if (o.output && !o.playlist && !hasExtension(*o.output, ".png"))
         throw InputError("--output: " + *o.output + ": only .png output is supported");
     if (o.screenshot && !hasExtension(*o.screenshot, ".png"))

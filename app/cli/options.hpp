@@ -41,6 +41,7 @@ struct Options {
     std::optional<std::string> output;      // --output FILE.png: render one frame headless (a folder with --playlist)
     std::optional<std::string> playlist;    // --playlist DIR: the lecture presets in DIR (core/scene/playlist.hpp)
     bool captions = false;                  // --captions: --output PNGs get a strip with the title and caption
+    bool formula = false;                   // --formula: the lecture's formula over the view (viewer: key E)
     // --reference REF.png: the --output image compared with REF.png (cli/reference.hpp); the thresholds,
     // what a missing reference does and where the amplified difference goes. Unset: the defaults
     // (core/image/image.hpp, ReferenceTolerance); each is refused without --reference.

@@ -3,6 +3,8 @@
 #include "cli/program.hpp"
 #include "cli/reference.hpp"
 #include "core/base/file_io.hpp"
+#include "core/figures/formula_image.hpp"
+#include "core/geometry/camera.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/probe/probe.hpp"
@@ -35,6 +37,23 @@ struct RunContext {
     HeadlessBackend backend;
 };
 
+// --formula: the formula overlay drawn into the frame (core/figures/formula_image.hpp), with a probed
+// pixel's terms and material when there is one; then --captions' strip under it.
+Image finished(const Options& options, Image image, const Scene& scene, const std::string& title,
+               const ProbeResult* probe = nullptr) {
+    if (options.formula) {
+        const bool hit = probe && !probe->miss;
+        const Material material = hit ? probe->material : scene.objects.empty() ? Material{} : scene.objects[0].material;
+        FormulaInput in = formulaInput(scene, material);
+        if (hit) in.probed = probedTerms(*probe), in.probedAt = probedPlace(*probe);
+        std::vector<FormulaPane> panes;
+        for (const Pane& p : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff))
+            panes.push_back({float(p.x), float(p.y), float(p.width), float(p.height), p.mode, p.difference});
+        drawFormulaOverlay(image, in, panes);
+    }
+    return options.captions ? withCaptionStrip(image, title, scene.caption) : image;
+}
+
 HeadlessBackend backendOf(const Options& options) {
     if (options.backend == "egl") return HeadlessBackend::Egl;
     if (options.backend == "osmesa") return HeadlessBackend::OsMesa;
@@ -55,7 +74,7 @@ int runPlaylistImages(const RunContext& run) {
     for (const Scene& s : scenes) kept += 4 * std::uint64_t(s.width) * std::uint64_t(s.height);
     renderScenesHeadless(scenes, run.shaders, run.backend, [&](std::size_t i, Image image) {
         const Preset& p = presets[i];
-        frames[i] = options.captions ? withCaptionStrip(image, presetTitle(p), p.scene.caption) : std::move(image);
+        frames[i] = finished(options, std::move(image), scenes[i], presetTitle(p));
     }, headlessMsaa(options), kept);
     createOutputFolder(*options.output, "--output");
     for (std::size_t i = 0; i < presets.size(); ++i) {
@@ -84,7 +103,8 @@ int runProbeImage(const RunContext& run, Scene scene) {
     const auto geometry = loadGeometry(options, scene);
     const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
                                          options.probe->y);
-    writePng(*options.output, renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options)));
+    writePng(*options.output, finished(options, renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options)),
+                                       scene, scene.title, &probe));
     std::cout << probeToJson(scene, probe) << std::endl;
     return 0;
 }
@@ -98,7 +118,7 @@ int runImage(const RunContext& run, Scene scene) {
     report(options, frame.scene, frame.gltfInfo, frame.triangles);
     const double renderedMs = clock.ms();
     const int status = writeOutputAndCompare(
-        options, options.captions ? withCaptionStrip(frame.image, frame.scene.title, frame.scene.caption) : frame.image,
+        options, finished(options, frame.image, frame.scene, frame.scene.title),
         reference, frame.scene.diff.factor);
     if (options.verbose)
         std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs

@@ -29,6 +29,7 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
     viewer.uiScale = options.uiScale.value_or(0.0f);
     viewer.fullscreen = options.fullscreen;
     viewer.noLabels = options.noLabels;
+    viewer.formula = options.formula;
     viewer.resetLayout = options.resetLayout;
     viewer.msaa = options.msaa.value_or(-1);
     viewer.verbose = options.verbose;

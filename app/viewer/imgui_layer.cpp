@@ -1,5 +1,7 @@
 #include "viewer/imgui_layer.hpp"
 
+#include "core/figures/formula.hpp"
+
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -18,6 +20,8 @@ namespace {
 
 // Debian's fonts-dejavu-core. DejaVu Sans has every letter the lecture writes: θ, η₁, k_e, N·I, →.
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+// Its monospaced cut, for GLSL in the Shader section (ImGui's second font, when present).
+constexpr const char* kMonoFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 // Text size at scale 1, in pixels: larger than ImGui's 13 px default, for a projector.
 constexpr float kFontPixels = 16.0f;
 
@@ -25,6 +29,9 @@ constexpr float kFontPixels = 16.0f;
 // arrows and mathematical operators (≤, ∑, ∠).
 const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E,
                                 0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+
+// The formula overlay's characters only (Latin-1 with ·, Σ, −, ∥, ⊥): its font is large.
+const ImWchar kFormulaGlyphRanges[] = {0x0020, 0x00FF, 0x03A3, 0x03A3, 0x2212, 0x2212, 0x2225, 0x2225, 0x22A5, 0x22A5, 0};
 
 // The backend derives the modifiers from KeysDown in its key callback; a held Ctrl counts too.
 void updateModifiers(ImGuiIO& io) {
@@ -72,6 +79,13 @@ void ImGuiLayer::buildFonts() {
     // Checked first: Debian's Dear ImGui is built with asserts, and a missing file aborts in it.
     trueType_ = std::filesystem::is_regular_file(kFontPath) &&
                 io.Fonts->AddFontFromFileTTF(kFontPath, pixels, &config, kGlyphRanges) != nullptr;
+    monoFont_ = formulaFont_ = nullptr;
+    if (trueType_ && std::filesystem::is_regular_file(kMonoFontPath))
+        monoFont_ = io.Fonts->AddFontFromFileTTF(kMonoFontPath, std::round(0.9f * pixels), &config, kGlyphRanges);
+    // The formula's main line is drawn at kFormulaSize times the text: rasterised at that size, so it is
+    // crisp on a projector rather than a magnified bitmap.
+    if (trueType_)
+        formulaFont_ = io.Fonts->AddFontFromFileTTF(kFontPath, std::round(kFormulaSize * pixels), &config, kFormulaGlyphRanges);
     if (!trueType_) {
         std::fprintf(stderr, "shadelab: %s not found (Debian: fonts-dejavu-core): using ImGui's bitmap font\n", kFontPath);
         ImFontConfig fallback;

@@ -8,6 +8,7 @@
 #include <vector>
 
 struct ImDrawList;
+struct ImFont;
 
 struct GLFWwindow;
 
@@ -28,6 +29,10 @@ public:
     float scale() const { return scale_; }
     // Whether the panel's font is DejaVu Sans (false: it was not found and ImGui's bitmap font is used).
     bool trueTypeFont() const { return trueType_; }
+    // DejaVu Sans Mono at about the text's size (the Shader section's code), and DejaVu Sans at the
+    // formula overlay's size; null where the font files are missing.
+    ImFont* monoFont() const { return monoFont_; }
+    ImFont* formulaFont() const { return formulaFont_; }
 
     // Dear ImGui 1.86 reads key state once a frame: a key pressed and released within one frame (a
     // short tap at a low frame rate) would never be seen down. `pressed` are the keys pressed since the
@@ -61,6 +66,8 @@ private:
     void stampPanel(std::uint64_t hash, int width);
     float scale_ = 1.0f;
     bool trueType_ = false;
+    ImFont* monoFont_ = nullptr;
+    ImFont* formulaFont_ = nullptr;
     std::vector<int> held_;
 };
 

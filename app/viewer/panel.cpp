@@ -7,6 +7,7 @@
 #include "core/ui/view_names.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
+#include "viewer/shader_view.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -319,6 +320,7 @@ void sectionOverlays(ViewSettings& s) {
     ImGui::Checkbox("light labels (L)", &s.lightLabels);
     ImGui::SameLine();
     overlay(Overlay::LightMarkers);
+    ImGui::Checkbox("formula over the view (E)", &s.showFormula);
     ImGui::Checkbox("pane labels", &s.paneLabels);
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);
@@ -491,19 +493,26 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     }
     if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
         sectionPlots(scene, object ? object->material : Material{}, settings.plots);
-    if (object && section("Mesh", kPanelSections[3], true))
+    // S opens or closes it, and brings it into view.
+    if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
+    if (section("Shader: the GLSL of the pane's mode (S)", kPanelSections[3], false)) {
+        if (settings.openShader) ImGui::SetScrollHereY(0.0f);
+        sectionShader(scene, settings, status, probe);
+    }
+    settings.openShader.reset();
+    if (object && section("Mesh", kPanelSections[4], true))
         sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
-    if (section("Lights", kPanelSections[4], true)) sectionLights(scene, settings.selectedLight);
-    if (section("Shadows", kPanelSections[5], true)) sectionShadows(scene.shadows);
-    if (section("Overlays", kPanelSections[6], true)) {
+    if (section("Lights", kPanelSections[5], true)) sectionLights(scene, settings.selectedLight);
+    if (section("Shadows", kPanelSections[6], true)) sectionShadows(scene.shadows);
+    if (section("Overlays", kPanelSections[7], true)) {
         sectionOverlays(settings);
         sectionDisplay(status, requests);
     }
-    if (section("Camera", kPanelSections[7], false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
-    if (section("Background", kPanelSections[8], false)) colorEdit("background", scene.background);
-    if (section("File", kPanelSections[9], true)) sectionFile(settings, status, requests);
-    if (section("Keys", kPanelSections[10], false)) sectionKeys();
-    static_assert(std::size(kPanelSections) == 11, "every section above has its name");
+    if (section("Camera", kPanelSections[8], false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
+    if (section("Background", kPanelSections[9], false)) colorEdit("background", scene.background);
+    if (section("File", kPanelSections[10], true)) sectionFile(settings, status, requests);
+    if (section("Keys", kPanelSections[11], false)) sectionKeys();
+    static_assert(std::size(kPanelSections) == 12, "every section above has its name");
     settings.startSections.reset();
     // ImGui marks every edit a widget makes (MarkItemEdited, this frame's flag); the light buttons
     // change the list.

@@ -10,8 +10,10 @@
 #include "core/geometry/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
 
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadelab {
@@ -24,6 +26,7 @@ struct ViewSettings {
     bool showHud = true;           // frame time, FPS, triangles, GL renderer
     bool showCaption = true;       // a scene's title and caption in a band above the 3D view
     bool lightLabels = true;       // L: each light's marker, number and kind drawn over the view
+    bool showFormula = false;      // E, --formula: the lecture's formula over the view (viewer/formula_view.hpp)
     bool readoutWhenHidden = true; // Tab keeps the frame-time strip (a switch in the Overlays section)
     std::string scenePath;         // the Save / Load field
     int selectedObject = 0;        // whose material, mesh and transform the panel shows
@@ -34,6 +37,12 @@ struct ViewSettings {
     // The light selected in the panel (-1: none): an area light shows its samples, and the probe's
     // arrows show only this light's I, R and H.
     int selectedLight = -1;
+    // The Shader section (viewer/shader_view.hpp): the pane whose mode it lists (-1: the probed one or
+    // the first), the shader error it last scrolled to, and S's request to open or close it.
+    int shaderPane = -1;
+    std::string shaderErrorSeen;
+    std::optional<std::pair<std::string, int>> shaderScrollTo;  // a new error's file and line, until shown
+    std::optional<bool> openShader;
 };
 
 // What the panel shows besides the scene.
@@ -55,6 +64,10 @@ struct PanelStatus {
     int msaa = 1;                     // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;
     std::vector<std::string> modelCameras;  // the first glTF model's cameras (GltfInfo::cameras), by name
+    // The Shader section: each GLSL file's text as the programs were (re)built from it, by file name,
+    // and the last failed reload's message (empty after a good one).
+    std::map<std::string, std::string> shaderSources;
+    std::string shaderError;
 };
 
 // Buttons pressed this frame.

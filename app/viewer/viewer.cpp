@@ -5,8 +5,10 @@
 #include "core/base/file_io.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene_json.hpp"
+#include "core/figures/shader_listing.hpp"
 #include "core/ui/controls.hpp"
 #include "platform/platform.hpp"
+#include "viewer/formula_view.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
 
@@ -129,6 +131,8 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     uiScale_ = startUiScale(options_, prefs_);
     if (!settings_.startSections && prefs_.openSections) settings_.startSections = prefs_.openSections;
     if (options_.noLabels) settings_.paneLabels = settings_.lightLabels = false;
+    settings_.showFormula = options_.formula;
+    readShaderSources(ShaderLibrary(options_.shaderDir));
     status_.glRenderer = renderer_->glRenderer();
     msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : std::max(prefs_.msaa.value_or(4), 1);
     for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
@@ -271,6 +275,14 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
     const std::vector<UiRect> lightBoxes =
         settings_.lightLabels ? drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight, labelsBottom)
                               : std::vector<UiRect>{};
+    UiRect messageArea = l.view;  // above the formula when it is shown
+    if (settings_.showFormula) {
+        const Scene& scene = document_.scene();
+        const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
+        const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
+        messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale,
+                                                  imgui_.formulaFont()) - l.view.y;
+    }
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
                                                              std::to_string(playlist_.size())
@@ -278,7 +290,7 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
         drawCaption(document_.scene(), counter, l.captionText, l.caption);
     }
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
-    if (messageShown_) drawMessage(status_, l.view);
+    if (messageShown_) drawMessage(status_, messageArea);
     if (showHelp_) drawHelpOverlay(l.view);
     return lightBoxes;
 }
@@ -446,6 +458,15 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
         case 'n': overlays.vertexNormals = !overlays.vertexNormals; break;
         case 'N': overlays.faceNormals = !overlays.faceNormals; break;
         case 'l': case 'L': settings_.lightLabels = !settings_.lightLabels; break;
+        case 'e': case 'E': settings_.showFormula = !settings_.showFormula; break;
+        case 's': case 'S': {
+            // The Shader section: opened (and the panel shown) or closed again.
+            const auto& open = settings_.openSections;
+            const bool isOpen = settings_.showPanel && std::find(open.begin(), open.end(), "shader") != open.end();
+            settings_.openShader = !isOpen;
+            settings_.showPanel = true;
+            break;
+        }
         case 'r': case 'R': document_.resetCamera(); break;
         case 'f': case 'F': document_.frameModel(); break;
         case '?': showHelp_ = !showHelp_; break;
@@ -704,12 +725,27 @@ void Viewer::writeLastFrameFiles(const FrameLayout& l, const Image& view) {
     }
 }
 
+// The files the Shader section lists, as they are now (a reload shows the text it compiled, also when
+// it failed: the error's line is in it).
+void Viewer::readShaderSources(const ShaderLibrary& shaders) {
+    status_.shaderSources.clear();
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+        for (const std::string& file : shaderFilesOf(mode)) {
+            try {
+                status_.shaderSources[file] = shaders.load(file);
+            } catch (const std::exception&) {
+                // Not there: the section says so.
+            }
+        }
+}
+
 void Viewer::reloadShaders() {
     // Build the new programs first; on any error the running ones stay (the lecture goes on).
     try {
         // A trial frame builds every program the scene needs (render() compiles on first use and
         // throws ShaderError); the frame's own render draws over it.
         const ShaderLibrary shaders(options_.shaderDir);
+        readShaderSources(shaders);
         auto renderer = makeRenderer(shaders);
         auto overlays = std::make_unique<OverlayRenderer>(shaders);
         renderer->setGeometry(document_.geometry());
@@ -724,7 +760,9 @@ void Viewer::reloadShaders() {
         setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (no shaders/ folder: start with --shader-dir DIR to edit them)"
                                              : "reloaded shaders from " + options_.shaderDir,
                   false);
+        status_.shaderError.clear();
     } catch (const std::exception& e) {
+        status_.shaderError = e.what();
         setStatus(std::string("shaders not reloaded, the previous ones stay:\n") + e.what(), true);
     }
 }

@@ -53,6 +53,7 @@ struct ViewerOptions {
     std::vector<Preset> playlist;
     SceneAdjust adjustPreset;
     bool noLabels = false;            // --no-labels: pane and light labels start off
+    bool formula = false;             // --formula: start with the formula over the view (E)
     bool resetLayout = false;         // --reset-layout: forget (and overwrite) the remembered layout
     float uiScale = 0.0f;             // --ui-scale: on top of the monitor's content scale; 0: not given
     bool fullscreen = false;          // --fullscreen (F11)
@@ -112,6 +113,7 @@ private:
     void resetPreset();
     void showingPreset(const std::string& what);
     void reloadShaders();
+    void readShaderSources(const ShaderLibrary& shaders);  // for the panel's Shader section
     void setStatus(std::string message, bool isError);
     // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
     // the same surface point with the scene as it is then.

@@ -2,6 +2,8 @@
 // with exit status 2 and no output file for every kind of bad input, the benchmark's JSON lines.
 #include "cli/cli_fixture.hpp"
 #include "cli/run_shadelab.hpp"
+#include "core/figures/formula_image.hpp"
+#include "core/figures/shader_listing.hpp"
 #include "core/image/image.hpp"
 
 #include <gtest/gtest.h>
@@ -605,4 +607,93 @@ TEST_F(Cli, ModelLightsAreListedAndLightTheScene) {
     const RunResult given = run({stage, "--size", "160x120", "--light", "point:3,4,5", "--output", path("given.png")});
     ASSERT_EQ(given.exitCode, 0) << given.err;
     EXPECT_GT(compareImages(readPng(path("own.png")), readPng(path("given.png")), 20).failingPixels, 1000u);
+}
+
+// --formula: the PNG differs from the plain render only at the bottom, where the overlay is; the term
+// --show isolates gets its colour's tint and the others dim (measured in each term's box on the
+// formula's main line, where the layout puts it on this image); --probe adds the terms' values.
+TEST_F(Cli, FormulaOverlayHighlightsTheShownTerm) {
+    const TrueTypeFont* font = TrueTypeFont::dejaVuSans();
+    if (!font) GTEST_SKIP() << "DejaVu Sans is not installed";
+    const std::vector<std::string> size = {"--size", "480x270"};
+    const Image plain = runToPng(size, "plain.png");
+    auto args = [&](std::vector<std::string> more) {
+        more.insert(more.begin(), size.begin(), size.end());
+        more.push_back("--formula");
+        return more;
+    };
+    const Image all = runToPng(args({}), "all.png");
+    ASSERT_EQ(all.width, 480);
+    int top = all.height, changed = 0;
+    for (int y = 0; y < all.height; ++y)
+        for (int x = 0; x < all.width; ++x)
+            if (!std::equal(all.pixel(x, y), all.pixel(x, y) + 4, plain.pixel(x, y))) top = std::min(top, y), ++changed;
+    EXPECT_GT(changed, 5000);
+    EXPECT_GT(top, all.height * 6 / 10) << "the overlay reaches up to row " << top;
+
+    // Each term's box on the main line, for --show diffuse (the boxes do not move with --show).
+    Scene scene;
+    FormulaInput in = formulaInput(scene, scene.objects[0].material);
+    const FormulaOverlay o = imageFormulaOverlay(all, in, {{0, 0, 480, 270, ShadingMode::Phong, false}}, *font);
+    // The mean of one channel minus the mean of the other two, over a term's first box.
+    auto tint = [&](const Image& img, FormulaTerm term, int channel) {
+        const auto box = std::find_if(o.formula.boxes.begin(), o.formula.boxes.end(), [&](const FormulaBox& b) { return b.term == term; });
+        double sum = 0.0;
+        int n = 0;
+        for (int y = int(o.y + box->y0) + 1; y < int(o.y + box->y1) - 1; ++y)
+            for (int x = int(o.x + box->x0) + 1; x < int(o.x + box->x1) - 1; ++x, ++n) {
+                const std::uint8_t* p = img.pixel(x, y);
+                sum += p[channel] - 0.5 * (p[(channel + 1) % 3] + p[(channel + 2) % 3]);
+            }
+        return sum / std::max(n, 1);
+    };
+    const Image diffuse = runToPng(args({"--show", "diffuse"}), "diffuse.png");
+    const Image specular = runToPng(args({"--show", "specular"}), "specular.png");
+    // Green is the diffuse term's colour, blue's absence the specular's (gold).
+    EXPECT_GT(tint(diffuse, FormulaTerm::Diffuse, 1), tint(specular, FormulaTerm::Diffuse, 1) + 10.0);
+    EXPECT_GT(tint(diffuse, FormulaTerm::Diffuse, 1), tint(all, FormulaTerm::Diffuse, 1) + 5.0);
+    EXPECT_LT(tint(specular, FormulaTerm::Specular, 2), tint(diffuse, FormulaTerm::Specular, 2) - 10.0);
+
+    // A probed pixel adds a row of values: the overlay grows upward.
+    const Image probed = runToPng(args({"--probe", "240,135"}), "probed.png");
+    int probedTop = probed.height;
+    for (int y = 0; y < probed.height && probedTop == probed.height; ++y)
+        for (int x = 0; x < probed.width; ++x)
+            if (!std::equal(probed.pixel(x, y), probed.pixel(x, y) + 4, plain.pixel(x, y))) {
+                probedTop = y;
+                break;
+            }
+    EXPECT_LT(probedTop, top);
+}
+
+// The shader view's error marks come from the driver's log as the renderer words it: a real compile
+// error of tests/bad-inputs/broken_shaders/phong.frag (lines 1 and 2 are wrong) is found at its lines.
+TEST_F(Cli, ShaderCompileErrorsNameTheirLines) {
+    const std::string broken = std::string(SHADELAB_SOURCE_DIR) + "/tests/bad-inputs/broken_shaders";
+    const RunResult r = run({"--shader-dir", broken, "--shading", "phong", "--size", "16x16", "--output", path("x.png")});
+    ASSERT_EQ(r.exitCode, 2) << r.err;
+    const std::vector<GlslError> errors = glslErrors(r.err);
+    ASSERT_GE(errors.size(), 2u) << r.err;
+    EXPECT_EQ(errors[0].file, "phong.frag");
+    EXPECT_EQ(errors[0].line, 1);
+    EXPECT_EQ(errors[1].line, 2);
+    const std::vector<GlslLine> lines = listGlsl("phong.frag", slurp(broken + "/phong.frag"), errors);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_FALSE(lines[0].error.empty());
+    EXPECT_FALSE(lines[1].error.empty());
+
+    // An error inside a function of the lighting include is that file's line (Mesa loses the source
+    // number there; the include step's line numbers keep it).
+    fs::copy(fs::path(SHADELAB_SOURCE_DIR) / "shaders", dir_ / "shaders");
+    const std::string lighting = slurp(dir_ / "shaders" / "lighting.glsl");
+    const std::string code = "float spec = pow(max(cosLobe, 0.0), specularExponent());";
+    const std::size_t at = lighting.find(code);
+    ASSERT_NE(at, std::string::npos);
+    const int line = 1 + int(std::count(lighting.begin(), lighting.begin() + std::ptrdiff_t(at), '\n'));
+    std::ofstream(dir_ / "shaders" / "lighting.glsl") << std::string(lighting).insert(at + code.size() - 1, " + oops");
+    const RunResult inFunction = run({"--shader-dir", path("shaders"), "--size", "16x16", "--output", path("y.png")});
+    const std::vector<GlslError> there = glslErrors(inFunction.err);
+    ASSERT_FALSE(there.empty()) << inFunction.err;
+    EXPECT_EQ(there[0].file, "lighting.glsl") << inFunction.err;
+    EXPECT_EQ(there[0].line, line) << inFunction.err;
 }

@@ -21,10 +21,10 @@ TEST(GlslInclude, ResolvesIncludesOnceAndEmitsLineDirectives) {
     EXPECT_EQ(out.text,
               "#version 330 core\n"
               "#line 1 0\n"
-              "#line 1 1\n"
-              "#line 1 2\n"
+              "#line 100001 1\n"
+              "#line 200001 2\n"
               "float b;\n"
-              "#line 2 1\n"
+              "#line 100002 1\n"
               "float a;\n"
               "#line 2 0\n"   // b.glsl again: already included, skipped
               "#line 3 0\n"
@@ -47,6 +47,9 @@ TEST(GlslInclude, DriverLogsPointAtFilesAndLines) {
     const std::string log = "0:12(5): error: syntax error\n2:3(1): warning: unused\nlink failed\n";
     EXPECT_EQ(locateGlslLog(log, {"phong.frag", "uniforms.glsl", "lighting.glsl"}),
               "phong.frag:12(5): error: syntax error\nlighting.glsl:3(1): warning: unused\nlink failed\n");
+    // Mesa loses the source number inside function bodies; the line number still names the file.
+    EXPECT_EQ(locateGlslLog("0:200111(60): error: `oops' undeclared\n", {"phong.frag", "uniforms.glsl", "lighting.glsl"}),
+              "lighting.glsl:111(60): error: `oops' undeclared\n");
 }
 
 TEST(SharedDefs, CppAndGlslAgreeOnLimits) {

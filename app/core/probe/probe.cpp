@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -260,6 +261,29 @@ ProbeResult probePixel(const Scene& scene, const SceneGeometry& geometry, const 
     if (!hit || !validAnchor(scene, geometry, ProbeAnchor{x, y, r.pane, hit->object, hit->triangle, hit->barycentric}))
         return r;
     return probeAnchor(scene, geometry, caster, ProbeAnchor{x, y, r.pane, hit->object, hit->triangle, hit->barycentric});
+}
+
+std::string probedPlace(const ProbeResult& result) {
+    std::string mode = result.modes.empty() ? "" : toString(result.modes[0].mode);
+    if (!mode.empty()) mode[0] = char(std::toupper(static_cast<unsigned char>(mode[0])));
+    return "at pixel " + std::to_string(result.x) + "," + std::to_string(result.y) + (mode.empty() ? "" : " (" + mode + ")");
+}
+
+std::optional<ShadingTerms> probedTerms(const ProbeResult& result) {
+    if (result.miss || result.modes.empty() || result.modes[0].evaluations.empty()) return std::nullopt;
+    const ModeProbe& m = result.modes[0];
+    ShadingTerms t;
+    if (m.evaluations.size() == 1) {
+        t = m.evaluations[0].terms;
+    } else {
+        for (std::size_t k = 0; k < m.evaluations.size() && k < 3; ++k) {
+            const ShadingTerms& e = m.evaluations[k].terms;
+            const float w = result.anchor.barycentric[int(k)];
+            t.ambient += w * e.ambient, t.diffuse += w * e.diffuse, t.specular += w * e.specular, t.shown += w * e.shown;
+        }
+    }
+    t.total = m.color;
+    return t;
 }
 
 }  // namespace shadelab

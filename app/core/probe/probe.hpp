@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,14 @@ ProbeResult probePixel(const Scene& scene, const SceneGeometry& geometry, const 
 ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const SceneRayCaster& caster,
                         const ProbeAnchor& anchor);
 bool validAnchor(const Scene& scene, const SceneGeometry& geometry, const ProbeAnchor& anchor);
+
+// The formula's terms at the probed pixel as its mode computes them (the formula overlay's values):
+// phong's and flat's one evaluation; gouraud's three corners weighted by the point's barycentrics, as
+// the colours are interpolated. `total` is the pixel's colour (linear, clamped). The first mode's, in
+// the diff layout's difference pane; nullopt for a miss.
+std::optional<ShadingTerms> probedTerms(const ProbeResult& result);
+// "at pixel 1050,330 (Phong)": the pixel and the mode whose terms probedTerms gives.
+std::string probedPlace(const ProbeResult& result);
 
 // The result as JSON text (README, "Pixel probe", lists the fields).
 std::string probeToJson(const Scene& scene, const ProbeResult& result);

@@ -31,6 +31,8 @@ inline constexpr Control kControls[] = {
     {"W", "wireframe"},
     {"N   Shift+N", "vertex normals / face normals"},
     {"L", "light markers"},
+    {"E", "the formula over the view (the term --show isolates highlighted)"},
+    {"S", "the shader's GLSL in the panel (Shader section), terms marked"},
     {"R   F", "reset the camera to the scene's / frame the model"},
     {"Page Down  Page Up  (Right  Left)", "playlist: next / previous preset"},
     {"Home  End", "playlist: first / last preset"},

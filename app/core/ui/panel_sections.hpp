@@ -3,7 +3,7 @@
 // Header-only constants in core: cli/ checks the flag against them without depending on the viewer.
 namespace shadelab {
 
-inline constexpr const char* kPanelSections[] = {"shading", "material", "plots", "mesh", "lights", "shadows",
+inline constexpr const char* kPanelSections[] = {"shading", "material", "plots", "shader", "mesh", "lights", "shadows",
                                                  "overlays", "camera", "background", "file", "keys"};
 
 }  // namespace shadelab

@@ -18,7 +18,10 @@ void expandInto(const std::string& name, const std::function<std::string(const s
     std::istringstream in(load(name));
     std::string line;
     int lineNo = 0;
-    out.text += "#line 1 " + std::to_string(id) + "\n";
+    const auto lineDirective = [id](int n) {
+        return "#line " + std::to_string(id * kGlslLinesPerFile + n) + " " + std::to_string(id) + "\n";
+    };
+    out.text += lineDirective(1);
     while (std::getline(in, line)) {
         ++lineNo;
         const size_t first = line.find_first_not_of(" \t");
@@ -27,7 +30,7 @@ void expandInto(const std::string& name, const std::function<std::string(const s
             if (open == std::string::npos || close == std::string::npos)
                 throw std::runtime_error(name + ":" + std::to_string(lineNo) + ": malformed #include");
             expandInto(line.substr(open + 1, close - open - 1), load, out, depth + 1);
-            out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(id) + "\n";
+            out.text += lineDirective(lineNo + 1);
         } else if (first != std::string::npos && line.compare(first, 8, "#version") == 0) {
             throw std::runtime_error(name + ":" + std::to_string(lineNo) +
                                      ": #version is added by the include step; remove it");
@@ -62,8 +65,15 @@ std::string locateGlslLog(const std::string& log, const std::vector<std::string>
         while (digits < line.size() && std::isdigit(static_cast<unsigned char>(line[digits]))) ++digits;
         if (p != std::string::npos && digits > p && digits + 1 < line.size() && line[digits] == ':' &&
             std::isdigit(static_cast<unsigned char>(line[digits + 1]))) {
-            const size_t id = std::stoul(line.substr(p, digits - p));
-            if (id < files.size()) line = line.substr(0, p) + files[id] + line.substr(digits);
+            size_t id = std::stoul(line.substr(p, digits - p));
+            size_t end = digits + 1;
+            while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) ++end;
+            std::string number = line.substr(digits + 1, end - digits - 1);
+            if (number.size() < 10) {  // the file in the line number wins (see kGlslLinesPerFile)
+                const unsigned long n = std::stoul(number);
+                if (n >= unsigned(kGlslLinesPerFile)) id = n / kGlslLinesPerFile, number = std::to_string(n % kGlslLinesPerFile);
+            }
+            if (id < files.size()) line = line.substr(0, p) + files[id] + ":" + number + line.substr(end);
         }
         result += line + "\n";
     }

@@ -1,12 +1,16 @@
 #pragma once
 // The small include step for GLSL files: resolves `#include "file"` (each file once per program, like
 // #pragma once), puts `#version 330 core` first and emits `#line N S` so a driver's log points at the
-// right file and line: source-string number S is the index of the file in `files`.
+// right file and line: source-string number S is the index of the file in `files`. The line numbers
+// carry it too, N = S * kGlslLinesPerFile + the line: Mesa reports source 0 for errors inside a
+// function body (its parser does not pass the source number on), but keeps their line numbers.
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace shadelab {
+
+inline constexpr int kGlslLinesPerFile = 100000;
 
 struct ExpandedGlsl {
     std::string text;                 // ready for glShaderSource
@@ -19,7 +23,8 @@ ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string
                         const std::vector<std::string>& defines = {});
 
 // Rewrites a driver log so that source numbers become file names: Mesa's "0:12(5): error: ..."
-// becomes "phong.frag:12(5): error: ...".
+// becomes "phong.frag:12(5): error: ..."; a line number past kGlslLinesPerFile names its file itself
+// ("0:200012(5)" is line 12 of files[2]).
 std::string locateGlslLog(const std::string& log, const std::vector<std::string>& files);
 
 }  // namespace shadelab

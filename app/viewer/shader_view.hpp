@@ -1,0 +1,14 @@
+#pragma once
+// The panel's Shader section (key S): the GLSL files the selected pane's mode runs (its vertex and
+// fragment stages and shaders/lighting.glsl), read-only, with line numbers, syntax colours and the
+// lines that compute each term of the formula marked in the formula overlay's colours; after a failed
+// reload (F5) the error's line is marked red with the driver's message (core/figures/shader_listing.hpp).
+#include "core/probe/probe.hpp"
+#include "core/scene/scene.hpp"
+#include "viewer/panel.hpp"
+
+namespace shadelab {
+
+void sectionShader(const Scene& scene, ViewSettings& settings, const PanelStatus& status, const ProbeResult* probe);
+
+}  // namespace shadelab
