@@ -6,11 +6,14 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <sstream>
 
 namespace shadelab {
 namespace {
+
+namespace fs = std::filesystem;
 
 const char* outcomeWord(CaseOutcome o) {
     return o == CaseOutcome::Match ? "matches" : o == CaseOutcome::Differs ? "differs" : "error";
@@ -104,12 +107,15 @@ std::string junitXml(const TestRun& run) {
     const std::string counts = "tests=\"" + std::to_string(run.cases.size()) + "\" failures=\"" +
                                std::to_string(countOf(run, CaseOutcome::Differs)) + "\" errors=\"" +
                                std::to_string(countOf(run, CaseOutcome::Error)) + "\"";
+    // "shadelab.screens" for --test path/to/screens/: what a CI's test view groups the cases under.
+    const fs::path dir = fs::path(run.dir).filename().empty() ? fs::path(run.dir).parent_path() : fs::path(run.dir);
+    const std::string classname = "shadelab." + dir.filename().string();
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadelab --test\" " << counts << " time=\""
       << seconds(run.seconds) << "\">\n  <testsuite name=\"" << xmlEscaped("shadelab --test " + run.dir) << "\" "
       << counts << " skipped=\"0\" time=\"" << seconds(run.seconds) << "\">\n";
     for (const TestCase& c : run.cases) {
-        x << "    <testcase classname=\"" << xmlEscaped("shadelab." + run.dir) << "\" name=\"" << xmlEscaped(c.name)
+        x << "    <testcase classname=\"" << xmlEscaped(classname) << "\" name=\"" << xmlEscaped(c.name)
           << "\" file=\"" << xmlEscaped(c.scenePath) << "\" time=\"" << seconds(c.seconds) << "\"";
         if (c.outcome == CaseOutcome::Match) {
             x << "/>\n";

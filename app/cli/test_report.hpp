@@ -53,7 +53,8 @@ std::string caseLine(const TestRun& run, const TestCase& c);
 std::string summaryLine(const TestRun& run);
 
 // The JUnit XML document: <testsuites> with one <testsuite> (tests, failures, errors, time) and one
-// <testcase> per scene, a <failure> or <error> whose message has the numbers or the reason.
+// <testcase> per scene (classname "shadelab.FOLDER", FOLDER the last part of DIR), a <failure> or <error>
+// whose message has the numbers or the reason.
 std::string junitXml(const TestRun& run);
 // The HTML page: the summary, each failing case with its images side by side (data: URIs, at their own
 // pixel size), the matching cases listed.

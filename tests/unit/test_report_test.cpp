@@ -19,7 +19,7 @@ std::size_t occurrences(const std::string& text, const std::string& part) {
 // Three cases: one matches, one differs by numbers over the limits, one is a shader that did not compile.
 TestRun sampleRun() {
     TestRun run;
-    run.dir = "scenes";
+    run.dir = "tests/scenes/";
     run.referencesDir = "refs";
     run.seconds = 1.5;
     TestCase match;
@@ -61,18 +61,18 @@ TEST(TestReport, EscapingAndBase64) {
 
 TEST(TestReport, SummaryNamesTheFailingCasesAndEachShaderErrorOnce) {
     const TestRun run = sampleRun();
-    EXPECT_EQ(summaryLine(run), "shadelab: --test scenes: 4 scenes, 1 match, 1 differs (b<&>\"'), 2 errors (c_shader, "
+    EXPECT_EQ(summaryLine(run), "shadelab: --test tests/scenes/: 4 scenes, 1 match, 1 differs (b<&>\"'), 2 errors (c_shader, "
                                 "d_shader); shader: " + run.cases[2].message);
-    EXPECT_EQ(caseLine(run, run.cases[1]), "shadelab: --test scenes: b<&>\"': differs: " + run.cases[1].message);
+    EXPECT_EQ(caseLine(run, run.cases[1]), "shadelab: --test tests/scenes/: b<&>\"': differs: " + run.cases[1].message);
     TestRun allMatch = run;
     allMatch.cases = {run.cases[0]};
-    EXPECT_EQ(summaryLine(allMatch), "shadelab: --test scenes: 1 scene, 1 match");
+    EXPECT_EQ(summaryLine(allMatch), "shadelab: --test tests/scenes/: 1 scene, 1 match");
 }
 
 TEST(TestReport, JunitHasOneTestcasePerSceneAndTheNumbers) {
     const std::string xml = junitXml(sampleRun());
     EXPECT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites ", 0), 0u) << xml;
-    EXPECT_NE(xml.find("<testsuite name=\"shadelab --test scenes\" tests=\"4\" failures=\"1\" errors=\"2\" skipped=\"0\" "
+    EXPECT_NE(xml.find("<testsuite name=\"shadelab --test tests/scenes/\" tests=\"4\" failures=\"1\" errors=\"2\" skipped=\"0\" "
                        "time=\"1.500\">"),
               std::string::npos)
         << xml;
