@@ -139,7 +139,8 @@ TEST_F(TestSuite, ReportShowsTheFailingImagesInABrowser) {
               1);
     const std::string command = "cd " + dir_.string() +
                                 " && timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
-                                "--force-device-scale-factor=1 --screenshot=" + path("page.png") +
+                                "--disable-dev-shm-usage --user-data-dir=" + path("profile") +  // (a container's small /dev/shm)
+                                " --force-device-scale-factor=1 --screenshot=" + path("page.png") +
                                 " --window-size=900,700 file://" + path("report.html") + " >chromium.log 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << slurp(path("chromium.log"));
     const Image page = readPng(path("page.png"));
