@@ -84,7 +84,8 @@ int runInfo(const Options& options) {
 int runHeadless(const Options& options) { return runHeadlessMode(options); }
 #else
 int runHeadless(const Options& options) {
-    const char* flag = options.mode == RunMode::SweepSheet ? "--sweep"
+    const char* flag = options.mode == RunMode::TestSuite    ? "--test"
+                       : options.mode == RunMode::SweepSheet ? "--sweep"
                        : options.mode == RunMode::ProbeImage ? "--probe"
                        : options.mode == RunMode::Benchmark  ? "--benchmark"
                                                              : "--output";
@@ -117,6 +118,8 @@ int run(const std::vector<std::string>& args) {
     if (options.screenshot) checkOutputPath(*options.screenshot, "--screenshot");
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");
     if (options.saveScene) checkOutputPath(*options.saveScene, "--save-scene");
+    if (options.junit) checkOutputPath(*options.junit, "--junit");
+    if (options.report) checkOutputPath(*options.report, "--report");
     switch (options.mode) {
     case RunMode::Plot: return runPlot(options, sceneFromOptions(options));
     case RunMode::Info: return runInfo(options);
@@ -138,12 +141,8 @@ int main(int argc, char** argv) {
         std::cerr << "shadelab: " << shadelab::oneLine(e.what()) << "\n";
         return 2;
     } catch (const shadelab::ShaderError& e) {
-        // The compiler's log is lines of its own: joined with "; " (the viewer shows them as lines).
-        std::string log = e.what();
-        while (!log.empty() && log.back() == '\n') log.pop_back();
-        for (std::size_t at = 0; (at = log.find('\n', at)) != std::string::npos;)
-            log.replace(at, 1, at > 0 && log[at - 1] == ':' ? " " : "; ");
-        std::cerr << "shadelab: " << shadelab::oneLine(log) << "\n";
+        // The compiler's log is lines of its own: joined (the viewer shows them as lines).
+        std::cerr << "shadelab: " << shadelab::oneLine(shadelab::joinedLines(e.what())) << "\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "shadelab: " << shadelab::oneLine(e.what()) << "\n";

@@ -167,11 +167,11 @@ const OptionSpec kOptions[] = {
          o.referenceMissing = choice(self.name, v, kMissingReferenceNames);
      }},
     {"--max-diff", "", "D", G::General, bounds(kMaxDiffRange), nullptr, "",
-     "with `--reference`: the largest difference allowed in any channel (R, G, B, A) of any pixel, in /255 "
+     "with `--reference` or `--test`: the largest difference allowed in any channel (R, G, B, A) of any pixel, in /255 "
      "({range}, default {max-diff})",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.maxDiff = intIn(self, v); }},
     {"--mean-diff", "", "M", G::General, bounds(kMeanDiffRange), nullptr, "",
-     "with `--reference`: the largest mean difference allowed, over every channel of every pixel, in /255 "
+     "with `--reference` or `--test`: the largest mean difference allowed, over every channel of every pixel, in /255 "
      "({range}, default {mean-diff})",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.meanDiff = floatIn(self, v); }},
     {"--diff-output", "", "DIFF.png", G::General, kNoBounds, nullptr, "",
@@ -179,6 +179,32 @@ const OptionSpec kOptions[] = {
      "|image - reference| x the layout's factor (`--diff-factor`, default {diff-factor}); not written when the "
      "sizes differ",
      setPath<&Options::diffOutput>},
+    {"--test", "", "DIR", G::General, kNoBounds, nullptr, "",
+     "screenshot tests of a folder, in one process: render every `DIR/*.json` (file-name order) and compare it "
+     "with `DIR/NAME.png` as `--reference` does (`--max-diff`, `--mean-diff`); one line per failing case and a "
+     "summary on stdout. A scene that cannot be read, a missing or malformed reference, a size that differs or "
+     "a shader that does not compile fails its case and the run goes on. Exit status 0 when every case "
+     "matches, 1 when any fails, 2 when DIR is missing or holds no .json (see *Screenshot tests in your CI*)",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         if (v.empty()) throw InputError(std::string(self.name) + ": empty folder name");
+         o.testDir = v;
+     }},
+    {"--references", "", "DIR2", G::General, kNoBounds, nullptr, "",
+     "with `--test`: the references are `DIR2/NAME.png` instead of beside the scenes",
+     setPath<&Options::referencesDir>},
+    {"--junit", "", "FILE.xml", G::General, kNoBounds, nullptr, "",
+     "with `--test`: also write the results as JUnit XML (one testcase per scene; a difference is a failure "
+     "with the numbers, a case that could not be compared an error), atomically",
+     setPath<&Options::junit>},
+    {"--report", "", "FILE.html", G::General, kNoBounds, nullptr, "",
+     "with `--test`: also write one self-contained HTML page: each failing case's reference, render and "
+     "amplified difference side by side at their pixel size, with its numbers; the matching cases listed",
+     setPath<&Options::report>},
+    {"--update", "", "", G::General, kNoBounds, nullptr, "",
+     "with `--test`: after a person has looked, rewrite the references of the cases that differ or have none "
+     "(missing or malformed) from this run's renders, atomically, and say which; matching references are "
+     "left untouched. Exit status 0 unless a case could not be rendered",
+     setTrue<&Options::update>},
     {"--shading", "", "MODE", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "shading",
      "shading mode (single layout): {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); }},

@@ -81,16 +81,51 @@ void checkViewerAndPlot(const Options& o, const std::vector<const OptionSpec*>& 
     }
 }
 
-// --reference compares one image: a frame (--output) or a plot (--plot --output). Its settings need it.
+// --test DIR runs a folder of its own: the one-image modes and the viewer have no place in it, and its
+// settings need it.
+void checkTestSuite(const Options& o, const std::vector<const OptionSpec*>& given) {
+    if (!o.testDir) {
+        const char* flag = o.referencesDir ? "--references" : o.junit ? "--junit" : o.report ? "--report"
+                           : o.update      ? "--update"
+                                           : nullptr;
+        if (flag) throw InputError(std::string(flag) + ": belongs to a folder of screenshot tests: give --test DIR");
+        return;
+    }
+    if (!o.input.empty())
+        throw InputError("--test: renders the scene files of its folder; give no scene file (" + o.input + ") with it");
+    const char* other = o.output              ? "--output"
+                        : o.playlist          ? "--playlist"
+                        : o.reference         ? "--reference"
+                        : o.referenceMissing  ? "--reference-missing (--update writes missing references)"
+                        : o.diffOutput        ? "--diff-output (--report shows the differences)"
+                        : !o.sweeps.empty()   ? "--sweep"
+                        : o.probe             ? "--probe"
+                        : o.benchmarkFrames   ? "--benchmark"
+                        : o.info              ? "--info"
+                        : o.plot              ? "--plot"
+                        : o.captions          ? "--captions"
+                        : anyGiven(given, OptionGroup::Viewer) ? "the viewer's options"
+                                                               : nullptr;
+    if (other) throw InputError(std::string("--test: compares its folder's scenes with their references; not with ") + other);
+    if (o.junit && !hasExtension(*o.junit, ".xml"))
+        throw InputError("--junit: " + *o.junit + ": JUnit reports end in .xml");
+    if (o.report && !hasExtension(*o.report, ".html"))
+        throw InputError("--report: " + *o.report + ": the report is a page: end its name in .html");
+}
+
+// --reference compares one image: a frame (--output) or a plot (--plot --output). Its settings need it
+// (the thresholds, or --test).
 void checkReference(const Options& o) {
     if (!o.reference) {
-        const char* flag = o.referenceMissing ? "--reference-missing"
-                           : o.maxDiff        ? "--max-diff"
-                           : o.meanDiff       ? "--mean-diff"
-                           : o.diffOutput     ? "--diff-output"
-                                              : nullptr;
-        if (flag) throw InputError(std::string(flag) + ": sets up the comparison with a reference: give --reference REF.png");
-        return;
+        const char* flag = o.referenceMissing           ? "--reference-missing"
+                           : o.maxDiff && !o.testDir    ? "--max-diff"
+                           : o.meanDiff && !o.testDir   ? "--mean-diff"
+                           : o.diffOutput               ? "--diff-output"
+                                                        : nullptr;
+        if (!flag) return;
+        const bool threshold = flag == std::string("--max-diff") || flag == std::string("--mean-diff");
+        throw InputError(std::string(flag) + ": sets up the comparison with a reference: give --reference REF.png" +
+                         (threshold ? " (or --test DIR)" : ""));
     }
     const char* other = o.playlist            ? "--playlist"
                         : !o.sweeps.empty()   ? "--sweep"
@@ -111,6 +146,7 @@ void checkReference(const Options& o) {
 RunMode runMode(const Options& o) {
     if (o.help) return RunMode::Help;
     if (o.version) return RunMode::Version;
+    if (o.testDir) return RunMode::TestSuite;
     if (o.playlist) return o.output ? RunMode::PlaylistImages : RunMode::PlaylistViewer;
     if (o.plot && !o.info) return RunMode::Plot;
     if (o.output && !o.sweeps.empty() && !o.info) return RunMode::SweepSheet;
@@ -150,6 +186,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         spec->apply(o, *spec, value);
         given.push_back(spec);
     }
+    checkTestSuite(o, given);
     checkPlaylist(o);
     checkOutputs(o);
     checkViewerAndPlot(o, given);

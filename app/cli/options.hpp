@@ -21,6 +21,7 @@ enum class RunMode {
     Version,         // --version
     PlaylistImages,  // --playlist DIR --output OUT/: one PNG per preset
     PlaylistViewer,  // --playlist DIR: the viewer stepping through the presets
+    TestSuite,       // --test DIR: every DIR/*.json against its reference (cli/test_suite.hpp)
     Plot,            // --plot KIND --output FILE.png: drawn on the CPU, no GL
     SweepSheet,      // --sweep ... --output FILE.png: a contact sheet
     ProbeImage,      // --probe X,Y --output FILE.png: the frame and the pixel's terms as JSON
@@ -50,6 +51,14 @@ struct Options {
     std::optional<int> maxDiff;             // --max-diff D (0..255)
     std::optional<float> meanDiff;          // --mean-diff M (0..255)
     std::optional<std::string> diffOutput;  // --diff-output DIFF.png
+    // --test DIR: a folder of scenes, each compared with its reference (cli/test_suite.hpp): where the
+    // references are (default DIR), the reports, and whether the failing references are rewritten.
+    // --max-diff and --mean-diff apply to every scene; the others are refused without --test.
+    std::optional<std::string> testDir;
+    std::optional<std::string> referencesDir;  // --references DIR2
+    std::optional<std::string> junit;          // --junit FILE.xml
+    std::optional<std::string> report;         // --report FILE.html
+    bool update = false;                       // --update
     std::optional<ShadingMode> shading;
     std::optional<Layout> layout;
     std::optional<ReflectionModel> reflection;

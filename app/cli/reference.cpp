@@ -20,20 +20,19 @@ bool samePath(const std::string& a, const std::string& b) {
     return ec1 || ec2 ? a == b : pa == pb;
 }
 
-std::string sizeText(const Image& image) { return std::to_string(image.width) + "x" + std::to_string(image.height); }
+void say(const std::string& line) { std::cout << oneLine("shadelab: " + line) << std::endl; }
 
-// "max 3/255 (limit 2), mean 0.0157 (limit 0.003)": the mean to three significant digits (a single pixel
-// off by 1/255 in a 1280x720 frame is 2.71e-07, not 0)
-std::string numbersText(const CompareResult& r, const ReferenceTolerance& t) {
+}  // namespace
+
+// The mean to three significant digits (a single pixel off by 1/255 in a 1280x720 frame is 2.71e-07, not 0).
+std::string comparisonText(const CompareResult& r, const ReferenceTolerance& t) {
     char mean[32];
     std::snprintf(mean, sizeof mean, "%.3g", r.channelMean);
     return "max " + std::to_string(r.channelMax) + "/255 (limit " + std::to_string(t.maxDiff) + "), mean " + mean +
            " (limit " + formatNumber(t.meanDiff) + ")";
 }
 
-void say(const std::string& line) { std::cout << oneLine("shadelab: " + line) << std::endl; }
-
-}  // namespace
+std::string sizeText(const Image& image) { return std::to_string(image.width) + "x" + std::to_string(image.height); }
 
 ReferenceTolerance referenceTolerance(const Options& options) {
     ReferenceTolerance t;
@@ -91,7 +90,7 @@ int writeOutputAndCompare(const Options& options, const Image& image, const std:
     }
     const ReferenceTolerance tolerance = referenceTolerance(options);
     const bool matches = tolerance.matches(r);
-    say(against + numbersText(r, tolerance) + (matches ? ": matches" : ": differs"));
+    say(against + comparisonText(r, tolerance) + (matches ? ": matches" : ": differs"));
     return matches ? 0 : 1;
 }
 

@@ -2,6 +2,7 @@
 // a benchmark, a playlist's images. Built where a headless context is (SHADELAB_OSMESA or SHADELAB_EGL).
 #include "cli/program.hpp"
 #include "cli/reference.hpp"
+#include "cli/test_suite.hpp"
 #include "core/base/file_io.hpp"
 #include "core/figures/formula_image.hpp"
 #include "core/geometry/camera.hpp"
@@ -144,6 +145,7 @@ int runBenchmark(const RunContext& run, Scene scene) {
 int runHeadlessMode(const Options& options) {
     const RunContext run{options, ShaderLibrary(shaderFolder(options.shaderDir)), backendOf(options)};
     if (options.mode == RunMode::PlaylistImages) return runPlaylistImages(run);
+    if (options.mode == RunMode::TestSuite) return runTestSuite(options, run.shaders, run.backend, headlessMsaa(options));
     Scene scene = sceneFromOptions(options);
     if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
     switch (options.mode) {

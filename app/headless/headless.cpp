@@ -114,29 +114,54 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 }
 
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
-                          const std::function<void(std::size_t, Image)>& done, int msaaSamples, std::uint64_t keptBytes) {
+                          const std::function<void(std::size_t, Image)>& done, int msaaSamples, std::uint64_t keptBytes,
+                          const SceneFailed& failed) {
     if (scenes.empty()) return;
-    for (const Scene& s : scenes) checkFrameMemory(s, msaaSamples, std::nullopt, keptBytes);  // before any work
+    // With `failed`, a scene's input or shader error is its own (reported, the next scene drawn); without,
+    // the first ends the run. An InputError or a ShaderError leaves the context as it was: programs that
+    // failed are not kept (ProgramCache builds them again when asked), a model that failed is no geometry.
+    const auto each = [&failed](std::size_t i, const std::function<void()>& work) {
+        if (!failed) return work(), true;
+        try {
+            work();
+            return true;
+        } catch (const InputError& e) {
+            failed(i, e);
+        } catch (const ShaderError& e) {
+            failed(i, e);
+        }
+        return false;
+    };
+    std::vector<bool> refused(scenes.size(), false);
+    for (std::size_t i = 0; i < scenes.size(); ++i)  // before any work
+        refused[i] = !each(i, [&] { checkFrameMemory(scenes[i], msaaSamples, std::nullopt, keptBytes); });
     const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
     Renderer renderer(context->getProcAddress(), shaders, headlessOptions());
     MultisampleTarget msaa;
     std::shared_ptr<SceneGeometry> geometry;
     const Scene* built = nullptr;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
+        if (refused[i]) continue;
         Scene& s = scenes[i];
         bool same = built && built->objects.size() == s.objects.size();
         for (std::size_t o = 0; same && o < s.objects.size(); ++o) same = built->objects[o].mesh == s.objects[o].mesh;
-        if (!same) {
-            geometry.reset();  // the previous meshes go before the next are read
-            geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-            checkFrameMemory(s, msaaSamples, geometry->triangleCount(), keptBytes, geometry->textureBytes());
-            renderer.setGeometry(geometry);
-            built = &s;
-        }
-        frameIfNeeded(s, *geometry);
-        if (context->target().width != s.width || context->target().height != s.height) context->resize(s.width, s.height);
-        drawFrame(renderer, s, context->target(), msaa, msaaSamples);
-        done(i, readPixels(context->target()));
+        Image image;
+        const bool drawn = each(i, [&] {
+            if (!same) {
+                geometry.reset();  // the previous meshes go before the next are read
+                built = nullptr;
+                geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
+                checkFrameMemory(s, msaaSamples, geometry->triangleCount(), keptBytes, geometry->textureBytes());
+                renderer.setGeometry(geometry);
+                built = &s;
+            }
+            frameIfNeeded(s, *geometry);
+            if (context->target().width != s.width || context->target().height != s.height)
+                context->resize(s.width, s.height);
+            drawFrame(renderer, s, context->target(), msaa, msaaSamples);
+            image = readPixels(context->target());
+        });
+        if (drawn) done(i, std::move(image));
     }
 }
 

@@ -40,9 +40,13 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 // holds more than one image. A glTF scene without a camera is framed as for --output. Every scene is
 // checked against the memory budget (core/scene/memory_budget.hpp) with `keptBytes` more for the images the
 // caller keeps, before anything is drawn and again once its models are read.
+// Without `failed`, the first InputError or ShaderError ends the whole call; with it (`--test`), a scene
+// that fails (a model that cannot be read, over the budget, a shader that does not compile) is handed
+// to `failed` instead of `done` and the next scene is drawn on the same context and programs.
+using SceneFailed = std::function<void(std::size_t, const std::exception&)>;
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
                           const std::function<void(std::size_t, Image)>& done, int msaaSamples = 1,
-                          std::uint64_t keptBytes = 0);
+                          std::uint64_t keptBytes = 0, const SceneFailed& failed = nullptr);
 
 // A sweep sheet (core/scene/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
 // with two sweeps, per value of sweeps[1] (rows), each labelled, rendered on one context. Geometry is

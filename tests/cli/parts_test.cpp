@@ -68,6 +68,8 @@ TEST_F(Parts, OutputRendersOrSaysWhichPartIsMissing) {
     } else {
         expectRefused(r, "--output: this shadelab was built without a headless GL context", path("frame.png"));
         expectRefused(run({"--benchmark", "1"}), "--benchmark: this shadelab was built without", "");
+        expectRefused(run({"--test", dir_.string(), "--junit", path("junit.xml")}), "--test: this shadelab was built without",
+                      path("junit.xml"));
     }
 }
 

@@ -223,6 +223,40 @@ TEST(CliOptions, PlaylistFlags) {
     EXPECT_NE(errorOf({"--output", "dir/"}).find("only .png output"), std::string::npos);  // a folder only with --playlist
 }
 
+// Issue 19: --test DIR and its settings; the thresholds and the scene overrides go with it, the one-image
+// options do not, and its own settings need it (the whole refusals: tests/bad-inputs/cases.txt).
+TEST(CliOptions, TestSuite) {
+    const Options o = parseOptions({"--test", "cases", "--references", "refs", "--junit", "j.xml", "--report",
+                                    "r.html", "--update", "--max-diff", "3", "--mean-diff", "0.01", "--size", "64x48",
+                                    "--shader-dir", "student", "--backend", "egl"});
+    EXPECT_EQ(o.mode, RunMode::TestSuite);
+    EXPECT_EQ(o.testDir.value_or(""), "cases");
+    EXPECT_EQ(o.referencesDir.value_or(""), "refs");
+    EXPECT_EQ(o.junit.value_or(""), "j.xml");
+    EXPECT_EQ(o.report.value_or(""), "r.html");
+    EXPECT_TRUE(o.update);
+    EXPECT_EQ(o.maxDiff.value_or(-1), 3);
+    EXPECT_EQ(parseOptions({"--test", "cases"}).mode, RunMode::TestSuite);
+    EXPECT_FALSE(parseOptions({"--test", "cases"}).update);
+    EXPECT_NE(errorOf({"--test", ""}).find("--test: empty folder name"), std::string::npos);
+    EXPECT_NE(errorOf({"--max-diff", "3"}).find("--max-diff: sets up the comparison with a reference: give --reference "
+                                                "REF.png (or --test DIR)"),
+              std::string::npos);
+    for (const char* flag : {"--references", "--junit", "--report"})
+        EXPECT_NE(errorOf({flag, "x"}).find(std::string(flag) + ": belongs to a folder of screenshot tests: give --test DIR"),
+                  std::string::npos)
+            << flag;
+    for (const char* other : {"--output", "--reference", "--diff-output", "--probe", "--sweep", "--benchmark", "--plot"}) {
+        const std::string value = std::string(other) == "--probe" ? "1,2" : std::string(other) == "--sweep" ? "ke=1,2"
+                                  : std::string(other) == "--benchmark" ? "3" : std::string(other) == "--plot" ? "lobe"
+                                                                                                   : "x.png";
+        EXPECT_NE(errorOf({"--test", "cases", other, value}).find("--test: compares its folder's scenes with their "
+                                                                  "references; not with " + std::string(other)),
+                  std::string::npos)
+            << other << ": " << errorOf({"--test", "cases", other, value});
+    }
+}
+
 // Issue 19: --reference and its settings, with one --output image (a frame or a plot) and nothing else.
 TEST(CliOptions, Reference) {
     const Options o = parseOptions({"--output", "x.png", "--reference", "r.png", "--max-diff", "3", "--mean-diff",

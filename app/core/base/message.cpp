@@ -79,4 +79,11 @@ std::string oneLine(std::string_view message, std::size_t limit) {
     return std::string(kept) + " [... " + std::to_string(tailStart - kept.size()) + " bytes ...] " + line.substr(tailStart);
 }
 
+std::string joinedLines(std::string log) {
+    while (!log.empty() && log.back() == '\n') log.pop_back();
+    for (std::size_t at = 0; (at = log.find('\n', at)) != std::string::npos;)
+        log.replace(at, 1, at > 0 && log[at - 1] == ':' ? " " : "; ");
+    return log;
+}
+
 }  // namespace shadelab

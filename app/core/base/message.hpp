@@ -19,4 +19,8 @@ std::string quoteInput(std::string_view text, std::size_t limit = 60);
 // " [... N bytes ...] " so the start (what and where) and the end (why) both stay.
 std::string oneLine(std::string_view message, std::size_t limit = 400);
 
+// A log of lines of its own (a GLSL compiler's) as one: its lines joined with "; " (after a line that
+// ends in ':', with a space), the trailing newlines dropped. Not escaped or cut: oneLine does that.
+std::string joinedLines(std::string log);
+
 }  // namespace shadelab

@@ -55,6 +55,17 @@ void writePng(const std::string& path, const Image& img, int level) {
     });
 }
 
+std::string encodePng(const Image& img, int level) {
+    stbi_write_png_compression_level = level;
+    std::string bytes;
+    const auto put = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+    };
+    if (!stbi_write_png_to_func(put, &bytes, img.width, img.height, 4, img.rgba.data(), img.width * 4))
+        throw std::runtime_error("the PNG encoder failed");
+    return bytes;
+}
+
 Image readPng(const std::string& path) {
     const File file = openPng(path);
     static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -90,6 +101,19 @@ struct PngErrors {
 void pngWarning(png_structp, png_const_charp) {}
 }  // namespace
 
+// The settings of every PNG shadelab writes: RGBA8, no interlacing, the Sub filter at low levels.
+void setUpPng(png_structp png, png_infop info, const Image& img, int level) {
+    png_set_compression_level(png, level);
+    // Rendered frames are smooth gradients: the Sub filter alone compresses them nearly as well as
+    // adaptive filtering at a fraction of the cost.
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
+    png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGBA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    for (int y = 0; y < img.height; ++y) png_write_row(png, img.pixel(0, y));
+    png_write_end(png, nullptr);
+}
+
 void writePng(const std::string& path, const Image& img, int level) {
     writeFileAtomic(path, [&](std::FILE* f) {
         PngErrors errors;
@@ -103,18 +127,29 @@ void writePng(const std::string& path, const Image& img, int level) {
                              (std::ferror(f) && errno ? std::string(std::strerror(errno)) : "libpng: " + errors.message));
         }
         png_init_io(png, f);
-        png_set_compression_level(png, level);
-        // Rendered frames are smooth gradients: the Sub filter alone compresses them nearly as well as
-        // adaptive filtering at a fraction of the cost.
-        png_set_filter(png, PNG_FILTER_TYPE_BASE, level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
-        png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGBA,
-                     PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-        png_write_info(png, info);
-        for (int y = 0; y < img.height; ++y) png_write_row(png, img.pixel(0, y));
-        png_write_end(png, nullptr);
+        setUpPng(png, info, img, level);
         png_destroy_write_struct(&png, &info);
         return true;
     });
+}
+
+std::string encodePng(const Image& img, int level) {
+    PngErrors errors;
+    std::string bytes;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, pngError, pngWarning);
+    if (!png) throw std::runtime_error("libpng: cannot start the encoder");
+    png_infop info = png_create_info_struct(png);
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        throw std::runtime_error("libpng: " + errors.message);
+    }
+    const auto put = [](png_structp p, png_bytep data, png_size_t size) {
+        static_cast<std::string*>(png_get_io_ptr(p))->append(reinterpret_cast<const char*>(data), size);
+    };
+    png_set_write_fn(png, &bytes, put, [](png_structp) {});
+    setUpPng(png, info, img, level);
+    png_destroy_write_struct(&png, &info);
+    return bytes;
 }
 
 Image readPng(const std::string& path) {

@@ -23,6 +23,9 @@ struct Image {
 void writePng(const std::string& path, const Image& image, int compressionLevel = 1);
 // Reads any PNG as RGBA8. InputError naming the file if it is missing or not a PNG.
 Image readPng(const std::string& path);
+// The PNG file's bytes, in memory (the --test report's images, inline as data: URIs). Throws
+// std::runtime_error when the encoder fails.
+std::string encodePng(const Image& image, int compressionLevel = 1);
 
 // Golden-image metric. Per pixel, the difference is the largest absolute difference of its R, G, B
 // channels (0..255). A pixel "fails" when that exceeds `pixelThreshold`; the images match when the
