@@ -108,7 +108,11 @@ std::string junitXml(const TestRun& run) {
                                std::to_string(countOf(run, CaseOutcome::Differs)) + "\" errors=\"" +
                                std::to_string(countOf(run, CaseOutcome::Error)) + "\"";
     // "shadelab.screens" for --test path/to/screens/: what a CI's test view groups the cases under.
-    const fs::path dir = fs::path(run.dir).filename().empty() ? fs::path(run.dir).parent_path() : fs::path(run.dir);
+    // The folder's own name, also for "screens/", "." or "..": its absolute form, without a trailing '/'.
+    std::error_code ec;
+    fs::path dir = fs::weakly_canonical(fs::absolute(run.dir, ec), ec);
+    if (ec || dir.filename().empty()) dir = fs::path(run.dir).lexically_normal();
+    if (dir.filename().empty()) dir = dir.parent_path();
     const std::string classname = "shadelab." + dir.filename().string();
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadelab --test\" " << counts << " time=\""

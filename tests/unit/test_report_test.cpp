@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <string>
 
 using namespace shadelab;
@@ -91,6 +93,14 @@ TEST(TestReport, JunitHasOneTestcasePerSceneAndTheNumbers) {
               std::string::npos)
         << xml;
     EXPECT_EQ(xml.find("b<&"), std::string::npos);  // nothing unescaped
+}
+
+// `--test .` (or ..): the classname is the folder's own name, not "shadelab.." .
+TEST(TestReport, JunitClassnameIsTheFoldersName) {
+    TestRun run = sampleRun();
+    run.dir = ".";
+    const std::string here = std::filesystem::current_path().filename().string();
+    EXPECT_NE(junitXml(run).find("classname=\"shadelab." + here + "\""), std::string::npos) << junitXml(run);
 }
 
 TEST(TestReport, HtmlShowsTheFailingCasesImagesAtTheirSize) {
