@@ -28,6 +28,7 @@ const std::map<std::string, std::vector<std::string>> kBelow = {
     {"render/cpu", {"core/geometry"}},
     {"render", {"render/cpu", "core/ui"}},
     {"headless", {"render"}},
+    {"video", {"core/image"}},
     {"viewer", {"render", "core/ui", "core/probe", "core/figures"}},
     {"cli", {"core/ui", "core/probe", "core/figures"}},
 };
