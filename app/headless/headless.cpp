@@ -159,6 +159,7 @@ void renderFramesHeadless(const Scene& base, std::size_t count,
     renderer.setGeometry(geometry);
     MultisampleTarget msaa;
     Scene built = framed;  // whose meshes `geometry` holds
+    Image image;           // every frame read into the same pixels
     for (std::size_t i = 0; i < count; ++i) {
         const Scene s = sceneAt(framed, i);
         if (!sameMeshes(built, s)) {
@@ -169,7 +170,8 @@ void renderFramesHeadless(const Scene& base, std::size_t count,
             built = s;
         }
         drawFrame(renderer, s, context->target(), msaa, msaaSamples);
-        done(i, readPixels(context->target()));
+        readPixelsInto(context->target(), image);
+        done(i, image);
     }
 }
 
