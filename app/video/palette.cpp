@@ -104,10 +104,14 @@ PalettedImage paletteFrame(const Image& frame, bool dither) {
         for (std::size_t i = box.begin; i < box.end; ++i)
             for (int c = 0; c < 3; ++c) sum[c] += channel(colours[i], c);
         const long n = long(box.end - box.begin);
-        out.palette.push_back({std::uint8_t((sum[0] + n / 2) / n), std::uint8_t((sum[1] + n / 2) / n),
-                               std::uint8_t((sum[2] + n / 2) / n)});
+        const std::array<std::uint8_t, 3> mean{std::uint8_t((sum[0] + n / 2) / n), std::uint8_t((sum[1] + n / 2) / n),
+                                               std::uint8_t((sum[2] + n / 2) / n)};
+        // Two boxes can have the same mean: one entry for both. Each entry is a colour of its own, which
+        // libavcodec's GIF encoder needs (FFmpeg 5.1 maps a repeated colour's index to entry 0).
+        auto entry = std::find(out.palette.begin(), out.palette.end(), mean);
+        if (entry == out.palette.end()) entry = out.palette.insert(out.palette.end(), mean);
         for (std::size_t i = box.begin; i < box.end; ++i)
-            entryOf.emplace_back(colours[i], std::uint8_t(out.palette.size() - 1));
+            entryOf.emplace_back(colours[i], std::uint8_t(entry - out.palette.begin()));
     }
     out.indices.resize(pixels);
     if (dither) {

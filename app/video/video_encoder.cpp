@@ -170,7 +170,8 @@ void VideoEncoder::addFrame(const Image& image) {
         for (int y = 0; y < image.height; ++y)
             std::memcpy(s.frame->data[0] + std::ptrdiff_t(y) * s.frame->linesize[0],
                         &paletted.indices[std::size_t(y) * std::size_t(image.width)], std::size_t(image.width));
-        auto* palette = reinterpret_cast<std::uint32_t*>(s.frame->data[1]);  // AVPALETTE: 256 x 0xAARRGGBB
+        // AVPALETTE: 256 x 0xAARRGGBB. The entries past the frame's repeat its last one; no pixel uses them.
+        auto* palette = reinterpret_cast<std::uint32_t*>(s.frame->data[1]);
         for (std::size_t i = 0; i < 256; ++i) {
             const auto& c = i < paletted.palette.size() ? paletted.palette[i] : paletted.palette.back();
             palette[i] = 0xFF000000u | std::uint32_t(c[0]) << 16 | std::uint32_t(c[1]) << 8 | std::uint32_t(c[2]);

@@ -18,6 +18,7 @@ extern "C" {
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <array>
 #include <set>
 
 namespace fs = std::filesystem;
@@ -198,7 +199,7 @@ TEST(Palette, AHighlightRampDoesNotBand) {
             p[2] = std::uint8_t(std::clamp(v - 510, 0, 255));
         }
     const PalettedImage out = paletteFrame(img, false);
-    EXPECT_EQ(out.palette.size(), 256u);
+    EXPECT_GE(out.palette.size(), 250u);  // 256 boxes, a few with the same mean
     int worst = 0;
     std::set<int> used;
     for (int x = 0; x < img.width; ++x) {
@@ -209,6 +210,8 @@ TEST(Palette, AHighlightRampDoesNotBand) {
     }
     EXPECT_LE(worst, 3);
     EXPECT_GE(used.size(), 250u);  // the ramp gets nearly every entry
+    const std::set<std::array<std::uint8_t, 3>> distinct(out.palette.begin(), out.palette.end());
+    EXPECT_EQ(distinct.size(), out.palette.size()) << "an entry repeated (FFmpeg's GIF encoder maps it to entry 0)";
 }
 
 TEST_F(Video, GifFramesAreTheSingleFrameRendersExactly) {
@@ -247,6 +250,19 @@ void Video::checkRamp(const std::string& name, const char* codec, double loss) {
         const auto at = [&](const char* box) { return std::find(boxes.begin(), boxes.end(), box) - boxes.begin(); };
         EXPECT_LT(at("moov"), at("mdat")) << "faststart: the index before the media data";
     }
+}
+
+// A frame of more than 256 colours (the default scene's three panes) gets 256 of them: every pixel
+// stays close to the render. Measured: max 4 and 1, mean 0.12 and 0.0015 at the two ends. (A repeated
+// palette entry, which FFmpeg 5.1's encoder draws in entry 0's colour, gave max 151 in a 480x160 GIF
+// of this ramp; the palette test above checks that entries are distinct.)
+TEST_F(Video, GifOfManyColoursStaysCloseToTheRenders) {
+    rampAndEnds(kSmall, "ramp.gif");
+    const Decoded d = decode(path("ramp.gif"));
+    EXPECT_EQ(d.frames, 11);
+    const Difference first = difference(d.first, ke1_), last = difference(d.last, ke1000_);
+    EXPECT_LE(first.max, 8) << first.mean;
+    EXPECT_LE(last.max, 8) << last.mean;
 }
 
 // The codec's loss, measured (x264 veryfast, CRF 18, yuv420p, 160x120): mean 1.42 and 1.29 per channel
