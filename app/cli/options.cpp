@@ -88,8 +88,15 @@ void checkAnimation(const Options& o) {
                         : o.captions    ? "--captions"
                                         : nullptr;
     if (other) throw InputError(std::string("--animate: renders a video of one scene; not with ") + other);
-    if (!o.output)
-        throw InputError("--animate: the viewer does not play animations yet: give --output FILE.gif, .mp4 or .webm");
+    if (!o.output) {  // the viewer plays it; the video's settings mean nothing there
+        const char* flag = o.fps ? "--fps" : o.duration ? "--duration" : o.dither ? "--dither" : nullptr;
+        if (flag) throw InputError(std::string(flag) + ": sets up the video: give --output FILE.gif, .mp4 or .webm");
+        for (const Animation& a : o.animations)
+            if (a.parameter == "tessellation")
+                throw InputError("--animate: " + a.text + ": a tessellation ramp is for videos (--output); the "
+                                 "viewer would rebuild the mesh every frame");
+        return;
+    }
     if (!video) throw InputError("--animate: writes a video: give --output FILE.gif, .mp4 or .webm (not " + *o.output + ")");
     if (o.dither && !hasExtension(*o.output, ".gif"))
         throw InputError("--dither: dithers a GIF's palette; " + *o.output + " is not a .gif");

@@ -31,6 +31,7 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
     viewer.noLabels = options.noLabels;
     viewer.resetLayout = options.resetLayout;
     viewer.msaa = options.msaa.value_or(-1);
+    viewer.animations = options.animations;
     viewer.verbose = options.verbose;
     return viewer;
 }

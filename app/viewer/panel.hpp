@@ -55,6 +55,8 @@ struct PanelStatus {
     int msaa = 1;                     // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;
     std::vector<std::string> modelCameras;  // the first glTF model's cameras (GltfInfo::cameras), by name
+    std::string animation;            // --animate: "1.25 s of 4.00 s"; empty without animations
+    bool playing = false;
 };
 
 // Buttons pressed this frame.
@@ -67,6 +69,7 @@ struct PanelRequests {
     float uiScale = 0.0f;         // the UI-scale slider moved: the new scale (0: unchanged)
     int msaa = 0;                 // anti-aliasing chosen: samples (1: off; 0: unchanged)
     bool toggleFullscreen = false;
+    bool togglePlay = false;      // the animation's play / pause button
     int modelCamera = -2;         // a camera picked: the model's camera N, or -1 for shadelab's framing (-2: unchanged)
     bool sceneEdited = false;     // a widget changed the scene (or the panel's own settings) this frame
 };

@@ -366,9 +366,10 @@ TEST(CliOptions, AnimateWritesAVideoOfSeveralAnimations) {
     EXPECT_EQ(o.fps, 24);
     EXPECT_EQ(o.duration, 2.5);
     EXPECT_EQ(parseOptions({"--animate", "light-orbit", "--output", "A.GIF", "--dither"}).mode, RunMode::Video);
-    // The viewer does not play animations yet: one clear line rather than a still view.
-    EXPECT_NE(errorOf({"--animate", "light-orbit"}).find("--animate: the viewer does not play animations yet"),
-              std::string::npos);
+    // Without --output the viewer plays it; a video's settings and a mesh rebuilt every frame are refused.
+    EXPECT_EQ(parseOptions({"--animate", "light-orbit"}).mode, RunMode::Viewer);
+    EXPECT_NE(errorOf({"--animate", "light-orbit", "--fps", "24"}).find("--fps: sets up the video"), std::string::npos);
+    EXPECT_NE(errorOf({"--animate", "tessellation=8..64"}).find("a tessellation ramp is for videos"), std::string::npos);
     EXPECT_NE(errorOf({"--animate", "light-orbit", "--output", "a.png"}).find("--animate: writes a video"),
               std::string::npos);
 }
