@@ -397,6 +397,8 @@ void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requ
         ImGui::Text("animation: %s", status.animation.c_str());
     }
     if (!status.lastScreenshot.empty()) ImGui::TextWrapped("screenshot: %s", status.lastScreenshot.c_str());
+    requests.toggleRecording |= ImGui::Button(status.recording ? "stop recording (Ctrl+R)" : "record the view (Ctrl+R)");
+    if (!status.lastRecording.empty()) ImGui::TextWrapped("recording: %s", status.lastRecording.c_str());
     requests.reloadShaders |= ImGui::Button("reload shaders (F5)");
     ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
     // The last result, also shown over the view for a while; here at the end, so nothing moves.

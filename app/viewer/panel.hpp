@@ -57,6 +57,8 @@ struct PanelStatus {
     std::vector<std::string> modelCameras;  // the first glTF model's cameras (GltfInfo::cameras), by name
     std::string animation;            // --animate: "1.25 s of 4.00 s"; empty without animations
     bool playing = false;
+    bool recording = false;           // Ctrl+R: the view is being recorded
+    std::string lastRecording;        // path of the last saved recording
 };
 
 // Buttons pressed this frame.
@@ -70,6 +72,7 @@ struct PanelRequests {
     int msaa = 0;                 // anti-aliasing chosen: samples (1: off; 0: unchanged)
     bool toggleFullscreen = false;
     bool togglePlay = false;      // the animation's play / pause button
+    bool toggleRecording = false; // the record / stop button (Ctrl+R)
     int modelCamera = -2;         // a camera picked: the model's camera N, or -1 for shadelab's framing (-2: unchanged)
     bool sceneEdited = false;     // a widget changed the scene (or the panel's own settings) this frame
 };

@@ -160,6 +160,7 @@ void Viewer::run() {
         }
         if (frame(options_.frames > 0 && n >= options_.frames)) break;
     }
+    stopRecording();  // quitting while recording keeps the video
     savePrefs();
 }
 
@@ -178,7 +179,7 @@ void Viewer::savePrefs() {
 
 bool Viewer::idle() const {
     if (framesToDraw_ > 0 || window_.eventCount() != eventsSeen_) return false;
-    if (playing_) return false;  // an animation keeps drawing; a paused one does not
+    if (playing_ || recording_) return false;  // an animation keeps drawing; a paused one does not
     if (msaaSamples_ > 1 && !antiAliased_) return false;  // one more frame: the still view anti-aliased
     if (progressiveFrom_ && !progressiveComplete_) return false;  // sampling goes on
     const ImGuiIO& io = ImGui::GetIO();
@@ -215,6 +216,7 @@ bool Viewer::frame(bool last) {
     drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
     imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
     if (screenshotRequested_) saveScreenshot(view);
+    record(l, view);
     if (last) writeLastFrameFiles(l, view);
     window_.swapBuffers();
     recordFrameTime(start, last);
@@ -291,7 +293,8 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
 // The 3D view, anti-aliased where it pays: always on a GPU; on a software rasterizer only once the
 // view is still (and for files). Returns it as drawn when it is captured (a screenshot, a file).
 Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::vector<OverlayArrow>& arrows) {
-    const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
+    const bool captureView =
+        screenshotRequested_ || recording_ || recordToggled_ || (last && !options_.viewScreenshotPath.empty());
     bool mouseDown = false;
     for (bool down : ImGui::GetIO().MouseDown) mouseDown = mouseDown || down;
     antiAliasThisFrame_ =
@@ -468,6 +471,7 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
             case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: setUiScale(uiScale_ / 1.25f); break;
             case GLFW_KEY_0: case GLFW_KEY_KP_0: setUiScale(1.0f); break;
             case GLFW_KEY_Q: window_.requestClose(); break;
+            case GLFW_KEY_R: recordToggled_ = true; break;
             default: break;
             }
             continue;
@@ -522,7 +526,55 @@ void Viewer::advanceAnimation() {
     animationTick_ = now;
 }
 
+// Starts or stops the recording when asked, and adds the frame while it runs. The video has the view's size
+// when it started: a resize stops (and saves) it.
+void Viewer::record(const FrameLayout& l, const Image& view) {
+    if (recording_ && (recordToggled_ || view.width != recording_->width() || view.height != recording_->height())) {
+        const bool resized = !recordToggled_;
+        recordToggled_ = false;
+        stopRecording();
+        if (resized) setStatus(status_.message + " (recording stopped: the view changed size)", false);
+        return;
+    }
+    if (recordToggled_) {
+        recordToggled_ = false;
+        if (view.width <= 0 || view.height <= 0) return setStatus("nothing to record: the view is empty", true);
+        std::string path = timestampedName();
+        path.replace(path.size() - 4, 4, ".mp4");
+        try {
+            recording_ = std::make_unique<ViewRecorder>(path, l.viewWidth, l.viewHeight, kDefaultVideoFps);
+            recordingStart_ = std::chrono::steady_clock::now();
+            setStatus("recording " + path + " (Ctrl+R stops)", false);
+        } catch (const std::exception& e) {
+            return setStatus(std::string("recording failed: ") + e.what(), true);
+        }
+    }
+    if (!recording_) return;
+    try {
+        recording_->add(view, std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
+    } catch (const std::exception& e) {
+        recording_.reset();  // removes what it wrote
+        setStatus(std::string("recording failed: ") + e.what(), true);
+    }
+    status_.recording = recording_ != nullptr;
+}
+
+void Viewer::stopRecording() {
+    if (!recording_) return;
+    const std::string path = recording_->path();
+    try {
+        recording_->stop();
+        status_.lastRecording = path;
+        setStatus("saved recording " + path, false);
+    } catch (const std::exception& e) {
+        setStatus(std::string("recording failed: ") + e.what(), true);
+    }
+    recording_.reset();
+    status_.recording = false;
+}
+
 void Viewer::apply(const PanelRequests& r) {
+    if (r.toggleRecording) recordToggled_ = true;
     if (r.togglePlay) playing_ = !playing_ && !options_.animations.empty();
     if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
     if (r.msaa > 0) msaaSamples_ = r.msaa;

@@ -19,6 +19,7 @@
 #include "viewer/playlist_navigator.hpp"
 #include "viewer/scene_document.hpp"
 #include "viewer/view_prefs.hpp"
+#include "viewer/view_recorder.hpp"
 
 #include <chrono>
 #include <glm/vec2.hpp>
@@ -175,6 +176,12 @@ private:
     std::chrono::steady_clock::time_point animationTick_;
     std::optional<Scene> animatedScene_;
     void advanceAnimation();
+    // Ctrl+R / the record button: recording the view as shown to a timestamped MP4 (viewer/view_recorder.hpp).
+    std::unique_ptr<ViewRecorder> recording_;
+    bool recordToggled_ = false;  // start or stop at this frame's end, once the view is drawn
+    std::chrono::steady_clock::time_point recordingStart_;
+    void record(const FrameLayout& l, const Image& view);
+    void stopRecording();
     int progressiveStride_ = 0;
     double lastPassMs_ = 0.0;
     bool passDrawnLastFrame_ = false;

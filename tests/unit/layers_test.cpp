@@ -29,7 +29,7 @@ const std::map<std::string, std::vector<std::string>> kBelow = {
     {"render", {"render/cpu", "core/ui"}},
     {"headless", {"render"}},
     {"video", {"core/image"}},
-    {"viewer", {"render", "core/ui", "core/probe", "core/figures"}},
+    {"viewer", {"render", "core/ui", "core/probe", "core/figures", "video"}},
     {"cli", {"core/ui", "core/probe", "core/figures"}},
 };
 
