@@ -114,6 +114,11 @@ int run(const std::vector<std::string>& args) {
         std::cout << "shadelab " << SHADELAB_VERSION << "\n";
         return 0;
     }
+#if SHADELAB_HAVE_HEADLESS && !SHADELAB_HAVE_VIDEO  // (without a context, runHeadless says that is missing)
+    if (options.mode == RunMode::Video)
+        throw InputError("--output: " + *options.output + ": this shadelab was built without video encoding (CMake "
+                         "option SHADELAB_VIDEO: FFmpeg's libavcodec, libavformat, libswscale)");
+#endif
     if (options.output && !options.playlist) checkOutputPath(*options.output, "--output");
     if (options.screenshot) checkOutputPath(*options.screenshot, "--screenshot");
     if (options.screenshotView) checkOutputPath(*options.screenshotView, "--screenshot-view");

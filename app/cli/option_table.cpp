@@ -132,7 +132,8 @@ constexpr Bounds kNoBounds{};
 // Each row: name, alias, argument, group, range, names, scene field, help, apply.
 const OptionSpec kOptions[] = {
     {"--output", "-o", "FILE.png", G::General, kNoBounds, nullptr, "",
-     "render one frame offscreen (OSMesa or EGL, no display needed) and write it atomically",
+     "render one frame offscreen (OSMesa or EGL, no display needed) and write it atomically; with `--animate`, "
+     "a video: `.gif`, `.mp4` (H.264) or `.webm` (VP9)",
      setPath<&Options::output>},
     {"--playlist", "", "DIR", G::General, kNoBounds, nullptr, "",
      "the lecture presets: every `DIR/*.json` in file-name order (see *Lecture presets and the playlist*); a bare "
@@ -291,6 +292,35 @@ const OptionSpec kOptions[] = {
          if (o.sweeps.size() == 2 && o.sweeps[0].parameter == o.sweeps[1].parameter)
              throw InputError(std::string(self.name) + ": " + o.sweeps[1].parameter + " is swept twice");
      }},
+    // Animations and videos (core/scene/animation.hpp, video/video_encoder.hpp; checked in options.cpp).
+    {"--animate", "", "SPEC", G::General, kNoBounds, nullptr, "",
+     "with `--output FILE.gif|.mp4|.webm`: render an animation to a video; without, the viewer plays it (Space "
+     "pauses). Repeatable (at most {max-animations}, "
+     "all at once). SPEC: `light-orbit[:SECONDS]` (the first light circles the camera's target at its height), "
+     "`camera-orbit[:SECONDS]` (a turntable about the target and the up axis), or a ramp `PARAM=A..B[:log][:SECONDS]` "
+     "of any `--sweep` parameter from A to B (`:log`: equal ratios, e.g. `ke=1..1000:log`; names switch half way). "
+     "SECONDS: one turn or the ramp's length, default {animation-seconds}",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         addAtMost(o.animations, parseAnimation(v, self.name), kMaxAnimations,
+                   std::string(self.name) + ": at most " + std::to_string(kMaxAnimations) + " animations");
+     }},
+    {"--fps", "", "N", G::General, bounds(kVideoFpsRange), nullptr, "",
+     "the video's frames per second ({range}, default {fps})",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.fps = intIn(self, v); }},
+    {"--duration", "", "SECONDS", G::General, Bounds{0, kMaxAnimationSeconds, true}, nullptr, "",
+     "the video's length (more than 0, at most {max}; default the longest animation's): frame i shows time "
+     "i / fps, and a ramp's video ends on a frame of its end value B",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const float x = parseFloat(self.name, v);
+         if (!(x > 0.0f && x <= kMaxAnimationSeconds))
+             throw InputError(std::string(self.name) + ": must be more than 0 and at most " +
+                              formatNumber(kMaxAnimationSeconds) + " seconds (got " + v + ")");
+         o.duration = x;
+     }},
+    {"--dither", "", "", G::General, kNoBounds, nullptr, "",
+     "a GIF's colours Floyd-Steinberg dithered onto each frame's palette (default off: each pixel takes its colour's "
+     "palette entry; a frame of at most 256 colours is exact either way)",
+     setTrue<&Options::dither>},
     {"--plot", "", "KIND", G::General, kNoBounds, [] { return namesList(kPlotKindNames, " | "); }, "",
      "{names}, with `--output`: the lecture's plot for the scene's parameters, drawn on the CPU (no GL), {plot-size} "
      "unless `--size` ({plot-sizes}): lobe = Phong and Blinn-Phong spec in the plane of incidence for "
@@ -434,6 +464,9 @@ std::string optionHelp(const OptionSpec& spec) {
     fill("{max-diff}", formatNumber(ReferenceTolerance{}.maxDiff));
     fill("{mean-diff}", formatNumber(ReferenceTolerance{}.meanDiff));
     fill("{diff-factor}", formatNumber(DiffSettings{}.factor));
+    fill("{max-animations}", std::to_string(kMaxAnimations));
+    fill("{animation-seconds}", formatNumber(kDefaultAnimationSeconds));
+    fill("{fps}", std::to_string(kDefaultVideoFps));
     return text;
 }
 

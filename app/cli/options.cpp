@@ -13,6 +13,10 @@
 namespace shadelab {
 namespace {
 
+bool isVideoPath(const std::string& path) {
+    return hasExtension(path, ".gif") || hasExtension(path, ".mp4") || hasExtension(path, ".webm");
+}
+
 bool anyGiven(const std::vector<const OptionSpec*>& given, OptionGroup group) {
     return std::any_of(given.begin(), given.end(), [group](const OptionSpec* s) { return s->group == group; });
 }
@@ -26,6 +30,16 @@ std::string groupNames(OptionGroup group) {
     for (std::size_t i = 0; i < names.size(); ++i)
         list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
     return list;
+}
+
+// The first option given that asks for a run other than one image (--reference and --animate refuse them).
+const char* otherRun(const Options& o) {
+    return o.playlist            ? "--playlist"
+           : !o.sweeps.empty()   ? "--sweep"
+           : o.probe             ? "--probe"
+           : o.benchmarkFrames   ? "--benchmark"
+           : o.info              ? "--info"
+                                 : nullptr;
 }
 
 void checkPlaylist(const Options& o) {
@@ -45,8 +59,8 @@ void checkOutputs(const Options& o) {
     if (o.formula && (!o.sweeps.empty() || o.benchmarkFrames || o.plot || o.info))
         throw InputError(std::string("--formula: draws over a frame (the viewer's or --output's); not with ") +
                          (!o.sweeps.empty() ? "--sweep" : o.benchmarkFrames ? "--benchmark" : o.plot ? "--plot" : "--info"));
-    if (o.output && !o.playlist && !hasExtension(*o.output, ".png"))
-        throw InputError("--output: " + *o.output + ": only .png output is supported");
+    if (o.output && !o.playlist && !hasExtension(*o.output, ".png") && !isVideoPath(*o.output))
+        throw InputError("--output: " + *o.output + ": only .png output is supported (and .gif, .mp4, .webm with --animate)");
     if (o.screenshot && !hasExtension(*o.screenshot, ".png"))
         throw InputError("--screenshot: " + *o.screenshot + ": only .png is supported");
     if (o.screenshotView && !hasExtension(*o.screenshotView, ".png"))
@@ -60,6 +74,35 @@ void checkOutputs(const Options& o) {
                          (!o.sweeps.empty() ? "--sweep" : o.benchmarkFrames ? "--benchmark" : "--info"));
     if (o.progressiveStride && o.output)
         throw InputError("--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark");
+}
+
+// --animate renders a video: --output names it, and the video's settings need --animate.
+void checkAnimation(const Options& o) {
+    const bool video = o.output && !o.playlist && isVideoPath(*o.output);
+    if (o.animations.empty()) {
+        if (video) throw InputError("--output: " + *o.output + ": a video needs --animate SPEC (e.g. --animate light-orbit)");
+        const char* flag = o.fps ? "--fps" : o.duration ? "--duration" : o.dither ? "--dither" : nullptr;
+        if (flag) throw InputError(std::string(flag) + ": sets up the --animate video: give --animate SPEC and --output FILE.gif|.mp4|.webm");
+        return;
+    }
+    const char* other = otherRun(o) ? otherRun(o)
+                        : o.plot        ? "--plot"
+                        : o.reference   ? "--reference"
+                        : o.captions    ? "--captions"
+                                        : nullptr;
+    if (other) throw InputError(std::string("--animate: renders a video of one scene; not with ") + other);
+    if (!o.output) {  // the viewer plays it; the video's settings mean nothing there
+        const char* flag = o.fps ? "--fps" : o.duration ? "--duration" : o.dither ? "--dither" : nullptr;
+        if (flag) throw InputError(std::string(flag) + ": sets up the video: give --output FILE.gif, .mp4 or .webm");
+        for (const Animation& a : o.animations)
+            if (a.parameter == "tessellation")
+                throw InputError("--animate: " + a.text + ": a tessellation ramp is for videos (--output); the "
+                                 "viewer would rebuild the mesh every frame");
+        return;
+    }
+    if (!video) throw InputError("--animate: writes a video: give --output FILE.gif, .mp4 or .webm (not " + *o.output + ")");
+    if (o.dither && !hasExtension(*o.output, ".gif"))
+        throw InputError("--dither: dithers a GIF's palette; " + *o.output + " is not a .gif");
 }
 
 void checkViewerAndPlot(const Options& o, const std::vector<const OptionSpec*>& given) {
@@ -104,6 +147,7 @@ void checkTestSuite(const Options& o, const std::vector<const OptionSpec*>& give
                         : o.info              ? "--info"
                         : o.plot              ? "--plot"
                         : o.captions          ? "--captions"
+                        : !o.animations.empty() ? "--animate"
                         : anyGiven(given, OptionGroup::Viewer) ? "the viewer's options"
                                                                : nullptr;
     if (other) throw InputError(std::string("--test: compares its folder's scenes with their references; not with ") + other);
@@ -127,12 +171,7 @@ void checkReference(const Options& o) {
         throw InputError(std::string(flag) + ": sets up the comparison with a reference: give --reference REF.png" +
                          (threshold ? " (or --test DIR)" : ""));
     }
-    const char* other = o.playlist            ? "--playlist"
-                        : !o.sweeps.empty()   ? "--sweep"
-                        : o.probe             ? "--probe"
-                        : o.benchmarkFrames   ? "--benchmark"
-                        : o.info              ? "--info"
-                                              : nullptr;
+    const char* other = otherRun(o);
     if (other)
         throw InputError(std::string("--reference: compares one --output image (a frame or a --plot); not with ") + other);
     if (!o.output) throw InputError("--reference: compares the --output image with it: give --output FILE.png");
@@ -151,6 +190,7 @@ RunMode runMode(const Options& o) {
     if (o.plot && !o.info) return RunMode::Plot;
     if (o.output && !o.sweeps.empty() && !o.info) return RunMode::SweepSheet;
     if (o.output && o.probe) return RunMode::ProbeImage;
+    if (o.output && !o.animations.empty() && !o.info) return RunMode::Video;
     if (o.output && !o.info && o.benchmarkFrames == 0) return RunMode::Image;
     if (o.info) return RunMode::Info;
     if (o.benchmarkFrames > 0) return RunMode::Benchmark;
@@ -191,6 +231,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     checkOutputs(o);
     checkViewerAndPlot(o, given);
     checkReference(o);
+    checkAnimation(o);
     o.mode = runMode(o);
     return o;
 }

@@ -2,6 +2,7 @@
 // The command line: `shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]`. Parsing is GL-free so
 // it is unit-tested (and fuzzed) on its own. Options override what the scene file says.
 #include "core/figures/plot.hpp"
+#include "core/scene/animation.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/sweep.hpp"
 #include "core/ui/view_names.hpp"
@@ -26,6 +27,7 @@ enum class RunMode {
     SweepSheet,      // --sweep ... --output FILE.png: a contact sheet
     ProbeImage,      // --probe X,Y --output FILE.png: the frame and the pixel's terms as JSON
     Image,           // --output FILE.png: one frame
+    Video,           // --animate SPEC --output FILE.gif|.mp4|.webm: the animation, frame by frame
     Info,            // --info: what was loaded
     Benchmark,       // --benchmark N: frame times as JSON lines
     Viewer,          // anything else: the interactive viewer
@@ -75,6 +77,12 @@ struct Options {
     std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
     std::optional<float> diffFactor;        // --diff-factor X (1..1000)
     std::vector<Sweep> sweeps;              // --sweep PARAM=V1,V2,... (at most two: columns, rows), with --output
+    // --animate SPEC (repeatable) with --output FILE.gif|.mp4|.webm: a video (core/scene/animation.hpp),
+    // --fps frames a second, --duration seconds (default: the longest animation's), --dither (GIF only).
+    std::vector<Animation> animations;
+    std::optional<int> fps;
+    std::optional<double> duration;
+    bool dither = false;
     std::optional<PlotKind> plot;           // --plot lobe|fresnel: write that plot (no GL) to --output
     std::optional<float> incidenceDeg;      // --incidence DEG (0..89): the lobe plot's incoming direction
     bool fromInside = false;                // --from-inside: Fresnel plot with eta1 = ior, eta2 = 1

@@ -1,5 +1,5 @@
 // The run modes that render without a window (program.hpp): one frame, a sweep sheet, a probed frame,
-// a benchmark, a playlist's images. Built where a headless context is (SHADELAB_OSMESA or SHADELAB_EGL).
+// a benchmark, a playlist's images, a video. Built where a headless context is (SHADELAB_OSMESA or SHADELAB_EGL).
 #include "cli/program.hpp"
 #include "cli/reference.hpp"
 #include "cli/test_suite.hpp"
@@ -13,6 +13,10 @@
 #include "core/scene/playlist.hpp"
 #include "headless/headless.hpp"
 #include "render/shader_library.hpp"
+#if SHADELAB_HAVE_VIDEO
+#include "core/scene/animation.hpp"
+#include "video/video_encoder.hpp"
+#endif
 
 #include <chrono>
 #include <filesystem>
@@ -140,6 +144,37 @@ int runBenchmark(const RunContext& run, Scene scene) {
     return 0;
 }
 
+#if SHADELAB_HAVE_VIDEO
+// --animate SPEC --output FILE.gif|.mp4|.webm: the animation rendered frame by frame on one context and
+// streamed into the encoder (video/video_encoder.hpp), one frame held at a time. Needs SHADELAB_VIDEO.
+int runVideo(const RunContext& run, const Scene& scene) {
+    const Options& options = run.options;
+    const Stopwatch clock;
+    const int fps = options.fps.value_or(kDefaultVideoFps);
+    const double seconds = options.duration.value_or(animationsDuration(options.animations));
+    const int frames = animationFrameCount(options.animations, seconds, fps);
+    const auto sceneAt = [&](const Scene& framed, std::size_t i) {
+        return sceneAtTime(framed, options.animations, double(i) / fps, "--animate");
+    };
+    // An animation that does not fit the scene (light-orbit without a light) is refused before any work.
+    sceneAt(scene, 0);
+    sceneAt(scene, std::size_t(frames - 1));
+    VideoSettings settings;
+    settings.fps = fps;
+    settings.dither = options.dither;
+    writeVideo(*options.output, scene.width, scene.height, settings, [&](VideoEncoder& encoder) {
+        renderFramesHeadless(scene, std::size_t(frames), sceneAt, run.shaders, run.backend,
+                             [&encoder](std::size_t, const Image& frame) { encoder.addFrame(frame); },
+                             options.msaa.value_or(1));
+    });
+    if (options.verbose)
+        std::cerr << "shadelab: wrote " << *options.output << " (" << frames << " frames of " << scene.width << "x"
+                  << scene.height << " at " << fps << " fps, "
+                  << clock.ms() / 1000.0 << " s)\n";
+    return 0;
+}
+#endif
+
 }  // namespace
 
 int runHeadlessMode(const Options& options) {
@@ -152,6 +187,9 @@ int runHeadlessMode(const Options& options) {
     case RunMode::SweepSheet: return runSweepSheet(run, scene);
     case RunMode::ProbeImage: return runProbeImage(run, std::move(scene));
     case RunMode::Benchmark: return runBenchmark(run, std::move(scene));
+#if SHADELAB_HAVE_VIDEO
+    case RunMode::Video: return runVideo(run, scene);
+#endif
     default: return runImage(run, std::move(scene));
     }
 }

@@ -32,6 +32,7 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
     viewer.formula = options.formula;
     viewer.resetLayout = options.resetLayout;
     viewer.msaa = options.msaa.value_or(-1);
+    viewer.animations = options.animations;
     viewer.verbose = options.verbose;
     return viewer;
 }

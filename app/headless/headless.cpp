@@ -52,6 +52,13 @@ RendererOptions headlessOptions() {
     return options;
 }
 
+// Whether the two scenes draw the same meshes (their geometry can be reused).
+bool sameMeshes(const Scene& a, const Scene& b) {
+    bool same = a.objects.size() == b.objects.size();
+    for (std::size_t o = 0; same && o < a.objects.size(); ++o) same = a.objects[o].mesh == b.objects[o].mesh;
+    return same;
+}
+
 }  // namespace
 
 Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> geometry, const ShaderLibrary& shaders,
@@ -143,8 +150,7 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         if (refused[i]) continue;
         Scene& s = scenes[i];
-        bool same = built && built->objects.size() == s.objects.size();
-        for (std::size_t o = 0; same && o < s.objects.size(); ++o) same = built->objects[o].mesh == s.objects[o].mesh;
+        const bool same = built && sameMeshes(*built, s);
         Image image;
         const bool drawn = each(i, [&] {
             if (!same) {
@@ -162,6 +168,36 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
             image = readPixels(context->target());
         });
         if (drawn) done(i, std::move(image));
+    }
+}
+
+void renderFramesHeadless(const Scene& base, std::size_t count,
+                          const std::function<Scene(const Scene&, std::size_t)>& sceneAt, const ShaderLibrary& shaders,
+                          HeadlessBackend backend, const std::function<void(std::size_t, const Image&)>& done,
+                          int msaaSamples) {
+    checkFrameMemory(base, msaaSamples, std::nullopt);
+    Scene framed = base;
+    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(framed));
+    checkFrameMemory(framed, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
+    frameIfNeeded(framed, *geometry);
+    const auto context = makeHeadlessContext(backend, base.width, base.height);
+    Renderer renderer(context->getProcAddress(), shaders, headlessOptions());
+    renderer.setGeometry(geometry);
+    MultisampleTarget msaa;
+    Scene built = framed;  // whose meshes `geometry` holds
+    Image image;           // every frame read into the same pixels
+    for (std::size_t i = 0; i < count; ++i) {
+        const Scene s = sceneAt(framed, i);
+        if (!sameMeshes(built, s)) {
+            geometry.reset();  // the previous meshes go before the next are read
+            geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
+            checkFrameMemory(s, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
+            renderer.setGeometry(geometry);
+            built = s;
+        }
+        drawFrame(renderer, s, context->target(), msaa, msaaSamples);
+        readPixelsInto(context->target(), image);
+        done(i, image);
     }
 }
 

@@ -48,6 +48,16 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
                           const std::function<void(std::size_t, Image)>& done, int msaaSamples = 1,
                           std::uint64_t keptBytes = 0, const SceneFailed& failed = nullptr);
 
+// The frames of a scene that changes with time (an animation: core/scene/animation.hpp), on one context
+// with one renderer. `base` is framed once as for --output (a glTF model without a camera, its lights);
+// frame i is then `sceneAt(framed, i)`, drawn and handed to `done` as soon as it is read back, so memory
+// does not grow with `count`. Geometry is rebuilt only when a frame's meshes differ from the previous
+// frame's (a tessellation ramp). Every frame has `base`'s size.
+void renderFramesHeadless(const Scene& base, std::size_t count,
+                          const std::function<Scene(const Scene& framed, std::size_t index)>& sceneAt,
+                          const ShaderLibrary& shaders, HeadlessBackend backend,
+                          const std::function<void(std::size_t, const Image&)>& done, int msaaSamples = 1);
+
 // A sweep sheet (core/scene/sweep.hpp): one tile of the scene's size per value of sweeps[0] (columns) and,
 // with two sweeps, per value of sweeps[1] (rows), each labelled, rendered on one context. Geometry is
 // rebuilt only when a tile's meshes differ from the previous tile's (a tessellation sweep).

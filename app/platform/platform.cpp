@@ -124,6 +124,19 @@ bool writeAndFlush(std::FILE* f, const std::function<bool(std::FILE*)>& write, c
 
 fs::path folderOf(const fs::path& path) { return path.parent_path().empty() ? fs::path(".") : path.parent_path(); }
 
+// Runs `write` on the named temporary `tmp`; removes it when `write` returns false or throws.
+bool writeNamed(const fs::path& tmp, const std::function<bool(const fs::path&)>& write) {
+    bool ok = false;
+    try {
+        ok = write(tmp);
+    } catch (...) {
+        removeFile(tmp.c_str());
+        throw;
+    }
+    if (!ok) removeFile(tmp.c_str());
+    return ok;
+}
+
 }  // namespace
 
 std::tm localTime(std::time_t t) {
@@ -218,6 +231,27 @@ std::string writeFileAtomic(const fs::path& path, const std::function<bool(std::
     return "";
 }
 
+std::string writeFileAtomicByName(const fs::path& path, const std::function<bool(const fs::path&)>& write) {
+    std::mt19937 random(std::random_device{}());
+    fs::path tmp;
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        tmp = randomTempName(folderOf(path), random);
+        fd = ::_wopen(tmp.c_str(), _O_CREAT | _O_EXCL | _O_WRONLY | _O_BINARY | _O_NOINHERIT, _S_IREAD | _S_IWRITE);
+        if (fd < 0 && errno != EEXIST) return reason(errno);
+    }
+    if (fd < 0) return reason(EEXIST);
+    ::_close(fd);
+    const TempName named(tmp);
+    if (!writeNamed(tmp, write)) return reason(0);
+    if (!MoveFileExW(tmp.c_str(), path.c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH)) {
+        const DWORD moveError = GetLastError();
+        removeFile(tmp.c_str());
+        return win32Reason(moveError);
+    }
+    return "";
+}
+
 std::uint64_t physicalMemoryBytes() {
     MEMORYSTATUSEX status{};
     status.dwLength = sizeof status;
@@ -304,6 +338,24 @@ std::string writeFileAtomic(const fs::path& path, const std::function<bool(std::
     umask(mask);
     if (ok) ok = ::chmod(tmp.c_str(), 0666 & ~mask) == 0;
     if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        ::unlink(tmp.c_str());
+        return reason(err);
+    }
+    return "";
+}
+
+std::string writeFileAtomicByName(const fs::path& path, const std::function<bool(const fs::path&)>& write) {
+    std::string tmp = (folderOf(path) / kTempTemplate).string();
+    const int fd = mkstemp(tmp.data());
+    if (fd < 0) return reason(errno);
+    ::close(fd);
+    const TempName named(tmp);
+    if (!writeNamed(tmp, write)) return reason(0);
+    // mkstemp creates files 0600; an output file gets the usual permissions (0666 less the umask).
+    const mode_t mask = umask(0);
+    umask(mask);
+    if (::chmod(tmp.c_str(), 0666 & ~mask) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
         const int err = errno;
         ::unlink(tmp.c_str());
         return reason(err);

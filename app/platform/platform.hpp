@@ -28,6 +28,14 @@ std::FILE* openFile(const std::filesystem::path& path, const char* mode);
 // exception from `write` passes through, likewise with nothing left behind.
 std::string writeFileAtomic(const std::filesystem::path& path, const std::function<bool(std::FILE*)>& write);
 
+// The same for a writer that needs the file's name rather than a FILE* (a library that opens, seeks
+// and reads back what it wrote: libavformat moves an MP4's index to the front so). `write` gets the
+// name of an empty temporary file in `path`'s folder (".shadelab-XXXXXX", removed by SIGINT and
+// SIGTERM) and writes it; returning true renames it over `path`. Returns "" or why not, as above;
+// the temporary is removed on failure and when `write` throws (the exception passes through).
+std::string writeFileAtomicByName(const std::filesystem::path& path,
+                                  const std::function<bool(const std::filesystem::path& temporary)>& write);
+
 // The local calendar time of `t` (localtime_r / localtime_s).
 std::tm localTime(std::time_t t);
 

@@ -4,14 +4,19 @@
 #include "render/multisample_target.hpp"
 #include "render/program.hpp"
 
+#include <algorithm>
 #include <cstdint>
-#include <cstring>
-#include <vector>
 
 namespace shadelab {
 
 Image readPixels(const RenderTarget& target) {
-    Image img(target.width, target.height);
+    Image img;
+    readPixelsInto(target, img);
+    return img;
+}
+
+void readPixelsInto(const RenderTarget& target, Image& img) {
+    if (img.width != target.width || img.height != target.height) img = Image(target.width, target.height);
     // glReadPixels cannot read a multisampled framebuffer (MSAA): resolve it into a plain one first.
     gl::Framebuffer resolved;
     gl::Texture resolvedColor;
@@ -22,13 +27,12 @@ Image readPixels(const RenderTarget& target) {
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved ? resolved.get() : target.framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    std::vector<std::uint8_t> bottomUp(img.rgba.size());
-    glReadPixels(0, 0, target.width, target.height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    glReadPixels(0, 0, target.width, target.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    // GL's rows are bottom-up: swapped in place, row y with row height-1-y.
     const std::size_t row = std::size_t(target.width) * 4;
-    for (int y = 0; y < target.height; ++y)
-        std::memcpy(img.pixel(0, y), bottomUp.data() + std::size_t(target.height - 1 - y) * row, row);
+    for (int y = 0; y < target.height / 2; ++y)
+        std::swap_ranges(img.pixel(0, y), img.pixel(0, y) + row, img.pixel(0, target.height - 1 - y));
     checkGl("readPixels");
-    return img;
 }
 
 }  // namespace shadelab

@@ -393,7 +393,14 @@ void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requ
     requests.load |= ImGui::Button("load");
     ImGui::SameLine();
     requests.screenshot |= ImGui::Button("screenshot (F12)");
+    if (!status.animation.empty()) {  // --animate
+        requests.togglePlay |= ImGui::Button(status.playing ? "pause (Space)" : "play (Space)");
+        ImGui::SameLine();
+        ImGui::Text("animation: %s", status.animation.c_str());
+    }
     if (!status.lastScreenshot.empty()) ImGui::TextWrapped("screenshot: %s", status.lastScreenshot.c_str());
+    requests.toggleRecording |= ImGui::Button(status.recording ? "stop recording (Ctrl+R)" : "record the view (Ctrl+R)");
+    if (!status.lastRecording.empty()) ImGui::TextWrapped("recording: %s", status.lastRecording.c_str());
     requests.reloadShaders |= ImGui::Button("reload shaders (F5)");
     ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
     // The last result, also shown over the view for a while; here at the end, so nothing moves.
@@ -637,9 +644,11 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
     draw->AddRectFilled(lo, hi, IM_COL32(16, 16, 20, 255));
     char text[512];
     const double ms = status.frameMs;
-    std::snprintf(text, sizeof text, "%.1f ms (%.0f FPS)  \u00b7  %zu triangles  \u00b7  %s%s%s", ms,
+    std::snprintf(text, sizeof text, "%.1f ms (%.0f FPS)  \u00b7  %zu triangles  \u00b7  %s%s%s%s%s", ms,
                   ms > 0.0 ? 1000.0 / ms : 0.0, status.frameTriangles, status.glRenderer.c_str(),
-                  status.progress.empty() ? "" : "  \u00b7  ", status.progress.c_str());
+                  status.progress.empty() ? "" : "  \u00b7  ", status.progress.c_str(),
+                  status.animation.empty() ? "" : status.playing ? "  \u00b7  playing " : "  \u00b7  paused at ",
+                  status.animation.c_str());
     const float pad = (strip.height - ImGui::GetFontSize()) * 0.5f;
     draw->AddText(ImVec2(std::round(strip.x + ImGui::GetFontSize() * 0.5f), std::round(strip.y + pad)),
                   IM_COL32(200, 200, 200, 255), text);

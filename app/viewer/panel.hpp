@@ -68,6 +68,10 @@ struct PanelStatus {
     // and the last failed reload's message (empty after a good one).
     std::map<std::string, std::string> shaderSources;
     std::string shaderError;
+    std::string animation;            // --animate: "1.25 s of 4.00 s"; empty without animations
+    bool playing = false;
+    bool recording = false;           // Ctrl+R: the view is being recorded
+    std::string lastRecording;        // path of the last saved recording
 };
 
 // Buttons pressed this frame.
@@ -80,6 +84,8 @@ struct PanelRequests {
     float uiScale = 0.0f;         // the UI-scale slider moved: the new scale (0: unchanged)
     int msaa = 0;                 // anti-aliasing chosen: samples (1: off; 0: unchanged)
     bool toggleFullscreen = false;
+    bool togglePlay = false;      // the animation's play / pause button
+    bool toggleRecording = false; // the record / stop button (Ctrl+R)
     int modelCamera = -2;         // a camera picked: the model's camera N, or -1 for shadelab's framing (-2: unchanged)
     bool sceneEdited = false;     // a widget changed the scene (or the panel's own settings) this frame
 };

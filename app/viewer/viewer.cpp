@@ -145,6 +145,8 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     window_.setSwapInterval(options_.frames > 0 ? 0 : 1);
     if (options_.fullscreen || prefs_.fullscreen) window_.setFullscreen(true);
     if (playlist_.active()) settings_.scenePath = playlist_.preset(0).path;
+    playing_ = !options_.animations.empty();
+    animationTick_ = std::chrono::steady_clock::now();
     if (options_.verbose) std::cerr << "shadelab: viewer on " << status_.glRenderer << "\n";
 }
 
@@ -162,6 +164,7 @@ void Viewer::run() {
         }
         if (frame(options_.frames > 0 && n >= options_.frames)) break;
     }
+    stopRecording();  // quitting while recording keeps the video
     savePrefs();
 }
 
@@ -180,6 +183,7 @@ void Viewer::savePrefs() {
 
 bool Viewer::idle() const {
     if (framesToDraw_ > 0 || window_.eventCount() != eventsSeen_) return false;
+    if (playing_ || recording_) return false;  // an animation keeps drawing; a paused one does not
     if (msaaSamples_ > 1 && !antiAliased_) return false;  // one more frame: the still view anti-aliased
     if (progressiveFrom_ && !progressiveComplete_) return false;  // sampling goes on
     const ImGuiIO& io = ImGui::GetIO();
@@ -209,12 +213,14 @@ bool Viewer::frame(bool last) {
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
     const float labelsBottom = followView(l);
+    advanceAnimation();
     const std::vector<OverlayArrow> arrows = probeOverlays(l, drawViewText(l, labelsBottom));
     const Image view = drawView(l, still, last, arrows);
     status_.frameMs = frameMs_;
     drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
     imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
     if (screenshotRequested_) saveScreenshot(view);
+    record(l, view);
     if (last) writeLastFrameFiles(l, view);
     window_.swapBuffers();
     recordFrameTime(start, last);
@@ -273,7 +279,8 @@ float Viewer::followView(const FrameLayout& l) {
 // the help. Returns the light labels' boxes (the probe's labels keep off them).
 std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
     const std::vector<UiRect> lightBoxes =
-        settings_.lightLabels ? drawLightLabels(document_.scene(), l.view, l.scale, settings_.selectedLight, labelsBottom)
+        settings_.lightLabels ? drawLightLabels(animatedScene_ ? *animatedScene_ : document_.scene(), l.view, l.scale,
+                                                settings_.selectedLight, labelsBottom)
                               : std::vector<UiRect>{};
     UiRect messageArea = l.view;  // above the formula when it is shown
     if (settings_.showFormula) {
@@ -298,10 +305,12 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
 // The 3D view, anti-aliased where it pays: always on a GPU; on a software rasterizer only once the
 // view is still (and for files). Returns it as drawn when it is captured (a screenshot, a file).
 Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::vector<OverlayArrow>& arrows) {
-    const bool captureView = screenshotRequested_ || (last && !options_.viewScreenshotPath.empty());
+    const bool captureView =
+        screenshotRequested_ || recording_ || recordToggled_ || (last && !options_.viewScreenshotPath.empty());
     bool mouseDown = false;
     for (bool down : ImGui::GetIO().MouseDown) mouseDown = mouseDown || down;
-    antiAliasThisFrame_ = msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown) || captureView || last);
+    antiAliasThisFrame_ =
+        msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown && !playing_) || captureView || last);
     const Image view = renderView(l, captureView, last, arrows);
     antiAliased_ = antiAliasThisFrame_;
     return view;
@@ -470,6 +479,7 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
         case 'r': case 'R': document_.resetCamera(); break;
         case 'f': case 'F': document_.frameModel(); break;
         case '?': showHelp_ = !showHelp_; break;
+        case ' ': playing_ = playing_ ? false : !options_.animations.empty(); break;
         case 'q': case 'Q': window_.requestClose(); break;
         default: break;
         }
@@ -482,6 +492,7 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
             case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: setUiScale(uiScale_ / 1.25f); break;
             case GLFW_KEY_0: case GLFW_KEY_KP_0: setUiScale(1.0f); break;
             case GLFW_KEY_Q: window_.requestClose(); break;
+            case GLFW_KEY_R: recordToggled_ = true; break;
             default: break;
             }
             continue;
@@ -508,7 +519,84 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
     }
 }
 
+// --animate: the scene drawn this frame is the document's at the animation's time (looping over the
+// longest animation); then the clock moves on while playing: by the time since the last frame, or by
+// 1/30 s in a scripted run, whose frame i is then the headless video's frame i.
+void Viewer::advanceAnimation() {
+    status_.animation.clear();
+    if (options_.animations.empty()) return;
+    const double loop = animationsDuration(options_.animations);
+    const double t = std::fmod(animationSeconds_, loop);
+    try {
+        animatedScene_ = sceneAtTime(document_.scene(), options_.animations, t, "--animate");
+    } catch (const InputError& e) {  // e.g. the light an orbit moves was removed in the panel
+        animatedScene_.reset();
+        playing_ = false;
+        setStatus(e.what(), true);
+    }
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);
+    status_.animation = text;
+    status_.playing = playing_;
+    const auto now = std::chrono::steady_clock::now();
+    if (playing_) {
+        animationSeconds_ += options_.frames > 0 ? 1.0 / kDefaultVideoFps
+                                                 : std::chrono::duration<double>(now - animationTick_).count();
+        ++animationStep_;
+    }
+    animationTick_ = now;
+}
+
+// Starts or stops the recording when asked, and adds the frame while it runs. The video has the view's size
+// when it started: a resize stops (and saves) it.
+void Viewer::record(const FrameLayout& l, const Image& view) {
+    if (recording_ && (recordToggled_ || view.width != recording_->width() || view.height != recording_->height())) {
+        const bool resized = !recordToggled_;
+        recordToggled_ = false;
+        stopRecording();
+        if (resized) setStatus(status_.message + " (recording stopped: the view changed size)", false);
+        return;
+    }
+    if (recordToggled_) {
+        recordToggled_ = false;
+        if (view.width <= 0 || view.height <= 0) return setStatus("nothing to record: the view is empty", true);
+        std::string path = timestampedName();
+        path.replace(path.size() - 4, 4, ".mp4");
+        try {
+            recording_ = std::make_unique<ViewRecorder>(path, l.viewWidth, l.viewHeight, kDefaultVideoFps);
+            recordingStart_ = std::chrono::steady_clock::now();
+            setStatus("recording " + path + " (Ctrl+R stops)", false);
+        } catch (const std::exception& e) {
+            return setStatus(std::string("recording failed: ") + e.what(), true);
+        }
+    }
+    if (!recording_) return;
+    try {
+        recording_->add(view, std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
+    } catch (const std::exception& e) {
+        recording_.reset();  // removes what it wrote
+        setStatus(std::string("recording failed: ") + e.what(), true);
+    }
+    status_.recording = recording_ != nullptr;
+}
+
+void Viewer::stopRecording() {
+    if (!recording_) return;
+    const std::string path = recording_->path();
+    try {
+        recording_->stop();
+        status_.lastRecording = path;
+        setStatus("saved recording " + path, false);
+    } catch (const std::exception& e) {
+        setStatus(std::string("recording failed: ") + e.what(), true);
+    }
+    recording_.reset();
+    status_.recording = false;
+}
+
 void Viewer::apply(const PanelRequests& r) {
+    if (r.toggleRecording) recordToggled_ = true;
+    if (r.togglePlay) playing_ = !playing_ && !options_.animations.empty();
     if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
     if (r.msaa > 0) msaaSamples_ = r.msaa;
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
@@ -632,7 +720,7 @@ Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const st
         // Lines 2 pixels wide at scale 1, thicker with the content and UI scale.
         OverlayOptions overlays = settings_.overlays;
         overlays.lineWidth = 2.0f * imgui_.scale();
-        overlays_->render(document_.scene(), target, overlays, arrows);
+        overlays_->render(animatedScene_ ? *animatedScene_ : document_.scene(), target, overlays, arrows);
         msaa_.resolveInto(view);
         if (capture) return opaque(readPixels(view));
     } catch (const std::exception& e) {
@@ -655,7 +743,7 @@ Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const st
 // pass, so dragging a slider or the camera stays fluid, and a still view converges to the one-pass
 // image. The stride adapts at each restart to keep a pass near kPassBudgetMs on this machine.
 void Viewer::renderScene(const RenderTarget& view, bool complete) {
-    const Scene& scene = document_.scene();
+    const Scene& scene = animatedScene_ ? *animatedScene_ : document_.scene();
     const auto now = std::chrono::steady_clock::now();
     if (passDrawnLastFrame_) lastPassMs_ = std::chrono::duration<double, std::milli>(now - lastFrameStart_).count();
     lastFrameStart_ = now;
@@ -670,8 +758,8 @@ void Viewer::renderScene(const RenderTarget& view, bool complete) {
         return;
     }
     // Everything the image depends on; a change restarts the sum.
-    const std::array<std::uint64_t, 5> from = {document_.revision(), document_.geometryRevision(), rendererGeneration_,
-                                               std::uint64_t(view.width), std::uint64_t(view.height)};
+    const std::array<std::uint64_t, 6> from = {document_.revision(), document_.geometryRevision(), rendererGeneration_,
+                                               std::uint64_t(view.width), std::uint64_t(view.height), animationStep_};
     const bool restart = from != progressiveFrom_;
     if (restart) {
         progressiveFrom_ = from;

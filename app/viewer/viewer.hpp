@@ -6,6 +6,7 @@
 #include "core/image/image.hpp"
 #include "core/probe/probe.hpp"
 #include "core/geometry/ray_cast.hpp"
+#include "core/scene/animation.hpp"
 #include "core/scene/playlist.hpp"
 #include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
@@ -18,6 +19,7 @@
 #include "viewer/playlist_navigator.hpp"
 #include "viewer/scene_document.hpp"
 #include "viewer/view_prefs.hpp"
+#include "viewer/view_recorder.hpp"
 
 #include <chrono>
 #include <glm/vec2.hpp>
@@ -60,6 +62,10 @@ struct ViewerOptions {
     // --msaa N: samples per pixel of the anti-aliased view; -1 (not given): 4 for a person, 1 for a
     // scripted run (--frames), whose 3D view then equals the headless image.
     int msaa = -1;
+    // --animate: played over the scene as it is drawn (the panel's values stay the scene's), looping over
+    // the longest animation's length; Space and the panel play and pause. A scripted run (--frames) steps
+    // 1/30 s a frame, so its frames do not depend on the machine's speed.
+    std::vector<Animation> animations;
     bool verbose = false;
 };
 
@@ -164,7 +170,20 @@ private:
     // Progressive sampling: what the sum so far was drawn from (the scene's and the geometry's
     // revisions, the renderer, the view's size; none while the scene needs no sampling), the stride,
     // and the last pass's time.
-    std::optional<std::array<std::uint64_t, 5>> progressiveFrom_;
+    std::optional<std::array<std::uint64_t, 6>> progressiveFrom_;
+    // --animate: whether it plays, its clock, and the scene it makes of the document's for this frame.
+    bool playing_ = false;
+    double animationSeconds_ = 0.0;
+    std::uint64_t animationStep_ = 0;  // counts the frames the animation changed (restarts a progressive sum)
+    std::chrono::steady_clock::time_point animationTick_;
+    std::optional<Scene> animatedScene_;
+    void advanceAnimation();
+    // Ctrl+R / the record button: recording the view as shown to a timestamped MP4 (viewer/view_recorder.hpp).
+    std::unique_ptr<ViewRecorder> recording_;
+    bool recordToggled_ = false;  // start or stop at this frame's end, once the view is drawn
+    std::chrono::steady_clock::time_point recordingStart_;
+    void record(const FrameLayout& l, const Image& view);
+    void stopRecording();
     int progressiveStride_ = 0;
     double lastPassMs_ = 0.0;
     bool passDrawnLastFrame_ = false;

@@ -89,6 +89,21 @@ TEST_F(Parts, EachBackendWorksOrIsRefusedByName) {
 }
 
 // Without the viewer, a run that would open a window says so (with a display or without one).
+// A video needs a headless context and video encoding (SHADELAB_VIDEO): either it is written, or one
+// line names the part that is missing and no file is left.
+TEST_F(Parts, VideoIsWrittenOrTheMissingPartNamed) {
+    const test::RunResult r =
+        run({"--size", "16x16", "--animate", "ke=1..2:0.1", "--fps", "10", "--output", path("ramp.gif")});
+    if (SHADELAB_HAVE_VIDEO) {
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_TRUE(fs::exists(path("ramp.gif")));
+    } else if (SHADELAB_HAVE_OSMESA || SHADELAB_HAVE_EGL) {
+        expectRefused(r, "this shadelab was built without video encoding (CMake option SHADELAB_VIDEO", path("ramp.gif"));
+    } else {
+        expectRefused(r, "--output: this shadelab was built without a headless GL context", path("ramp.gif"));
+    }
+}
+
 TEST_F(Parts, ViewerOrItsAbsenceNamed) {
     if (SHADELAB_HAVE_VIEWER) GTEST_SKIP() << "this build has the viewer (tests/viewer runs it)";
     expectRefused(run({"--frames", "1"}), "this shadelab was built without the viewer", "");

@@ -390,3 +390,20 @@ TEST(CliOptions, ReadmeOptionTableIsTheTable) {
                                            "SHADELAB_UPDATE_README=1 build/tests/unit_tests "
                                            "--gtest_filter=CliOptions.ReadmeOptionTableIsTheTable";
 }
+
+TEST(CliOptions, AnimateWritesAVideoOfSeveralAnimations) {
+    const Options o = parseOptions({"--animate", "ke=1..1000:log", "--animate", "camera-orbit:8", "--output", "a.webm",
+                                    "--fps", "24", "--duration", "2.5"});
+    EXPECT_EQ(o.mode, RunMode::Video);
+    ASSERT_EQ(o.animations.size(), 2u);
+    EXPECT_EQ(o.animations[1].kind, Animation::Kind::CameraOrbit);
+    EXPECT_EQ(o.fps, 24);
+    EXPECT_EQ(o.duration, 2.5);
+    EXPECT_EQ(parseOptions({"--animate", "light-orbit", "--output", "A.GIF", "--dither"}).mode, RunMode::Video);
+    // Without --output the viewer plays it; a video's settings and a mesh rebuilt every frame are refused.
+    EXPECT_EQ(parseOptions({"--animate", "light-orbit"}).mode, RunMode::Viewer);
+    EXPECT_NE(errorOf({"--animate", "light-orbit", "--fps", "24"}).find("--fps: sets up the video"), std::string::npos);
+    EXPECT_NE(errorOf({"--animate", "tessellation=8..64"}).find("a tessellation ramp is for videos"), std::string::npos);
+    EXPECT_NE(errorOf({"--animate", "light-orbit", "--output", "a.png"}).find("--animate: writes a video"),
+              std::string::npos);
+}

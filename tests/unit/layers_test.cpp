@@ -28,7 +28,8 @@ const std::map<std::string, std::vector<std::string>> kBelow = {
     {"render/cpu", {"core/geometry"}},
     {"render", {"render/cpu", "core/ui"}},
     {"headless", {"render"}},
-    {"viewer", {"render", "core/ui", "core/probe", "core/figures"}},
+    {"video", {"core/image"}},
+    {"viewer", {"render", "core/ui", "core/probe", "core/figures", "video"}},
     {"cli", {"core/ui", "core/probe", "core/figures"}},
 };
 

@@ -150,6 +150,26 @@ TEST(Window, MatchesHeadless) {
                     "whole window, panel hidden");
 }
 
+// --animate in the viewer: a scripted run steps 1/30 s a frame, so its 16th frame shows t = 0.5 s of the
+// ramp k_e 1 -> 1000 (log, 1 s): k_e = 1000^0.5 = 31.6227766, the headless frame at that k_e; and the
+// first frame is the ramp's start, k_e 1.
+TEST(Window, AnimationPlaysTheRamp) {
+    const std::string dir = outDir();
+    for (const char* ke : {"31.6227766", "1"}) {
+        const RunResult headless = shadelab(scene("compare_torus.json") + " --ke " + ke + " --output " + dir + "/ke" + ke + ".png", dir);
+        ASSERT_EQ(headless.status, 0) << headless.output;
+    }
+    const std::string animate = scene("compare_torus.json") + " --no-labels --animate ke=1..1000:log:1 --screenshot-view ";
+    const RunResult half = shadelab(animate + dir + "/half.png --frames 16", dir);
+    ASSERT_EQ(half.status, 0) << half.output;
+    expectSameImage(readPng(dir + "/half.png"), readPng(dir + "/ke31.6227766.png"), "frame 16 (t = 0.5 s)");
+    const RunResult first = shadelab(animate + dir + "/first.png --frames 1", dir);
+    ASSERT_EQ(first.status, 0) << first.output;
+    expectSameImage(readPng(dir + "/first.png"), readPng(dir + "/ke1.png"), "frame 1 (t = 0)");
+    const CompareResult apart = compareImages(readPng(dir + "/half.png"), readPng(dir + "/ke1.png"), 8);
+    EXPECT_GT(apart.failingPixels, 100u) << "the two times should differ";
+}
+
 // An area light refines over frames in the window (progressive sampling, one pass of 16 per frame
 // with --progressive 4); the last frame completes it, so the view equals the headless image.
 TEST(Window, ProgressiveAreaLightMatchesHeadless) {

@@ -82,4 +82,10 @@ void writeFileAtomic(const std::string& path, const std::function<bool(std::FILE
     if (!failure.empty()) throw InputError(path + ": cannot write: " + failure);
 }
 
+void writeFileAtomicByName(const std::string& path, const std::function<bool(const std::string&)>& write) {
+    const std::string failure = platform::writeFileAtomicByName(
+        fs::path(path), [&write](const fs::path& temporary) { return write(temporary.string()); });
+    if (!failure.empty()) throw InputError(path + ": cannot write: " + failure);
+}
+
 }  // namespace shadelab

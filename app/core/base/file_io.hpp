@@ -32,5 +32,8 @@ void createOutputFolder(const std::string& path, const std::string& option);
 // temporary is renamed over `path`, on any failure (write returns false or throws) it is removed
 // (platform::writeFileAtomic). InputError "<path>: cannot write: <reason>".
 void writeFileAtomic(const std::string& path, const std::function<bool(std::FILE*)>& write);
+// The same for a writer that needs a file name (platform::writeFileAtomicByName): `write` gets the
+// name of a temporary file beside `path` to write.
+void writeFileAtomicByName(const std::string& path, const std::function<bool(const std::string& temporary)>& write);
 
 }  // namespace shadelab

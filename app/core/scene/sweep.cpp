@@ -103,6 +103,14 @@ Sweep parseSweep(const std::string& text, const std::string& flag) {
     throw InputError(flag + ": unknown parameter \"" + quoteInput(s.parameter) + "\" (expected one of " + names + ")");
 }
 
+SweepValues sweepValues(const std::string& parameter) {
+    for (const auto& p : kNumeric)
+        if (parameter == p.name) return p.integer ? SweepValues::Integer : SweepValues::Number;
+    for (const auto& p : kNamed)
+        if (parameter == p.name) return SweepValues::Name;
+    return SweepValues::Unknown;
+}
+
 void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::string& flag) {
     const std::string& v = sweep.values.at(index);
     const std::string& p = sweep.parameter;

@@ -27,6 +27,10 @@ Sweep parseSweep(const std::string& text, const std::string& flag);
 // Sets value `index` of the sweep on the scene. Throws InputError (a tessellation sweep on a cube or
 // glTF model; values are checked by parseSweep).
 void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::string& flag);
+// What a parameter's values are: numbers, whole numbers (tessellation) or names (shading); Unknown for
+// a name that is no parameter. --animate's ramps (core/scene/animation.hpp) interpolate the numbers.
+enum class SweepValues { Number, Integer, Name, Unknown };
+SweepValues sweepValues(const std::string& parameter);
 // "k_e=32", "shading=phong".
 std::string sweepLabel(const Sweep& sweep, std::size_t index);
 

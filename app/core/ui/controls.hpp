@@ -43,6 +43,8 @@ inline constexpr Control kControls[] = {
     {"F1  or  ?", "this help on / off"},
     {"F5", "reload the shaders (errors show, the picture stays)"},
     {"F12", "screenshot of the 3D view (timestamped PNG)"},
+    {"Space", "play / pause the --animate animation"},
+    {"Ctrl+R", "record the 3D view to a timestamped MP4 / stop"},
     {"Esc", "close the help, clear the probe, leave a text field"},
     {"Q  or  Ctrl+Q", "quit"},
 };
