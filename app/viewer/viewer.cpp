@@ -283,8 +283,8 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
                                                 settings_.selectedLight, labelsBottom)
                               : std::vector<UiRect>{};
     UiRect messageArea = l.view;  // above the formula when it is shown
-    if (settings_.showFormula) {
-        const Scene& scene = document_.scene();
+    if (settings_.showFormula) {  // the values drawn this frame: an animated k_e moves under its symbol
+        const Scene& scene = animatedScene_ ? *animatedScene_ : document_.scene();
         const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
         const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
         messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale,
