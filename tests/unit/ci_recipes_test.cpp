@@ -5,12 +5,12 @@
 // option, or a moved file, fails here instead of in a user's pipeline.
 #include "cli/options.hpp"
 #include "core/base/error.hpp"
+#include "core/base/file_io.hpp"
 
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -23,13 +23,8 @@ namespace fs = std::filesystem;
 
 const fs::path kSource = SHADELAB_SOURCE_DIR;
 
-std::string readText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    EXPECT_TRUE(in) << path;
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+// (core's reader: it throws, and the test fails, for a file that is not there)
+std::string readText(const fs::path& path) { return readTextFile(path.string(), 1u << 20); }
 
 // The file's commands, one per entry: what follows `run:` (a line, or the lines of its `|` block),
 // a `- ` item of a GitLab script, a Dockerfile RUN, or a line of a ```sh block in Markdown; lines
