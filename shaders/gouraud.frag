@@ -10,10 +10,11 @@ in vec3 v_color;
 out vec4 o_color;
 
 void main() {
+    if (cutOut()) discard;
 #if SL_TEXTURED
-    vec3 color = clamp(objectTexel() * v_termsOfC + v_specular, 0.0, 1.0);
+    vec3 color = combineTerms(v_termsOfC, v_specular);
 #else
     vec3 color = v_color;
 #endif
-    o_color = vec4(encodeOutput(color), 1.0);
+    o_color = vec4(encodeOutput(color), outputAlpha());
 }

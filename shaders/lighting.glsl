@@ -2,9 +2,10 @@
 // once per triangle (flat), per vertex (gouraud) or per fragment (phong). Mirrors shadeTerms() in
 // app/core/shading/lighting.cpp, which the tests compare against.
 //
-//   L = k_a A C + sum_l v_l L_l ( k_d C max(0, N.I_l) + k_s S spec_l ),   clamped to [0, 1]
+//   L = E + k_a A C + sum_l v_l L_l ( k_d C max(0, N.I_l) + k_s S spec_l ),   clamped to [0, 1]
 //   spec_l = max(0, R(I_l).V)^k_e (Phong) or max(0, H_l.N)^k_e (Blinn-Phong), 0 where N.I_l <= 0
 //   v_l: how much of light l reaches the point (1, or its shadow-map test with shadows on)
+//   E: the light a glTF material gives off (0 for the lecture's own materials; shaders/object_color.glsl)
 //
 // sumOfTerms() at the end of this file is that line. The programs are specialised
 // (app/render/program_cache.cpp, programDefines): the number of lights and each light's kind, attenuation
@@ -49,6 +50,10 @@
 #ifndef SL_ACCUMULATE
 #define SL_ACCUMULATE 0
 #endif
+#ifndef SL_EMISSIVE
+#define SL_EMISSIVE 0  // 1: the draw gives off light, E > 0 (only such draws get the define)
+#endif
+vec3 objectEmission();  // E at this point (shaders/object_color.glsl)
 
 // Per light, from the renderer's lists (comma-separated, one entry per light; a scene without lights
 // gets one placeholder entry that the loop over the lights never reads).
@@ -231,6 +236,8 @@ vec3 sumOfTerms(vec3 posWorld, vec3 nrmWorld, vec3 texel, float specularShare) {
     vec3 N = nrmWorld;
     vec3 V = normalize(toEye(posWorld));
     vec3 L = vec3(0.0);
+    if (SL_EMISSIVE == 1 && (SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_EMISSIVE)) L += objectEmission();  // E
+    if (SL_SHOW == SL_SHOW_EMISSIVE) return L;
     if (SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_AMBIENT) L += ambientTerm() * texel;  // k_a A C
     if (SL_SHOW == SL_SHOW_AMBIENT) return L;
     for (int l = 0; l < SL_LIGHT_COUNT; ++l) {
@@ -253,6 +260,6 @@ vec3 shadeLecture(vec3 posWorld, vec3 nrmWorld, vec3 texel) { return clamp(shade
 
 // The formula in two parts, for flat and Gouraud shading of a textured surface: they evaluate it per
 // face or vertex, before the fragment knows its texel, and the fragment stage combines them
-// (shaders/object_color.glsl, combineTerms):  L = clamp(texel * termsOfC + specular, 0, 1).
+// (shaders/object_color.glsl, combineTerms):  L = clamp(texel * termsOfC + specular + E, 0, 1).
 vec3 shadeLectureTermsOfC(vec3 posWorld, vec3 nrmWorld) { return sumOfTerms(posWorld, nrmWorld, vec3(1.0), 0.0); }  // k_a A C + sum v L_l k_d C (N.I)
 vec3 shadeLectureSpecular(vec3 posWorld, vec3 nrmWorld) { return sumOfTerms(posWorld, nrmWorld, vec3(0.0), 1.0); }  // sum v L_l k_s S spec_l

@@ -7,11 +7,12 @@
 out vec4 o_color;
 
 void main() {
+    if (cutOut()) discard;
 #if SL_ACCUMULATE
     // A pass of progressive sampling: the estimate before the clamp, summed with the other passes'
     // in a float buffer; shaders/resolve.frag clamps and encodes the mean, as the line below does.
     o_color = vec4(shadeLectureUnclamped(v_posWorld, normalize(v_nrmWorld), objectTexel()), 1.0);
 #else
-    o_color = vec4(encodeOutput(shadeLecture(v_posWorld, normalize(v_nrmWorld), objectTexel())), 1.0);
+    o_color = vec4(encodeOutput(shadeLecture(v_posWorld, normalize(v_nrmWorld), objectTexel())), outputAlpha());
 #endif
 }

@@ -9,6 +9,7 @@
 #define SL_ATTRIB_TEXCOORD 3       // a_texcoord (SL_TEXTURED: shaders/object_color.glsl)
 #define SL_ATTRIB_COLOR 4          // a_color (SL_TEXTURED)
 #define SL_ATTRIB_INSTANCE 5       // a_instanceFromPart, a mat4 in locations 5..8 (SL_INSTANCED: shaders/instancing.glsl)
+#define SL_ATTRIB_EMISSIVE_TEXCOORD 9  // a_emissiveTexcoord (SL_TEXTURED with SL_EMISSIVE_TEXTURE)
 #define SL_FLAT_NORMAL_Z_NEGATIVE 3.0  // added to the face normal's y where its z is negative (flat_packed.vert)
 
 #define SL_BINDING_FRAME 0         // FrameBlock: camera and lights, one per pane
@@ -19,6 +20,7 @@
 #define SL_TEXTURE_SHADOW_MAPS 0       // u_shadowMaps: point, spot and directional lights' layers (shaders/shadows.glsl)
 #define SL_TEXTURE_AREA_SHADOW_MAPS 1  // u_areaShadowMaps: area lights' layers
 #define SL_TEXTURE_BASE_COLOR 2        // u_baseColorTexture (shaders/object_color.glsl)
+#define SL_TEXTURE_EMISSIVE 3          // u_emissiveTexture (shaders/object_color.glsl)
 
 #define SL_LIGHT_POINT 0
 #define SL_LIGHT_DIRECTIONAL 1
@@ -45,5 +47,9 @@
 #define SL_SHOW_SPECULAR 3
 #define SL_SHOW_LIGHT 4                        // one light's diffuse + specular: SL_SHOW_LIGHT_INDEX
 #define SL_SHOW_UNLIT 5                        // the material colour C, no lighting
+#define SL_SHOW_EMISSIVE 6                     // E, the light the surface gives off
+#define SL_ALPHA_OPAQUE 0                      // glTF alphaMode (SL_ALPHA_MODE): alpha ignored
+#define SL_ALPHA_MASK 1                        // fragments below the cutoff discarded (a cut-out)
+#define SL_ALPHA_BLEND 2                       // the colour written with its alpha, blended over what is behind
 
 #endif

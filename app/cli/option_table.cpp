@@ -237,6 +237,14 @@ const OptionSpec kOptions[] = {
     {"--fresnel", "", "MODE", G::General, kNoBounds, [] { return namesList(kFresnelModeNames, " | "); }, "fresnel",
      "{names}: the specular term weighted by the Fresnel reflectance at V.H",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.fresnel = choice(self.name, v, kFresnelModeNames); }},
+    {"--output-encoding", "", "ENC", G::General, kNoBounds, [] { return namesList(kOutputEncodingNames, " | "); },
+     "output_encoding",
+     "{names}: how the clamped linear L is written (default: srgb for a scene that draws a glTF model, whose "
+     "colours are linear values meant for an sRGB display; else the scene's, linear unless it says; see *What is "
+     "drawn*)",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.outputEncoding = choice(self.name, v, kOutputEncodingNames);
+     }},
     {"--ior", "", "X", G::General, bounds(kIorRange), nullptr, "ior",
      "index of refraction eta2/eta1 from air for `--fresnel` ({range}, default 1.5)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.ior = floatIn(self, v); }},

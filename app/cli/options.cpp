@@ -265,6 +265,10 @@ void applyOverrides(Scene& s, const Options& o) {
     if (o.shadows) s.shadows.enabled = *o.shadows;
     if (o.specularNormalization) s.specularNormalization = *o.specularNormalization;
     if (o.fresnel) s.fresnel = *o.fresnel;
+    if (o.outputEncoding) {
+        s.outputEncoding = *o.outputEncoding;
+        s.outputEncodingGiven = true;
+    }
     if (o.ior) s.ior = *o.ior;
     if (o.noTextures) s.textures = false;
     if (o.diffA) s.diff.a = *o.diffA, s.diff.b = *o.diffB;

@@ -72,6 +72,7 @@ struct Options {
     bool noTextures = false;                // --no-textures: glTF models in their base colour factors alone
     std::optional<SpecularNormalization> specularNormalization;  // --specular-normalization none|energy
     std::optional<FresnelMode> fresnel;     // --fresnel none|schlick|exact
+    std::optional<OutputEncoding> outputEncoding;  // --output-encoding linear|srgb
     std::optional<float> ior;               // --ior X (1..10)
     std::optional<TermView> show;           // --show all|ambient|diffuse|specular|light:N|unlit
     std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff

@@ -12,6 +12,20 @@
 
 namespace shadelab {
 
+namespace {
+
+Aabb partBounds(const Mesh& mesh, const MeshPart& part) {
+    Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+    const std::size_t end = std::min<std::size_t>(std::size_t(part.firstIndex) + part.indexCount, mesh.indices.size());
+    for (std::size_t i = part.firstIndex; i < end; ++i) {
+        const glm::vec3& p = mesh.positions[mesh.indices[i]];
+        box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+    }
+    return end > part.firstIndex ? box : Aabb{};
+}
+
+}  // namespace
+
 MeshCache::MeshCache(const RendererOptions& options) : options_(options) {}
 
 void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
@@ -24,6 +38,8 @@ void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     objectBoxes_.clear();
     objectTriangles_.clear();
     objectVariesColor_.clear();
+    objectEmissiveTexture_.clear();
+    objectPartBoxes_.clear();
     objectImages_.clear();
     objectTextures_.clear();
     objectInstanceGroups_.clear();
@@ -47,6 +63,7 @@ void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
                 if (g.count > 0) objectInstanceGroups_.back().push_back(g);
             }
         objectVariesColor_.push_back(mesh.variesColor());
+        objectEmissiveTexture_.push_back(mesh.hasEmissiveTexture());
         objectImages_.push_back(mesh.textures);
         objectTextures_.emplace_back(mesh.textures.size());
         objectParts_.push_back(mesh.parts);
@@ -55,6 +72,9 @@ void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
             whole.indexCount = std::uint32_t(mesh.indices.size());
             objectParts_.back().push_back(whole);
         }
+        objectPartBoxes_.emplace_back();
+        for (const MeshPart& part : objectParts_.back())  // only blended parts are sorted by theirs
+            objectPartBoxes_.back().push_back(part.alphaMode == AlphaMode::Blend ? partBounds(mesh, part) : Aabb{});
         // Bounds and triangle counts of every instance: the baked mesh's.
         const Mesh& baked = geometry_->meshes[o];
         Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
@@ -111,31 +131,45 @@ struct InterleavedVertices {
     std::vector<Attribute> layout;
 };
 
-// `count` vertices of `floats` each, written by `write(v, i)`, then (where C varies, `varies`) each
-// vertex's texture coordinates and colour.
+// Where C varies: each vertex's texture coordinates, colour (RGBA) and, with an emissive texture,
+// that texture's coordinates.
+struct ColorInputs {
+    const std::vector<glm::vec2>& texcoords;
+    const std::vector<glm::vec4>& colors;
+    const std::vector<glm::vec2>& emissiveTexcoords;
+    bool varies() const { return !texcoords.empty(); }
+    bool emissive() const { return !emissiveTexcoords.empty(); }
+    std::size_t floats() const { return varies() ? (emissive() ? 8 : 6) : 0; }
+};
+
+// `count` vertices of `floats` each, written by `write(v, i)`, then (where C varies) each vertex's
+// ColorInputs.
 template <typename Write>
-void interleave(InterleavedVertices& out, std::size_t count, std::size_t floats, bool varies,
-                const std::vector<glm::vec2>& texcoords, const std::vector<glm::vec3>& colors, Write write) {
-    const std::size_t stride = floats + (varies ? 5 : 0);
+void interleave(InterleavedVertices& out, std::size_t count, std::size_t floats, const ColorInputs& in, Write write) {
+    const std::size_t stride = floats + in.floats();
     out.floats.resize(count * stride);
     for (std::size_t i = 0; i < count; ++i) {
         float* v = &out.floats[i * stride];
         write(v, i);
-        if (!varies) continue;
+        if (!in.varies()) continue;
         v += floats;
-        v[0] = texcoords[i].x, v[1] = texcoords[i].y, v[2] = colors[i].r, v[3] = colors[i].g, v[4] = colors[i].b;
+        const glm::vec2& uv = in.texcoords[i];
+        const glm::vec4& c = in.colors[i];
+        v[0] = uv.x, v[1] = uv.y, v[2] = c.r, v[3] = c.g, v[4] = c.b, v[5] = c.a;
+        if (in.emissive()) v[6] = in.emissiveTexcoords[i].x, v[7] = in.emissiveTexcoords[i].y;
     }
-    if (varies) {
+    if (in.varies()) {
         out.layout.push_back({SL_ATTRIB_TEXCOORD, 2});
-        out.layout.push_back({SL_ATTRIB_COLOR, 3});
+        out.layout.push_back({SL_ATTRIB_COLOR, 4});
     }
+    if (in.emissive()) out.layout.push_back({SL_ATTRIB_EMISSIVE_TEXCOORD, 2});
 }
 
 // Gouraud and Phong: position xyz, normal xyz.
 InterleavedVertices smoothVertices(const Mesh& mesh) {
     InterleavedVertices out;
     out.layout = {{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_NORMAL, 3}};
-    interleave(out, mesh.positions.size(), 6, mesh.variesColor(), mesh.texcoords, mesh.colors, [&](float* v, std::size_t i) {
+    interleave(out, mesh.positions.size(), 6, {mesh.texcoords, mesh.colors, mesh.emissiveTexcoords}, [&](float* v, std::size_t i) {
         const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
         v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
     });
@@ -143,10 +177,10 @@ InterleavedVertices smoothVertices(const Mesh& mesh) {
 }
 
 // Flat: position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert).
-InterleavedVertices flatVertices(const FlatMesh& flat, bool varies) {
+InterleavedVertices flatVertices(const FlatMesh& flat) {
     InterleavedVertices out;
     out.layout = {{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_CENTROID, 3}, {SL_ATTRIB_NORMAL, 3}};
-    interleave(out, flat.positions.size(), 9, varies, flat.texcoords, flat.colors, [&](float* v, std::size_t i) {
+    interleave(out, flat.positions.size(), 9, {flat.texcoords, flat.colors, flat.emissiveTexcoords}, [&](float* v, std::size_t i) {
         const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
         v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
     });
@@ -157,10 +191,10 @@ InterleavedVertices flatVertices(const FlatMesh& flat, bool varies) {
 // centroid x; centroid yz, normal x, and normal y plus SL_FLAT_NORMAL_Z_NEGATIVE when normal z < 0 (the
 // shader takes z from the unit length). llvmpipe fetches each attribute of each vertex on its own: two
 // fetches instead of three took 7% off a flat frame at 200k triangles (bench/README.md).
-InterleavedVertices packedFlatVertices(const FlatMesh& flat, bool varies) {
+InterleavedVertices packedFlatVertices(const FlatMesh& flat) {
     InterleavedVertices out;
     out.layout = {{SL_ATTRIB_POSITION, 4}, {SL_ATTRIB_CENTROID, 4}};
-    interleave(out, flat.positions.size(), 8, varies, flat.texcoords, flat.colors, [&](float* v, std::size_t i) {
+    interleave(out, flat.positions.size(), 8, {flat.texcoords, flat.colors, flat.emissiveTexcoords}, [&](float* v, std::size_t i) {
         const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
         v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
         v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
@@ -218,8 +252,7 @@ const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mod
         const FlatMesh flatMesh =
             options_.meshOrder == RendererOptions::MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
         uploadVertexArray(g,
-                          options_.packedFlatVertices ? packedFlatVertices(flatMesh, mesh.variesColor())
-                                                      : flatVertices(flatMesh, mesh.variesColor()),
+                          options_.packedFlatVertices ? packedFlatVertices(flatMesh) : flatVertices(flatMesh),
                           flatMesh.indices);
     } else {
         uploadVertexArray(g, smoothVertices(mesh), mesh.indices);

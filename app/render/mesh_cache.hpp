@@ -33,6 +33,10 @@ public:
     const Aabb& box(std::size_t object) const { return objectBoxes_[object]; }  // object space, every instance
     std::size_t triangles(std::size_t object) const { return objectTriangles_[object]; }
     bool variesColor(std::size_t object) const { return objectVariesColor_[object] != 0; }  // texture coordinates and colours
+    bool hasEmissiveTexture(std::size_t object) const { return objectEmissiveTexture_[object] != 0; }  // and emissive coordinates
+    // A blended part's bounds in object space (of the vertices it draws once; an instanced part's before
+    // its instances), for the back-to-front order; empty for other parts.
+    const Aabb& partBox(std::size_t object, std::size_t part) const { return objectPartBoxes_[object][part]; }
 
     struct GpuMesh {
         gl::VertexArray vao;
@@ -74,6 +78,8 @@ private:
     std::vector<Aabb> objectBoxes_;
     std::vector<std::size_t> objectTriangles_;
     std::vector<char> objectVariesColor_;
+    std::vector<char> objectEmissiveTexture_;
+    std::vector<std::vector<Aabb>> objectPartBoxes_;
     std::vector<std::vector<InstanceGroup>> objectInstanceGroups_;
     std::vector<std::vector<glm::mat4>> objectInstances_;  // (the shadow pass draws them one by one)
     std::vector<gl::Buffer> objectInstanceBuffers_;        // mat4 each

@@ -81,7 +81,8 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
     glUseProgram(program.get());
     const std::pair<const char*, int> samplers[] = {{"u_shadowMaps", SL_TEXTURE_SHADOW_MAPS},
                                                     {"u_areaShadowMaps", SL_TEXTURE_AREA_SHADOW_MAPS},
-                                                    {"u_baseColorTexture", SL_TEXTURE_BASE_COLOR}};
+                                                    {"u_baseColorTexture", SL_TEXTURE_BASE_COLOR},
+                                                    {"u_emissiveTexture", SL_TEXTURE_EMISSIVE}};
     for (const auto& [sampler, unit] : samplers)
         if (const GLint location = glGetUniformLocation(program.get(), sampler); location >= 0) glUniform1i(location, unit);
     glUseProgram(GLuint(previous));

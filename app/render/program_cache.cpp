@@ -69,6 +69,7 @@ std::vector<std::string> programDefines(const Scene& s) {
     case ShowTerm::Diffuse: d.push_back("SL_SHOW SL_SHOW_DIFFUSE"); break;
     case ShowTerm::Specular: d.push_back("SL_SHOW SL_SHOW_SPECULAR"); break;
     case ShowTerm::Unlit: d.push_back("SL_SHOW SL_SHOW_UNLIT"); break;
+    case ShowTerm::Emissive: d.push_back("SL_SHOW SL_SHOW_EMISSIVE"); break;
     case ShowTerm::Light:
         d.push_back("SL_SHOW SL_SHOW_LIGHT");
         d.push_back("SL_SHOW_LIGHT_INDEX " + std::to_string(s.show.light));
@@ -94,6 +95,11 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
     if (variant.textured) defines.push_back("SL_TEXTURED 1");
     if (variant.instanced) defines.push_back("SL_INSTANCED 1");
+    // Only draws that use them get these: an opaque draw without E compiles to the programs it always did.
+    if (variant.alphaMode == SL_ALPHA_MASK) defines.push_back("SL_ALPHA_MODE SL_ALPHA_MASK");
+    if (variant.alphaMode == SL_ALPHA_BLEND) defines.push_back("SL_ALPHA_MODE SL_ALPHA_BLEND");
+    if (variant.emissive) defines.push_back("SL_EMISSIVE 1");
+    if (variant.emissive && variant.emissiveTexture && variant.textured) defines.push_back("SL_EMISSIVE_TEXTURE 1");
     const std::string name = toString(mode);  // flat.vert + flat.frag, …
     const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ ? "flat_packed" : name;
     std::string key = vertex;

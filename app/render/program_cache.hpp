@@ -3,6 +3,7 @@
 // what a draw needs besides (Variant), each built on first use (an LLVM compile on llvmpipe) and kept.
 #include "core/scene/scene.hpp"
 #include "render/gl_handles.hpp"
+#include "render/gpu_blocks.hpp"
 #include "render/shader_library.hpp"
 
 #include <map>
@@ -18,6 +19,9 @@ public:
     // (SL_INSTANCED).
     struct Variant {
         bool accumulate = false, interpolatedInputs = false, textured = false, instanced = false;
+        // What a glTF material adds (shaders/object_color.glsl): SL_ALPHA_MODE, and E with or without its texture.
+        int alphaMode = SL_ALPHA_OPAQUE;
+        bool emissive = false, emissiveTexture = false;
     };
     // `packedFlatVertices`: flat shading's vertex stage is flat_packed.vert (RendererOptions).
     ProgramCache(ShaderLibrary shaders, bool packedFlatVertices);

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -26,6 +27,18 @@ bool llvmpipeOn128Bits(const std::string& glRenderer) {
 
 void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
     dst[0] = v.x, dst[1] = v.y, dst[2] = v.z, dst[3] = w;
+}
+
+// A program variant as a number, for the per-pane lookup in drawPane.
+unsigned variantKey(const ProgramCache::Variant& v) {
+    return unsigned(v.accumulate) | unsigned(v.interpolatedInputs) << 1 | unsigned(v.textured) << 2 |
+           unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 | unsigned(v.emissiveTexture) << 7;
+}
+
+void bindTexture(int unit, GLuint texture) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
@@ -66,15 +79,19 @@ gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
     return b;
 }
 
-// `color` is the draw's C: the material's, or a glTF part's base colour.
-gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, const Scene& scene) {
+// `color` is the draw's C: the material's, or a glTF part's base colour; `alpha`, `emissive` and
+// `alphaCutoff` what a glTF material adds.
+gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, float alpha, const glm::vec3& emissive,
+                             float alphaCutoff, const Scene& scene) {
     gpu::ObjectBlock b{};
     const glm::mat4 world = worldFromObject(o.transform);
     const glm::mat4 normal = glm::mat4(normalWorldFromObject(world));
     std::memcpy(b.worldFromObject, glm::value_ptr(world), sizeof b.worldFromObject);
     std::memcpy(b.normalWorldFromObject, glm::value_ptr(normal), sizeof b.normalWorldFromObject);
-    copyVec(b.color, color);
+    copyVec(b.color, color, alpha);
     copyVec(b.specularColor, o.material.specularColor);
+    copyVec(b.emissive, emissive);
+    b.alphaCutoff[0] = alphaCutoff;
     b.coefficients[0] = o.material.ka;
     b.coefficients[1] = o.material.kd;
     b.coefficients[2] = o.material.ks;
@@ -177,27 +194,59 @@ void Renderer::render(const Scene& scene, const RenderTarget& target) {
     checkGl("render");
 }
 
+// A part as drawn: its C, texture, alpha and E. A scene's material colour replaces the glTF
+// material (C, texture and vertex colours, alpha and E); --no-textures keeps its factors alone.
+Renderer::Draw Renderer::partDraw(const Scene& scene, std::size_t o, std::size_t p) const {
+    const Material& m = scene.objects[o].material;
+    const MeshPart& part = meshes_.parts(o)[p];
+    const bool textured = meshes_.variesColor(o) && scene.textures && !m.colorSet;
+    Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
+           (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
+    if (m.colorSet) return d;
+    d.alpha = part.baseAlpha;
+    d.alphaMode = part.alphaMode;
+    d.alphaCutoff = part.alphaCutoff;
+    // Without a texture or vertex colours the alpha is the factor's, the same over the whole part: a
+    // MASK part is all there or all cut out.
+    if (!textured && d.alphaMode == AlphaMode::Mask) {
+        d.alphaMode = AlphaMode::Opaque;
+        if (d.alpha < d.alphaCutoff) d.count = 0;
+    }
+    d.emissive = part.emissive;
+    if (textured && part.emissive != glm::vec3(0.0f) && meshes_.hasEmissiveTexture(o)) d.emissiveTexture = part.emissiveTexture;
+    return d;
+}
+
 // One draw per object part (a glTF primitive's base colour and texture, or the whole mesh), and per
-// group of its instances. A scene's material colour replaces C, texture and vertex colours included.
+// group of its instances. Opaque and cut-out (MASK) draws first, in the model's order; then the
+// blended ones (BLEND), farthest first by the distance of their bounds' centre from the eye, so each
+// is blended over what is behind it.
 std::vector<Renderer::Draw> Renderer::drawList(const Scene& scene) const {
     const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
     std::vector<Draw> draws;
+    std::vector<std::pair<float, Draw>> blended;
     for (std::size_t o = 0; o < objects; ++o) {
-        const Material& m = scene.objects[o].material;
-        const bool textured = meshes_.variesColor(o) && scene.textures && !m.colorSet;
         const std::vector<MeshCache::InstanceGroup>& groups = meshes_.instanceGroups(o);
+        const glm::mat4 world = worldFromObject(scene.objects[o].transform);
         std::size_t g = 0;  // the groups are in part order
         for (std::size_t p = 0; p < meshes_.parts(o).size(); ++p) {
+            Draw d = partDraw(scene, o, p);
             const MeshPart& part = meshes_.parts(o)[p];
-            Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
-                   (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
-            if (part.instances.empty()) draws.push_back(d);
+            const auto add = [&](const Draw& draw, const glm::mat4& instance) {
+                if (draw.alphaMode != AlphaMode::Blend) return draws.push_back(draw);
+                const Aabb& box = meshes_.partBox(o, p);
+                const glm::vec3 centre = glm::vec3(world * instance * glm::vec4(0.5f * (box.lo + box.hi), 1.0f));
+                blended.emplace_back(glm::distance(centre, scene.camera.eye), draw);
+            };
+            if (part.instances.empty()) add(d, glm::mat4(1.0f));
             for (; g < groups.size() && groups[g].part == p; ++g) {
                 d.instances = int(g);
-                draws.push_back(d);
+                add(d, meshes_.instance(o, std::size_t(groups[g].first)));
             }
         }
     }
+    std::stable_sort(blended.begin(), blended.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& b : blended) draws.push_back(b.second);
     return draws;
 }
 
@@ -209,16 +258,24 @@ void Renderer::renderShadowMaps(const Scene& scene, const std::vector<Draw>& dra
     for (std::size_t o = 0; o < std::min(meshes_.objects(), scene.objects.size()); ++o)
         boxes.push_back(transformAabb(meshes_.box(o), worldFromObject(scene.objects[o].transform)));
     for (const Draw& d : draws) {
-        const GLuint vao = meshes_.gpuMesh(d.object, ShadingMode::Phong).vao.get();
-        const glm::mat4 world = worldFromObject(scene.objects[d.object].transform);
+        ShadowMaps::DepthDraw depth{meshes_.gpuMesh(d.object, ShadingMode::Phong).vao.get(), d.first, d.count,
+                                    worldFromObject(scene.objects[d.object].transform)};
+        // A cut-out casts a cut-out shadow; a blended part casts one as if it were opaque.
+        if (d.alphaMode == AlphaMode::Mask) {
+            depth.maskTexture = meshes_.texture(d.object, d.texture);
+            depth.alpha = d.alpha, depth.alphaCutoff = d.alphaCutoff;
+        }
         if (d.instances < 0) {
-            depthDraws.push_back({vao, d.first, d.count, world});
+            depthDraws.push_back(depth);
             continue;
         }
         // The depth pass draws each instance on its own (it has no instanced variant).
         const MeshCache::InstanceGroup& g = meshes_.instanceGroups(d.object)[std::size_t(d.instances)];
-        for (GLsizei i = 0; i < g.count; ++i)
-            depthDraws.push_back({vao, d.first, d.count, world * meshes_.instance(d.object, std::size_t(g.first + i))});
+        const glm::mat4 world = depth.worldFromObject;
+        for (GLsizei i = 0; i < g.count; ++i) {
+            depth.worldFromObject = world * meshes_.instance(d.object, std::size_t(g.first + i));
+            depthDraws.push_back(depth);
+        }
     }
     shadowMaps_.render(scene, depthDraws, boxes, programs_.shaders());
 }
@@ -238,7 +295,8 @@ void Renderer::stageUniforms(const Scene& scene, const std::vector<Pane>& panes,
         uniforms_->setFrame(p, b);
     }
     for (std::size_t d = 0; d < draws.size(); ++d)
-        uniforms_->setObject(d, objectBlock(scene.objects[draws[d].object], draws[d].color, scene));
+        uniforms_->setObject(d, objectBlock(scene.objects[draws[d].object], draws[d].color, draws[d].alpha, draws[d].emissive,
+                                            draws[d].alphaCutoff, scene));
     uniforms_->upload();
 }
 
@@ -287,20 +345,33 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
     const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
     std::vector<char> inputs(objects, 0);
     for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
-    GLuint programs[2][2][2] = {}, current = 0;  // [interpolated inputs][textured][instanced]
+    std::map<unsigned, GLuint> programs;  // by variantKey()
+    GLuint current = 0;
+    bool blending = false;
     for (std::size_t d = 0; d < draws.size(); ++d) {
         const Draw& draw = draws[d];
         if (draw.count == 0) continue;
         const bool instanced = draw.instances >= 0;
-        GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0][instanced ? 1 : 0];
-        if (!variant) variant = programs_.get(pane.mode, scene, {accumulate, inputs[draw.object] != 0, draw.textured, instanced});
+        ProgramCache::Variant v{accumulate, inputs[draw.object] != 0, draw.textured, instanced};
+        // A progressive pass sums its samples: blended parts are drawn in it as if opaque.
+        v.alphaMode = draw.alphaMode == AlphaMode::Mask ? SL_ALPHA_MASK
+                      : draw.alphaMode == AlphaMode::Blend && !accumulate ? SL_ALPHA_BLEND : SL_ALPHA_OPAQUE;
+        v.emissive = draw.emissive != glm::vec3(0.0f);
+        v.emissiveTexture = draw.emissiveTexture >= 0;
+        GLuint& variant = programs[variantKey(v)];
+        if (!variant) variant = programs_.get(pane.mode, scene, v);
         if (variant != current) glUseProgram(current = variant);
-        if (draw.textured) {
-            const GLuint texture = meshes_.texture(draw.object, draw.texture);
-            glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_BASE_COLOR);
-            glBindTexture(GL_TEXTURE_2D, texture);
-            glActiveTexture(GL_TEXTURE0);
+        if (v.alphaMode == SL_ALPHA_BLEND && !blending) {
+            // The blended draws come last (drawList): over what is behind them, tested against its
+            // depth but leaving it as it is, so the ones behind still show through.
+            blending = true;
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+            glDepthMask(GL_FALSE);
         }
+        if (draw.textured) bindTexture(SL_TEXTURE_BASE_COLOR, meshes_.texture(draw.object, draw.texture));
+        if (v.emissiveTexture) bindTexture(SL_TEXTURE_EMISSIVE, meshes_.texture(draw.object, draw.emissiveTexture));
         const MeshCache::GpuMesh& mesh = meshes_.gpuMesh(draw.object, pane.mode);
         uniforms_->bindObject(d);
         // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
@@ -318,6 +389,10 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
         meshes_.bindInstances(draw.object, group);
         glDrawElementsInstanced(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
                                 reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)), group.count);
+    }
+    if (blending) {
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
     }
 }
 

@@ -86,7 +86,15 @@ private:
         bool textured;         // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
         int texture;           // the part's slot in Mesh::textures, or -1
         int instances;         // SL_INSTANCED: index into meshes_.instanceGroups(object); -1: drawn once
+        // What a glTF material adds (shaders/object_color.glsl; none where the scene sets the colour).
+        float alpha = 1.0f;                    // the base colour factor's alpha
+        AlphaMode alphaMode = AlphaMode::Opaque;
+        float alphaCutoff = 0.5f;
+        glm::vec3 emissive{0.0f};              // E's factor; 0: no SL_EMISSIVE
+        int emissiveTexture = -1;              // its slot in Mesh::textures (textured draws), or -1
     };
+    // The Draw for part `p` of object `o` (without its instances).
+    Draw partDraw(const Scene& scene, std::size_t o, std::size_t p) const;
     std::vector<Draw> drawList(const Scene& scene) const;
     void renderShadowMaps(const Scene& scene, const std::vector<Draw>& draws);
     void stageUniforms(const Scene& scene, const std::vector<Pane>& panes, const std::vector<Draw>& draws,

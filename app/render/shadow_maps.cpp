@@ -26,13 +26,14 @@ std::vector<float> signatureOf(const Scene& scene, const std::vector<ShadowMaps:
         put(s, l.normal);
     }
     for (const ShadowMaps::DepthDraw& d : draws) {
-        s.insert(s.end(), {float(d.vao), float(d.first), float(d.count)});
+        s.insert(s.end(), {float(d.vao), float(d.first), float(d.count), float(d.maskTexture), d.alpha, d.alphaCutoff});
         s.insert(s.end(), glm::value_ptr(d.worldFromObject), glm::value_ptr(d.worldFromObject) + 16);
     }
     return s;
 }
 
 void copy4(float (&dst)[4], const glm::vec4& v) { std::memcpy(dst, glm::value_ptr(v), sizeof dst); }
+
 
 }  // namespace
 
@@ -43,9 +44,8 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     std::vector<float> signature = signatureOf(scene, draws);
     if (signature == signature_ && projections_.size() == count) return;
 
-    if (!program_) {
-        program_ = buildProgram("shadow_depth", shaders);
-        clipFromObjectLoc_ = glGetUniformLocation(program_.get(), "u_shadowClipFromObject");
+    if (!solid_.program) {
+        solid_ = depthProgram(shaders, {});
         GLuint fbo = 0;
         glGenFramebuffers(1, &fbo);
         framebuffer_ = gl::Framebuffer(fbo);
@@ -64,7 +64,10 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
-    glUseProgram(program_.get());
+    bool cutOuts = false;
+    for (const DepthDraw& d : draws) cutOuts = cutOuts || d.maskTexture != 0;
+    if (cutOuts && !cutOut_.program) cutOut_ = depthProgram(shaders, {"SL_ALPHA_MODE SL_ALPHA_MASK"});
+    GLuint current = 0;
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);  // open meshes (a plane) cast from both sides
@@ -87,14 +90,7 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
             glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, maps.texture.get(), 0,
                                       layout_.firstLayer[l] + int(layer));
             glClear(GL_DEPTH_BUFFER_BIT);
-            for (const DepthDraw& d : draws) {
-                if (d.count == 0) continue;
-                const glm::mat4 clipFromObject = projection.clipFromWorld[layer] * d.worldFromObject;
-                glUniformMatrix4fv(clipFromObjectLoc_, 1, GL_FALSE, glm::value_ptr(clipFromObject));
-                glBindVertexArray(d.vao);
-                glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
-                               reinterpret_cast<void*>(std::size_t(d.first) * sizeof(std::uint32_t)));
-            }
+            for (const DepthDraw& d : draws) drawDepth(d, projection.clipFromWorld[layer], current);
             ++viewsRendered_;
         }
     }
@@ -102,6 +98,32 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, 0, 0, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+ShadowMaps::DepthProgram ShadowMaps::depthProgram(const ShaderLibrary& shaders, const std::vector<std::string>& defines) {
+    ShadowMaps::DepthProgram p;
+    p.program = buildProgram("shadow_depth", shaders, defines);
+    p.clipFromObject = glGetUniformLocation(p.program.get(), "u_shadowClipFromObject");
+    p.alpha = glGetUniformLocation(p.program.get(), "u_alpha");
+    p.alphaCutoff = glGetUniformLocation(p.program.get(), "u_alphaCutoffValue");
+    return p;
+}
+
+void ShadowMaps::drawDepth(const DepthDraw& d, const glm::mat4& clipFromWorld, GLuint& current) {
+    if (d.count == 0) return;
+    const DepthProgram& p = d.maskTexture ? cutOut_ : solid_;
+    if (p.program.get() != current) glUseProgram(current = p.program.get());
+    const glm::mat4 clipFromObject = clipFromWorld * d.worldFromObject;
+    glUniformMatrix4fv(p.clipFromObject, 1, GL_FALSE, glm::value_ptr(clipFromObject));
+    if (d.maskTexture) {
+        glUniform1f(p.alpha, d.alpha);
+        glUniform1f(p.alphaCutoff, d.alphaCutoff);
+        glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_BASE_COLOR);
+        glBindTexture(GL_TEXTURE_2D, d.maskTexture);
+        glActiveTexture(GL_TEXTURE0);
+    }
+    glBindVertexArray(d.vao);
+    glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT, reinterpret_cast<void*>(std::size_t(d.first) * sizeof(std::uint32_t)));
 }
 
 void ShadowMaps::LayerArray::allocate(int newSize, int newLayers) {

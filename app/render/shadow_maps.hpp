@@ -25,6 +25,10 @@ public:
         GLuint vao = 0;
         GLsizei first = 0, count = 0;  // indices (uint32)
         glm::mat4 worldFromObject{1.0f};
+        // glTF's MASK: a cut-out casts a cut-out shadow. The base colour texture (its alpha), the
+        // factor's alpha and the cutoff; the vertex array carries the texture coordinates and COLOR_0.
+        GLuint maskTexture = 0;  // 0: the draw is solid
+        float alpha = 1.0f, alphaCutoff = 0.5f;
     };
 
     ShadowMaps() = default;
@@ -50,8 +54,14 @@ private:
         int size = 0, layers = 0;
         void allocate(int size, int layers);  // (re)creates the texture when either changed
     };
-    gl::Program program_;
-    GLint clipFromObjectLoc_ = -1;
+    // The depth program, and its variant for cut-outs (SL_ALPHA_MASK).
+    struct DepthProgram {
+        gl::Program program;
+        GLint clipFromObject = -1, alpha = -1, alphaCutoff = -1;
+    };
+    DepthProgram solid_, cutOut_;
+    static DepthProgram depthProgram(const ShaderLibrary& shaders, const std::vector<std::string>& defines);
+    void drawDepth(const DepthDraw& d, const glm::mat4& clipFromWorld, GLuint& current);
     gl::Framebuffer framebuffer_;
     LayerArray maps_, areaMaps_;
     std::vector<ShadowProjection> projections_;  // per light

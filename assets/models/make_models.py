@@ -16,6 +16,12 @@
 - spot_stage.gltf: the gem on a floor, lit by the file's own lights (KHR_lights_punctual): a spot
   light from above (800 cd, cone 12 to 28 degrees) and a dim directional fill (0.3 lux), as an
   exporter writes them in physical units; shadelab converts them to the lecture's L_l.
+- material_panels.gltf: three unit quads facing +z, each showing what a glTF material adds to the
+  lecture's C: a cut-out (alphaMode MASK: an orange 4 x 4 checker whose dark squares have alpha 0,
+  COLOR_0 as RGBA), a half-transparent blue pane (alphaMode BLEND, factor alpha 0.5), and a dark
+  panel that gives off light (emissiveFactor x emissiveTexture, a 2 x 2 stripe read at TEXCOORD_1
+  turned a quarter, x KHR_materials_emissive_strength 2). tests/scenes/material_panels.json puts
+  them before a wall.
 Only the Python standard library is used; buffers are embedded as base64 data: URIs.
 """
 import base64
@@ -184,6 +190,15 @@ def png(width, height, rgb):
             chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
 
 
+def png_rgba(width, height, rgba):
+    """An 8-bit RGBA PNG of rows of (r, g, b, a) tuples."""
+    raw = b''.join(b'\0' + bytes(c for px in row for c in px) for row in rgba)
+    def chunk(kind, data):
+        return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff)
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 6, 0, 0, 0)) +
+            chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
+
+
 def checker_image(width=256, height=128, squares=(8, 4)):
     cream, teal, red = (236, 226, 196), (40, 120, 130), (200, 40, 30)
     rows = []
@@ -266,6 +281,67 @@ def write_globe(name, uvs_stored, transform=None, image_uri=None):
     save(name, doc, blob)
 
 
+def write_material_panels(name):
+    """Three quads at x = -1.2, 0, 1.2: MASK, BLEND and emissive (see the docstring at the top)."""
+    def data_uri(png_bytes):
+        return "data:image/png;base64," + base64.b64encode(png_bytes).decode()
+    orange, clear = (230, 120, 40, 255), (30, 30, 30, 0)
+    checker = [[orange if (x + y) % 2 == 0 else clear for x in range(4)] for y in range(4)]
+    stripes = png(2, 2, [[(255, 255, 255), (0, 0, 0)], [(255, 255, 255), (0, 0, 0)]])
+    blob, views, accessors = b'', [], []
+
+    def add(data, count, kind, target=34962, bounds=None):
+        nonlocal blob
+        views.append({"buffer": 0, "byteOffset": len(blob), "byteLength": len(data), "target": target})
+        accessor = {"bufferView": len(views) - 1, "componentType": 5123 if target == 34963 else 5126,
+                    "count": count, "type": kind}
+        if bounds:
+            accessor["min"], accessor["max"] = bounds
+        accessors.append(accessor)
+        blob += data + b'\0' * ((4 - len(data) % 4) % 4)
+        return len(accessors) - 1
+
+    meshes, nodes = [], []
+    corners = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
+    uv0 = [(0.0, 1.0), (1.0, 1.0), (1.0, 0.0), (0.0, 0.0)]
+    uv1 = [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)]  # a quarter turn: the stripes run across
+    for k, x in enumerate((-1.2, 0.0, 1.2)):
+        positions = [(x + cx, cy, 0.0) for cx, cy in corners]
+        attributes = {
+            "POSITION": add(b''.join(struct.pack('<3f', *p) for p in positions), 4, "VEC3",
+                            bounds=([x - 0.5, -0.5, 0.0], [x + 0.5, 0.5, 0.0])),
+            "NORMAL": add(struct.pack('<3f', 0, 0, 1) * 4, 4, "VEC3"),
+            "TEXCOORD_0": add(b''.join(struct.pack('<2f', *t) for t in uv0), 4, "VEC2"),
+        }
+        if k == 0:
+            attributes["COLOR_0"] = add(struct.pack('<4f', 1, 1, 1, 1) * 4, 4, "VEC4")
+        if k == 2:
+            attributes["TEXCOORD_1"] = add(b''.join(struct.pack('<2f', *t) for t in uv1), 4, "VEC2")
+        indices = add(struct.pack('<6H', 0, 1, 2, 0, 2, 3), 6, "SCALAR", target=34963)
+        meshes.append({"name": ["cut-out", "pane", "lamp"][k],
+                       "primitives": [{"attributes": attributes, "indices": indices, "material": k, "mode": 4}]})
+        nodes.append({"mesh": k, "name": meshes[-1]["name"]})
+    materials = [
+        {"name": "cut-out", "alphaMode": "MASK", "alphaCutoff": 0.5,
+         "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicFactor": 0.0}},
+        {"name": "pane", "alphaMode": "BLEND",
+         "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.4, 0.9, 0.5], "metallicFactor": 0.0}},
+        {"name": "lamp", "emissiveFactor": [1.0, 0.5, 0.25], "emissiveTexture": {"index": 1, "texCoord": 1},
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 2.0}},
+         "pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.1, 0.1, 1.0], "metallicFactor": 0.0}},
+    ]
+    doc = {
+        "asset": {"version": "2.0", "generator": "shadelab assets/models/make_models.py", "copyright": "CC0-1.0"},
+        "extensionsUsed": ["KHR_materials_emissive_strength"],
+        "scene": 0, "scenes": [{"nodes": [0, 1, 2]}], "nodes": nodes, "meshes": meshes, "materials": materials,
+        "samplers": [{"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33071}],
+        "textures": [{"sampler": 0, "source": 0}, {"sampler": 0, "source": 1}],
+        "images": [{"uri": data_uri(png_rgba(4, 4, checker))}, {"uri": data_uri(stripes)}],
+        "bufferViews": views, "accessors": accessors,
+    }
+    save(name, doc, blob)
+
+
 def texture_transform_inverse(uv, offset, rotation, scale):
     # KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) uv, R = [[c, s], [-s, c]]; this is
     # the uv that the transform takes to `uv`.
@@ -289,5 +365,6 @@ if __name__ == '__main__':
     with open(os.path.join(HERE, "checker_globe.png"), 'wb') as f:
         f.write(checker_image())
     write_stage("spot_stage")
+    write_material_panels("material_panels")
     print("wrote lowpoly_gem.gltf, coarse_torus_no_normals.gltf, checker_globe.gltf, checker_globe_transform.gltf, "
-          "checker_globe.png, spot_stage.gltf")
+          "checker_globe.png, spot_stage.gltf, material_panels.gltf")

@@ -5,6 +5,7 @@
 #include "core/geometry/gltf_import.hpp"
 #include "core/image/image.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "test_dir.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -651,7 +652,7 @@ namespace {
 Doc texturedQuad(const json& image) {
     Doc d;
     append<float>(d.bin, {0, 0, 1, 0, 1, 1, 0, 1});                      // 60..91: TEXCOORD_0
-    d.bin.insert(d.bin.end(), {255, 51, 0, 255, 0, 255, 102, 255, 255, 255, 255, 255, 0, 0, 0, 255});  // 92..107: COLOR_0
+    d.bin.insert(d.bin.end(), {255, 51, 0, 255, 0, 255, 102, 255, 255, 255, 255, 255, 0, 0, 0, 128});  // 92..107: COLOR_0
     d.j["buffers"][0]["byteLength"] = d.bin.size();
     d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 32}});
     d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 92}, {"byteLength", 16}});
@@ -719,8 +720,9 @@ TEST_F(Gltf, BaseColourTextureCoordinatesAndVertexColoursAreRead) {
     ASSERT_EQ(m.texcoords.size(), 4u);
     EXPECT_EQ(m.texcoords[2], glm::vec2(1, 1));
     ASSERT_EQ(m.colors.size(), 4u);
-    EXPECT_FLOAT_EQ(m.colors[0].g, 0.2f);         // 51 / 255; alpha is not drawn
-    EXPECT_EQ(m.colors[1], glm::vec3(0, 1, 0.4f));
+    EXPECT_FLOAT_EQ(m.colors[0].g, 0.2f);         // 51 / 255
+    EXPECT_EQ(m.colors[1], glm::vec4(0, 1, 0.4f, 1));
+    EXPECT_FLOAT_EQ(m.colors[3].a, 128.0f / 255);  // a VEC4's alpha (the coverage's, with MASK or BLEND)
     ASSERT_EQ(m.parts.size(), 1u);
     EXPECT_EQ(m.parts[0].texture, 0);
     EXPECT_EQ(m.parts[0].baseColor, glm::vec3(0.5f, 1, 1));
@@ -897,26 +899,63 @@ TEST_F(Gltf, PunctualLightsArePlacedByTheirNodes) {
     expectRefused(writeGltf("area", d), {"light 1", "type \"area\" is not point, directional or spot"});
 }
 
-// A textured model is written sRGB-encoded unless the scene chooses its encoding (or draws it
-// without textures, or in a colour of its own).
-TEST(SharedModels, TexturedModelsAreWrittenSrgbUnlessTheSceneSaysOtherwise) {
-    const std::string globe = std::string(SHADELAB_SOURCE_DIR) + "/assets/models/checker_globe.gltf";
-    Scene scene;
-    scene.objects[0].mesh.type = MeshSpec::Type::Gltf;
-    scene.objects[0].mesh.resolvedPath = globe;
-    const SceneGeometry g = buildSceneGeometry(scene);
-    const auto encodingAfterFraming = [&](Scene s) {
+// glTF's colours are linear values meant for an sRGB display: a scene that draws a model is written
+// sRGB-encoded unless it chooses its encoding, whatever stores the colour (a factor, COLOR_0, a texture)
+// and whether a texture is drawn; the lecture's procedural scenes keep theirs (issue 27: textures,
+// --no-textures, a scene colour or an untextured model used to switch it to linear).
+TEST(SharedModels, ModelsAreWrittenSrgbUnlessTheSceneSaysOtherwise) {
+    const std::string models = std::string(SHADELAB_SOURCE_DIR) + "/assets/models/";
+    const auto encodingAfterFraming = [](Scene s) {
+        const SceneGeometry g = buildSceneGeometry(s);
         frameIfNeeded(s, g);
         return s.outputEncoding;
     };
+    Scene scene;
+    scene.objects[0].mesh.type = MeshSpec::Type::Gltf;
+    scene.objects[0].mesh.resolvedPath = models + "checker_globe.gltf";
     EXPECT_EQ(encodingAfterFraming(scene), OutputEncoding::Srgb);
     Scene chosen = scene;
     chosen.outputEncodingGiven = true;  // "output_encoding": "linear"
     EXPECT_EQ(encodingAfterFraming(chosen), OutputEncoding::Linear);
     Scene untextured = scene;
     untextured.textures = false;
-    EXPECT_EQ(encodingAfterFraming(untextured), OutputEncoding::Linear);
+    EXPECT_EQ(encodingAfterFraming(untextured), OutputEncoding::Srgb);
     Scene coloured = scene;
     coloured.objects[0].material.colorSet = true;
-    EXPECT_EQ(encodingAfterFraming(coloured), OutputEncoding::Linear);
+    EXPECT_EQ(encodingAfterFraming(coloured), OutputEncoding::Srgb);
+    Scene factorsOnly = scene;  // colours as base colour factors, no image
+    factorsOnly.objects[0].mesh.resolvedPath = models + "lowpoly_gem.gltf";
+    EXPECT_EQ(encodingAfterFraming(factorsOnly), OutputEncoding::Srgb);
+    Scene missingImage = scene;  // the texture's image is not there: a warning, and the same encoding
+    const shadelab::test::TestDir dir("gltf");  // the model without checker_globe.png beside it
+    std::filesystem::copy_file(models + "checker_globe_transform.gltf", dir.path / "globe.gltf");
+    missingImage.objects[0].mesh.resolvedPath = (dir.path / "globe.gltf").string();
+    EXPECT_EQ(encodingAfterFraming(missingImage), OutputEncoding::Srgb);
+    EXPECT_EQ(encodingAfterFraming(Scene{}), OutputEncoding::Linear);  // procedural: the scene's own choice
+}
+
+// The materials' alpha and emission (assets/models/material_panels.gltf): MASK with its cutoff and
+// COLOR_0 as RGBA, BLEND with the factor's alpha, E = factor x strength with its texture at TEXCOORD_1.
+TEST(SharedModels, MaterialAlphaAndEmissionAreRead) {
+    const Mesh m = loadGltf(std::string(SHADELAB_SOURCE_DIR) + "/assets/models/material_panels.gltf");
+    ASSERT_EQ(m.parts.size(), 3u);
+    EXPECT_EQ(m.parts[0].alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(m.parts[0].alphaCutoff, 0.5f);
+    EXPECT_GE(m.parts[0].texture, 0);
+    EXPECT_EQ(m.parts[1].alphaMode, AlphaMode::Blend);
+    EXPECT_FLOAT_EQ(m.parts[1].baseAlpha, 0.5f);
+    EXPECT_EQ(m.parts[2].alphaMode, AlphaMode::Opaque);
+    EXPECT_EQ(m.parts[2].emissive, glm::vec3(2.0f, 1.0f, 0.5f));  // (1, 0.5, 0.25) x strength 2
+    EXPECT_GE(m.parts[2].emissiveTexture, 0);
+    EXPECT_EQ(m.parts[0].emissive, glm::vec3(0.0f));
+    ASSERT_TRUE(m.hasEmissiveTexture());
+    ASSERT_EQ(m.emissiveTexcoords.size(), m.positions.size());
+    ASSERT_EQ(m.colors.size(), m.positions.size());
+    EXPECT_EQ(m.colors[0], glm::vec4(1.0f));
+    // The lamp's TEXCOORD_1 is its TEXCOORD_0 turned a quarter (make_models.py): u1 = y + 0.5, v1 = x - 1.2 + 0.5.
+    for (std::uint32_t i = m.parts[2].firstIndex; i < m.parts[2].firstIndex + m.parts[2].indexCount; ++i) {
+        const glm::vec3& p = m.positions[m.indices[i]];
+        EXPECT_NEAR(m.emissiveTexcoords[m.indices[i]].x, p.y + 0.5f, 1e-6f);
+        EXPECT_NEAR(m.emissiveTexcoords[m.indices[i]].y, p.x - 1.2f + 0.5f, 1e-6f);
+    }
 }

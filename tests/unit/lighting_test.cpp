@@ -550,3 +550,25 @@ TEST(TermIsolation, EachTermAloneAndOneLightsShare) {
     EXPECT_EQ(shown(ShowTerm::Light, 1), glm::clamp(all.lights[1].diffuse + all.lights[1].specular, 0.0f, 1.0f));
     EXPECT_EQ(shown(ShowTerm::Unlit), m.color);
 }
+
+// E, the light a glTF material gives off, is added before the clamp: L = E + k_a A C + sum ..., and
+// "show": "emissive" draws it alone; without E the sum is what it always was.
+TEST(TermIsolation, EmissionIsAddedToTheSum) {
+    LightingEnvironment env;
+    env.ambient = {1, 1, 1};
+    env.eyeWorld = {0.0f, 0.0f, 10.0f};
+    env.lights = {directional({0, 0, -1}, 0.5f)};
+    Material m = plainMaterial();
+    const ShadingTerms without = shadeTerms(m, env, {0, 0, 0}, {0, 0, 1});
+    m.emissive = {0.25f, 0.0f, 2.0f};
+    const ShadingTerms with = shadeTerms(m, env, {0, 0, 0}, {0, 0, 1});
+    EXPECT_EQ(with.emissive, m.emissive);
+    EXPECT_EQ(with.ambient, without.ambient);
+    EXPECT_NEAR(with.shown.x, without.shown.x + 0.25f, kEps);
+    EXPECT_NEAR(with.shown.y, without.shown.y, kEps);
+    EXPECT_EQ(with.total.z, 1.0f);  // clamped
+    env.show = TermView{ShowTerm::Emissive, 0};
+    EXPECT_EQ(shadeTerms(m, env, {0, 0, 0}, {0, 0, 1}).total, glm::vec3(0.25f, 0.0f, 1.0f));
+    env.show = TermView{ShowTerm::Ambient, 0};
+    EXPECT_EQ(shadeTerms(m, env, {0, 0, 0}, {0, 0, 1}).total, glm::clamp(without.ambient, 0.0f, 1.0f));
+}

@@ -76,6 +76,7 @@ TEST(ShaderListing, TheLightingIncludesTermLinesAreMarked) {
                  {"float spec = pow(max(cosLobe, 0.0), specularExponent());", FormulaTerm::Specular},
                  {"if (SL_FRESNEL == SL_FRESNEL_SCHLICK) spec *= fresnelSchlick(", FormulaTerm::Specular},
                  {"vec3 V = normalize(toEye(posWorld));", FormulaTerm::None},
+                 {"L += objectEmission();", FormulaTerm::Emissive},
                  {"// spec_l for a light from direction I (N.I > 0), with the options the scene turned on.", FormulaTerm::None}};
     const std::vector<GlslLine> lines = listGlsl("lighting.glsl", shaderText("lighting.glsl"), {});
     for (const auto& c : cases) {
@@ -87,12 +88,12 @@ TEST(ShaderListing, TheLightingIncludesTermLinesAreMarked) {
             }
         EXPECT_TRUE(found) << c.code;
     }
-    // Every mode's three files mark all three terms somewhere.
+    // Every mode's three files mark all three terms somewhere, and E where lighting.glsl adds it.
     for (ShadingMode m : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
         std::set<FormulaTerm> terms;
         for (const std::string& f : shaderFilesOf(m))
             for (const GlslLine& l : listGlsl(f, shaderText(f), {})) terms.insert(l.term);
-        EXPECT_EQ(terms.size(), 4u) << toString(m);  // None and the three
+        EXPECT_EQ(terms.size(), 5u) << toString(m);  // None, the three and E
     }
 }
 

@@ -111,6 +111,9 @@ std::string fresnelLine(const FormulaInput& in) {
     return "F = (R_∥ + R_⊥)/2  (exact Fresnel),   " + media;
 }
 
+// E's own line: what a glTF material's emission is made of.
+constexpr const char* kEmissiveLine = "E = emissiveFactor · emissiveTexture(uv) · emissiveStrength   (glTF: the light the surface gives off)";
+
 // What the main line says after its bracket when `show` draws one light or the unlit colour.
 std::string showNote(const TermView& show) {
     if (show.term == ShowTerm::Light) return "   show: l = " + std::to_string(show.light) + " only";
@@ -140,6 +143,13 @@ public:
         baseline = nextBaseline(baseline, size_, kValueSize * size_);
         keValue(baseline);
         float bottom = baseline + (1.0f - metrics_.ascent) * kValueSize * size_;
+        if (in_.emissive) {
+            baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
+            const Span s = set_.set(kEmissiveLine, pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Emissive),
+                                    FormulaTerm::Emissive);
+            box(FormulaTerm::Emissive, s, baseline, kFresnelSize * size_);
+            bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
+        }
         if (in_.env.fresnel != FresnelMode::None) {
             baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
             const Span s = set_.set(fresnelLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
@@ -185,6 +195,10 @@ private:
     void mainLine(float baseline) {
         x_ = pad_;
         lSpan_ = piece("L = ", FormulaTerm::None, baseline);
+        if (in_.emissive) {
+            piece("E", FormulaTerm::Emissive, baseline);
+            piece(" + ", FormulaTerm::None, baseline);
+        }
         kSpans_[0] = piece("k_a", FormulaTerm::Ambient, baseline, FormulaRun::Kind::Coefficient);
         piece("·A·C", FormulaTerm::Ambient, baseline);
         piece(" + Σ_l v·L_l·(", FormulaTerm::None, baseline);
@@ -198,6 +212,7 @@ private:
         if (!note.empty()) set_.set(note, x_, baseline, kValueSize * size_, kNoteColor, FormulaTerm::None, FormulaRun::Kind::Note);
         for (FormulaTerm t : {FormulaTerm::Ambient, FormulaTerm::Diffuse, FormulaTerm::Specular})
             box(t, spans_[int(t)], baseline, size_);
+        if (in_.emissive) box(FormulaTerm::Emissive, spans_[int(FormulaTerm::Emissive)], baseline, size_);
     }
 
     // A value centred under `under`, pushed right of the previous one on its row so none overlap.
@@ -224,6 +239,7 @@ private:
         const float size = kValueSize * size_;
         set_.set("= " + formulaRgb(t.total), lSpan_.x0, baseline, size, kSymbolColor, FormulaTerm::None, FormulaRun::Kind::Value);
         rowEnd = lSpan_.x0 + metrics_.width("= " + formulaRgb(t.total), size) + 0.6f * size;
+        if (in_.emissive) valueUnder(spans_[int(FormulaTerm::Emissive)], formulaRgb(t.emissive), FormulaTerm::Emissive, baseline, rowEnd);
         valueUnder(spans_[int(FormulaTerm::Ambient)], formulaRgb(t.ambient), FormulaTerm::Ambient, baseline, rowEnd);
         valueUnder(spans_[int(FormulaTerm::Diffuse)], formulaRgb(t.diffuse), FormulaTerm::Diffuse, baseline, rowEnd);
         valueUnder(spans_[int(FormulaTerm::Specular)], formulaRgb(t.specular), FormulaTerm::Specular, baseline, rowEnd);
@@ -253,7 +269,7 @@ private:
     Typesetter set_;
     float pad_;
     float x_ = 0;
-    Span spans_[4];  // by FormulaTerm
+    Span spans_[5];  // by FormulaTerm
     Span kSpans_[3], keSpan_, lSpan_;
 };
 
@@ -264,6 +280,7 @@ Rgba8 termColor(FormulaTerm term) {
     case FormulaTerm::Ambient: return Rgba8{110, 175, 255, 255};
     case FormulaTerm::Diffuse: return Rgba8{115, 225, 105, 255};
     case FormulaTerm::Specular: return Rgba8{255, 205, 60, 255};
+    case FormulaTerm::Emissive: return Rgba8{255, 130, 200, 255};
     case FormulaTerm::None: break;
     }
     return kSymbolColor;
@@ -275,6 +292,7 @@ bool termIsolated(const TermView& show, FormulaTerm term) {
     case ShowTerm::Diffuse: return term == FormulaTerm::Diffuse;
     case ShowTerm::Specular: return term == FormulaTerm::Specular;
     case ShowTerm::Light: return term == FormulaTerm::Diffuse || term == FormulaTerm::Specular;
+    case ShowTerm::Emissive: return term == FormulaTerm::Emissive;
     case ShowTerm::All:
     case ShowTerm::Unlit: break;
     }
@@ -290,6 +308,7 @@ FormulaInput formulaInput(const Scene& scene, const Material& material) {
     FormulaInput in;
     in.env = lightingEnvironment(scene);
     in.material = material;
+    in.emissive = scene.emissiveModel || material.emissive != glm::vec3(0.0f);
     return in;
 }
 

@@ -21,7 +21,7 @@
 namespace shadelab {
 
 // Which addend of the formula a run belongs to (None: L, =, +, Σ, brackets).
-enum class FormulaTerm { None, Ambient, Diffuse, Specular };
+enum class FormulaTerm { None, Ambient, Diffuse, Specular, Emissive };
 
 // Each term's colour (on a dark backing): ambient blue, diffuse green, specular gold. The shader view
 // marks the lines that compute a term in the same colour.
@@ -62,6 +62,7 @@ struct FormulaLayout {
 struct FormulaInput {
     LightingEnvironment env;  // its model, normalization, fresnel, ior and show
     Material material;
+    bool emissive = false;    // the scene draws a glTF material that gives off light: L = E + ...
     std::optional<ShadingTerms> probed;
     std::string probedAt;  // where: "at pixel 1050,330", at the end of the probed values' row
 };

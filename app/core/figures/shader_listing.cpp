@@ -125,7 +125,7 @@ FormulaTerm glslLineTerm(const std::string& line) {
                  {"ightSpecular", FormulaTerm::Specular}, {"specularLobe(", FormulaTerm::Specular},
                  {"cosLobe", FormulaTerm::Specular},      {"spec *=", FormulaTerm::Specular},
                  {"fresnelSchlick(", FormulaTerm::Specular}, {"fresnelExact(", FormulaTerm::Specular},
-                 {"shadeLectureSpecular(", FormulaTerm::Specular}};
+                 {"shadeLectureSpecular(", FormulaTerm::Specular}, {"objectEmission(", FormulaTerm::Emissive}};
     std::size_t best = std::string::npos;
     FormulaTerm term = FormulaTerm::None;
     for (const auto& n : names) {

@@ -28,7 +28,8 @@ const std::vector<std::string> kDecodedGltfExtensions = {
     "KHR_draco_mesh_compression",  // Draco-compressed primitives
 #endif
     "EXT_mesh_gpu_instancing",     // a node drawn once per TRANSLATION / ROTATION / SCALE
-    "KHR_texture_transform",       // the base colour texture's coordinates offset, rotated, scaled
+    "KHR_texture_transform",       // the base colour and emissive textures' coordinates offset, rotated, scaled
+    "KHR_materials_emissive_strength",  // E's factor multiplied past 1
     "KHR_lights_punctual",         // point, spot and directional lights: a scene's lights when it gives none
 };
 

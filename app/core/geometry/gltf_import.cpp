@@ -128,22 +128,27 @@ private:
     void bakeVertices(std::vector<glm::vec3>&& positions, std::vector<glm::vec3>&& normals, const glm::mat4& worldFromObject,
                       int positionAccessor, const std::string& where);
     void appendColorInputs(std::uint32_t base, std::size_t count, const std::vector<glm::vec2>& uvs,
-                           const std::vector<glm::vec3>& colors);
+                           const std::vector<glm::vec4>& colors, const std::vector<glm::vec2>& emissiveUvs);
     std::uint32_t appendIndices(std::vector<std::uint32_t>&& triangles, std::uint32_t base, bool mirrored);
-    void addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot, const std::vector<glm::mat4>& instances);
+    void addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot, int emissiveSlot,
+                 const std::vector<glm::mat4>& instances);
     void visit(int nodeIndex, const glm::mat4& parent, int depth);
-    // The object texture of the lecture's C: the material's baseColorTexture, decoded once per image
-    // and sampler into Mesh::textures; -1 (with a warning) where it cannot be drawn.
-    struct BaseColorTexture {
+    // A material's texture: the object texture of the lecture's C (baseColorTexture) or of E
+    // (emissiveTexture), decoded once per image and sampler into Mesh::textures; -1 (with a warning)
+    // where it cannot be drawn.
+    struct MaterialTexture {
         int slot = -1;           // index into mesh_.textures
         int texCoord = 0;        // which TEXCOORD_n
         glm::mat3 transform{1.0f};  // KHR_texture_transform: uv' = transform * (uv, 1)
+        const char* role = "base colour";
     };
-    BaseColorTexture baseColorTexture(int materialIndex);
+    MaterialTexture materialTexture(const tinygltf::TextureInfo& info, const char* role);
+    MaterialTexture baseColorTexture(int materialIndex);
+    MaterialTexture emissiveTexture(int materialIndex);
     int textureSlot(int textureIndex);
-    std::vector<glm::vec2> texcoords(const tinygltf::Primitive& p, const BaseColorTexture& t, std::size_t count,
+    std::vector<glm::vec2> texcoords(const tinygltf::Primitive& p, const MaterialTexture& t, std::size_t count,
                                      const std::string& where) const;
-    std::vector<glm::vec3> vertexColors(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
+    std::vector<glm::vec4> vertexColors(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
     std::map<std::pair<int, int>, int> textureSlots_;  // (image, sampler) -> slot, or -1
 
     const std::string& path_;
@@ -398,10 +403,9 @@ constexpr int kMaxTextureSide = 16384;
 constexpr std::size_t kMaxTexturePixels = std::size_t(1) << 26;
 constexpr std::size_t kMaxModelTexturePixels = std::size_t(1) << 28;
 
-GltfReader::BaseColorTexture GltfReader::baseColorTexture(int mi) {
-    BaseColorTexture t;
-    if (mi < 0 || std::size_t(mi) >= model_.materials.size()) return t;
-    const tinygltf::TextureInfo& info = model_.materials[std::size_t(mi)].pbrMetallicRoughness.baseColorTexture;
+GltfReader::MaterialTexture GltfReader::materialTexture(const tinygltf::TextureInfo& info, const char* role) {
+    MaterialTexture t;
+    t.role = role;
     if (info.index < 0) return t;
     t.texCoord = info.texCoord;
     if (const auto e = info.extensions.find("KHR_texture_transform"); e != info.extensions.end()) {
@@ -410,6 +414,20 @@ GltfReader::BaseColorTexture GltfReader::baseColorTexture(int mi) {
     }
     t.slot = textureSlot(info.index);
     return t;
+}
+
+GltfReader::MaterialTexture GltfReader::baseColorTexture(int mi) {
+    if (mi < 0 || std::size_t(mi) >= model_.materials.size()) return {};
+    return materialTexture(model_.materials[std::size_t(mi)].pbrMetallicRoughness.baseColorTexture, "base colour");
+}
+
+GltfReader::MaterialTexture GltfReader::emissiveTexture(int mi) {
+    if (mi < 0 || std::size_t(mi) >= model_.materials.size()) return {};
+    const tinygltf::Material& m = model_.materials[std::size_t(mi)];
+    // No light given off (a zero factor): the texture would multiply nothing, and is not read.
+    if (m.emissiveFactor.size() < 3 || (m.emissiveFactor[0] <= 0.0 && m.emissiveFactor[1] <= 0.0 && m.emissiveFactor[2] <= 0.0))
+        return {};
+    return materialTexture(m.emissiveTexture, "emissive");
 }
 
 int GltfReader::textureSlot(int ti) {
@@ -480,12 +498,13 @@ int GltfReader::textureSlot(int ti) {
 // The primitive's texture coordinates for its base colour texture (TEXCOORD_n, transformed): FLOAT,
 // normalized UNSIGNED_BYTE / UNSIGNED_SHORT, and with KHR_mesh_quantization every 8- and 16-bit type.
 // Empty (with a warning) when the primitive lacks that set.
-std::vector<glm::vec2> GltfReader::texcoords(const tinygltf::Primitive& p, const BaseColorTexture& t, std::size_t count,
+std::vector<glm::vec2> GltfReader::texcoords(const tinygltf::Primitive& p, const MaterialTexture& t, std::size_t count,
                                              const std::string& where) const {
     const std::string name = "TEXCOORD_" + std::to_string(t.texCoord);
     const auto it = p.attributes.find(name);
     if (it == p.attributes.end()) {
-        info_.warnings.push_back(where + ": its base colour texture reads " + name + ", which it does not have; drawn in its base colour");
+        info_.warnings.push_back(where + ": its " + t.role + " texture reads " + name + ", which it does not have; drawn in its " +
+                                 t.role + " factor");
         return {};
     }
     const View v = view(it->second, where + " " + name, {TINYGLTF_TYPE_VEC2},
@@ -505,9 +524,8 @@ std::vector<glm::vec2> GltfReader::texcoords(const tinygltf::Primitive& p, const
     return out;
 }
 
-// COLOR_0 as linear RGB in [0, 1] (alpha is not drawn: shadelab's surfaces are opaque); empty when
-// the primitive has none.
-std::vector<glm::vec3> GltfReader::vertexColors(const tinygltf::Primitive& p, std::size_t count,
+// COLOR_0 as linear RGBA in [0, 1] (alpha 1 for a VEC3 accessor); empty when the primitive has none.
+std::vector<glm::vec4> GltfReader::vertexColors(const tinygltf::Primitive& p, std::size_t count,
                                                 const std::string& where) const {
     const auto it = p.attributes.find("COLOR_0");
     if (it == p.attributes.end()) return {};
@@ -518,10 +536,11 @@ std::vector<glm::vec3> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized) fail(name, "integer colours must be normalized");
     if (v.count != count)
         fail(name, "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
-    std::vector<glm::vec3> out(count);
+    const bool rgba = v.components == 4;
+    std::vector<glm::vec4> out(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const glm::vec3 c(scalarAt(v, i, 0), scalarAt(v, i, 1), scalarAt(v, i, 2));
-        if (!isFinite(c)) fail(name, "colour " + std::to_string(i) + " is not finite");
+        const glm::vec4 c(scalarAt(v, i, 0), scalarAt(v, i, 1), scalarAt(v, i, 2), rgba ? scalarAt(v, i, 3) : 1.0f);
+        if (!isFinite(glm::vec3(c)) || !std::isfinite(c.w)) fail(name, "colour " + std::to_string(i) + " is not finite");
         out[i] = glm::clamp(c, 0.0f, 1.0f);
     }
     return out;
@@ -566,19 +585,23 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
 
     // C where it varies over the surface: the base colour texture's coordinates and COLOR_0.
     const std::size_t vertexCount = positions.size();
-    const BaseColorTexture texture = baseColorTexture(p.material);
+    const MaterialTexture texture = baseColorTexture(p.material);
     std::vector<glm::vec2> uvs = texture.slot >= 0 ? texcoords(p, texture, vertexCount, where) : std::vector<glm::vec2>();
     const int textureSlot = uvs.empty() ? -1 : texture.slot;
-    const std::vector<glm::vec3> colors = vertexColors(p, vertexCount, where);
+    const std::vector<glm::vec4> colors = vertexColors(p, vertexCount, where);
+    // E where it varies: the emissive texture at its own coordinates.
+    const MaterialTexture emissive = emissiveTexture(p.material);
+    std::vector<glm::vec2> emissiveUvs = emissive.slot >= 0 ? texcoords(p, emissive, vertexCount, where) : std::vector<glm::vec2>();
+    const int emissiveSlot = emissiveUvs.empty() ? -1 : emissive.slot;
 
     const auto base = std::uint32_t(out_->positions.size());
     bakeVertices(std::move(positions), std::move(normals), world, posIt->second, where);
-    appendColorInputs(base, vertexCount, uvs, colors);
+    appendColorInputs(base, vertexCount, uvs, colors, emissiveUvs);
     // A mirroring transform (negative determinant) turns counter-clockwise triangles clockwise, so
     // their winding is flipped back.
     const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
     const std::uint32_t firstIndex = appendIndices(std::move(tris), base, mirrored);
-    addPart(p.material, firstIndex, textureSlot, instances);
+    addPart(p.material, firstIndex, textureSlot, emissiveSlot, instances);
     info_.primitives += 1;
     info_.triangles += (out_->indices.size() - firstIndex) / 3;
 }
@@ -675,20 +698,25 @@ void GltfReader::bakeVertices(std::vector<glm::vec3>&& positions, std::vector<gl
 // The texture coordinates and vertex colours of the `count` vertices from `base` on, once any
 // primitive has them.
 void GltfReader::appendColorInputs(std::uint32_t base, std::size_t count, const std::vector<glm::vec2>& uvs,
-                                   const std::vector<glm::vec3>& colors) {
-    if (uvs.empty() && colors.empty() && !out_->variesColor()) return;
+                                   const std::vector<glm::vec4>& colors, const std::vector<glm::vec2>& emissiveUvs) {
+    if (uvs.empty() && colors.empty() && emissiveUvs.empty() && !out_->variesColor()) return;
     // Defaults for the vertices before (the first primitive that varies) and for this one where
     // it has no texture or no COLOR_0: coordinates 0 (an untextured part samples no texture) and white.
     if (!out_->variesColor()) {
         out_->texcoords.assign(base, glm::vec2(0.0f));
-        out_->colors.assign(base, glm::vec3(1.0f));
+        out_->colors.assign(base, glm::vec4(1.0f));
     }
     out_->texcoords.reserve(out_->positions.capacity());
     out_->colors.reserve(out_->positions.capacity());
     if (uvs.empty()) out_->texcoords.resize(base + count, glm::vec2(0.0f));
     else out_->texcoords.insert(out_->texcoords.end(), uvs.begin(), uvs.end());
-    if (colors.empty()) out_->colors.resize(base + count, glm::vec3(1.0f));
+    if (colors.empty()) out_->colors.resize(base + count, glm::vec4(1.0f));
     else out_->colors.insert(out_->colors.end(), colors.begin(), colors.end());
+    // The emissive coordinates likewise, from the first primitive with an emissive texture on.
+    if (emissiveUvs.empty() && !out_->hasEmissiveTexture()) return;
+    if (!out_->hasEmissiveTexture()) out_->emissiveTexcoords.assign(base, glm::vec2(0.0f));
+    if (emissiveUvs.empty()) out_->emissiveTexcoords.resize(base + count, glm::vec2(0.0f));
+    else out_->emissiveTexcoords.insert(out_->emissiveTexcoords.end(), emissiveUvs.begin(), emissiveUvs.end());
 }
 
 // Appends the triangles to *out_'s indices, offset by the vertices before them (`base`) and flipped
@@ -709,26 +737,54 @@ std::uint32_t GltfReader::appendIndices(std::vector<std::uint32_t>&& tris, std::
     return firstIndex;
 }
 
+namespace {
+
+// Parts that look the same: consecutive primitives like these share one draw.
+bool sameLook(const MeshPart& a, const MeshPart& b) {
+    return a.baseColor == b.baseColor && a.texture == b.texture && a.baseAlpha == b.baseAlpha && a.alphaMode == b.alphaMode &&
+           a.alphaCutoff == b.alphaCutoff && a.emissive == b.emissive && a.emissiveTexture == b.emissiveTexture;
+}
+
+// KHR_materials_emissive_strength's factor (1 without it; a negative or non-finite one is ignored).
+float emissiveStrength(const tinygltf::Material& m) {
+    const auto e = m.extensions.find("KHR_materials_emissive_strength");
+    if (e == m.extensions.end() || !e->second.Has("emissiveStrength")) return 1.0f;
+    const tinygltf::Value& v = e->second.Get("emissiveStrength");
+    const double s = v.IsNumber() ? v.GetNumberAsDouble() : 1.0;
+    return std::isfinite(s) && s >= 0.0 ? float(std::min(s, 1e6)) : 1.0f;
+}
+
+}  // namespace
+
 // The part of the indices from `firstIndex` on, with the material's base colour (glTF's default is
-// white); consecutive primitives of one colour share a part, so a many-primitive model does not cost
-// a draw call per primitive.
-void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot,
+// white), alpha and emission; consecutive primitives that look the same share a part, so a
+// many-primitive model does not cost a draw call per primitive.
+void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot, int emissiveSlot,
                          const std::vector<glm::mat4>& instances) {
     MeshPart part;
     part.firstIndex = firstIndex;
     part.indexCount = std::uint32_t(out_->indices.size()) - firstIndex;
     part.hasBaseColor = true;
     if (materialIndex >= 0 && std::size_t(materialIndex) < model_.materials.size()) {
-        const auto& f = model_.materials[std::size_t(materialIndex)].pbrMetallicRoughness.baseColorFactor;
+        const tinygltf::Material& m = model_.materials[std::size_t(materialIndex)];
+        const auto& f = m.pbrMetallicRoughness.baseColorFactor;
         if (f.size() >= 3)
             part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
+        if (f.size() >= 4 && std::isfinite(f[3])) part.baseAlpha = glm::clamp(float(f[3]), 0.0f, 1.0f);
+        if (m.alphaMode == "MASK") part.alphaMode = AlphaMode::Mask;
+        if (m.alphaMode == "BLEND") part.alphaMode = AlphaMode::Blend;
+        if (std::isfinite(m.alphaCutoff)) part.alphaCutoff = glm::clamp(float(m.alphaCutoff), 0.0f, 1.0f);
+        const auto& e = m.emissiveFactor;
+        if (e.size() >= 3 && std::isfinite(e[0]) && std::isfinite(e[1]) && std::isfinite(e[2]))
+            part.emissive = glm::clamp(glm::vec3(float(e[0]), float(e[1]), float(e[2])), 0.0f, 1.0f) * emissiveStrength(m);
     }
     part.texture = textureSlot;
+    part.emissiveTexture = emissiveSlot;
     part.instances = instances;
-    if (!out_->parts.empty() && out_->parts.back().baseColor == part.baseColor && out_->parts.back().texture == part.texture &&
-        out_->parts.back().instances.empty() && part.instances.empty() &&
-        out_->parts.back().firstIndex + out_->parts.back().indexCount == part.firstIndex)
-        out_->parts.back().indexCount += part.indexCount;
+    MeshPart* last = out_->parts.empty() ? nullptr : &out_->parts.back();
+    if (last && sameLook(*last, part) && last->instances.empty() && part.instances.empty() &&
+        last->firstIndex + last->indexCount == part.firstIndex)
+        last->indexCount += part.indexCount;
     else if (part.indexCount > 0)
         out_->parts.push_back(part);
 }

@@ -183,6 +183,7 @@ FlatMesh makeFlatMesh(const Mesh& m) {
     f.centroids = m.positions;
     f.texcoords = m.texcoords;
     f.colors = m.colors;
+    f.emissiveTexcoords = m.emissiveTexcoords;
     f.indices.resize(m.indices.size());
     std::vector<bool> claimed(vertexCount, false);
     for (size_t t = 0; t < triangles; ++t) {
@@ -204,6 +205,7 @@ FlatMesh makeFlatMesh(const Mesh& m) {
             if (m.variesColor()) {
                 f.texcoords.push_back(m.texcoords[corner[2]]);
                 f.colors.push_back(m.colors[corner[2]]);
+                if (m.hasEmissiveTexture()) f.emissiveTexcoords.push_back(m.emissiveTexcoords[corner[2]]);
             }
         } else {
             claimed[provoking] = true;
@@ -245,14 +247,14 @@ int wrapTexel(int i, int size, int wrap) {
 
 }  // namespace
 
-glm::vec3 sampleTexture(const TextureImage& t, const glm::vec2& uv) {
-    if (t.width <= 0 || t.height <= 0) return glm::vec3(1.0f);
+glm::vec4 sampleTextureRgba(const TextureImage& t, const glm::vec2& uv) {
+    if (t.width <= 0 || t.height <= 0) return glm::vec4(1.0f);
     const auto& decode = srgbDecodeTable();
     const auto texel = [&](int x, int y) {
         x = wrapTexel(x, t.width, t.wrapS);
         y = wrapTexel(y, t.height, t.wrapT);
         const std::uint8_t* p = &t.rgba[(std::size_t(y) * std::size_t(t.width) + std::size_t(x)) * 4];
-        return glm::vec3(decode[p[0]], decode[p[1]], decode[p[2]]);
+        return glm::vec4(decode[p[0]], decode[p[1]], decode[p[2]], float(p[3]) / 255.0f);
     };
     // GL's texel space: texel centres at (i + 0.5) / size. Coordinates past a billion texels (a file
     // can hold any float) are taken as 0: no int holds them, and no float there has a fraction left.
@@ -266,6 +268,8 @@ glm::vec3 sampleTexture(const TextureImage& t, const glm::vec2& uv) {
     const float ax = fx - float(x0), ay = fy - float(y0);
     return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), ax), glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), ax), ay);
 }
+
+glm::vec3 sampleTexture(const TextureImage& t, const glm::vec2& uv) { return glm::vec3(sampleTextureRgba(t, uv)); }
 
 BoundingSphere worldBounds(const std::vector<const Mesh*>& meshes, const std::vector<glm::mat4>& worldFromObject) {
     // World positions of every mesh (no copy for the common untransformed mesh).

@@ -14,6 +14,9 @@
 
 namespace shadelab {
 
+// glTF's alphaMode: how the base colour's alpha (factor x texel x COLOR_0) covers the surface.
+enum class AlphaMode { Opaque, Mask, Blend };
+
 // A run of triangles with a colour of its own (a glTF primitive's base colour factor, and its base
 // colour texture when it has one). The scene's material colour overrides both when the scene sets one.
 struct MeshPart {
@@ -22,6 +25,14 @@ struct MeshPart {
     bool hasBaseColor = false;
     glm::vec3 baseColor{1.0f};
     int texture = -1;                   // index into Mesh::textures; -1: none
+    // Coverage: Opaque ignores alpha; Mask draws where alpha >= alphaCutoff; Blend mixes by alpha.
+    float baseAlpha = 1.0f;             // the base colour factor's alpha
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    // E, the light the surface gives off: emissiveFactor x KHR_materials_emissive_strength, times the
+    // emissive texture (sRGB, read at Mesh::emissiveTexcoords) where it has one.
+    glm::vec3 emissive{0.0f};
+    int emissiveTexture = -1;           // index into Mesh::textures; -1: none
     // Drawn once per transform (a glTF node's EXT_mesh_gpu_instancing instances, in an instanced
     // draw), each applied to the part's vertices in object space; empty: drawn once as it is.
     std::vector<glm::mat4> instances;
@@ -48,9 +59,13 @@ struct Mesh {
     // Where C varies over the surface (a glTF model with a base colour texture or COLOR_0): both are
     // one per position, or both empty. texcoords: the coordinates the part's texture is read with
     // (its TEXCOORD_n, KHR_texture_transform applied; 0 where a part has none); colors: COLOR_0's
-    // linear RGB (1 where a primitive has none). C = base colour x texture(texcoord) x color.
+    // linear RGBA (1 where a primitive has none). C = base colour x texture(texcoord) x color, and
+    // its alpha the same product of alphas.
     std::vector<glm::vec2> texcoords;
-    std::vector<glm::vec3> colors;
+    std::vector<glm::vec4> colors;
+    // The emissive textures' coordinates (their TEXCOORD_n, transformed), one per position where a
+    // part has an emissive texture (the mesh then varies its colour too), else empty.
+    std::vector<glm::vec2> emissiveTexcoords;
     std::vector<std::shared_ptr<const TextureImage>> textures;  // shared by copies of the mesh
     // The same surface with instanced parts (MeshPart::instances) drawn once each, for the renderer's
     // instanced draws; this mesh holds every instance baked, which everything else reads. Null: none.
@@ -58,6 +73,7 @@ struct Mesh {
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     bool variesColor() const { return !texcoords.empty(); }
+    bool hasEmissiveTexture() const { return !emissiveTexcoords.empty(); }
 };
 
 // A texture's linear RGB at texture coordinates `uv`: bilinear (or nearest, by the sampler's
@@ -65,6 +81,8 @@ struct Mesh {
 // first, as GL does for an sRGB texture. The GPU reads smaller mip levels where the texture is
 // minified; this is what it reads where the texture is magnified.
 glm::vec3 sampleTexture(const TextureImage& texture, const glm::vec2& uv);
+// The same sample with its alpha (alpha is stored linear: not decoded).
+glm::vec4 sampleTextureRgba(const TextureImage& texture, const glm::vec2& uv);
 
 // `v` scaled to unit length, or `fallback` when that is not possible (zero, not finite, or so small
 // that its direction is lost to rounding). Rescales by the largest component first, so huge and
@@ -97,7 +115,8 @@ struct FlatMesh {
     std::vector<glm::vec3> centroids;   // triangle centroid at each provoking vertex (position elsewhere)
     std::vector<std::uint32_t> indices; // per triangle, its corners rotated so the provoking one is last
     std::vector<glm::vec2> texcoords;   // as the Mesh's (empty when it has none), copied to added vertices
-    std::vector<glm::vec3> colors;
+    std::vector<glm::vec4> colors;
+    std::vector<glm::vec2> emissiveTexcoords;
 };
 FlatMesh makeFlatMesh(const Mesh& mesh);
 

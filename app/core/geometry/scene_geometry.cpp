@@ -117,14 +117,19 @@ std::vector<Light> lecturesLights(const std::vector<GltfLight>& lights, const gl
 
 void frameIfNeeded(Scene& scene, const SceneGeometry& g) {
     useModelLights(scene, g);
-    // A base colour image holds sRGB-encoded colours, decoded to linear for the formula: written back
-    // encoded, the model looks as its file does (linear output would show it much darker).
-    if (!scene.outputEncodingGiven && scene.textures)
-        for (std::size_t o = 0; o < scene.objects.size() && o < g.gltfInfo.size(); ++o)
-            if (g.gltfInfo[o].textures > 0 && !scene.objects[o].material.colorSet) {
+    // glTF's colours (factors, COLOR_0, decoded base colour texels) are linear values meant for an
+    // sRGB display: a scene that draws a model is written sRGB-encoded unless it says otherwise,
+    // whatever stores the colour and whether a texture loaded.
+    if (!scene.outputEncodingGiven)
+        for (const SceneObject& o : scene.objects)
+            if (o.mesh.type == MeshSpec::Type::Gltf) {
                 scene.outputEncoding = OutputEncoding::Srgb;
                 scene.outputEncodingGiven = true;
             }
+    scene.emissiveModel = false;
+    for (std::size_t o = 0; o < scene.objects.size() && o < g.meshes.size(); ++o)
+        for (const MeshPart& part : g.meshes[o].parts)
+            if (part.emissive != glm::vec3(0.0f) && !scene.objects[o].material.colorSet) scene.emissiveModel = true;
     if (scene.modelCamera >= 0) return useModelCamera(scene, g);
     if (scene.cameraGiven) return;
     bool hasModel = false;

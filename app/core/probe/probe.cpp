@@ -35,6 +35,7 @@ struct TriangleContext {
     // combine per fragment as shaders/object_color.glsl does; Phong evaluates with `material`.
     const Material* baseMaterial = nullptr;
     glm::vec3 texel{1.0f};
+    glm::vec3 emission{0.0f};  // textured: E at the point, which the fragment adds (combineTerms)
 };
 
 // Of what `show` selects, the part the texel does not multiply: the specular.
@@ -47,6 +48,12 @@ glm::vec3 shownSpecular(const ShadingTerms& t, const TermView& show) {
                                                                            : glm::vec3(0.0f);
     default: return glm::vec3(0.0f);
     }
+}
+
+// E as the textured flat and Gouraud fragment adds it (object_color.glsl, combineTerms): where `show` keeps it.
+glm::vec3 shownEmission(const TriangleContext& c) {
+    const ShowTerm t = c.scene.show.term;
+    return t == ShowTerm::All || t == ShowTerm::Emissive ? c.emission : glm::vec3(0.0f);
 }
 
 // The formula at one point with one unit normal: shadeTerms with, when shadows are on, an occlusion
@@ -123,7 +130,7 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
             specular += w[k] * s;
             m.evaluations.push_back(std::move(e));
         }
-        if (c.baseMaterial) m.color = glm::clamp(c.texel * termsOfC + specular, 0.0f, 1.0f);
+        if (c.baseMaterial) m.color = glm::clamp(c.texel * termsOfC + specular + shownEmission(c), 0.0f, 1.0f);
         break;
     }
     case ShadingMode::Flat: {
@@ -136,7 +143,7 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         m.color = e.terms.total;
         if (c.baseMaterial) {
             const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
-            m.color = glm::clamp(c.texel * (e.terms.shown - s) + s, 0.0f, 1.0f);
+            m.color = glm::clamp(c.texel * (e.terms.shown - s) + s + shownEmission(c), 0.0f, 1.0f);
         }
         m.evaluations.push_back(std::move(e));
         break;
@@ -170,6 +177,7 @@ Material drawnMaterial(const Scene& scene, const Mesh& mesh, std::size_t object,
     if (m.colorSet) return m;
     const MeshPart* part = partOf(mesh, triangle);
     if (part && part->hasBaseColor) m.color = part->baseColor;
+    if (part) m.emissive = part->emissive;
     return m;
 }
 
@@ -198,7 +206,9 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
     r.anchor.pane = r.pane;
     const Mesh& mesh = geometry.meshes[anchor.object];
     r.material = drawnMaterial(scene, mesh, anchor.object, anchor.triangle);
-    const Material baseMaterial = r.material;
+    Material baseMaterial = r.material;
+    const MeshPart* part = scene.objects[anchor.object].material.colorSet ? nullptr : partOf(mesh, anchor.triangle);
+    if (part) r.alphaMode = part->alphaMode, r.alpha = part->baseAlpha, r.alphaCutoff = part->alphaCutoff;
     const LightingEnvironment env = lightingEnvironment(scene);
     const glm::mat4 world = worldFromObject(scene.objects[anchor.object].transform);
     TriangleContext c{scene, env, r.material, caster, world, normalWorldFromObject(world), {}, {}, {}, anchor.barycentric};
@@ -213,12 +223,22 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
         const glm::vec3& w = anchor.barycentric;
         r.textured = true;
         r.texcoord = w.x * mesh.texcoords[c.vertex[0]] + w.y * mesh.texcoords[c.vertex[1]] + w.z * mesh.texcoords[c.vertex[2]];
-        r.texel = w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
-        const MeshPart* part = partOf(mesh, anchor.triangle);
+        const glm::vec4 color = w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
+        glm::vec4 texel = color;
         if (part && part->texture >= 0 && std::size_t(part->texture) < mesh.textures.size())
-            r.texel *= sampleTexture(*mesh.textures[std::size_t(part->texture)], r.texcoord);
+            texel *= sampleTextureRgba(*mesh.textures[std::size_t(part->texture)], r.texcoord);
+        r.texel = glm::vec3(texel);
+        r.alpha *= texel.a;
         r.baseColor = baseMaterial.color;
         r.material.color = baseMaterial.color * r.texel;
+        // E varies with the emissive texture: Phong's sum has it at the point, flat and Gouraud add it per fragment.
+        if (part && part->emissiveTexture >= 0 && mesh.hasEmissiveTexture() && std::size_t(part->emissiveTexture) < mesh.textures.size()) {
+            const glm::vec2 uv = w.x * mesh.emissiveTexcoords[c.vertex[0]] + w.y * mesh.emissiveTexcoords[c.vertex[1]] +
+                                 w.z * mesh.emissiveTexcoords[c.vertex[2]];
+            r.material.emissive *= sampleTexture(*mesh.textures[std::size_t(part->emissiveTexture)], uv);
+        }
+        c.emission = r.material.emissive;
+        baseMaterial.emissive = glm::vec3(0.0f);
         c.baseMaterial = &baseMaterial;
         c.texel = r.texel;
     }

@@ -10,6 +10,7 @@
 // is a ray cast on the CPU toward each light sample, the lecture's own definition; the renderer uses
 // shadow maps, which agree with it except within a few shadow-map texels of a shadow's edge.
 #include "core/geometry/camera.hpp"
+#include "core/geometry/mesh.hpp"
 #include "core/shading/lighting.hpp"
 #include "core/geometry/ray_cast.hpp"
 #include "core/scene/scene.hpp"
@@ -84,6 +85,10 @@ struct ProbeResult {
     glm::vec2 texcoord{0.0f};  // textured: the texture coordinates at the point
     glm::vec3 texel{1.0f};     // textured: texture(texcoord) x COLOR_0 there, linear
     glm::vec3 baseColor{1.0f}; // textured: the part's base colour factor (C = baseColor x texel)
+    // A glTF part's coverage (MeshPart): its mode and the alpha at the point (factor x texel x COLOR_0).
+    // The probe reports the surface it hits; it does not composite a blended one over what is behind.
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alpha = 1.0f, alphaCutoff = 0.5f;
     // One mode; the diff layout's difference pane: its two modes (diff.a, diff.b).
     std::vector<ModeProbe> modes;
     glm::ivec3 output8{0};     // the pixel: the mode's value, the difference pane's |a - b| * factor, or the background

@@ -64,6 +64,7 @@ json evaluationJson(const Scene& scene, const ProbeEvaluation& e) {
         lights.push_back(std::move(light));
     }
     j["lights"] = std::move(lights);
+    if (scene.emissiveModel || e.terms.emissive != glm::vec3(0.0f)) j["emissive"] = vec(e.terms.emissive);
     j["ambient"] = vec(e.terms.ambient);
     j["diffuse"] = vec(e.terms.diffuse);
     j["specular"] = vec(e.terms.specular);
@@ -157,6 +158,13 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
         // multiply the ambient and diffuse parts by the texel per fragment; Phong evaluates with C.
         j["material"]["C_base"] = vec(r.baseColor);
         j["texture"] = {{"texcoord", {number(r.texcoord.x), number(r.texcoord.y)}}, {"texel", vec(r.texel)}};
+    }
+    // What a glTF material adds: E (the emission at the point; flat and Gouraud add it per fragment
+    // where it varies) and the coverage.
+    if (m.emissive != glm::vec3(0.0f) || scene.emissiveModel) j["material"]["E"] = vec(m.emissive);
+    if (r.alphaMode != AlphaMode::Opaque) {
+        j["alpha"] = {{"mode", r.alphaMode == AlphaMode::Mask ? "mask" : "blend"}, {"alpha", number(r.alpha)}};
+        if (r.alphaMode == AlphaMode::Mask) j["alpha"]["cutoff"] = number(r.alphaCutoff);
     }
     j["ambient_A"] = vec(scene.ambient);
     j["shadows"] = {{"enabled", scene.shadows.enabled}};

@@ -21,8 +21,8 @@ enum class Attenuation { None, InverseSquare };
 // Beyond the heuristic model (lighting.hpp has the exact formulas):
 enum class SpecularNormalization { None, Energy };  // "energy": lobes normalised to constant reflected energy
 enum class FresnelMode { None, Schlick, Exact };    // specular weighted by the Fresnel reflectance at V.H
-// Term isolation: which addend(s) of the formula are drawn ("show").
-enum class ShowTerm { All, Ambient, Diffuse, Specular, Light, Unlit };
+// Term isolation: which addend(s) of the formula are drawn ("show"); Emissive: a glTF material's E.
+enum class ShowTerm { All, Ambient, Diffuse, Specular, Light, Unlit, Emissive };
 
 // Limits shared by the parser, the CLI, the sweep, the panel and the renderer: core/scene/scene_limits.hpp.
 
@@ -36,6 +36,9 @@ struct Material {
     // True when the scene (or the viewer's panel) set `color`: it then also overrides a glTF model's
     // own base colours. A model given without a colour keeps the colours its file gives.
     bool colorSet = false;
+    // E, the light the surface gives off, added to the sum: L = E + k_a A C + ... . Not part of the
+    // scene format: a glTF material's emission (MeshPart::emissive), set where a part is shaded.
+    glm::vec3 emissive{0.0f};
 };
 
 struct MeshSpec {
@@ -159,7 +162,8 @@ struct Scene {
     bool cameraGiven = false;     // false: a glTF model may be auto-framed
     int modelCamera = -1;         // --camera N: the first glTF model's camera N replaces the scene's
     bool lightsGiven = false;     // false: auto-framing may move the default light with the camera
-    bool outputEncodingGiven = false;  // false: a textured glTF model is written sRGB-encoded (frameIfNeeded)
+    bool outputEncodingGiven = false;  // false: a scene with a glTF model is written sRGB-encoded (frameIfNeeded)
+    bool emissiveModel = false;   // a glTF model's material gives off light, E (frameIfNeeded; the formula shows E)
     bool usesObjectList = false;  // written back as "objects" rather than the one-object shorthand
     std::string sourcePath;       // the file it came from ("" for the built-in default)
 };

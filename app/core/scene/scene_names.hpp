@@ -38,7 +38,8 @@ inline constexpr EnumName<MeshSpec::Type> kMeshTypeNames[] = {
 // "show": one term of the formula; ShowTerm::Light is written "light:N", N the light's index.
 inline constexpr EnumName<ShowTerm> kShowTermNames[] = {
     {"all", ShowTerm::All},           {"ambient", ShowTerm::Ambient}, {"diffuse", ShowTerm::Diffuse},
-    {"specular", ShowTerm::Specular}, {"light:N", ShowTerm::Light},   {"unlit", ShowTerm::Unlit}};
+    {"specular", ShowTerm::Specular}, {"light:N", ShowTerm::Light},   {"unlit", ShowTerm::Unlit},
+    {"emissive", ShowTerm::Emissive}};
 
 // The name of `value` in `names` ("?" when it has none).
 template <typename E, std::size_t N>

@@ -166,6 +166,7 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
     ShadingTerms t;
     t.lights.resize(env.lights.size());
     const glm::vec3 v = glm::normalize(env.eyeWorld - p);
+    t.emissive = m.emissive;
     t.ambient = m.ka * env.ambient * m.color;
     auto visible = [&](std::size_t light, int sample, const glm::vec3& i, float distance) {
         if (!visibility || glm::dot(n, i) <= 0.0f) return 1.0f;  // N.I <= 0 adds nothing anyway
@@ -211,7 +212,8 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
     for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
     glm::vec3& shown = t.shown;
     switch (env.show.term) {
-    case ShowTerm::All: shown = t.ambient + t.diffuse + t.specular; break;
+    case ShowTerm::All: shown = t.emissive + t.ambient + t.diffuse + t.specular; break;
+    case ShowTerm::Emissive: shown = t.emissive; break;
     case ShowTerm::Ambient: shown = t.ambient; break;
     case ShowTerm::Diffuse: shown = t.diffuse; break;
     case ShowTerm::Specular: shown = t.specular; break;

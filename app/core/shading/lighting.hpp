@@ -2,7 +2,8 @@
 // CPU reference of the lecture's reflection model: the same inputs and the same result as
 // shaders/lighting.glsl, used by the tests (and later the pixel probe).
 //
-//   L = k_a A C + sum_l sum_k v(p, I_lk) L_lk ( k_d C max(0, N.I_lk) + k_s S spec_lk ),  each channel clamped to [0, 1]
+//   L = E + k_a A C + sum_l sum_k v(p, I_lk) L_lk ( k_d C max(0, N.I_lk) + k_s S spec_lk ),  each channel clamped to [0, 1]
+//   (E: the light a glTF material gives off, Material::emissive; 0 for the lecture's own materials)
 //   spec = max(0, R(I).V)^k_e (Phong) or max(0, H.N)^k_e (Blinn-Phong); 0 where N.I <= 0
 //   R(I) = 2 (N.I) N - I,  H = normalize(I + V)
 //
@@ -60,10 +61,11 @@ struct LightShare {
 
 // Each addend of the formula before clamping, and the clamped total (of what `show` selects).
 struct ShadingTerms {
+    glm::vec3 emissive{0.0f};         // E (Material::emissive)
     glm::vec3 ambient{0.0f};
     glm::vec3 diffuse{0.0f};
     glm::vec3 specular{0.0f};
-    glm::vec3 shown{0.0f};            // what `show` selects before clamping: ambient + diffuse + specular with show = all
+    glm::vec3 shown{0.0f};            // what `show` selects before clamping: E + ambient + diffuse + specular with show = all
     glm::vec3 total{0.0f};            // clamp(shown, 0, 1)
     std::vector<LightShare> lights;   // per light, in the order of LightingEnvironment::lights
 };

@@ -92,6 +92,7 @@ Mesh orderedForVertexCache(const Mesh& mesh) {
     if (mesh.variesColor()) {
         out.texcoords = permuted(mesh.texcoords, oldFromNew);
         out.colors = permuted(mesh.colors, oldFromNew);
+        if (mesh.hasEmissiveTexture()) out.emissiveTexcoords = permuted(mesh.emissiveTexcoords, oldFromNew);
     }
     out.textures = mesh.textures;  // shared, not copied
     return out;
@@ -106,6 +107,7 @@ FlatMesh makeOrderedFlatMesh(const Mesh& orderedMesh) {
     if (!flat.texcoords.empty()) {
         flat.texcoords = permuted(flat.texcoords, oldFromNew);
         flat.colors = permuted(flat.colors, oldFromNew);
+        if (!flat.emissiveTexcoords.empty()) flat.emissiveTexcoords = permuted(flat.emissiveTexcoords, oldFromNew);
     }
     return flat;
 }
