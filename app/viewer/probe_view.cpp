@@ -97,6 +97,7 @@ void evaluationTables(const Scene& scene, const ProbeEvaluation& e) {
         ImGui::TableSetupColumn("term", ImGuiTableColumnFlags_WidthStretch, 2.0f);
         for (const char* channel : {"R", "G", "B"}) ImGui::TableSetupColumn(channel, ImGuiTableColumnFlags_WidthStretch, 1.0f);
         ImGui::TableHeadersRow();
+        if (scene.emissiveModel || e.terms.emissive != glm::vec3(0.0f)) rgbRow("emission E", e.terms.emissive);
         rgbRow("ambient k_a A C", e.terms.ambient);
         char label[48];
         for (std::size_t l = 0; l < e.lights.size(); ++l) {

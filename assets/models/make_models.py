@@ -181,21 +181,13 @@ def write_stage(name):
     save(name, doc, blob)
 
 
-def png(width, height, rgb):
-    """An 8-bit RGB PNG of rows of (r, g, b) tuples."""
-    raw = b''.join(b'\0' + bytes(c for px in row for c in px) for row in rgb)
+def png(width, height, rows):
+    """An 8-bit PNG of rows of (r, g, b) or (r, g, b, a) tuples (RGB or RGBA by the tuples' length)."""
+    raw = b''.join(b'\0' + bytes(c for px in row for c in px) for row in rows)
+    color_type = 6 if len(rows[0][0]) == 4 else 2
     def chunk(kind, data):
         return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff)
-    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 2, 0, 0, 0)) +
-            chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
-
-
-def png_rgba(width, height, rgba):
-    """An 8-bit RGBA PNG of rows of (r, g, b, a) tuples."""
-    raw = b''.join(b'\0' + bytes(c for px in row for c in px) for row in rgba)
-    def chunk(kind, data):
-        return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff)
-    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 6, 0, 0, 0)) +
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, color_type, 0, 0, 0)) +
             chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
 
 
@@ -336,7 +328,7 @@ def write_material_panels(name):
         "scene": 0, "scenes": [{"nodes": [0, 1, 2]}], "nodes": nodes, "meshes": meshes, "materials": materials,
         "samplers": [{"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33071}],
         "textures": [{"sampler": 0, "source": 0}, {"sampler": 0, "source": 1}],
-        "images": [{"uri": data_uri(png_rgba(4, 4, checker))}, {"uri": data_uri(stripes)}],
+        "images": [{"uri": data_uri(png(4, 4, checker))}, {"uri": data_uri(stripes)}],
         "bufferViews": views, "accessors": accessors,
     }
     save(name, doc, blob)
