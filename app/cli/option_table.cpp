@@ -389,7 +389,8 @@ const OptionSpec kOptions[] = {
      }},
     {"--shader-dir", "", "DIR", G::General, kNoBounds, nullptr, "",
      "read GLSL files from DIR where present (default: the folder beside the program, an installed "
-     "`share/shadelab/shaders` or a checkout's `shaders/` for a build inside it; else the copies built in)",
+     "`share/shadelab/shaders`, a checkout's `shaders/` for a build inside it or a build folder's "
+     "`share/shadelab/shaders`; else the copies built in)",
      [](Options& o, const OptionSpec&, const std::string& v) { o.shaderDir = v; }},
     {"--info", "", "", G::General, kNoBounds, nullptr, "",
      "print what was loaded (meshes, triangles, bounds, normals, the model's cameras) and exit",

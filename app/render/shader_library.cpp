@@ -1,6 +1,7 @@
 #include "render/shader_library.hpp"
 
 #include "core/base/embedded.hpp"
+#include "core/base/file_io.hpp"
 #include "platform/platform.hpp"
 
 #include <filesystem>
@@ -31,13 +32,11 @@ std::string ShaderLibrary::load(const std::string& name) const {
 }
 
 std::string defaultShaderFolder() {
-    // Beside the program: an installed one's share/shadelab/shaders (cmake --install), or a build
-    // folder's checkout (build/shadelab -> shaders/). Nothing of the build machine is compiled in.
-    const std::filesystem::path exe = platform::executablePath();
-    if (exe.empty()) return {};
+    // Beside the program (core/base/file_io.hpp): an installed one's share/shadelab/shaders, a build
+    // folder's checkout (build/shadelab -> shaders/), or a build folder's own share/shadelab/shaders.
+    // Nothing of the build machine is compiled in.
     std::error_code ec;
-    for (const char* relative : {"../share/shadelab/shaders", "../shaders"}) {
-        const std::filesystem::path dir = exe.parent_path() / relative;
+    for (const std::filesystem::path& dir : dataFoldersBesideProgram(platform::executablePath(), "shaders", "shaders")) {
         if (std::filesystem::is_regular_file(dir / "lighting.glsl", ec))
             return std::filesystem::weakly_canonical(dir, ec).string();
     }

@@ -22,9 +22,10 @@ private:
     std::map<std::string, std::string> diskFiles_;  // name -> contents, read at construction
 };
 
-// The GLSL folder beside the program: an installed shadelab's share/shadelab/shaders, or, for a
-// program in a build folder of a checkout, the checkout's shaders/ (so edits there take effect without
-// a rebuild); empty when there is none (the built-in copies are used).
+// The GLSL folder beside the program: an installed shadelab's share/shadelab/shaders; for a program in
+// a build folder of a checkout, the checkout's shaders/ (so edits there take effect without a
+// rebuild); else a build folder's share/shadelab/shaders (linked to its checkout's shaders/); empty
+// when there is none (the built-in copies are used).
 std::string defaultShaderFolder();
 
 // The folder a run reads GLSL from: `asked` (--shader-dir), else defaultShaderFolder().

@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <utility>
 
 namespace shadelab {
 namespace {
@@ -434,89 +435,104 @@ void Viewer::setUiScale(float uiScale) {
     setStatus("UI scale " + std::to_string(int(std::lround(uiScale_ * 100.0f))) + "%", false);
 }
 
+namespace {
+// The table's named keys (core/ui/controls.hpp) by GLFW's key codes.
+ViewerKey viewerKey(int glfwKey) {
+    static constexpr std::pair<int, ViewerKey> kGlfwKeys[] = {
+        {GLFW_KEY_TAB, ViewerKey::Tab},           {GLFW_KEY_ESCAPE, ViewerKey::Escape},
+        {GLFW_KEY_BACKSPACE, ViewerKey::Backspace}, {GLFW_KEY_F1, ViewerKey::F1},
+        {GLFW_KEY_F5, ViewerKey::F5},             {GLFW_KEY_F11, ViewerKey::F11},
+        {GLFW_KEY_F12, ViewerKey::F12},           {GLFW_KEY_PAGE_DOWN, ViewerKey::PageDown},
+        {GLFW_KEY_PAGE_UP, ViewerKey::PageUp},    {GLFW_KEY_RIGHT, ViewerKey::Right},
+        {GLFW_KEY_LEFT, ViewerKey::Left},         {GLFW_KEY_HOME, ViewerKey::Home},
+        {GLFW_KEY_END, ViewerKey::End},           {GLFW_KEY_EQUAL, ViewerKey::Plus},
+        {GLFW_KEY_KP_ADD, ViewerKey::Plus},       {GLFW_KEY_MINUS, ViewerKey::Minus},
+        {GLFW_KEY_KP_SUBTRACT, ViewerKey::Minus}, {GLFW_KEY_0, ViewerKey::Zero},
+        {GLFW_KEY_KP_0, ViewerKey::Zero},         {GLFW_KEY_Q, ViewerKey::Q},
+        {GLFW_KEY_R, ViewerKey::R},
+    };
+    for (const auto& [code, key] : kGlfwKeys)
+        if (code == glfwKey) return key;
+    return ViewerKey::None;
+}
+}  // namespace
+
+// The keys of this frame, looked up in the key table (kControls, core/ui/controls.hpp).
 void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
     const ImGuiIO& io = ImGui::GetIO();
-    for (const auto& [key, mods] : keys) {
-        // A presenter's remote sends Page Down / Page Up: they step the playlist unless text is typed.
-        if (playlist_.active() && !io.WantTextInput) {
-            if (key == GLFW_KEY_PAGE_DOWN) goToPreset(playlist_.current() + 1);
-            if (key == GLFW_KEY_PAGE_UP && playlist_.current() > 0) goToPreset(playlist_.current() - 1);
-        }
-        // Esc closes the help and clears the probe; a text field gives the keyboard back on it too
-        // (ImGui), and nothing quits on it: a presenter's remote sends Esc.
-        if (key == GLFW_KEY_ESCAPE && !io.WantTextInput) {
-            if (showHelp_) showHelp_ = false;
-            else if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
-        }
+    const auto binding = [](const KeyPress& k) { return keyBinding(viewerKey(k.key), (k.mods & GLFW_MOD_CONTROL) != 0); };
+    // Page Down / Page Up (a presenter's remote) and Esc act over the panel too, unless text is typed;
+    // a text field gives the keyboard back on Esc itself (ImGui), and nothing quits on Esc.
+    for (const KeyPress& k : keys) {
+        const KeyBinding* b = binding(k);
+        if (b && b->focus == KeyFocus::UnlessTyping && !io.WantTextInput) runCommand(b->command);
     }
     if (io.WantCaptureKeyboard) return;  // typing in a field or dragging a slider
-    const auto scene = [this]() -> Scene& { return document_.edit(); };  // the keys that change the scene
+    // Letters come as characters, so they follow the keyboard layout; with Ctrl held there are none.
+    for (int i = 0; i < io.InputQueueCharacters.Size; ++i)
+        if (const KeyBinding* b = characterBinding(io.InputQueueCharacters[i])) runCommand(b->command);
+    // Keys without characters, and Ctrl+ shortcuts, by key code; Ctrl as it was when the key went down.
+    for (const KeyPress& k : keys) {
+        const KeyBinding* b = binding(k);
+        if (b && b->focus == KeyFocus::View) runCommand(b->command);
+    }
+}
+
+void Viewer::runCommand(ViewerCommand command) {
+    const auto scene = [this]() -> Scene& { return document_.edit(); };  // the commands that change the scene
+    const auto single = [&](ShadingMode mode) { scene().shading = mode, scene().layout = Layout::Single; };
+    const auto toggle = [&](Layout layout) { scene().layout = document_.scene().layout == layout ? Layout::Single : layout; };
     OverlayOptions& overlays = settings_.overlays;
-    // Letters come as characters, so they follow the keyboard layout (Q is Q on an AZERTY keyboard).
-    // With Ctrl held there are none: Ctrl+ shortcuts are read from the key codes below.
-    for (int i = 0; i < io.InputQueueCharacters.Size; ++i) {
-        switch (io.InputQueueCharacters[i]) {
-        case '1': scene().shading = ShadingMode::Flat, scene().layout = Layout::Single; break;
-        case '2': scene().shading = ShadingMode::Gouraud, scene().layout = Layout::Single; break;
-        case '3': scene().shading = ShadingMode::Phong, scene().layout = Layout::Single; break;
-        case 'c': case 'C':
-            scene().layout = document_.scene().layout == Layout::Compare ? Layout::Single : Layout::Compare;
-            break;
-        case 'd': case 'D': scene().layout = document_.scene().layout == Layout::Diff ? Layout::Single : Layout::Diff; break;
-        case 'w': case 'W': overlays.wireframe = !overlays.wireframe; break;
-        case 'n': overlays.vertexNormals = !overlays.vertexNormals; break;
-        case 'N': overlays.faceNormals = !overlays.faceNormals; break;
-        case 'l': case 'L': settings_.lightLabels = !settings_.lightLabels; break;
-        case 'e': case 'E': settings_.showFormula = !settings_.showFormula; break;
-        case 's': case 'S': {
-            // The Shader section: opened (and the panel shown) or closed again.
-            const auto& open = settings_.openSections;
-            const bool isOpen = settings_.showPanel && std::find(open.begin(), open.end(), "shader") != open.end();
-            settings_.openShader = !isOpen;
-            settings_.showPanel = true;
-            break;
-        }
-        case 'r': case 'R': document_.resetCamera(); break;
-        case 'f': case 'F': document_.frameModel(); break;
-        case '?': showHelp_ = !showHelp_; break;
-        case ' ': playing_ = playing_ ? false : !options_.animations.empty(); break;
-        case 'q': case 'Q': window_.requestClose(); break;
-        default: break;
-        }
+    switch (command) {
+    case ViewerCommand::None: break;
+    case ViewerCommand::Flat: single(ShadingMode::Flat); break;
+    case ViewerCommand::Gouraud: single(ShadingMode::Gouraud); break;
+    case ViewerCommand::Phong: single(ShadingMode::Phong); break;
+    case ViewerCommand::Compare: toggle(Layout::Compare); break;
+    case ViewerCommand::Difference: toggle(Layout::Diff); break;
+    case ViewerCommand::Wireframe: overlays.wireframe = !overlays.wireframe; break;
+    case ViewerCommand::VertexNormals: overlays.vertexNormals = !overlays.vertexNormals; break;
+    case ViewerCommand::FaceNormals: overlays.faceNormals = !overlays.faceNormals; break;
+    case ViewerCommand::LightMarkers: settings_.lightLabels = !settings_.lightLabels; break;
+    case ViewerCommand::Formula: settings_.showFormula = !settings_.showFormula; break;
+    case ViewerCommand::ShaderSection: {
+        // The Shader section: opened (and the panel shown) or closed again.
+        const auto& open = settings_.openSections;
+        settings_.openShader = !(settings_.showPanel && std::find(open.begin(), open.end(), "shader") != open.end());
+        settings_.showPanel = true;
+        break;
     }
-    // Keys without characters, by GLFW key code; Ctrl as it was when the key went down.
-    for (const auto& [key, mods] : keys) {
-        if (mods & GLFW_MOD_CONTROL) {
-            switch (key) {
-            case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: setUiScale(uiScale_ * 1.25f); break;
-            case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: setUiScale(uiScale_ / 1.25f); break;
-            case GLFW_KEY_0: case GLFW_KEY_KP_0: setUiScale(1.0f); break;
-            case GLFW_KEY_Q: window_.requestClose(); break;
-            case GLFW_KEY_R: recordToggled_ = true; break;
-            default: break;
-            }
-            continue;
-        }
-        switch (key) {
-        case GLFW_KEY_TAB: settings_.showPanel = !settings_.showPanel; break;
-        case GLFW_KEY_F1: showHelp_ = !showHelp_; break;
-        case GLFW_KEY_F11: window_.setFullscreen(!window_.fullscreen()); break;
-        case GLFW_KEY_F12: screenshotRequested_ = true; break;
-        case GLFW_KEY_F5: reloadShaders(); break;
-        default: break;
-        }
-        if (!playlist_.active()) continue;
-        switch (key) {
-        case GLFW_KEY_RIGHT: goToPreset(playlist_.current() + 1); break;
-        case GLFW_KEY_LEFT:
-            if (playlist_.current() > 0) goToPreset(playlist_.current() - 1);
-            break;
-        case GLFW_KEY_HOME: goToPreset(0); break;
-        case GLFW_KEY_END: goToPreset(playlist_.size() - 1); break;
-        case GLFW_KEY_BACKSPACE: resetPreset(); break;
-        default: break;
-        }
+    case ViewerCommand::ResetCamera: document_.resetCamera(); break;
+    case ViewerCommand::FrameModel: document_.frameModel(); break;
+    case ViewerCommand::NextPreset: case ViewerCommand::PreviousPreset: case ViewerCommand::FirstPreset:
+    case ViewerCommand::LastPreset: case ViewerCommand::ResetPreset: runPlaylistCommand(command); break;
+    case ViewerCommand::UiLarger: setUiScale(uiScale_ * 1.25f); break;
+    case ViewerCommand::UiSmaller: setUiScale(uiScale_ / 1.25f); break;
+    case ViewerCommand::UiAsMonitor: setUiScale(1.0f); break;
+    case ViewerCommand::TogglePanel: settings_.showPanel = !settings_.showPanel; break;
+    case ViewerCommand::Fullscreen: window_.setFullscreen(!window_.fullscreen()); break;
+    case ViewerCommand::Help: showHelp_ = !showHelp_; break;
+    case ViewerCommand::ReloadShaders: reloadShaders(); break;
+    case ViewerCommand::Screenshot: screenshotRequested_ = true; break;
+    case ViewerCommand::PlayPause: playing_ = playing_ ? false : !options_.animations.empty(); break;
+    case ViewerCommand::Record: recordToggled_ = true; break;
+    case ViewerCommand::Escape:  // closes the help, else clears the probe
+        if (showHelp_) showHelp_ = false;
+        else if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
+        break;
+    case ViewerCommand::Quit: window_.requestClose(); break;
     }
+}
+
+// The playlist's keys do nothing without a playlist.
+void Viewer::runPlaylistCommand(ViewerCommand command) {
+    if (!playlist_.active()) return;
+    const std::size_t current = playlist_.current();
+    if (command == ViewerCommand::NextPreset) goToPreset(current + 1);
+    if (command == ViewerCommand::PreviousPreset && current > 0) goToPreset(current - 1);
+    if (command == ViewerCommand::FirstPreset) goToPreset(0);
+    if (command == ViewerCommand::LastPreset) goToPreset(playlist_.size() - 1);
+    if (command == ViewerCommand::ResetPreset) resetPreset();
 }
 
 // --animate: the scene drawn this frame is the document's at the animation's time (looping over the

@@ -9,6 +9,7 @@
 #include "core/scene/animation.hpp"
 #include "core/scene/playlist.hpp"
 #include "core/scene/scene.hpp"
+#include "core/ui/controls.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
@@ -107,6 +108,8 @@ private:
     FrameLayout layout() const;
     void handleInput(const FrameLayout& layout, const std::vector<KeyPress>& keys);
     void handleKeys(const std::vector<KeyPress>& keys);
+    void runCommand(ViewerCommand command);          // what a key of the table (kControls) does
+    void runPlaylistCommand(ViewerCommand command);  // the playlist's keys
     void setUiScale(float uiScale);
     void apply(const PanelRequests& requests);
     void uploadGeometryIfChanged();

@@ -15,8 +15,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -509,7 +511,8 @@ TEST_F(Cli, PlaylistWritesOnePngPerPreset) {
 }
 
 // --playlist NAME: a bare name that is no folder where shadelab runs is the scene folder of that name
-// beside the program (here the checkout's assets/scenes/lecture, for the program in the build folder;
+// beside the program (here, for the program in a build folder, the checkout's assets/scenes/lecture
+// where the build folder is inside the checkout, else the build folder's share/shadelab/scenes/lecture;
 // installed, share/shadelab/scenes/lecture: packaging/check-deb.sh); a folder of that name where it
 // runs comes first; an unknown name says where it was looked for.
 TEST_F(Cli, PlaylistByNameFindsTheScenesBesideTheProgram) {
@@ -531,6 +534,48 @@ TEST_F(Cli, PlaylistByNameFindsTheScenesBesideTheProgram) {
     EXPECT_EQ(unknown.exitCode, 2);
     EXPECT_NE(unknown.err.find("no-such-lecture: no such folder (nor a scene folder of that name beside the program)"),
               std::string::npos) << unknown.err;
+}
+
+// A build folder can be anywhere (issue 27): the build lays out share/shadelab/{shaders,scenes,models}
+// beside the program as an install does (README, "Installing"), each holding what the checkout's
+// folder holds.
+TEST_F(Cli, BuildFolderHoldsTheDataAsAnInstallDoes) {
+    const fs::path data = fs::path(SHADELAB_EXE).parent_path() / "share" / "shadelab";
+    const std::pair<const char*, const char*> folders[] = {{"shaders", "shaders"}, {"scenes", "assets/scenes"}, {"models", "assets/models"}};
+    for (const auto& [staged, source] : folders) {
+        const auto files = [](const fs::path& root) {  // relative path -> contents
+            std::map<std::string, std::string> all;
+            for (const auto& e : fs::recursive_directory_iterator(root))
+                if (e.is_regular_file()) all[fs::relative(e.path(), root).generic_string()] = slurp(e.path());
+            return all;
+        };
+        ASSERT_TRUE(fs::is_directory(data / staged)) << (data / staged) << " is missing";
+        const auto expected = files(fs::path(SHADELAB_SOURCE_DIR) / source);
+        EXPECT_FALSE(expected.empty()) << source;
+        EXPECT_TRUE(files(data / staged) == expected) << (data / staged) << " differs from the checkout's " << source;
+    }
+}
+
+// ... and the program reads its data there, where neither an install's ../share/shadelab nor a
+// checkout's ../assets and ../shaders are: a copy of it in a folder of its own, with a scene folder and
+// shaders beside it, plays that folder by name and draws with those shaders (a broken phong.frag
+// there fails the run, naming the file).
+TEST_F(Cli, ProgramReadsTheDataBesideIt) {
+    const fs::path program = dir_ / "build" / "shadelab";
+    const fs::path data = dir_ / "build" / "share" / "shadelab";
+    fs::create_directories(data / "scenes" / "talk");
+    fs::copy_file(SHADELAB_EXE, program);
+    file("build/share/shadelab/scenes/talk/01-cube.json", R"({"mesh": {"type": "cube"}})");
+    const RunResult played = test::runProgram(program, {"--playlist", "talk", "--output", "slides/", "--size", "32x18"}, dir_, dir_);
+    ASSERT_EQ(played.exitCode, 0) << played.err;
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "slides" / "01-cube.png"));
+
+    fs::copy(fs::path(SHADELAB_SOURCE_DIR) / "shaders", data / "shaders");
+    std::ofstream(data / "shaders" / "phong.frag", std::ios::app) << "#error the phong.frag beside the program is read\n";
+    const RunResult broken = test::runProgram(program, {"--shading", "phong", "--size", "16x16", "--output", "x.png"}, dir_, dir_);
+    EXPECT_EQ(broken.exitCode, 2) << broken.err;
+    EXPECT_NE(broken.err.find("phong.frag"), std::string::npos) << broken.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
 // --captions: each image gets a strip with its title (or file name) and caption below the unchanged

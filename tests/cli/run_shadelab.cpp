@@ -24,9 +24,14 @@ std::string slurp(const std::filesystem::path& p) {
 
 RunResult runShadelab(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                       const std::filesystem::path& captureDir, const std::vector<std::string>& env) {
+    return runProgram(SHADELAB_EXE, args, cwd, captureDir, env);
+}
+
+RunResult runProgram(const std::filesystem::path& program, const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                     const std::filesystem::path& captureDir, const std::vector<std::string>& env) {
     std::string cmd = "cd " + quote(cwd.string()) + " && env -u DISPLAY -u WAYLAND_DISPLAY";
     for (const auto& e : env) cmd += " " + quote(e);
-    cmd += " " + quote(SHADELAB_EXE);
+    cmd += " " + quote(program.string());
     for (const auto& a : args) cmd += " " + quote(a);
     cmd += " >" + quote((captureDir / "stdout").string()) + " 2>" + quote((captureDir / "stderr").string());
     const int status = std::system(cmd.c_str());

@@ -16,6 +16,9 @@ struct RunResult {
 // stdout and stderr are captured through files in `captureDir`. `env`: more NAME=VALUE settings.
 RunResult runShadelab(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                       const std::filesystem::path& captureDir, const std::vector<std::string>& env = {});
+// The same for another copy of the program, at `program`.
+RunResult runProgram(const std::filesystem::path& program, const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                     const std::filesystem::path& captureDir, const std::vector<std::string>& env = {});
 
 std::string slurp(const std::filesystem::path& p);
 

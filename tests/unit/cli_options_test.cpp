@@ -1,10 +1,12 @@
 #include "cli/options.hpp"
 #include "core/base/error.hpp"
+#include "core/ui/controls.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace shadelab;
@@ -406,4 +408,37 @@ TEST(CliOptions, AnimateWritesAVideoOfSeveralAnimations) {
     EXPECT_NE(errorOf({"--animate", "tessellation=8..64"}).find("a tessellation ramp is for videos"), std::string::npos);
     EXPECT_NE(errorOf({"--animate", "light-orbit", "--output", "a.png"}).find("--animate: writes a video"),
               std::string::npos);
+}
+
+// The viewer's key table (core/ui/controls.hpp): the viewer acts on its bindings, and --help, F1 and
+// the panel's Keys section print its rows. Each key does one thing and every command has a key.
+TEST(Controls, EveryCommandHasAKeyAndNoKeyTwoCommands) {
+    std::set<int> commands;
+    std::set<std::pair<int, bool>> keys;  // (key, Ctrl held)
+    std::set<char> characters;
+    for (const Control& c : kControls)
+        for (const KeyBinding& b : c.keys) {
+            if (b.command == ViewerCommand::None) {
+                EXPECT_TRUE(b.characters == nullptr && b.key == ViewerKey::None) << c.input;
+                continue;
+            }
+            commands.insert(int(b.command));
+            EXPECT_TRUE((b.characters != nullptr) != (b.key != ViewerKey::None)) << c.input << ": a character or a key";
+            for (const char* ch = b.characters; ch && *ch; ++ch) EXPECT_TRUE(characters.insert(*ch).second) << c.input << ": " << *ch;
+            for (const bool ctrl : {false, true}) {
+                if (b.key == ViewerKey::None || (b.mods != KeyMods::Any && (b.mods == KeyMods::Ctrl) != ctrl)) continue;
+                EXPECT_TRUE(keys.insert({int(b.key), ctrl}).second) << c.input;
+            }
+        }
+    for (int command = int(ViewerCommand::None) + 1; command <= int(ViewerCommand::Quit); ++command)
+        EXPECT_EQ(commands.count(command), 1u) << "command " << command << " has no key";
+    // The lookups: letters as typed, Ctrl only where a key asks for it, Page Down with or without it.
+    EXPECT_EQ(characterBinding('N')->command, ViewerCommand::FaceNormals);
+    EXPECT_EQ(characterBinding('n')->command, ViewerCommand::VertexNormals);
+    EXPECT_EQ(characterBinding('x'), nullptr);
+    EXPECT_EQ(keyBinding(ViewerKey::Q, true)->command, ViewerCommand::Quit);
+    EXPECT_EQ(keyBinding(ViewerKey::Q, false), nullptr);
+    EXPECT_EQ(keyBinding(ViewerKey::F5, true), nullptr);
+    EXPECT_EQ(keyBinding(ViewerKey::PageDown, true)->command, ViewerCommand::NextPreset);
+    EXPECT_EQ(keyBinding(ViewerKey::PageDown, false)->focus, KeyFocus::UnlessTyping);
 }

@@ -7,10 +7,12 @@
 #include "core/geometry/scene_geometry.hpp"
 #include "test_dir.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -791,6 +793,46 @@ TEST_F(Gltf, TextureTransformFollowsTheExtensionsExample) {
         EXPECT_NEAR(m.texcoords[std::size_t(i)].x, expected[i].x, 1e-6f) << i;
         EXPECT_NEAR(m.texcoords[std::size_t(i)].y, expected[i].y, 1e-6f) << i;
     }
+}
+
+// Which way KHR_texture_transform's rotation turns (issue 27). The spec's formula is uv' = T R S uv with
+// R = [[cos, sin], [-sin, cos]] (rows), the matrix its example needs ("the lower left quadrant ...
+// rotated clockwise 90 degrees", the test above) and that three.js, Babylon.js and Blender use; its
+// GLSL listing, read as GLSL reads a mat3 (column by column), is the transpose, which turns the other
+// way (KhronosGroup/glTF#1563). A 4 x 4 image with a red texel at its top-left and a green one at its
+// top-right, repeated, rotation 90 degrees alone: at the quad's point (u, v) the texel at (v, -u)
+// shows, so the quad shows the image turned 90 degrees clockwise as an image is drawn (v down): red
+// top-right, green bottom-right. Turned the other way, red would be bottom-left; mirrored, green
+// would stay in the top row.
+TEST_F(Gltf, TextureRotationTurnsTheImageClockwise) {
+    Image image(4, 4);
+    std::fill(image.rgba.begin(), image.rgba.end(), std::uint8_t(255));  // white
+    const std::uint8_t red[4] = {255, 0, 0, 255}, green[4] = {0, 255, 0, 255};
+    std::memcpy(image.pixel(0, 0), red, 4);
+    std::memcpy(image.pixel(3, 0), green, 4);
+    writePng((dir_ / "model" / "marks.png").string(), image);
+    Doc d = texturedQuad({{"uri", "marks.png"}});
+    d.j["samplers"][0] = {{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 10497}, {"wrapT", 10497}};  // NEAREST, REPEAT
+    d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+        {"rotation", 1.5707963267948966}};
+    d.j["extensionsUsed"] = json::array({"KHR_texture_transform"});
+    const Mesh m = loadGltf(writeGltf("rotation", d));
+    ASSERT_EQ(m.textures.size(), 1u);
+    ASSERT_EQ(m.texcoords.size(), 4u);
+    // The quad's own coordinates are its x and y (texturedQuad); the transform is affine, so the
+    // coordinates at (u, v) follow from three corners.
+    const glm::vec2 t0 = m.texcoords[0], du = m.texcoords[1] - t0, dv = m.texcoords[3] - t0;
+    const auto shown = [&](int x, int y) {  // the colour at the quad's texel (x, y), row 0 at v = 0
+        const glm::vec3 c = sampleTexture(*m.textures[0], t0 + du * ((float(x) + 0.5f) / 4) + dv * ((float(y) + 0.5f) / 4));
+        return glm::ivec3(glm::round(c * 255.0f));
+    };
+    EXPECT_EQ(shown(3, 0), glm::ivec3(255, 0, 0));  // red: from the top-left to the top-right
+    EXPECT_EQ(shown(3, 3), glm::ivec3(0, 255, 0));  // green: from the top-right to the bottom-right
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            const std::uint8_t* turned = image.pixel(y, 3 - x);  // the image turned 90 degrees clockwise
+            EXPECT_EQ(shown(x, y), glm::ivec3(turned[0], turned[1], turned[2])) << x << ", " << y;
+        }
 }
 
 // A texture that cannot be drawn never stops the model: the part keeps its base colour, with a warning

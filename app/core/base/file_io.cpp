@@ -48,6 +48,12 @@ bool hasExtension(const std::string& path, const std::string& ext) {
 
 bool hasModelExtension(const std::string& path) { return hasExtension(path, ".gltf") || hasExtension(path, ".glb"); }
 
+std::vector<fs::path> dataFoldersBesideProgram(const fs::path& program, const std::string& kind, const std::string& inCheckout) {
+    if (program.empty()) return {};
+    const fs::path bin = program.parent_path();
+    return {bin / ".." / "share" / "shadelab" / kind, bin / ".." / inCheckout, bin / "share" / "shadelab" / kind};
+}
+
 void checkOutputPath(const std::string& path, const std::string& option) {
     if (path.empty()) throw InputError(option + ": empty path");
     std::error_code ec;

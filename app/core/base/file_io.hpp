@@ -3,6 +3,7 @@
 // folder, then rename), so a failed or killed run never leaves a partial file at the output path.
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,6 +18,15 @@ std::string readTextFile(const std::string& path, std::uint64_t maxBytes);
 bool hasModelExtension(const std::string& path);
 // True for names ending in `ext` (with the dot, compared case-insensitively).
 bool hasExtension(const std::string& path, const std::string& ext);
+
+// Where shadelab's data of one kind ("shaders", "scenes") may be for the program at `program`, in the
+// order a lookup tries them: an installed one's PREFIX/share/shadelab/KIND (the program in PREFIX/bin),
+// the checkout's folder `inCheckout` for a program in a build folder inside a checkout (edits there
+// need no build), and a build folder's own share/shadelab/KIND beside the program (the build stages
+// it, linked to the checkout), so a build folder anywhere finds what an install finds. None for an
+// empty `program` (its path unknown).
+std::vector<std::filesystem::path> dataFoldersBesideProgram(const std::filesystem::path& program, const std::string& kind,
+                                                            const std::string& inCheckout);
 
 // Checks, before any work is done, that `path` can become an output file: its folder exists and it is
 // not itself a folder. Throws InputError naming `option` and the path.

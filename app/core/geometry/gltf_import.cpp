@@ -374,7 +374,9 @@ void angleWeightedNormals(const std::vector<glm::vec3>& pos, const std::vector<s
 }
 
 // The texture coordinate transform of KHR_texture_transform: translation * rotation * scale, with the
-// extension's rotation matrix (counter-clockwise in uv with v pointing down).
+// rotation [[cos, sin], [-sin, cos]] by rows: counter-clockwise in uv with v pointing down, so the
+// picture turns clockwise. That is the spec's example, three.js, Babylon.js and Blender; its GLSL
+// listing read by columns is the transpose (KhronosGroup/glTF#1563; tests/unit/gltf_import_test.cpp).
 glm::mat3 textureTransform(const tinygltf::Value& ext) {
     const auto number = [&](const char* key, int i, double fallback) {
         if (!ext.Has(key)) return fallback;

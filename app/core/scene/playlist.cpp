@@ -17,10 +17,8 @@ std::string playlistFolder(const std::string& given) {
     std::error_code ec;
     const bool bareName = !given.empty() && given.find_first_of("/\\") == std::string::npos && given != "." && given != "..";
     if (fs::exists(given, ec) || !bareName) return given;
-    const fs::path exe = platform::executablePath();
-    if (exe.empty()) return given;
-    for (const char* scenes : {"../share/shadelab/scenes", "../assets/scenes"}) {
-        const fs::path folder = exe.parent_path() / scenes / given;
+    for (const fs::path& scenes : dataFoldersBesideProgram(platform::executablePath(), "scenes", "assets/scenes")) {
+        const fs::path folder = scenes / given;
         if (fs::is_directory(folder, ec)) return fs::weakly_canonical(folder, ec).string();
     }
     return given;

@@ -32,9 +32,10 @@ std::vector<std::string> listPresetFiles(const std::string& folder);
 Preset loadPreset(const std::string& path, const SceneAdjust& adjust = {});
 
 // The folder --playlist names: `given` where it exists; else, for a bare name ("lecture"), the scene
-// folder of that name beside the program: an installed shadelab's share/shadelab/scenes/NAME, or a
-// checkout's assets/scenes/NAME for a program in its build folder. Otherwise `given` (listPresetFiles
-// then says it is missing).
+// folder of that name beside the program: an installed shadelab's share/shadelab/scenes/NAME, a
+// checkout's assets/scenes/NAME for a program in a build folder inside it, or a build folder's own
+// share/shadelab/scenes/NAME (dataFoldersBesideProgram). Otherwise `given` (listPresetFiles then says
+// it is missing).
 std::string playlistFolder(const std::string& given);
 
 // Every preset of `folder` (listPresetFiles), all loaded before any is returned: one bad file fails

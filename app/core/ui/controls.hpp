@@ -13,41 +13,114 @@ namespace shadelab {
 
 // --ui-scale and Ctrl+= / Ctrl+-: kUiScaleRange (core/scene/scene_limits.hpp).
 
+// What a key does in the viewer (Viewer::runCommand carries it out).
+enum class ViewerCommand {
+    None,  // an unused binding slot
+    Flat, Gouraud, Phong, Compare, Difference,
+    Wireframe, VertexNormals, FaceNormals, LightMarkers, Formula, ShaderSection,
+    ResetCamera, FrameModel,
+    NextPreset, PreviousPreset, FirstPreset, LastPreset, ResetPreset,  // only while a playlist runs
+    UiLarger, UiSmaller, UiAsMonitor,
+    TogglePanel, Fullscreen, Help, ReloadShaders, Screenshot, PlayPause, Record,
+    Escape,  // close the help, else clear the probe
+    Quit,
+};
+
+// A key without a character, named here so core needs no window library (the viewer maps GLFW's codes).
+// Plus, Minus and Zero are the main keyboard's key or the keypad's.
+enum class ViewerKey {
+    None, Tab, Escape, Backspace, F1, F5, F11, F12, PageDown, PageUp, Right, Left, Home, End, Plus, Minus, Zero, Q, R
+};
+
+enum class KeyMods { None, Ctrl, Any };  // Ctrl not held / held / either (other modifiers are ignored)
+
+// Where a key acts: over the view only (a panel widget holding the keyboard keeps it), or also while
+// a widget has focus unless text is typed (a presenter's remote sends Page Down, Page Up and Esc).
+enum class KeyFocus { View, UnlessTyping };
+
+// One way to trigger a command: typed characters (letters follow the keyboard layout: Q is Q on AZERTY;
+// with Ctrl held there are none) or a key by its code with the modifiers it needs.
+struct KeyBinding {
+    const char* characters = nullptr;  // any of these typed characters ("cC"), or nullptr
+    ViewerKey key = ViewerKey::None;               // else this key
+    KeyMods mods = KeyMods::None;
+    KeyFocus focus = KeyFocus::View;
+    ViewerCommand command = ViewerCommand::None;
+};
+
+constexpr KeyBinding typed(const char* characters, ViewerCommand command) {
+    return KeyBinding{characters, ViewerKey::None, KeyMods::None, KeyFocus::View, command};
+}
+constexpr KeyBinding pressed(ViewerKey key, ViewerCommand command, KeyMods mods = KeyMods::None,
+                             KeyFocus focus = KeyFocus::View) {
+    return KeyBinding{nullptr, key, mods, focus, command};
+}
+
 struct Control {
     const char* input;   // "Page Down / Page Up", "left drag"
     const char* action;  // what it does, in a few words
+    KeyBinding keys[4];  // the keys that do it (none for the mouse's rows)
 };
 
 inline constexpr Control kControls[] = {
-    {"left drag", "orbit around the target"},
-    {"right or middle drag", "pan"},
-    {"wheel", "zoom (a fixed step in and out, at any distance)"},
-    {"left click", "probe the pixel: N, V, I, R, H and every term"},
-    {"drag a light marker", "move the light (Shift: along the view axis)"},
-    {"drop a file", "open a .json scene or a .gltf / .glb model"},
-    {"1  2  3", "flat / Gouraud / Phong in a single pane"},
-    {"C", "compare: flat | Gouraud | Phong"},
-    {"D", "difference: A | B | |A - B| x factor"},
-    {"W", "wireframe"},
-    {"N   Shift+N", "vertex normals / face normals"},
-    {"L", "light markers"},
-    {"E", "the formula over the view (the term --show isolates highlighted)"},
-    {"S", "the shader's GLSL in the panel (Shader section), terms marked"},
-    {"R   F", "reset the camera to the scene's / frame the model"},
-    {"Page Down  Page Up  (Right  Left)", "playlist: next / previous preset"},
-    {"Home  End", "playlist: first / last preset"},
-    {"Backspace", "playlist: reset the preset (reload its file)"},
-    {"Ctrl+=  Ctrl+-  Ctrl+0", "UI scale larger / smaller / as the monitor's"},
-    {"Tab", "hide / show the panel (projector view)"},
-    {"F11", "fullscreen on / off"},
-    {"F1  or  ?", "this help on / off"},
-    {"F5", "reload the shaders (errors show, the picture stays)"},
-    {"F12", "screenshot of the 3D view (timestamped PNG)"},
-    {"Space", "play / pause the --animate animation"},
-    {"Ctrl+R", "record the 3D view to a timestamped MP4 / stop"},
-    {"Esc", "close the help, clear the probe, leave a text field"},
-    {"Q  or  Ctrl+Q", "quit"},
+    {"left drag", "orbit around the target", {}},
+    {"right or middle drag", "pan", {}},
+    {"wheel", "zoom (a fixed step in and out, at any distance)", {}},
+    {"left click", "probe the pixel: N, V, I, R, H and every term", {}},
+    {"drag a light marker", "move the light (Shift: along the view axis)", {}},
+    {"drop a file", "open a .json scene or a .gltf / .glb model", {}},
+    {"1  2  3", "flat / Gouraud / Phong in a single pane",
+     {typed("1", ViewerCommand::Flat), typed("2", ViewerCommand::Gouraud), typed("3", ViewerCommand::Phong)}},
+    {"C", "compare: flat | Gouraud | Phong", {typed("cC", ViewerCommand::Compare)}},
+    {"D", "difference: A | B | |A - B| x factor", {typed("dD", ViewerCommand::Difference)}},
+    {"W", "wireframe", {typed("wW", ViewerCommand::Wireframe)}},
+    {"N   Shift+N", "vertex normals / face normals",
+     {typed("n", ViewerCommand::VertexNormals), typed("N", ViewerCommand::FaceNormals)}},
+    {"L", "light markers", {typed("lL", ViewerCommand::LightMarkers)}},
+    {"E", "the formula over the view (the term --show isolates highlighted)", {typed("eE", ViewerCommand::Formula)}},
+    {"S", "the shader's GLSL in the panel (Shader section), terms marked", {typed("sS", ViewerCommand::ShaderSection)}},
+    {"R   F", "reset the camera to the scene's / frame the model",
+     {typed("rR", ViewerCommand::ResetCamera), typed("fF", ViewerCommand::FrameModel)}},
+    {"Page Down  Page Up  (Right  Left)", "playlist: next / previous preset",
+     {pressed(ViewerKey::PageDown, ViewerCommand::NextPreset, KeyMods::Any, KeyFocus::UnlessTyping),
+      pressed(ViewerKey::PageUp, ViewerCommand::PreviousPreset, KeyMods::Any, KeyFocus::UnlessTyping),
+      pressed(ViewerKey::Right, ViewerCommand::NextPreset), pressed(ViewerKey::Left, ViewerCommand::PreviousPreset)}},
+    {"Home  End", "playlist: first / last preset",
+     {pressed(ViewerKey::Home, ViewerCommand::FirstPreset), pressed(ViewerKey::End, ViewerCommand::LastPreset)}},
+    {"Backspace", "playlist: reset the preset (reload its file)", {pressed(ViewerKey::Backspace, ViewerCommand::ResetPreset)}},
+    {"Ctrl+=  Ctrl+-  Ctrl+0", "UI scale larger / smaller / as the monitor's",
+     {pressed(ViewerKey::Plus, ViewerCommand::UiLarger, KeyMods::Ctrl),
+      pressed(ViewerKey::Minus, ViewerCommand::UiSmaller, KeyMods::Ctrl),
+      pressed(ViewerKey::Zero, ViewerCommand::UiAsMonitor, KeyMods::Ctrl)}},
+    {"Tab", "hide / show the panel (projector view)", {pressed(ViewerKey::Tab, ViewerCommand::TogglePanel)}},
+    {"F11", "fullscreen on / off", {pressed(ViewerKey::F11, ViewerCommand::Fullscreen)}},
+    {"F1  or  ?", "this help on / off", {pressed(ViewerKey::F1, ViewerCommand::Help), typed("?", ViewerCommand::Help)}},
+    {"F5", "reload the shaders (errors show, the picture stays)", {pressed(ViewerKey::F5, ViewerCommand::ReloadShaders)}},
+    {"F12", "screenshot of the 3D view (timestamped PNG)", {pressed(ViewerKey::F12, ViewerCommand::Screenshot)}},
+    {"Space", "play / pause the --animate animation", {typed(" ", ViewerCommand::PlayPause)}},
+    {"Ctrl+R", "record the 3D view to a timestamped MP4 / stop", {pressed(ViewerKey::R, ViewerCommand::Record, KeyMods::Ctrl)}},
+    {"Esc", "close the help, clear the probe, leave a text field",
+     {pressed(ViewerKey::Escape, ViewerCommand::Escape, KeyMods::Any, KeyFocus::UnlessTyping)}},
+    {"Q  or  Ctrl+Q", "quit", {typed("qQ", ViewerCommand::Quit), pressed(ViewerKey::Q, ViewerCommand::Quit, KeyMods::Ctrl)}},
 };
+
+// The binding of a typed character, or nullptr.
+inline const KeyBinding* characterBinding(unsigned character) {
+    for (const Control& c : kControls)
+        for (const KeyBinding& b : c.keys)
+            for (const char* ch = b.characters; ch && *ch; ++ch)
+                if (static_cast<unsigned char>(*ch) == character) return &b;
+    return nullptr;
+}
+
+// The binding of a key pressed with Ctrl held or not, or nullptr.
+inline const KeyBinding* keyBinding(ViewerKey key, bool ctrl) {
+    if (key == ViewerKey::None) return nullptr;
+    for (const Control& c : kControls)
+        for (const KeyBinding& b : c.keys)
+            if (b.key == key && (b.mods == KeyMods::Any || (b.mods == KeyMods::Ctrl) == ctrl)) return &b;
+    return nullptr;
+}
 
 // The table as aligned text lines ("  Tab        hide / show the panel"), for --help.
 inline std::string controlsText(const char* indent = "  ") {
