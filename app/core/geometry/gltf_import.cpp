@@ -710,8 +710,8 @@ std::uint32_t GltfReader::appendIndices(std::vector<std::uint32_t>&& tris, std::
 }
 
 // The part of the indices from `firstIndex` on, with the material's base colour (glTF's default is
-// white); consecutive primitives of one colour share a part, so a many-primitive model does not cost
-// a draw call per primitive.
+// white) and sidedness; consecutive primitives of one colour and sidedness share a part, so a
+// many-primitive model does not cost a draw call per primitive.
 void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot,
                          const std::vector<glm::mat4>& instances) {
     MeshPart part;
@@ -722,10 +722,12 @@ void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textur
         const auto& f = model_.materials[std::size_t(materialIndex)].pbrMetallicRoughness.baseColorFactor;
         if (f.size() >= 3)
             part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
+        part.doubleSided = model_.materials[std::size_t(materialIndex)].doubleSided;
     }
     part.texture = textureSlot;
     part.instances = instances;
     if (!out_->parts.empty() && out_->parts.back().baseColor == part.baseColor && out_->parts.back().texture == part.texture &&
+        out_->parts.back().doubleSided == part.doubleSided &&
         out_->parts.back().instances.empty() && part.instances.empty() &&
         out_->parts.back().firstIndex + out_->parts.back().indexCount == part.firstIndex)
         out_->parts.back().indexCount += part.indexCount;
@@ -957,6 +959,8 @@ Mesh GltfReader::read() {
     }
     info_.meshes = int(model_.meshes.size());
     info_.materials = int(model_.materials.size());
+    info_.doubleSidedMaterials = int(std::count_if(model_.materials.begin(), model_.materials.end(),
+                                                   [](const tinygltf::Material& m) { return m.doubleSided; }));
     info_.vertices = mesh_.positions.size();
     info_.textures = int(mesh_.textures.size());
     // TRIANGLES primitives of every mesh, each counted once (what the file holds, drawn or not).
@@ -1319,6 +1323,8 @@ std::string describe(const std::string& path, const GltfInfo& i) {
     s += "nodes: " + std::to_string(i.nodes) + " (in the drawn scene)\n";
     s += "meshes: " + std::to_string(i.meshes) + "\n";
     s += "materials: " + std::to_string(i.materials) + "\n";
+    if (i.doubleSidedMaterials > 0)
+        s += "double-sided materials: " + std::to_string(i.doubleSidedMaterials) + " (both sides drawn, the back lit with its normal flipped)\n";
     s += "textures: " + std::to_string(i.textures) + " base colour image" + (i.textures == 1 ? "" : "s") + " drawn\n";
     s += "primitives: " + std::to_string(i.primitives) + " drawn\n";
     s += "triangles: " + std::to_string(i.fileTriangles) + " in the file's TRIANGLES primitives, " +
