@@ -94,6 +94,7 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
     if (variant.textured) defines.push_back("SL_TEXTURED 1");
     if (variant.instanced) defines.push_back("SL_INSTANCED 1");
+    if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");
     const std::string name = toString(mode);  // flat.vert + flat.frag, …
     const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ ? "flat_packed" : name;
     std::string key = vertex;

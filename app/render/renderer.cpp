@@ -121,16 +121,20 @@ std::string Renderer::glRenderer() const { return reinterpret_cast<const char*>(
 std::string Renderer::glVersion() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
 
 void Renderer::preparePrograms(const Scene& scene) {
-    bool textured = false;
-    for (std::size_t o = 0; o < meshes_.objects(); ++o) textured = textured || (meshes_.variesColor(o) && scene.textures);
-    for (bool t : {false, true}) {
-        if (t && !textured) break;
-        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
-            programs_.get(mode, scene, {false, false, t, false});
-        // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
-        if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && mayInterpolate())
-            programs_.get(ShadingMode::Phong, scene, {false, true, t, false});
+    bool textured = false, doubleSided = false;
+    for (std::size_t o = 0; o < meshes_.objects(); ++o) {
+        textured = textured || (meshes_.variesColor(o) && scene.textures);
+        for (const MeshPart& part : meshes_.parts(o)) doubleSided = doubleSided || part.doubleSided;
     }
+    for (bool t : {false, true})
+        for (bool d : {false, true}) {
+            if ((t && !textured) || (d && !doubleSided)) continue;
+            for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+                programs_.get(mode, scene, {false, false, t, false, d});
+            // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
+            if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && mayInterpolate())
+                programs_.get(ShadingMode::Phong, scene, {false, true, t, false, d});
+        }
 }
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
@@ -190,7 +194,8 @@ std::vector<Renderer::Draw> Renderer::drawList(const Scene& scene) const {
         for (std::size_t p = 0; p < meshes_.parts(o).size(); ++p) {
             const MeshPart& part = meshes_.parts(o)[p];
             Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
-                   (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
+                   (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1,
+                   part.doubleSided};
             if (part.instances.empty()) draws.push_back(d);
             for (; g < groups.size() && groups[g].part == p; ++g) {
                 d.instances = int(g);
@@ -287,14 +292,22 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
     const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
     std::vector<char> inputs(objects, 0);
     for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
-    GLuint programs[2][2][2] = {}, current = 0;  // [interpolated inputs][textured][instanced]
+    GLuint programs[2][2][2][2] = {}, current = 0;  // [interpolated inputs][textured][instanced][double-sided]
+    bool culling = true;  // beginPanes enabled it
     for (std::size_t d = 0; d < draws.size(); ++d) {
         const Draw& draw = draws[d];
         if (draw.count == 0) continue;
         const bool instanced = draw.instances >= 0;
-        GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0][instanced ? 1 : 0];
-        if (!variant) variant = programs_.get(pane.mode, scene, {accumulate, inputs[draw.object] != 0, draw.textured, instanced});
+        GLuint& variant = programs[inputs[draw.object] ? 1 : 0][draw.textured ? 1 : 0][instanced ? 1 : 0][draw.doubleSided ? 1 : 0];
+        if (!variant)
+            variant = programs_.get(pane.mode, scene,
+                                    {accumulate, inputs[draw.object] != 0, draw.textured, instanced, draw.doubleSided});
         if (variant != current) glUseProgram(current = variant);
+        if (culling == draw.doubleSided) {  // glTF's doubleSided: both faces drawn (the shaders light the back)
+            culling = !draw.doubleSided;
+            if (culling) glEnable(GL_CULL_FACE);
+            else glDisable(GL_CULL_FACE);
+        }
         if (draw.textured) {
             const GLuint texture = meshes_.texture(draw.object, draw.texture);
             glActiveTexture(GL_TEXTURE0 + SL_TEXTURE_BASE_COLOR);
@@ -319,6 +332,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
         glDrawElementsInstanced(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
                                 reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)), group.count);
     }
+    if (!culling) glEnable(GL_CULL_FACE);
 }
 
 void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, const RenderTarget& target,

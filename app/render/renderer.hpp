@@ -86,6 +86,7 @@ private:
         bool textured;         // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
         int texture;           // the part's slot in Mesh::textures, or -1
         int instances;         // SL_INSTANCED: index into meshes_.instanceGroups(object); -1: drawn once
+        bool doubleSided;      // SL_DOUBLE_SIDED: the part's glTF material is double-sided, drawn without culling
     };
     std::vector<Draw> drawList(const Scene& scene) const;
     void renderShadowMaps(const Scene& scene, const std::vector<Draw>& draws);
