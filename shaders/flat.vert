@@ -23,6 +23,11 @@ flat out vec3 v_color;
 void main() {
     vec3 centroidWorld = (worldFromObject() * vec4(a_centroidObject, 1.0)).xyz;
     vec3 faceNrmWorld = normalize(normalToWorld(a_faceNrmObject));
+#if SL_DOUBLE_SIDED
+    // glTF's doubleSided: the eye sees the triangle's back when it is behind the triangle's plane
+    // (for a planar triangle, exactly what gl_FrontFacing says); the back is lit with -N.
+    if (dot(faceNrmWorld, u_eyeWorld.xyz - centroidWorld) < 0.0) faceNrmWorld = -faceNrmWorld;
+#endif
 #if SL_TEXTURED
     v_termsOfC = shadeLectureTermsOfC(centroidWorld, faceNrmWorld);
     v_specular = shadeLectureSpecular(centroidWorld, faceNrmWorld);

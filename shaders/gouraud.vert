@@ -14,6 +14,17 @@ out vec3 v_specular;  // sum v L_l k_s S spec_l
 #else
 out vec3 v_color;
 #endif
+#if SL_DOUBLE_SIDED
+// glTF's doubleSided: a vertex cannot know which side of its triangles the eye sees, so, as OpenGL's
+// fixed-function two-sided lighting did (GL_LIGHT_MODEL_TWO_SIDE), the formula is evaluated for N
+// and for -N, and gouraud.frag picks by gl_FrontFacing.
+#if SL_TEXTURED
+out vec3 v_termsOfCBack;  // the same with -N
+out vec3 v_specularBack;
+#else
+out vec3 v_colorBack;
+#endif
+#endif
 
 void main() {
     vec4 posWorld = worldFromObject() * vec4(a_posObject, 1.0);
@@ -24,6 +35,12 @@ void main() {
     passObjectColor();
 #else
     v_color = shadeLecture(posWorld.xyz, nrmWorld, vec3(1.0));
+#endif
+#if SL_DOUBLE_SIDED && SL_TEXTURED
+    v_termsOfCBack = shadeLectureTermsOfC(posWorld.xyz, -nrmWorld);
+    v_specularBack = shadeLectureSpecular(posWorld.xyz, -nrmWorld);
+#elif SL_DOUBLE_SIDED
+    v_colorBack = shadeLecture(posWorld.xyz, -nrmWorld, vec3(1.0));
 #endif
     gl_Position = u_clipFromWorld * posWorld;
 }

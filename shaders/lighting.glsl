@@ -54,6 +54,13 @@
 #define SL_EMISSIVE 0  // 1: the draw gives off light, E > 0 (only such draws get the define)
 #endif
 vec3 objectEmission();  // E at this point (shaders/object_color.glsl)
+// SL_DOUBLE_SIDED = 1: a draw of a glTF material with "doubleSided": true, drawn without back-face
+// culling. glTF's rule: the back of a surface is lit as a surface facing the other way, with its
+// normal flipped. Each mode flips where it knows which side the eye sees: phong.frag per fragment,
+// flat.vert per triangle, gouraud.vert evaluates both sides and gouraud.frag picks one.
+#ifndef SL_DOUBLE_SIDED
+#define SL_DOUBLE_SIDED 0
+#endif
 
 // Per light, from the renderer's lists (comma-separated, one entry per light; a scene without lights
 // gets one placeholder entry that the loop over the lights never reads).

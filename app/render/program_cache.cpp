@@ -100,6 +100,7 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.alphaMode == SL_ALPHA_BLEND) defines.push_back("SL_ALPHA_MODE SL_ALPHA_BLEND");
     if (variant.emissive) defines.push_back("SL_EMISSIVE 1");
     if (variant.emissive && variant.emissiveTexture && variant.textured) defines.push_back("SL_EMISSIVE_TEXTURE 1");
+    if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");
     const std::string name = toString(mode);  // flat.vert + flat.frag, …
     const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ ? "flat_packed" : name;
     std::string key = vertex;

@@ -16,9 +16,11 @@ class ProgramCache {
 public:
     // The switches of one draw: a progressive pass (SL_ACCUMULATE), Phong's interpolated inputs
     // (SL_INTERPOLATED_INPUTS), a colour that varies over the surface (SL_TEXTURED), GPU instances
-    // (SL_INSTANCED).
+    // (SL_INSTANCED), a double-sided glTF material (SL_DOUBLE_SIDED: not culled, the back lit with
+    // its normal flipped; single-sided draws get the programs they had before it existed).
     struct Variant {
         bool accumulate = false, interpolatedInputs = false, textured = false, instanced = false;
+        bool doubleSided = false;  // SL_DOUBLE_SIDED: a back face lit with its normal flipped
         // What a glTF material adds (shaders/object_color.glsl): SL_ALPHA_MODE, and E with or without its texture.
         int alphaMode = SL_ALPHA_OPAQUE;
         bool emissive = false, emissiveTexture = false;

@@ -32,7 +32,8 @@ void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
 // A program variant as a number, for the per-pane lookup in drawPane.
 unsigned variantKey(const ProgramCache::Variant& v) {
     return unsigned(v.accumulate) | unsigned(v.interpolatedInputs) << 1 | unsigned(v.textured) << 2 |
-           unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 | unsigned(v.emissiveTexture) << 7;
+           unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 | unsigned(v.emissiveTexture) << 7 |
+           unsigned(v.doubleSided) << 8;
 }
 
 void bindTexture(int unit, GLuint texture) {
@@ -138,16 +139,20 @@ std::string Renderer::glRenderer() const { return reinterpret_cast<const char*>(
 std::string Renderer::glVersion() const { return reinterpret_cast<const char*>(glGetString(GL_VERSION)); }
 
 void Renderer::preparePrograms(const Scene& scene) {
-    bool textured = false;
-    for (std::size_t o = 0; o < meshes_.objects(); ++o) textured = textured || (meshes_.variesColor(o) && scene.textures);
-    for (bool t : {false, true}) {
-        if (t && !textured) break;
-        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
-            programs_.get(mode, scene, {false, false, t, false});
-        // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
-        if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && mayInterpolate())
-            programs_.get(ShadingMode::Phong, scene, {false, true, t, false});
+    bool textured = false, doubleSided = false;
+    for (std::size_t o = 0; o < meshes_.objects(); ++o) {
+        textured = textured || (meshes_.variesColor(o) && scene.textures);
+        for (const MeshPart& part : meshes_.parts(o)) doubleSided = doubleSided || part.doubleSided;
     }
+    for (bool t : {false, true})
+        for (bool d : {false, true}) {
+            if ((t && !textured) || (d && !doubleSided)) continue;
+            for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+                programs_.get(mode, scene, {false, false, t, false, d});
+            // Zooming can switch a Phong draw to the other variant (interpolatesInputs): build it too.
+            if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && mayInterpolate())
+                programs_.get(ShadingMode::Phong, scene, {false, true, t, false, d});
+        }
 }
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
@@ -202,6 +207,7 @@ Renderer::Draw Renderer::partDraw(const Scene& scene, std::size_t o, std::size_t
     const bool textured = meshes_.variesColor(o) && scene.textures && !m.colorSet;
     Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
            (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
+    d.doubleSided = part.doubleSided;  // the surface's, whatever colour it is drawn in
     if (m.colorSet) return d;
     d.alpha = part.baseAlpha;
     d.alphaMode = part.alphaMode;
@@ -348,11 +354,12 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
     std::map<unsigned, GLuint> programs;  // by variantKey()
     GLuint current = 0;
     bool blending = false;
+    bool culling = true;  // beginPanes enabled it
     for (std::size_t d = 0; d < draws.size(); ++d) {
         const Draw& draw = draws[d];
         if (draw.count == 0) continue;
         const bool instanced = draw.instances >= 0;
-        ProgramCache::Variant v{accumulate, inputs[draw.object] != 0, draw.textured, instanced};
+        ProgramCache::Variant v{accumulate, inputs[draw.object] != 0, draw.textured, instanced, draw.doubleSided};
         // A progressive pass sums its samples: blended parts are drawn in it as if opaque.
         v.alphaMode = draw.alphaMode == AlphaMode::Mask ? SL_ALPHA_MASK
                       : draw.alphaMode == AlphaMode::Blend && !accumulate ? SL_ALPHA_BLEND : SL_ALPHA_OPAQUE;
@@ -361,6 +368,11 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
         GLuint& variant = programs[variantKey(v)];
         if (!variant) variant = programs_.get(pane.mode, scene, v);
         if (variant != current) glUseProgram(current = variant);
+        if (culling == draw.doubleSided) {  // glTF's doubleSided: both faces drawn (the shaders light the back)
+            culling = !draw.doubleSided;
+            if (culling) glEnable(GL_CULL_FACE);
+            else glDisable(GL_CULL_FACE);
+        }
         if (v.alphaMode == SL_ALPHA_BLEND && !blending) {
             // The blended draws come last (drawList): over what is behind them, tested against its
             // depth but leaving it as it is, so the ones behind still show through.
@@ -394,6 +406,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
         glDisable(GL_BLEND);
         glDepthMask(GL_TRUE);
     }
+    if (!culling) glEnable(GL_CULL_FACE);
 }
 
 void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, const RenderTarget& target,

@@ -86,6 +86,7 @@ private:
         bool textured;         // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
         int texture;           // the part's slot in Mesh::textures, or -1
         int instances;         // SL_INSTANCED: index into meshes_.instanceGroups(object); -1: drawn once
+        bool doubleSided = false;              // SL_DOUBLE_SIDED: the part's glTF material is double-sided, drawn without culling
         // What a glTF material adds (shaders/object_color.glsl; none where the scene sets the colour).
         float alpha = 1.0f;                    // the base colour factor's alpha
         AlphaMode alphaMode = AlphaMode::Opaque;

@@ -272,6 +272,7 @@ bool probeSection(const Scene& scene, const ProbeResult& probe) {
                 probe.anchor.triangle);
     const glm::vec3& p = probe.posWorld;
     ImGui::Text("P (%.3f, %.3f, %.3f)", double(p.x), double(p.y), double(p.z));
+    if (probe.backFace) ImGui::TextWrapped("back face of a double-sided material: lit with N flipped");
     const bool difference = probe.modes.size() == 2;
     for (std::size_t k = 0; k < probe.modes.size(); ++k) {
         ImGui::PushID(int(k));

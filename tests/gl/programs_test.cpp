@@ -92,6 +92,33 @@ TEST_F(GlContext, EverySpecialisationCompiles) {
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// glTF's doubleSided (SL_DOUBLE_SIDED) with every other switch of a draw, in each mode, flat's packed
+// vertices included: Gouraud evaluates the formula twice per vertex (for N and -N), so the largest
+// case is 16 shadowed lights of every kind; Phong's interpolated inputs take at most
+// SL_MAX_INTERPOLATED_LIGHTS lights.
+TEST_F(GlContext, DoubleSidedVariantsCompile) {
+    Scene few, many;
+    many.lights.assign(SL_MAX_LIGHTS, Light{});
+    for (std::size_t l = 0; l < many.lights.size(); ++l) many.lights[l].type = LightType(l % 4);
+    many.shadows.enabled = true;
+    using Variant = ProgramCache::Variant;
+    const Variant variants[] = {{false, false, false, false, true}, {false, false, true, false, true},
+                                {false, false, true, true, true}, {true, false, false, false, true},
+                                {false, true, true, false, true}};
+    for (bool packed : {false, true}) {
+        ProgramCache cache{ShaderLibrary(), packed};
+        for (const Scene* scene : {&few, &many})
+            for (const Variant& v : variants)
+                for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+                    if (v.interpolatedInputs && (mode != ShadingMode::Phong || scene == &many)) continue;
+                    if (packed && mode != ShadingMode::Flat) continue;
+                    SCOPED_TRACE(std::string(toString(mode)) + (packed ? " packed" : ""));
+                    EXPECT_NE(cache.get(mode, *scene, v), 0u);
+                }
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 // Scenes that use none of issue 6's switches get exactly the defines (so the programs) they had before.
 TEST(ProgramDefines, DefaultScenesAreNotSpecialisedForTheLectureSwitches) {
     Scene scene;

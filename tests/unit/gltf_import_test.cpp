@@ -391,6 +391,31 @@ TEST_F(Gltf, BaseColourOfEachPrimitiveBecomesAPart) {
     EXPECT_EQ(m.parts[0].baseColor, glm::vec3(0.25f, 0.5f, 0.75f));
 }
 
+// glTF's material.doubleSided becomes the part's: both primitives draw the same quad in the same
+// colour, so they would share a part but for their sidedness. --info counts the double-sided materials.
+TEST_F(Gltf, DoubleSidedIsReadPerMaterialAndKeepsPartsApart) {
+    Doc d;
+    d.j["materials"] = json::parse(R"([{"doubleSided": true}, {"doubleSided": false}, {}])");
+    const json primitive = d.j["meshes"][0]["primitives"][0];
+    d.j["meshes"][0]["primitives"] = json::array();
+    for (int material : {0, 0, 1, 2}) {
+        json p = primitive;
+        p["material"] = material;
+        d.j["meshes"][0]["primitives"].push_back(p);
+    }
+    GltfInfo info;
+    const Mesh m = loadGltf(writeGltf("double_sided", d), &info);
+    ASSERT_EQ(m.parts.size(), 2u);  // materials 0, 0 | 1, 2 (false, and the default false)
+    EXPECT_TRUE(m.parts[0].doubleSided);
+    EXPECT_EQ(m.parts[0].indexCount, 12u);
+    EXPECT_FALSE(m.parts[1].doubleSided);
+    EXPECT_EQ(m.parts[1].firstIndex, 12u);
+    EXPECT_EQ(info.doubleSidedMaterials, 1);
+    EXPECT_NE(describe("m.gltf", info).find("double-sided materials: 1"), std::string::npos) << describe("m.gltf", info);
+    // Procedural meshes have no parts: single-sided, culled as always.
+    EXPECT_TRUE(makeProceduralMesh(MeshSpec{}).parts.empty());
+}
+
 // Every model of ../shared/assets/gltf loads, with the triangle counts of that folder's README:
 // "Triangles" (TRIANGLES primitives, each counted once) and "drawn" (each mesh instance, plus the
 // triangles of strips and fans, which the README lists separately).

@@ -98,6 +98,39 @@ TEST(RayCast, MirroredObjectKeepsItsFrontFace) {
     EXPECT_FALSE(caster.nearestFrontFace({-1.5f, 0.2f, -5.0f}, {0, 0, 1}, 0.0f, kInf));
 }
 
+// A double-sided part (glTF's doubleSided) is drawn from both sides: a ray from behind hits it and
+// says so, mirrored or not; a single-sided object beside it is still culled from behind.
+TEST(RayCast, DoubleSidedPartsAreHitFromBehind) {
+    Mesh twoSided = unitTriangle();
+    MeshPart part;
+    part.indexCount = 3;
+    part.doubleSided = true;
+    twoSided.parts = {part};
+    Transform beside, mirror;
+    beside.translation = {5, 0, 0};
+    mirror.scale = {-1, 1, 1};
+    mirror.translation = {-5, 0, 0};  // corners (-5,0,0), (-7,0,0), (-5,2,0)
+    const TestScene t = sceneOf({twoSided, unitTriangle(), twoSided}, {Transform{}, beside, mirror});
+    const SceneRayCaster caster(t.scene, t.geometry);
+    auto hit = caster.nearestFrontFace({0.5f, 0.25f, 5.0f}, {0, 0, -1}, 0.0f, kInf);
+    ASSERT_TRUE(hit);
+    EXPECT_FALSE(hit->backFace);
+    hit = caster.nearestFrontFace({0.5f, 0.25f, -5.0f}, {0, 0, 1}, 0.0f, kInf);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->object, 0u);
+    EXPECT_TRUE(hit->backFace);
+    EXPECT_NEAR(hit->t, 5.0f, 1e-6f);
+    EXPECT_NEAR(hit->barycentric.y, 0.25f, 1e-6f);
+    EXPECT_FALSE(caster.nearestFrontFace({5.5f, 0.25f, -5.0f}, {0, 0, 1}, 0.0f, kInf));  // single-sided: culled
+    hit = caster.nearestFrontFace({-5.5f, 0.25f, -5.0f}, {0, 0, 1}, 0.0f, kInf);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->object, 2u);
+    EXPECT_TRUE(hit->backFace);  // mirrored: the front still faces +z
+    hit = caster.nearestFrontFace({-5.5f, 0.25f, 5.0f}, {0, 0, -1}, 0.0f, kInf);
+    ASSERT_TRUE(hit);
+    EXPECT_FALSE(hit->backFace);
+}
+
 namespace {
 
 // The plain loop the hierarchy must agree with: Möller-Trumbore on every triangle, culling back faces
@@ -390,6 +423,51 @@ TEST(Probe, ShadowsAreARayCastTowardTheLight) {
     EXPECT_NEAR(glm::length(shaded.modes[0].color - 0.1f * glm::vec3(0.8f, 0.4f, 0.2f)), 0.0f, 1e-6f);
 }
 
+// planeScene turned upside down: the eye and the light below the plane, which faces +y. Single-sided,
+// its back is culled (the probe misses); double-sided, it is lit as a plane facing -y, in every mode:
+// colour = C (0.1 + N.I) with N = (0, -1, 0), as planeScene's is with +y.
+TEST(Probe, BackOfADoubleSidedPartIsEvaluatedWithTheNormalFlipped) {
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+        SCOPED_TRACE(toString(mode));
+        Scene s = planeScene(mode);
+        s.camera.eye = {0, -5, 0};
+        s.camera.up = {0, 0, 1};
+        s.lights[0].position = {1, -1, 1};
+        SceneGeometry g = buildSceneGeometry(s);
+        EXPECT_TRUE(probePixel(s, g, SceneRayCaster(s, g), 65, 40).miss) << "single-sided: culled";
+        MeshPart part;
+        part.indexCount = std::uint32_t(g.meshes[0].indices.size());
+        part.doubleSided = true;
+        g.meshes[0].parts = {part};
+        const ProbeResult r = probePixel(s, g, SceneRayCaster(s, g), 65, 40);
+        ASSERT_FALSE(r.miss);
+        EXPECT_TRUE(r.doubleSided);
+        EXPECT_TRUE(r.backFace);
+        const ModeProbe& m = r.modes[0];
+        glm::vec3 expected(0.0f);
+        for (std::size_t k = 0; k < m.evaluations.size(); ++k) {
+            const ProbeEvaluation& e = m.evaluations[k];
+            EXPECT_NEAR(glm::length(e.nrmWorld - glm::vec3(0, -1, 0)), 0.0f, 1e-6f);
+            const float nDotI = glm::dot(glm::vec3(0, -1, 0), glm::normalize(s.lights[0].position - e.posWorld));
+            EXPECT_NEAR(e.lights[0].nDotI, nDotI, 1e-6f);
+            EXPECT_GT(nDotI, 0.3f);
+            const glm::vec3 c = glm::vec3(0.8f, 0.4f, 0.2f) * (0.1f + nDotI);
+            EXPECT_NEAR(glm::length(e.terms.total - c), 0.0f, 1e-6f);
+            expected += (m.evaluations.size() == 3 ? r.anchor.barycentric[int(k)] : 1.0f) * c;
+        }
+        EXPECT_NEAR(glm::length(m.color - expected), 0.0f, 1e-5f);
+        const auto j = nlohmann::json::parse(probeToJson(s, r));
+        EXPECT_EQ(j["double_sided"], true);
+        EXPECT_EQ(j["back_face"], true);
+        // From above, the same part is seen from the front: nothing flipped.
+        const Scene above = planeScene(mode);
+        const ProbeResult front = probePixel(above, g, SceneRayCaster(above, g), 65, 40);
+        EXPECT_FALSE(front.backFace);
+        EXPECT_NEAR(glm::length(front.modes[0].evaluations[0].nrmWorld - glm::vec3(0, 1, 0)), 0.0f, 1e-6f);
+        EXPECT_EQ(nlohmann::json::parse(probeToJson(above, front))["back_face"], false);
+    }
+}
+
 TEST(Probe, JsonHasTheTermsOfTheResult) {
     const Scene s = planeScene(ShadingMode::Gouraud);
     const ProbeResult r = probePlane(s);
@@ -415,6 +493,7 @@ TEST(Probe, JsonHasTheTermsOfTheResult) {
     EXPECT_NEAR(j["position"][0].get<float>(), p.x, 1e-5f);
     EXPECT_NEAR(j["position"][2].get<float>(), p.z, 1e-5f);
     EXPECT_EQ(j["output_8bit"], nlohmann::json::array({r.output8.x, r.output8.y, r.output8.z}));
+    EXPECT_FALSE(j.contains("back_face"));  // a single-sided part is always seen from the front
 
     Scene background = s;
     background.camera.eye = {0, 5, 100};  // far away and low: pixel (65, 40) looks over the plane

@@ -33,7 +33,7 @@ const std::set<std::string>& builtins() {
     static const std::set<std::string> b = {"dot", "normalize", "max", "min", "pow", "clamp", "mix", "abs", "sqrt",
                                             "inversesqrt", "texture", "length", "cross", "reflect", "floor", "fract",
                                             "step", "smoothstep", "exp", "log", "sign", "transpose", "inverse",
-                                            "gl_Position", "gl_FragCoord", "gl_InstanceID", "gl_VertexID"};
+                                            "gl_Position", "gl_FragCoord", "gl_FrontFacing", "gl_InstanceID", "gl_VertexID"};
     return b;
 }
 

@@ -744,7 +744,8 @@ namespace {
 // Parts that look the same: consecutive primitives like these share one draw.
 bool sameLook(const MeshPart& a, const MeshPart& b) {
     return a.baseColor == b.baseColor && a.texture == b.texture && a.baseAlpha == b.baseAlpha && a.alphaMode == b.alphaMode &&
-           a.alphaCutoff == b.alphaCutoff && a.emissive == b.emissive && a.emissiveTexture == b.emissiveTexture;
+           a.alphaCutoff == b.alphaCutoff && a.emissive == b.emissive && a.emissiveTexture == b.emissiveTexture &&
+           a.doubleSided == b.doubleSided;
 }
 
 // KHR_materials_emissive_strength's factor (1 without it; a negative or non-finite one is ignored).
@@ -759,7 +760,7 @@ float emissiveStrength(const tinygltf::Material& m) {
 }  // namespace
 
 // The part of the indices from `firstIndex` on, with the material's base colour (glTF's default is
-// white), alpha and emission; consecutive primitives that look the same share a part, so a
+// white), alpha, emission and sidedness; consecutive primitives that look the same share a part, so a
 // many-primitive model does not cost a draw call per primitive.
 void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot, int emissiveSlot,
                          const std::vector<glm::mat4>& instances) {
@@ -779,6 +780,7 @@ void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textur
         const auto& e = m.emissiveFactor;
         if (e.size() >= 3 && std::isfinite(e[0]) && std::isfinite(e[1]) && std::isfinite(e[2]))
             part.emissive = glm::clamp(glm::vec3(float(e[0]), float(e[1]), float(e[2])), 0.0f, 1.0f) * emissiveStrength(m);
+        part.doubleSided = m.doubleSided;
     }
     part.texture = textureSlot;
     part.emissiveTexture = emissiveSlot;
@@ -1015,6 +1017,8 @@ Mesh GltfReader::read() {
     }
     info_.meshes = int(model_.meshes.size());
     info_.materials = int(model_.materials.size());
+    info_.doubleSidedMaterials = int(std::count_if(model_.materials.begin(), model_.materials.end(),
+                                                   [](const tinygltf::Material& m) { return m.doubleSided; }));
     info_.vertices = mesh_.positions.size();
     info_.textures = int(mesh_.textures.size());
     // TRIANGLES primitives of every mesh, each counted once (what the file holds, drawn or not).
@@ -1377,6 +1381,8 @@ std::string describe(const std::string& path, const GltfInfo& i) {
     s += "nodes: " + std::to_string(i.nodes) + " (in the drawn scene)\n";
     s += "meshes: " + std::to_string(i.meshes) + "\n";
     s += "materials: " + std::to_string(i.materials) + "\n";
+    if (i.doubleSidedMaterials > 0)
+        s += "double-sided materials: " + std::to_string(i.doubleSidedMaterials) + " (both sides drawn, the back lit with its normal flipped)\n";
     s += "textures: " + std::to_string(i.textures) + " base colour image" + (i.textures == 1 ? "" : "s") + " drawn\n";
     s += "primitives: " + std::to_string(i.primitives) + " drawn\n";
     s += "triangles: " + std::to_string(i.fileTriangles) + " in the file's TRIANGLES primitives, " +

@@ -34,6 +34,7 @@ struct GltfInfo {
     int nodes = 0;              // nodes visited in the drawn scene
     int meshes = 0;             // meshes in the file
     int materials = 0;          // materials in the file
+    int doubleSidedMaterials = 0;  // of those, how many are doubleSided (drawn from both sides)
     int primitives = 0;         // primitives drawn (instances counted each time)
     std::size_t fileTriangles = 0;  // TRIANGLES primitives of all meshes, each counted once
     std::size_t triangles = 0;  // triangles drawn: every instance, strips and fans included

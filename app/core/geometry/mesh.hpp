@@ -33,6 +33,9 @@ struct MeshPart {
     // emissive texture (sRGB, read at Mesh::emissiveTexcoords) where it has one.
     glm::vec3 emissive{0.0f};
     int emissiveTexture = -1;           // index into Mesh::textures; -1: none
+    // glTF's material.doubleSided: drawn from both sides, a back face lit with its normal flipped
+    // (no back-face culling for this part). False: back faces are culled, as for procedural meshes.
+    bool doubleSided = false;
     // Drawn once per transform (a glTF node's EXT_mesh_gpu_instancing instances, in an instanced
     // draw), each applied to the part's vertices in object space; empty: drawn once as it is.
     std::vector<glm::mat4> instances;

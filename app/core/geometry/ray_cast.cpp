@@ -28,6 +28,7 @@ float boxEntry(const glm::vec3& lo, const glm::vec3& hi, const glm::vec3& origin
 
 struct RayTriangle {
     float t, u, v;  // the point origin + t * direction = (1 - u - v) a + u b + v c
+    float det;      // > 0: the counter-clockwise side faces the ray's origin
 };
 
 // Möller-Trumbore against the triangle a, a + edge1, a + edge2. det = -dot(direction, edge1 x edge2)
@@ -38,6 +39,7 @@ bool intersect(const glm::vec3& a, const glm::vec3& edge1, const glm::vec3& edge
     const glm::vec3 p = glm::cross(direction, edge2);
     const float det = glm::dot(edge1, p);
     if (det == 0.0f || det * frontSign < 0.0f) return false;  // edge-on, or a culled back face
+    out.det = det;
     // The bounds give a millionth of slack: without it, rounding lets a ray through a shared edge or
     // vertex miss both triangles (Möller-Trumbore is not watertight).
     constexpr float slack = 1e-6f;
@@ -51,6 +53,17 @@ bool intersect(const glm::vec3& a, const glm::vec3& edge1, const glm::vec3& edge
     return true;
 }
 
+// Per triangle of the mesh: whether its part is double-sided (both faces drawn).
+std::vector<bool> doubleSidedTriangles(const Mesh& mesh) {
+    std::vector<bool> out(mesh.triangleCount(), false);
+    for (const MeshPart& part : mesh.parts) {
+        if (!part.doubleSided) continue;
+        const std::size_t end = std::min(out.size(), (std::size_t(part.firstIndex) + part.indexCount) / 3);
+        for (std::size_t t = part.firstIndex / 3; t < end; ++t) out[t] = true;
+    }
+    return out;
+}
+
 }  // namespace
 
 SceneRayCaster::SceneRayCaster(const Scene& scene, const SceneGeometry& geometry) {
@@ -59,13 +72,14 @@ SceneRayCaster::SceneRayCaster(const Scene& scene, const SceneGeometry& geometry
         const Mesh& mesh = geometry.meshes[o];
         const glm::mat4 world = worldFromObject(scene.objects[o].transform);
         const float frontSign = glm::determinant(glm::mat3(world)) < 0.0f ? -1.0f : 1.0f;
+        const std::vector<bool> doubleSided = doubleSidedTriangles(mesh);
         std::vector<glm::vec3> posWorld(mesh.positions.size());
         for (std::size_t i = 0; i < posWorld.size(); ++i) posWorld[i] = glm::vec3(world * glm::vec4(mesh.positions[i], 1.0f));
         for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
             const glm::vec3& a = posWorld[mesh.indices[3 * t]];
             const glm::vec3& b = posWorld[mesh.indices[3 * t + 1]];
             const glm::vec3& c = posWorld[mesh.indices[3 * t + 2]];
-            triangles_.push_back({a, b - a, c - a, std::uint32_t(o), std::uint32_t(t), frontSign});
+            triangles_.push_back({a, b - a, c - a, std::uint32_t(o), std::uint32_t(t), frontSign, bool(doubleSided[t])});
         }
     }
     if (triangles_.empty()) return;
@@ -158,10 +172,11 @@ std::optional<TriangleHit> SceneRayCaster::nearestFrontFace(const glm::vec3& ori
     std::optional<TriangleHit> best;
     traverse(origin, direction, tMin, tMax, [&](const Triangle& tri) {
         RayTriangle h;
-        if (!intersect(tri.a, tri.edge1, tri.edge2, origin, direction, tri.frontSign, h) || h.t < tMin || h.t > tMax)
+        if (!intersect(tri.a, tri.edge1, tri.edge2, origin, direction, tri.doubleSided ? 0.0f : tri.frontSign, h) ||
+            h.t < tMin || h.t > tMax)
             return false;
         tMax = h.t;
-        best = TriangleHit{tri.object, tri.triangle, h.t, glm::vec3(1.0f - h.u - h.v, h.u, h.v)};
+        best = TriangleHit{tri.object, tri.triangle, h.t, glm::vec3(1.0f - h.u - h.v, h.u, h.v), h.det * tri.frontSign < 0.0f};
         return false;  // a nearer one may follow
     });
     return best;

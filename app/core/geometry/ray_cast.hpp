@@ -20,6 +20,7 @@ struct TriangleHit {
     std::size_t triangle = 0;     // triangle of that object's mesh: indices[3t], [3t+1], [3t+2]
     float t = 0.0f;               // ray parameter: the point is origin + t * direction
     glm::vec3 barycentric{0.0f};  // weights of those three corners (sum 1)
+    bool backFace = false;        // the ray hit the back of a double-sided part (MeshPart::doubleSided)
 };
 
 class SceneRayCaster {
@@ -30,8 +31,9 @@ public:
     SceneRayCaster(const Scene& scene, const SceneGeometry& geometry);
 
     // The nearest triangle the rasteriser draws along the ray: its front face toward the ray (back
-    // faces are culled; a mirroring transform flips which side is the front, as in the renderer), at
-    // a ray parameter in [tMin, tMax].
+    // faces are culled; a mirroring transform flips which side is the front, as in the renderer), or
+    // either face of a double-sided part (not culled; TriangleHit::backFace says which), at a ray
+    // parameter in [tMin, tMax].
     std::optional<TriangleHit> nearestFrontFace(const glm::vec3& origin, const glm::vec3& direction, float tMin,
                                                 float tMax) const;
     // True when any triangle, either face (the shadow pass draws both), is hit at t in (tMin, tMax).
@@ -47,6 +49,7 @@ private:
         glm::vec3 a, edge1, edge2;  // world space: corners a, a + edge1, a + edge2 in index order
         std::uint32_t object, triangle;
         float frontSign;            // +1: counter-clockwise corners face the viewer; -1 under a mirroring transform
+        bool doubleSided;           // its part is double-sided: both faces are hit
     };
     struct Node {
         glm::vec3 lo, hi;           // bounds of everything below

@@ -30,6 +30,7 @@ struct TriangleContext {
     glm::vec3 nrmObject[3];
     std::uint32_t vertex[3];
     glm::vec3 barycentric;
+    float facing = 1.0f;  // -1: the back of a double-sided part, where every normal is flipped (glTF)
     // Where C varies (SL_TEXTURED): the material with the base colour alone, and the texel (texture x
     // vertex colour) the fragment multiplies it by. Flat and Gouraud evaluate with the former and
     // combine per fragment as shaders/object_color.glsl does; Phong evaluates with `material`.
@@ -112,7 +113,7 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         const glm::vec3 nrm = w.x * (c.normalWorldFromObject * c.nrmObject[0]) +
                               w.y * (c.normalWorldFromObject * c.nrmObject[1]) +
                               w.z * (c.normalWorldFromObject * c.nrmObject[2]);
-        m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), glm::normalize(nrm)));
+        m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), c.facing * glm::normalize(nrm)));
         m.color = m.evaluations[0].terms.total;
         break;
     }
@@ -121,7 +122,7 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         glm::vec3 termsOfC(0.0f), specular(0.0f);
         for (int k = 0; k < 3; ++k) {
             ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, c.posObject[k]),
-                                         glm::normalize(c.normalWorldFromObject * c.nrmObject[k]));
+                                         c.facing * glm::normalize(c.normalWorldFromObject * c.nrmObject[k]));
             e.site = ProbeEvaluation::Site::Vertex;
             e.vertex = c.vertex[k];
             m.color += w[k] * e.terms.total;
@@ -138,7 +139,8 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         // both taken to world space by flat.vert.
         const glm::vec3 centroid = (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f;
         const glm::vec3 face = faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
-        ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid), glm::normalize(c.normalWorldFromObject * face));
+        ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid),
+                                     c.facing * glm::normalize(c.normalWorldFromObject * face));
         e.site = ProbeEvaluation::Site::Centroid;
         m.color = e.terms.total;
         if (c.baseMaterial) {
@@ -169,6 +171,15 @@ const MeshPart* partOf(const Mesh& mesh, std::size_t triangle) {
     for (const MeshPart& part : mesh.parts)
         if (index >= part.firstIndex && index < std::size_t(part.firstIndex) + part.indexCount) return &part;
     return nullptr;
+}
+
+// Whether the eye sees the back of the triangle: its face normal (to world space as normals go,
+// so a mirroring transform keeps the outside) points away from the eye. For a planar triangle this
+// is the rasteriser's gl_FrontFacing, wherever on the triangle it is asked.
+bool seenFromBehind(const TriangleContext& c, const glm::vec3& eyeWorld) {
+    const glm::vec3 face = c.normalWorldFromObject * faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
+    const glm::vec3 centroid = toWorld(c.worldFromObject, (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f);
+    return glm::dot(face, eyeWorld - centroid) < 0.0f;
 }
 
 // The material the renderer draws a triangle with: a glTF part's base colour unless the scene set one.
@@ -207,7 +218,9 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
     const Mesh& mesh = geometry.meshes[anchor.object];
     r.material = drawnMaterial(scene, mesh, anchor.object, anchor.triangle);
     Material baseMaterial = r.material;
-    const MeshPart* part = scene.objects[anchor.object].material.colorSet ? nullptr : partOf(mesh, anchor.triangle);
+    const MeshPart* triangles = partOf(mesh, anchor.triangle);
+    // The glTF material's alpha and E: none where the scene's colour replaces it (Renderer::partDraw).
+    const MeshPart* part = scene.objects[anchor.object].material.colorSet ? nullptr : triangles;
     if (part) r.alphaMode = part->alphaMode, r.alpha = part->baseAlpha, r.alphaCutoff = part->alphaCutoff;
     const LightingEnvironment env = lightingEnvironment(scene);
     const glm::mat4 world = worldFromObject(scene.objects[anchor.object].transform);
@@ -217,6 +230,11 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
         c.posObject[k] = mesh.positions[c.vertex[k]];
         c.nrmObject[k] = mesh.normals[c.vertex[k]];
     }
+    // A double-sided part seen from behind is lit with its normals flipped; a single-sided one is
+    // culled there (the ray cast does not find it), so its facing is not asked.
+    r.doubleSided = triangles && triangles->doubleSided;
+    r.backFace = r.doubleSided && seenFromBehind(c, scene.camera.eye);
+    c.facing = r.backFace ? -1.0f : 1.0f;
     // Where C varies, the sampled C: the base colour times the texture and the vertex colour at the
     // point (object_color.glsl), with the coordinates and colours interpolated by the barycentrics.
     if (mesh.variesColor() && scene.textures && !scene.objects[anchor.object].material.colorSet) {

@@ -5,6 +5,7 @@
 //   gouraud  at the triangle's three corners with their vertex normals (gouraud.vert), the three
 //            clamped colours then weighted by the point's perspective-correct barycentrics;
 //   flat     once, at the triangle's centroid with its face normal (flat.vert, FlatMesh).
+// On the back of a double-sided part every normal is flipped, as the shaders do (SL_DOUBLE_SIDED).
 // The numbers are the CPU reference's (core/shading/lighting.hpp, shadeTerms), so the probe's total is the
 // rendered pixel (tests/gl/probe_test.cpp checks that). With shadows on, the occlusion term v(p, I)
 // is a ray cast on the CPU toward each light sample, the lecture's own definition; the renderer uses
@@ -89,6 +90,8 @@ struct ProbeResult {
     // The probe reports the surface it hits; it does not composite a blended one over what is behind.
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alpha = 1.0f, alphaCutoff = 0.5f;
+    bool doubleSided = false;  // the point's part is double-sided (a glTF material's doubleSided)
+    bool backFace = false;     // and the eye sees its back: every mode evaluates with N flipped (glTF's rule)
     // One mode; the diff layout's difference pane: its two modes (diff.a, diff.b).
     std::vector<ModeProbe> modes;
     glm::ivec3 output8{0};     // the pixel: the mode's value, the difference pane's |a - b| * factor, or the background

@@ -144,6 +144,10 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
     j["triangle"] = r.anchor.triangle;
     j["barycentric"] = vec(r.anchor.barycentric);
     j["position"] = vec(r.posWorld);
+    if (r.doubleSided) {  // only for double-sided parts: a single-sided part is seen from the front
+        j["double_sided"] = true;
+        j["back_face"] = r.backFace;  // true: every N below is the surface's normal flipped
+    }
     j["eye"] = vec(scene.camera.eye);
     j["reflection"] = toString(scene.reflection);
     j["specular_normalization"] = toString(scene.specularNormalization);
