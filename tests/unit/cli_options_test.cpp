@@ -442,3 +442,18 @@ TEST(Controls, EveryCommandHasAKeyAndNoKeyTwoCommands) {
     EXPECT_EQ(keyBinding(ViewerKey::PageDown, true)->command, ViewerCommand::NextPreset);
     EXPECT_EQ(keyBinding(ViewerKey::PageDown, false)->focus, KeyFocus::UnlessTyping);
 }
+
+// --output-encoding sets the scene's output_encoding as the field does, so a glTF scene keeps it
+// (frameIfNeeded's sRGB default applies only where neither says).
+TEST(CliOptions, OutputEncodingIsTheScenesField) {
+    Scene s;
+    applyOverrides(s, parseOptions({"--output-encoding", "linear"}));
+    EXPECT_EQ(s.outputEncoding, OutputEncoding::Linear);
+    EXPECT_TRUE(s.outputEncodingGiven);
+    applyOverrides(s, parseOptions({"--output-encoding=srgb"}));
+    EXPECT_EQ(s.outputEncoding, OutputEncoding::Srgb);
+    Scene untouched;
+    applyOverrides(untouched, parseOptions({}));
+    EXPECT_FALSE(untouched.outputEncodingGiven);
+    EXPECT_NE(errorOf({"--output-encoding", "gamma"}).find("--output-encoding: unknown value \"gamma\""), std::string::npos);
+}
