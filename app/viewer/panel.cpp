@@ -137,7 +137,8 @@ void sectionShading(Scene& scene) {
     combo("Fresnel", scene.fresnel, kFresnel);
     if (scene.fresnel != FresnelMode::None) iorSlider(scene);
     // Term isolation: each addend of the formula alone.
-    static const char* const kTerms[] = {"all", "ambient", "diffuse", "specular", "one light", "unlit C"};
+    static const char* const kTerms[] = {"all", "ambient", "diffuse", "specular", "one light", "unlit C", "emissive E"};  // by ShowTerm
+    static_assert(std::size(kTerms) == std::size(kShowTermNames), "a label for every ShowTerm");
     combo("show", scene.show.term, kTerms);
     if (scene.show.term == ShowTerm::Light) {
         const int last = std::max(int(scene.lights.size()) - 1, 0);
