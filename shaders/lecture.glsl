@@ -4,7 +4,8 @@
 //   L = k_a A C + sum_l L_l ( k_d C max(0, N.I_l) + k_s S max(0, R(I_l).V)^k_e )
 //
 // Flat shading evaluates it once per triangle, Gouraud once per vertex, Phong once per fragment:
-// the three modes call lecture() below and differ only in where. What this program adds around it
+// the three modes reach lecture() below through lighting.glsl's shade() and differ only in where
+// they call it. What this program adds around it
 // (distance falloff, spot cones, shadows, area lights, Fresnel, showing one term) is in lighting.glsl.
 #include "specialisation.glsl"
 

@@ -23,6 +23,8 @@ vec3 ambientLight();                  // A
 vec3 toEye(vec3 P);                   // from P towards the eye (not unit length)
 vec3 objectEmission();                // E at this point (shaders/object_color.glsl)
 
+// ==== What this program adds to the lecture's sum (lecture.glsl, included above) ====
+
 // ---- L_l arriving: distance, spot cone, shadow ----
 
 // The distance falloff at squared distance r2 (core/shading/lighting.cpp, attenuationFactor).
