@@ -1,4 +1,3 @@
-#include "lighting.glsl"
 #include "object_color.glsl"
 
 #if SL_TEXTURED

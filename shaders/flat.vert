@@ -2,6 +2,7 @@
 // Each triangle's provoking (last) vertex carries those (FlatMesh in app/core/geometry/mesh.hpp); `flat` makes
 // the whole triangle take that vertex's colour.
 #include "lighting.glsl"
+#include "values_from_blocks.glsl"
 #include "object_color.glsl"
 #include "instancing.glsl"
 
@@ -33,7 +34,7 @@ void main() {
     v_specular = shadeLectureSpecular(centroidWorld, faceNrmWorld);
     passObjectColor();
 #else
-    v_color = shadeLecture(centroidWorld, faceNrmWorld, vec3(1.0));
+    v_color = shadeLecture(centroidWorld, faceNrmWorld);
 #endif
     gl_Position = u_clipFromWorld * (worldFromObject() * vec4(a_posObject, 1.0));
 }

@@ -1,6 +1,7 @@
 // Gouraud shading: the colour is evaluated at each vertex with its vertex normal; the rasterizer
 // interpolates the colours (perspective-correct) across the triangle.
 #include "lighting.glsl"
+#include "values_from_blocks.glsl"
 #include "object_color.glsl"
 #include "instancing.glsl"
 
@@ -34,13 +35,13 @@ void main() {
     v_specular = shadeLectureSpecular(posWorld.xyz, nrmWorld);
     passObjectColor();
 #else
-    v_color = shadeLecture(posWorld.xyz, nrmWorld, vec3(1.0));
+    v_color = shadeLecture(posWorld.xyz, nrmWorld);
 #endif
 #if SL_DOUBLE_SIDED && SL_TEXTURED
     v_termsOfCBack = shadeLectureTermsOfC(posWorld.xyz, -nrmWorld);
     v_specularBack = shadeLectureSpecular(posWorld.xyz, -nrmWorld);
 #elif SL_DOUBLE_SIDED
-    v_colorBack = shadeLecture(posWorld.xyz, -nrmWorld, vec3(1.0));
+    v_colorBack = shadeLecture(posWorld.xyz, -nrmWorld);
 #endif
     gl_Position = u_clipFromWorld * posWorld;
 }

@@ -14,7 +14,11 @@
 // Alpha: the same product of the base colour factor's, the texel's and COLOR_0's alphas (objectAlpha).
 // E: emissiveFactor x strength (u_emissive) times the emissive texture at its own coordinates
 // (objectEmission), added to the lecture's sum: L = E + k_a A C + sum ... (shaders/lighting.glsl).
-#include "shared_defs.glsl"
+// And, in the fragment stage, the colour a fragment writes (fragmentColor) and glTF's double-sided
+// surfaces (facingNormal).
+#include "specialisation.glsl"
+#include "uniforms.glsl"
+#include "encoding.glsl"
 
 #ifndef SL_TEXTURED
 #define SL_TEXTURED 0
@@ -78,4 +82,14 @@ vec3 combineTerms(vec3 termsOfC, vec3 specular) {
 float outputAlpha() { return SL_ALPHA_MODE == SL_ALPHA_BLEND ? objectAlpha() : 1.0; }
 // glTF's MASK: a fragment whose alpha is below the cutoff is not there (a cut-out).
 bool cutOut() { return SL_ALPHA_MODE == SL_ALPHA_MASK && objectAlpha() < u_alphaCutoff.x; }
+// glTF's doubleSided (SL_DOUBLE_SIDED): a fragment on the back of its triangle is lit as a surface
+// facing the other way, with N flipped; every other surface keeps N.
+vec3 facingNormal(vec3 N) { return SL_DOUBLE_SIDED == 1 && !gl_FrontFacing ? -N : N; }
+// What a fragment writes for the linear L before the clamp: L clamped to [0, 1] and encoded, with the
+// object's alpha. A pass of progressive sampling (SL_ACCUMULATE) writes L itself, summed with the
+// other passes' in a float buffer; shaders/resolve.frag clamps and encodes the mean.
+vec4 fragmentColor(vec3 L) {
+    if (SL_ACCUMULATE == 1) return vec4(L, 1.0);
+    return vec4(encodeOutput(clamp(L, 0.0, 1.0)), outputAlpha());
+}
 #endif

@@ -16,7 +16,7 @@
 #define SL_BINDING_OBJECT 1        // ObjectBlock: transform and material, one per object
 
 #define SL_MAX_LIGHTS 16
-#define SL_MAX_INTERPOLATED_LIGHTS 3  // Phong's interpolated inputs fit GL 3.3's 60 varying components (phong_interface.glsl)
+#define SL_MAX_INTERPOLATED_LIGHTS 3  // Phong's interpolated inputs fit GL 3.3's 60 varying components (phong_interpolated.vert)
 #define SL_TEXTURE_SHADOW_MAPS 0       // u_shadowMaps: point, spot and directional lights' layers (shaders/shadows.glsl)
 #define SL_TEXTURE_AREA_SHADOW_MAPS 1  // u_areaShadowMaps: area lights' layers
 #define SL_TEXTURE_BASE_COLOR 2        // u_baseColorTexture (shaders/object_color.glsl)

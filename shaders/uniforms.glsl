@@ -41,11 +41,6 @@ layout(std140) uniform ObjectBlock {
     vec4 u_color;                  // rgb: C; a: its alpha (glTF's base colour factor)
     vec4 u_specularColor;          // rgb: S
     vec4 u_coefficients;           // k_a, k_d, k_s, k_e
-    // The products the formula needs, folded on the CPU: llvmpipe re-reads every uniform for each
-    // fragment invocation, so fewer reads are a faster Phong frame (bench/README.md, "Next steps").
-    vec4 u_ambientTerm;                      // rgb: k_a A C
-    vec4 u_lightDiffuse[SL_MAX_LIGHTS];      // rgb: L_l k_d C (L_l: light l's colour x intensity)
-    vec4 u_lightSpecular[SL_MAX_LIGHTS];     // rgb: L_l k_s S
     // What a glTF material adds (shaders/object_color.glsl); u_color.a is the base colour factor's alpha.
     vec4 u_emissive;                         // rgb: E's factor (emissiveFactor x emissive strength)
     vec4 u_alphaCutoff;                      // x: MASK's cutoff

@@ -54,9 +54,6 @@ struct ObjectBlock {
     float color[4];
     float specularColor[4];
     float coefficients[4];  // ka, kd, ks, ke
-    float ambientTerm[4];                    // ka A C
-    float lightDiffuse[SL_MAX_LIGHTS][4];    // L_l kd C
-    float lightSpecular[SL_MAX_LIGHTS][4];   // L_l ks S
     float emissive[4];                       // E's factor
     float alphaCutoff[4];                    // MASK's cutoff
 };
@@ -64,11 +61,8 @@ static_assert(offsetof(ObjectBlock, normalWorldFromObject) == 64, "std140 offset
 static_assert(offsetof(ObjectBlock, color) == 128, "std140 offset");
 static_assert(offsetof(ObjectBlock, specularColor) == 144, "std140 offset");
 static_assert(offsetof(ObjectBlock, coefficients) == 160, "std140 offset");
-static_assert(offsetof(ObjectBlock, ambientTerm) == 176, "std140 offset");
-static_assert(offsetof(ObjectBlock, lightDiffuse) == 192, "std140 offset");
-static_assert(offsetof(ObjectBlock, lightSpecular) == 192 + 16 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(offsetof(ObjectBlock, emissive) == 192 + 32 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(offsetof(ObjectBlock, alphaCutoff) == 208 + 32 * SL_MAX_LIGHTS, "std140 offset");
-static_assert(sizeof(ObjectBlock) == 224 + 32 * SL_MAX_LIGHTS, "std140 size");
+static_assert(offsetof(ObjectBlock, emissive) == 176, "std140 offset");
+static_assert(offsetof(ObjectBlock, alphaCutoff) == 192, "std140 offset");
+static_assert(sizeof(ObjectBlock) == 208, "std140 size");
 
 }  // namespace shadelab::gpu

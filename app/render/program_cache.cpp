@@ -92,7 +92,6 @@ ProgramCache::ProgramCache(ShaderLibrary shaders, bool packedFlatVertices)
 GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& variant) {
     std::vector<std::string> defines = programDefines(scene);
     if (variant.accumulate) defines.push_back("SL_ACCUMULATE 1");
-    if (variant.interpolatedInputs && mode == ShadingMode::Phong) defines.push_back("SL_INTERPOLATED_INPUTS 1");
     if (variant.textured) defines.push_back("SL_TEXTURED 1");
     if (variant.instanced) defines.push_back("SL_INSTANCED 1");
     // Only draws that use them get these: an opaque draw without E compiles to the programs it always did.
@@ -101,7 +100,10 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.emissive) defines.push_back("SL_EMISSIVE 1");
     if (variant.emissive && variant.emissiveTexture && variant.textured) defines.push_back("SL_EMISSIVE_TEXTURE 1");
     if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");
-    const std::string name = toString(mode);  // flat.vert + flat.frag, …
+    // flat.vert + flat.frag, …; the speed variants are programs of their own (shaders/flat_packed.vert,
+    // shaders/phong_interpolated.vert and .frag).
+    const bool interpolated = variant.interpolatedInputs && mode == ShadingMode::Phong;
+    const std::string name = interpolated ? std::string("phong_interpolated") : toString(mode);
     const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ ? "flat_packed" : name;
     std::string key = vertex;
     for (const std::string& d : defines) key += ";" + d;

@@ -15,7 +15,7 @@ namespace shadelab {
 class ProgramCache {
 public:
     // The switches of one draw: a progressive pass (SL_ACCUMULATE), Phong's interpolated inputs
-    // (SL_INTERPOLATED_INPUTS), a colour that varies over the surface (SL_TEXTURED), GPU instances
+    // (the program phong_interpolated instead of phong), a colour that varies over the surface (SL_TEXTURED), GPU instances
     // (SL_INSTANCED), a double-sided glTF material (SL_DOUBLE_SIDED: not culled, the back lit with
     // its normal flipped; single-sided draws get the programs they had before it existed).
     struct Variant {

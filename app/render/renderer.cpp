@@ -81,9 +81,10 @@ gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
 }
 
 // `color` is the draw's C: the material's, or a glTF part's base colour; `alpha`, `emissive` and
-// `alphaCutoff` what a glTF material adds.
+// `alphaCutoff` what a glTF material adds. The shaders form the formula's products themselves
+// (shaders/lecture.glsl reads k_a, k_d, k_s, k_e, C and S as the slide names them).
 gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, float alpha, const glm::vec3& emissive,
-                             float alphaCutoff, const Scene& scene) {
+                             float alphaCutoff) {
     gpu::ObjectBlock b{};
     const glm::mat4 world = worldFromObject(o.transform);
     const glm::mat4 normal = glm::mat4(normalWorldFromObject(world));
@@ -97,13 +98,6 @@ gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, float
     b.coefficients[1] = o.material.kd;
     b.coefficients[2] = o.material.ks;
     b.coefficients[3] = o.material.ke;
-    copyVec(b.ambientTerm, o.material.ka * scene.ambient * color);
-    const std::size_t count = std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS);
-    for (std::size_t l = 0; l < count; ++l) {
-        const glm::vec3 radiance = scene.lights[l].color * scene.lights[l].intensity;
-        copyVec(b.lightDiffuse[l], radiance * o.material.kd * color);
-        copyVec(b.lightSpecular[l], radiance * o.material.ks * o.material.specularColor);
-    }
     return b;
 }
 
@@ -302,7 +296,7 @@ void Renderer::stageUniforms(const Scene& scene, const std::vector<Pane>& panes,
     }
     for (std::size_t d = 0; d < draws.size(); ++d)
         uniforms_->setObject(d, objectBlock(scene.objects[draws[d].object], draws[d].color, draws[d].alpha, draws[d].emissive,
-                                            draws[d].alphaCutoff, scene));
+                                            draws[d].alphaCutoff));
     uniforms_->upload();
 }
 

@@ -7,10 +7,12 @@ namespace shadelab {
 // How a renderer is tuned for the way it is used (a one-off frame, the viewer, a benchmark, a test
 // that compares two paths). Given at construction; the pictures are the same whatever the choice.
 struct RendererOptions {
-    // Where Phong draws read the per-object products and the vectors to the eye and the lights
-    // (shaders/phong_interface.glsl): Auto picks interpolated inputs for a draw whose triangles
-    // cover at least kInputsMinPixelsPerTriangle pixels each (bounding box on screen / front-facing
-    // triangles), the uniform blocks otherwise. The other two force one path (tests compare them).
+    // Which program Phong draws use: Uniform, phong.vert and phong.frag, which read the formula's
+    // values from the uniform blocks (the files the viewer's Shader view lists, so the viewer uses
+    // these); Interpolated, the speed variant shaders/phong_interpolated.vert and .frag, which get
+    // them as inputs from the vertex stage; Auto (headless frames) picks the variant for a draw whose
+    // triangles cover at least kInputsMinPixelsPerTriangle pixels each (bounding box on screen /
+    // front-facing triangles), the blocks otherwise. Tests compare the two.
     enum class PhongInputs { Auto, Interpolated, Uniform };
     PhongInputs phongInputs = PhongInputs::Auto;
 

@@ -33,10 +33,14 @@ namespace shadelab {
 namespace {
 
 // The viewer draws its meshes every frame: reordering them for the driver's vertex cache once, at
-// upload, pays for itself within a few frames (Renderer::MeshOrder).
+// upload, pays for itself within a few frames (Renderer::MeshOrder). It draws the programs the Shader
+// view lists (phong.vert and phong.frag, not the interpolated-inputs variant; flat.vert, not the
+// packed one), so F5 after an edit of those files changes the picture (bench/README.md, issue 28:
+// what that costs a coarse mesh's Phong frame).
 std::unique_ptr<Renderer> makeRenderer(const ShaderLibrary& shaders) {
     RendererOptions options;
     options.meshOrder = RendererOptions::MeshOrder::VertexCache;  // many frames of one mesh
+    options.phongInputs = RendererOptions::PhongInputs::Uniform;  // the readable phong.frag
     auto renderer = std::make_unique<Renderer>(glfwGetProcAddress, shaders, options);
     return renderer;
 }

@@ -731,7 +731,7 @@ TEST_F(Cli, ShaderCompileErrorsNameTheirLines) {
     // number there; the include step's line numbers keep it).
     fs::copy(fs::path(SHADELAB_SOURCE_DIR) / "shaders", dir_ / "shaders");
     const std::string lighting = slurp(dir_ / "shaders" / "lighting.glsl");
-    const std::string code = "float spec = pow(max(cosLobe, 0.0), specularExponent());";
+    const std::string code = "a = distanceFalloff(l, dot(d, d));";
     const std::size_t at = lighting.find(code);
     ASSERT_NE(at, std::string::npos);
     const int line = 1 + int(std::count(lighting.begin(), lighting.begin() + std::ptrdiff_t(at), '\n'));

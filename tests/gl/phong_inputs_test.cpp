@@ -1,5 +1,6 @@
-// Phong's two ways to reach the formula's per-object values (shaders/phong_interface.glsl): the
-// uniform blocks, or inputs interpolated from the vertex stage. The renderer picks one per draw by
+// Phong's two programs: phong.vert/.frag read the formula's values from the uniform blocks
+// (shaders/values_from_blocks.glsl), the speed variant phong_interpolated.vert/.frag gets them as
+// inputs from the vertex stage. The renderer picks one per draw by
 // triangle density; both must draw the same picture, whatever the lights, shadows, reflection model
 // or term shown, and the choice must follow the density.
 //

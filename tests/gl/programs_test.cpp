@@ -141,9 +141,9 @@ TEST_F(GlContext, EveryProgramLinksAndMatchesTheSharedDefinitions) {
     scene.lights[2].type = LightType::Directional;
     scene.reflection = ReflectionModel::Phong;
     scene.outputEncoding = OutputEncoding::Srgb;
-    for (const char* vertex : {"flat", "flat_packed", "gouraud", "phong"}) {
+    for (const char* vertex : {"flat", "flat_packed", "gouraud", "phong", "phong_interpolated"}) {
         SCOPED_TRACE(vertex);
-        const std::string name = std::string(vertex).substr(0, std::string(vertex).find('_'));
+        const std::string name = std::string(vertex) == "flat_packed" ? "flat" : vertex;
         const gl::Program p = buildProgram(name, library, programDefines(scene), vertex);
         ASSERT_TRUE(p);
         if (std::string(vertex) == "flat") {  // three vec3s (MeshCache::gpuMesh)

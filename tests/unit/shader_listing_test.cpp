@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -32,10 +33,14 @@ GlslToken tokenOf(const GlslLine& line, const std::string& text) {
 
 }  // namespace
 
-TEST(ShaderListing, EachModeRunsItsStagesAndTheLightingInclude) {
-    EXPECT_EQ(shaderFilesOf(ShadingMode::Flat), (std::vector<std::string>{"flat.vert", "flat.frag", "lighting.glsl"}));
-    EXPECT_EQ(shaderFilesOf(ShadingMode::Gouraud), (std::vector<std::string>{"gouraud.vert", "gouraud.frag", "lighting.glsl"}));
-    EXPECT_EQ(shaderFilesOf(ShadingMode::Phong), (std::vector<std::string>{"phong.vert", "phong.frag", "lighting.glsl"}));
+// The slide's formula first, then the mode's stages, then what the program adds.
+TEST(ShaderListing, EachModeShowsTheLectureFirstThenItsStagesAndTheLightingInclude) {
+    EXPECT_EQ(shaderFilesOf(ShadingMode::Flat),
+              (std::vector<std::string>{"lecture.glsl", "flat.vert", "flat.frag", "lighting.glsl"}));
+    EXPECT_EQ(shaderFilesOf(ShadingMode::Gouraud),
+              (std::vector<std::string>{"lecture.glsl", "gouraud.vert", "gouraud.frag", "lighting.glsl"}));
+    EXPECT_EQ(shaderFilesOf(ShadingMode::Phong),
+              (std::vector<std::string>{"lecture.glsl", "phong.vert", "phong.frag", "lighting.glsl"}));
     for (ShadingMode m : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
         for (const std::string& f : shaderFilesOf(m)) EXPECT_FALSE(shaderText(f).empty()) << f;
 }
@@ -64,31 +69,33 @@ TEST(ShaderListing, TokensAreColouredAndKeepTheText) {
         EXPECT_NE(glslTokenColor(t).b + 256 * glslTokenColor(t).r, glslTokenColor(GlslToken::Plain).b + 256 * glslTokenColor(GlslToken::Plain).r);
 }
 
-// The lines of shaders/lighting.glsl that compute each term carry its colour; comments do not.
-TEST(ShaderListing, TheLightingIncludesTermLinesAreMarked) {
+// The lines of shaders/lecture.glsl and lighting.glsl that compute each term carry its colour;
+// comments do not.
+TEST(ShaderListing, TheFormulasTermLinesAreMarked) {
     const struct {
+        const char* file;
         const char* code;
         FormulaTerm term;
-    } cases[] = {{"L += ambientTerm() * texel;", FormulaTerm::Ambient},
-                 {"vec3 diffuse = lightDiffuse(l) * texel * NdotI;", FormulaTerm::Diffuse},
-                 {"float NdotI = dot(N, I);", FormulaTerm::Diffuse},
-                 {"vec3 specular = lightSpecular(l) * (specularLobe(", FormulaTerm::Specular},
-                 {"float spec = pow(max(cosLobe, 0.0), specularExponent());", FormulaTerm::Specular},
-                 {"if (SL_FRESNEL == SL_FRESNEL_SCHLICK) spec *= fresnelSchlick(", FormulaTerm::Specular},
-                 {"vec3 V = normalize(toEye(posWorld));", FormulaTerm::None},
-                 {"L += objectEmission();", FormulaTerm::Emissive},
-                 {"// spec_l for a light from direction I (N.I > 0), with the options the scene turned on.", FormulaTerm::None}};
-    const std::vector<GlslLine> lines = listGlsl("lighting.glsl", shaderText("lighting.glsl"), {});
+    } cases[] = {{"lecture.glsl", "vec3 L = m.k_a * A * m.C;", FormulaTerm::Ambient},
+                 {"lecture.glsl", "vec3 diffuse = m.k_d * m.C * max(dot(N, I), 0.0);", FormulaTerm::Diffuse},
+                 {"lecture.glsl", "vec3 R = 2.0 * dot(N, I) * N - I;", FormulaTerm::Specular},
+                 {"lecture.glsl", "float spec_l = pow(max(cosLobe, 0.0), m.k_e)", FormulaTerm::Specular},
+                 {"lecture.glsl", "vec3 specular = m.k_s * m.S * spec_l;", FormulaTerm::Specular},
+                 {"lecture.glsl", "vec3 I = normalize(toLight(l, P));", FormulaTerm::None},
+                 {"lighting.glsl", "if (SL_FRESNEL == SL_FRESNEL_SCHLICK) factor *= fresnelSchlick(", FormulaTerm::Specular},
+                 {"lighting.glsl", "vec3 V = normalize(toEye(P));", FormulaTerm::None},
+                 {"lighting.glsl", "objectEmission() : vec3(0.0);", FormulaTerm::Emissive},
+                 {"lighting.glsl", "// spec_l's factor besides the lobe", FormulaTerm::None}};
     for (const auto& c : cases) {
         bool found = false;
-        for (const GlslLine& l : lines)
+        for (const GlslLine& l : listGlsl(c.file, shaderText(c.file), {}))
             if (joined(l.spans).find(c.code) != std::string::npos) {
                 found = true;
-                EXPECT_EQ(int(l.term), int(c.term)) << l.number << ": " << joined(l.spans);
+                EXPECT_EQ(int(l.term), int(c.term)) << c.file << ":" << l.number << ": " << joined(l.spans);
             }
-        EXPECT_TRUE(found) << c.code;
+        EXPECT_TRUE(found) << c.file << ": " << c.code;
     }
-    // Every mode's three files mark all three terms somewhere, and E where lighting.glsl adds it.
+    // Every mode's files mark all three terms somewhere, and E where lighting.glsl adds it.
     for (ShadingMode m : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
         std::set<FormulaTerm> terms;
         for (const std::string& f : shaderFilesOf(m))
@@ -116,4 +123,24 @@ TEST(ShaderListing, CompileErrorsPointAtTheirLines) {
     EXPECT_NE(lines[1].error.find("undeclared"), std::string::npos);
     EXPECT_TRUE(lines[2].error.empty());  // line 3 is lighting.glsl's
     EXPECT_TRUE(glslErrors("no file here: 12").empty());
+}
+
+// Issue 28: the file the Shader view shows first is the slide. Its two functions, one light's term and
+// the sum, fit a slide (at most 40 lines together) and name the lecture's symbols; no preprocessor
+// switch sits in them; phong.frag is a page a student reads at a glance.
+TEST(ShaderListing, TheLectureFileIsTheSlide) {
+    const std::string lecture = shaderText("lecture.glsl");
+    const std::size_t start = lecture.find("vec3 oneLight(");
+    ASSERT_NE(start, std::string::npos);
+    const std::string functions = lecture.substr(start);
+    EXPECT_LE(std::count(functions.begin(), functions.end(), '\n'), 40);
+    EXPECT_EQ(functions.find("#if"), std::string::npos);
+    EXPECT_NE(functions.find("vec3 lecture(Material m, vec3 A, vec3 P, vec3 N, vec3 V)"), std::string::npos);
+    for (const char* name : {"m.k_a", "m.k_d", "m.k_s", "m.k_e", "m.C", "m.S", " A ", "L_l", "vec3 I", "vec3 R", "vec3 H",
+                             "max(", "dot(", "pow(", "for (int l = 0; l < SL_LIGHT_COUNT; ++l)"})
+        EXPECT_NE(functions.find(name), std::string::npos) << name;
+    const std::string phong = shaderText("phong.frag");
+    EXPECT_LE(std::count(phong.begin(), phong.end(), '\n'), 20);
+    EXPECT_EQ(phong.find("#if"), std::string::npos);
+    EXPECT_NE(phong.find("shade("), std::string::npos);
 }

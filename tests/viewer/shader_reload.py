@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A shader broken on purpose while the viewer runs: F5 shows the driver's error (file and line) and
-the picture stays; once the file is fixed, F5 reloads it.
+the picture stays; once the file is fixed, F5 reloads it, and an edit of phong.frag changes the picture.
 
 usage: shader_reload.py SHADELAB SHADER_SOURCE_DIR OUTDIR     (inside an X server: see xvfb_run.sh)
 """
@@ -27,6 +27,14 @@ display.key("c")
 after_switch = screenshot(display, out)
 open(phong, "w").write(good)
 display.key("F5")                       # fixed: reloads
+fixed = screenshot(display, out)
+# An edit of phong.frag changes the picture: the viewer draws the program its Shader view lists, not
+# a speed variant (issue 28). Blue and red swapped in the Phong pane.
+edited_source = good.replace("fragmentColor(L)", "fragmentColor(L.bgr)")
+open(phong, "w").write(edited_source)
+display.key("F5")
+edited = screenshot(display, out)
+open(phong, "w").write(good)
 err = quit_viewer(proc, display)
 
 failures = []
@@ -36,10 +44,14 @@ if first is None or after_broken is None or after_switch is None:
     failures.append("F12 wrote no screenshot")
 elif not (first == after_broken == after_switch):
     failures.append("the picture changed after a broken shader was reloaded")
+if edited_source == good:
+    failures.append("phong.frag has no fragmentColor(L) to edit")
+elif fixed is None or edited is None or fixed == edited:
+    failures.append("an edit of phong.frag did not change the picture after F5")
 if "shaders not reloaded" not in err:
     failures.append("no error shown for the broken shader")
 if f"phong.frag:{broken_line}" not in err:
     failures.append(f"the error does not point at phong.frag:{broken_line}:\n{err}")
 if failures:
     sys.exit("; ".join(failures))
-print("a broken shader shows its error with file and line, and the picture stays")
+print("a broken shader shows its error with file and line, and the picture stays; an edited one changes it")

@@ -95,8 +95,10 @@ std::vector<GlslSpan> highlight(const std::string& line, bool& inComment) {
 }  // namespace
 
 std::vector<std::string> shaderFilesOf(ShadingMode mode) {
+    // The lecture's formula first (shaders/lecture.glsl: the slide as one function), then the mode's
+    // two stages, then what this program adds around the formula (shaders/lighting.glsl).
     const std::string name = toString(mode);
-    return {name + ".vert", name + ".frag", "lighting.glsl"};
+    return {"lecture.glsl", name + ".vert", name + ".frag", "lighting.glsl"};
 }
 
 Rgba8 glslTokenColor(GlslToken token) {
@@ -118,14 +120,19 @@ FormulaTerm glslLineTerm(const std::string& line) {
     static const struct {
         const char* name;
         FormulaTerm term;
-    } names[] = {{"k_a", FormulaTerm::Ambient},           {"mbientTerm", FormulaTerm::Ambient},
-                 {"k_d", FormulaTerm::Diffuse},           {"ightDiffuse", FormulaTerm::Diffuse},
-                 {"NdotI = dot(", FormulaTerm::Diffuse},  {"k_s", FormulaTerm::Specular},
-                 {"k_e", FormulaTerm::Specular},          {"spec_l", FormulaTerm::Specular},
-                 {"ightSpecular", FormulaTerm::Specular}, {"specularLobe(", FormulaTerm::Specular},
-                 {"cosLobe", FormulaTerm::Specular},      {"spec *=", FormulaTerm::Specular},
-                 {"fresnelSchlick(", FormulaTerm::Specular}, {"fresnelExact(", FormulaTerm::Specular},
-                 {"shadeLectureSpecular(", FormulaTerm::Specular}, {"objectEmission(", FormulaTerm::Emissive}};
+    } names[] = {{"k_a", FormulaTerm::Ambient},
+                 {"k_d", FormulaTerm::Diffuse},
+                 {"k_s", FormulaTerm::Specular},
+                 {"k_e", FormulaTerm::Specular},
+                 {"spec_l", FormulaTerm::Specular},
+                 {"cosLobe", FormulaTerm::Specular},
+                 {"vec3 R = ", FormulaTerm::Specular},
+                 {"vec3 H = ", FormulaTerm::Specular},
+                 {"lobeFactor(", FormulaTerm::Specular},
+                 {"fresnelSchlick(", FormulaTerm::Specular},
+                 {"fresnelExact(", FormulaTerm::Specular},
+                 {"shadeLectureSpecular(", FormulaTerm::Specular},
+                 {"objectEmission(", FormulaTerm::Emissive}};
     std::size_t best = std::string::npos;
     FormulaTerm term = FormulaTerm::None;
     for (const auto& n : names) {

@@ -25,8 +25,8 @@ struct GlslSpan {
 
 // The term of the formula a line of code computes (None for the rest, and for lines that are only a
 // comment): the first of the term's names it mentions, in code or in its trailing comment:
-// ambient k_a, ambientTerm; diffuse k_d, lightDiffuse, N.I; specular k_s, k_e, spec_l, lightSpecular,
-// specularLobe, cosLobe, spec *=, the Fresnel weights.
+// ambient k_a; diffuse k_d; specular k_s, k_e, spec_l, cosLobe, the vectors R and H, lobeFactor and
+// the Fresnel weights; emission objectEmission (shaders/lecture.glsl and lighting.glsl name them so).
 FormulaTerm glslLineTerm(const std::string& line);
 
 // A compile or link error's place, from a log that names files as locateGlslLog writes them
