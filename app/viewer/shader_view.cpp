@@ -47,7 +47,7 @@ ImFont* monoFont() {
 void legend() {
     ImGui::TextUnformatted("terms:");
     for (const auto& [name, term] : {std::pair{"ambient", FormulaTerm::Ambient}, std::pair{"diffuse", FormulaTerm::Diffuse},
-                                     std::pair{"specular", FormulaTerm::Specular}}) {
+                                     std::pair{"specular", FormulaTerm::Specular}, std::pair{"emission E", FormulaTerm::Emissive}}) {
         ImGui::SameLine();
         ImGui::TextColored(imColor(termColor(term)), "%s", name);
     }
