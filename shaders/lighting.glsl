@@ -21,7 +21,7 @@
 Material objectMaterial(vec3 texel);  // the object's material, C times texel (1, or a texture's colour)
 vec3 ambientLight();                  // A
 vec3 toEye(vec3 P);                   // from P towards the eye (not unit length)
-vec3 objectEmission();                // E at this point (shaders/object_color.glsl)
+vec3 shownEmission();                 // E at this point, where "show" keeps it (shaders/object_color.glsl)
 
 // ==== What this program adds to the lecture's sum (lecture.glsl, included above) ====
 
@@ -183,7 +183,7 @@ Material termsShown(Material m) {
 // the lecture's sum over the lights, area lights included, with "show" keeping one of its terms.
 vec3 shadeMaterial(Material m, vec3 P, vec3 N) {
     if (SL_SHOW == SL_SHOW_UNLIT) return m.C;  // C, no lighting
-    vec3 E = SL_EMISSIVE == 1 && (SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_EMISSIVE) ? objectEmission() : vec3(0.0);
+    vec3 E = shownEmission();
     if (SL_SHOW == SL_SHOW_EMISSIVE) return E;
     Material shown = termsShown(m);
     vec3 V = normalize(toEye(P));

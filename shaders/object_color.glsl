@@ -71,12 +71,16 @@ float objectAlpha() { return u_color.a; }
 vec3 objectEmission() { return u_emissive.rgb; }
 #endif
 
+// E as the formula adds it: where "show" keeps it (all terms, or E alone), and where the draw gives off light.
+vec3 shownEmission() {
+    return SL_EMISSIVE == 1 && (SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_EMISSIVE) ? objectEmission() : vec3(0.0);
+}
+
 #ifndef SL_VERTEX_STAGE
 // Flat and Gouraud with SL_TEXTURED: L = clamp(texel * termsOfC + specular + E, 0, 1), the two sums
 // from the vertex stage (shadeLectureTermsOfC, shadeLectureSpecular) and E, which varies per fragment.
 vec3 combineTerms(vec3 termsOfC, vec3 specular) {
-    vec3 E = SL_EMISSIVE == 1 && (SL_SHOW == SL_SHOW_ALL || SL_SHOW == SL_SHOW_EMISSIVE) ? objectEmission() : vec3(0.0);
-    return clamp(objectTexel() * termsOfC + specular + E, 0.0, 1.0);
+    return clamp(objectTexel() * termsOfC + specular + shownEmission(), 0.0, 1.0);
 }
 // The fragment's alpha as written: the object's with BLEND (blended over what is behind), else 1.
 float outputAlpha() { return SL_ALPHA_MODE == SL_ALPHA_BLEND ? objectAlpha() : 1.0; }

@@ -84,7 +84,7 @@ TEST(ShaderListing, TheFormulasTermLinesAreMarked) {
                  {"lecture.glsl", "vec3 I = normalize(toLight(l, P));", FormulaTerm::None},
                  {"lighting.glsl", "if (SL_FRESNEL == SL_FRESNEL_SCHLICK) factor *= fresnelSchlick(", FormulaTerm::Specular},
                  {"lighting.glsl", "vec3 V = normalize(toEye(P));", FormulaTerm::None},
-                 {"lighting.glsl", "objectEmission() : vec3(0.0);", FormulaTerm::Emissive},
+                 {"lighting.glsl", "vec3 E = shownEmission();", FormulaTerm::Emissive},
                  {"lighting.glsl", "// spec_l's factor besides the lobe", FormulaTerm::None}};
     for (const auto& c : cases) {
         bool found = false;

@@ -132,7 +132,7 @@ FormulaTerm glslLineTerm(const std::string& line) {
                  {"fresnelSchlick(", FormulaTerm::Specular},
                  {"fresnelExact(", FormulaTerm::Specular},
                  {"shadeLectureSpecular(", FormulaTerm::Specular},
-                 {"objectEmission(", FormulaTerm::Emissive}};
+                 {"objectEmission(", FormulaTerm::Emissive}, {"shownEmission(", FormulaTerm::Emissive}};
     std::size_t best = std::string::npos;
     FormulaTerm term = FormulaTerm::None;
     for (const auto& n : names) {
