@@ -8,6 +8,13 @@
 # (any part): the renderer, glad and the GL tests.
 
 set(_parts_here ON)
+# The web build (emcmake cmake, ./dev web): the renderer on WebGL2 and the page's front end (app/web);
+# none of the Linux parts.
+if(EMSCRIPTEN)
+  set(SHADELAB_WEB ON)
+else()
+  set(SHADELAB_WEB OFF)
+endif()
 if(CMAKE_CROSSCOMPILING OR CMAKE_SYSTEM_NAME STREQUAL "Windows")
   set(_parts_here OFF)   # the GL parts are Linux-only (README, "Windows"); don't find the build machine's
 endif()
@@ -43,6 +50,8 @@ if(_parts_here)
   if(NOT EGL_FOUND)
     set(_missing_egl libegl-dev)
   endif()
+elseif(SHADELAB_WEB)
+  set(_missing_gl "a Linux GL stack (the web build has WebGL2 instead)")
 else()
   set(_missing_gl "a Linux GL stack")
 endif()
@@ -86,7 +95,10 @@ else()
   message(STATUS "shadelab: no headless context: --output, --benchmark and the other renders are refused, "
                  "and the GL and rendering CLI tests are not built")
 endif()
-if(SHADELAB_HEADLESS OR SHADELAB_VIEWER)
+if(SHADELAB_WEB)
+  message(STATUS "shadelab: the web page (WebGL2, app/web): ON")
+endif()
+if(SHADELAB_HEADLESS OR SHADELAB_VIEWER OR SHADELAB_WEB)
   set(SHADELAB_RENDER ON)
 else()
   set(SHADELAB_RENDER OFF)

@@ -68,12 +68,12 @@ float visibility(int l, vec3 posWorld, vec3 N) {
     return pointVisibility(l, posWorld, N);
 }
 
-// v for sample `sample` of area light l, at offset ab of the rectangle: that sample's view is the
+// v for sample `sampleIndex` of area light l, at offset ab of the rectangle: that sample's view is the
 // centre's (clipP, of the point, clipN of its normal) moved by the edges' clip-space images
 // (render/cpu/shadow_projection.hpp).
-float areaSampleVisibility(int l, vec2 ab, int sample, vec4 clipP, vec4 clipN) {
+float areaSampleVisibility(int l, vec2 ab, int sampleIndex, vec4 clipP, vec4 clipN) {
     vec4 clip = clipP - ab.x * u_lights[l].shadowU - ab.y * u_lights[l].shadowV;
     clip += clipN * (u_shadowSettings.x * u_lights[l].shadow.x * clip.w);
     vec3 c = clip.xyz / clip.w * 0.5 + 0.5;
-    return texture(u_areaShadowMaps, vec4(c.xy, float(c_shadowLayer[l] + sample), c.z));
+    return texture(u_areaShadowMaps, vec4(c.xy, float(c_shadowLayer[l] + sampleIndex), c.z));
 }

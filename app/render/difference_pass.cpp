@@ -46,8 +46,20 @@ void DifferencePass::resizeSources(int width, int height) {
 // resolving the panes.
 void DifferencePass::copySources(const Pane& a, const Pane& b, const RenderTarget& target) {
     const Pane* sources[2] = {&a, &b};
+    GLuint from = target.framebuffer;
+#if SHADELAB_GLES
+    if (isMultisampled(target.framebuffer)) {
+        if (!resolved_ || resolvedWidth_ != target.width || resolvedHeight_ != target.height) {
+            resolved_ = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, target.width, target.height);
+            resolvedFbo_ = makeFramebuffer(resolved_.get(), 0, "layout diff (MSAA resolve)");
+            resolvedWidth_ = target.width, resolvedHeight_ = target.height;
+        }
+        blitColor(target.framebuffer, 0, 0, resolvedFbo_.get(), 0, 0, target.width, target.height);
+        from = resolvedFbo_.get();
+    }
+#endif
     for (std::size_t k = 0; k < 2; ++k) {
-        blitColor(target.framebuffer, sources[k]->x, target.height - sources[k]->y - sources[k]->height,
+        blitColor(from, sources[k]->x, target.height - sources[k]->y - sources[k]->height,
                   sourceFbos_[k].get(), 0, 0, width_, height_);
         glActiveTexture(GLenum(GL_TEXTURE0 + k));
         glBindTexture(GL_TEXTURE_2D, sources_[k].get());

@@ -29,6 +29,13 @@ private:
     std::array<gl::Texture, 2> sources_;  // A and B, the difference pane's size (RGBA8)
     std::array<gl::Framebuffer, 2> sourceFbos_;
     int width_ = 0, height_ = 0;
+#if SHADELAB_GLES
+    // ES 3.0 resolves a multisampled framebuffer only into a rectangle of the same place and size: a
+    // multisampled target is resolved whole into this copy first, and the panes are copied out of it.
+    gl::Texture resolved_;
+    gl::Framebuffer resolvedFbo_;
+    int resolvedWidth_ = 0, resolvedHeight_ = 0;
+#endif
     gl::Program program_;
     FullscreenTriangle fullscreen_;
 };

@@ -120,7 +120,12 @@ const OverlayRenderer::LineProgram& OverlayRenderer::useWidth(float pixels) {
 
 OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders)
     : thin_(lineProgram(buildProgram("overlay", shaders))),
+#if SHADELAB_GLES
+      // WebGL2 has no geometry shaders: overlay lines are one pixel wide there (docs/web.md).
+      wide_(lineProgram(buildProgram("overlay", shaders))) {}
+#else
       wide_(lineProgram(buildProgram("overlay", shaders, {}, "", "overlay_wide"))) {}
+#endif
 
 void OverlayRenderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     geometry_ = std::move(geometry);

@@ -38,7 +38,7 @@ gl::Shader compileStage(GLenum stage, const std::string& programName, const std:
         glGetShaderInfoLog(shader.get(), GLsizei(log.size()), nullptr, log.data());
         const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : stage == GL_GEOMETRY_SHADER ? "geometry" : "fragment";
         throw ShaderError("program " + programName + ", " + stageName +
-                          " stage (" + file + ", GLSL 330 core) failed to compile:\n" +
+                          " stage (" + file + ", " + kGlslVersionName + ") failed to compile:\n" +
                           locateGlslLog(log.data(), src.files));
     }
     return shader;

@@ -105,12 +105,16 @@ gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, float
 
 Renderer::Renderer(GLADloadfunc getProcAddress, ShaderLibrary shaders, RendererOptions options)
     : options_(options), programs_(std::move(shaders), options.packedFlatVertices), meshes_(options) {
+#if SHADELAB_GLES
+    (void)getProcAddress;  // WebGL2's functions are linked, not loaded (app/web/gles/glad/gl.h)
+#else
     const int version = gladLoadGL(getProcAddress);
     if (version == 0) throw std::runtime_error("could not load OpenGL entry points");
     if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
         throw std::runtime_error("OpenGL 3.3 core is needed; the context offers " +
                                  std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
                                  std::to_string(GLAD_VERSION_MINOR(version)));
+#endif
     uniforms_ = std::make_unique<UniformStager>();
     autoMayInterpolate_ = !llvmpipeOn128Bits(glRenderer());
     checkGl("renderer set-up");

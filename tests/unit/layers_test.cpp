@@ -31,6 +31,10 @@ const std::map<std::string, std::vector<std::string>> kBelow = {
     {"video", {"core/image"}},
     {"viewer", {"render", "core/ui", "core/probe", "core/figures", "video"}},
     {"cli", {"core/ui", "core/probe", "core/figures"}},
+    // The web page's program: the renderer, the command line's parser, and the viewer's GL-free scene
+    // document and camera controls (viewer/scene_document.hpp, viewer/orbit.hpp; the CMake target
+    // compiles only those two of the viewer's files).
+    {"web", {"render", "cli", "viewer"}},
 };
 
 // The executable's files (main() and the run modes, cli/program.hpp) sit in cli/ and may use every layer.

@@ -1256,8 +1256,8 @@ bool readModelFile(std::vector<unsigned char>* out, std::string* err, const std:
     }
     std::error_code e;
     const fs::path full(p);
-    const auto size = fs::file_size(full, e);
-    if (e || size > (std::uintmax_t(1) << 31)) {
+    const std::uintmax_t fileSize = fs::file_size(full, e);
+    if (e || fileSize > (std::uintmax_t(1) << 31)) {
         if (err) *err += "cannot read " + p;
         return false;
     }
@@ -1266,6 +1266,7 @@ bool readModelFile(std::vector<unsigned char>* out, std::string* err, const std:
         if (err) *err += "cannot open " + p;
         return false;
     }
+    const std::size_t size = std::size_t(fileSize);  // at most 2 GiB: fits a 32-bit size_t (the web build)
     out->resize(size);
     const bool ok = std::fread(out->data(), 1, size, f) == size;
     std::fclose(f);

@@ -45,8 +45,7 @@ void expandInto(const std::string& name, const std::function<std::string(const s
 ExpandedGlsl expandGlsl(const std::string& name, const std::function<std::string(const std::string&)>& load,
                         const std::vector<std::string>& defines) {
     ExpandedGlsl out;
-    // Target GLSL 330 so the programs run on OpenGL 3.3 core (and macOS's 4.1).
-    out.text = "#version 330 core\n";
+    out.text = kGlslPrologue;
     for (const std::string& d : defines) out.text += "#define " + d + "\n";
     expandInto(name, load, out, 0);
     return out;

@@ -1,6 +1,6 @@
 #pragma once
 // The small include step for GLSL files: resolves `#include "file"` (each file once per program, like
-// #pragma once), puts `#version 330 core` first and emits `#line N S` so a driver's log points at the
+// #pragma once), puts `#version 330 core` (kGlslPrologue) first and emits `#line N S` so a driver's log points at the
 // right file and line: source-string number S is the index of the file in `files`. The line numbers
 // carry it too, N = S * kGlslLinesPerFile + the line: Mesa reports source 0 for errors inside a
 // function body (its parser does not pass the source number on), but keeps their line numbers.
@@ -11,6 +11,21 @@
 namespace shadelab {
 
 inline constexpr int kGlslLinesPerFile = 100000;
+
+// What comes before every program: GLSL 330 so the programs run on OpenGL 3.3 core (and macOS's 4.1);
+// in the web build (WebGL2) GLSL ES 3.00 and its precisions, the only change the files get there. ES
+// has no default precision for floats in fragment shaders nor for shadow and array samplers; highp
+// everywhere is what desktop GLSL computes in.
+#if SHADELAB_GLES
+inline constexpr const char* kGlslPrologue =
+    "#version 300 es\n"
+    "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+    "precision highp sampler2DArray;\nprecision highp sampler2DShadow;\nprecision highp sampler2DArrayShadow;\n";
+inline constexpr const char* kGlslVersionName = "GLSL ES 3.00";
+#else
+inline constexpr const char* kGlslPrologue = "#version 330 core\n";
+inline constexpr const char* kGlslVersionName = "GLSL 330 core";
+#endif
 
 struct ExpandedGlsl {
     std::string text;                 // ready for glShaderSource
