@@ -4,7 +4,7 @@
 // section listing every term. Immediate mode, like panel.hpp: called every frame, no state.
 #include "core/probe/probe.hpp"
 #include "core/scene/scene.hpp"
-#include "render/overlay_renderer.hpp"
+#include "viewer/probe_arrows.hpp"
 
 #include <string>
 #include <vector>
@@ -12,17 +12,6 @@
 namespace shadelab {
 
 struct UiRect;
-
-struct ProbeArrow {
-    OverlayArrow arrow;
-    std::string label;  // drawn at the tip; empty for the marker at the probed point
-};
-
-// At each evaluation of the probe (phong: the point; flat: the centroid; gouraud: the three corners)
-// N and V, and for each light (only `selectedLight` when it names one) I, R(I) and H, as unit vectors
-// drawn at a length that looks the same wherever the point is; plus a cross at the probed point. All
-// in the probed pane only: the other panes of a compare layout evaluate the formula elsewhere.
-std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight);
 
 // The arrows' labels near their tips (where an arrow leaves its pane: where it crosses the border), on
 // ImGui's foreground draw list, inside the arrows' pane, clear of each other and of `avoid` (the light

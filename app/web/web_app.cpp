@@ -31,6 +31,7 @@
 #include "render/readback.hpp"
 #include "render/renderer.hpp"
 #include "viewer/orbit.hpp"
+#include "viewer/probe_arrows.hpp"
 #include "viewer/scene_document.hpp"
 #include "web/web_names.hpp"
 
@@ -38,6 +39,8 @@
 #include <emscripten/html5.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 #include <memory>
@@ -78,6 +81,12 @@ struct WebApp {
     gl::Texture viewColor, viewDepth;
     gl::Framebuffer viewFramebuffer;
     int viewWidth = 0, viewHeight = 0;
+    // Sampled area lights refine over frames, as in the desktop viewer (Renderer::renderProgressive):
+    // what the sum was started for, and whether it is complete.
+    std::array<std::uint64_t, 5> progressiveFrom{};
+    std::uint64_t documents = 0;      // scenes loaded so far: a new one restarts the sum
+    bool progressiveComplete = true;
+    Renderer::ProgressiveStatus progress;
 };
 
 WebApp& app() {
@@ -174,6 +183,7 @@ void applyArguments(const std::vector<std::string>& args) {
         auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
         frameIfNeeded(scene, *geometry);
         a.document = std::make_unique<SceneDocument>(std::move(scene), std::move(geometry));
+        ++a.documents;
         if (!pinned) a.document->followView();
     } else {
         // The same scene with other values: the camera stays where the user put it.
@@ -239,7 +249,32 @@ RenderTarget viewTarget(int width, int height) {
     return RenderTarget{a.viewFramebuffer.get(), width, height};
 }
 
-void renderFrame() {
+// The scene into `target`: in one go, or with sampled area lights one pass of the progressive sum a
+// call (all of them when `complete`), so that a drag stays fluid and a still view converges to the
+// one-pass image. A pass evaluates every stride-th sample on both axes: about four samples a pass.
+void drawScene(const Scene& scene, const RenderTarget& target, bool complete) {
+    WebApp& a = app();
+    int samples = 1;
+    for (const Light& light : scene.lights)
+        if (light.type == LightType::Area) samples = std::max(samples, light.samples.x * light.samples.y);
+    if (samples <= 1) {
+        a.progressiveComplete = true;
+        a.progress = {};
+        a.renderer->render(scene, target);
+        return;
+    }
+    const std::array<std::uint64_t, 5> from = {a.documents, a.document->revision(), a.document->geometryRevision(),
+                                               std::uint64_t(target.width), std::uint64_t(target.height)};
+    const bool restart = from != a.progressiveFrom;
+    a.progressiveFrom = from;
+    const int stride = a.options.progressiveStride > 0 ? a.options.progressiveStride
+                                                       : std::max(1, int(std::ceil(std::sqrt(samples / 4.0))));
+    a.progress = a.renderer->renderProgressive(scene, target, stride, restart);
+    while (complete && !a.progress.complete()) a.progress = a.renderer->renderProgressive(scene, target, stride, false);
+    a.progressiveComplete = a.progress.complete();
+}
+
+void renderFrame(bool complete = false) {
     WebApp& a = app();
     if (!a.document || !a.renderer) return;
     SceneDocument& doc = *a.document;
@@ -256,10 +291,13 @@ void renderFrame() {
     const Scene& scene = doc.scene();
     const RenderTarget view = viewTarget(scene.width, scene.height);
     const RenderTarget target = a.msaa.begin(view, a.options.msaa.value_or(4));
-    a.renderer->render(scene, target);
+    drawScene(scene, target, complete);
     OverlayOptions overlays;
     for (Overlay o : a.options.overlays) overlays.shown(o) = true;
-    if (overlays.any()) a.overlays->render(scene, target, overlays);
+    std::vector<OverlayArrow> arrows;
+    if (a.probe)
+        for (const ProbeArrow& p : probeArrows(scene, *a.probe, -1)) arrows.push_back(p.arrow);
+    if (overlays.any() || !arrows.empty()) a.overlays->render(scene, target, overlays, arrows);
     a.msaa.resolveInto(view);
     if (a.options.formula) drawFormula(scene, view);
     blitColor(view.framebuffer, 0, 0, 0, 0, 0, view.width, view.height);
@@ -313,11 +351,15 @@ EMSCRIPTEN_KEEPALIVE const char* sl_resize(int width, int height) {
     return reply(describeScene());
 }
 
-// Draws the frame; {} or {"error": ...} (a shader that does not compile, a GL error).
+// Draws the frame: {}, or {"progress": [pass, passes]} while sampled area lights still refine (the page
+// asks for another frame), or {"error": ...} (a shader that does not compile, a GL error).
 EMSCRIPTEN_KEEPALIVE const char* sl_render() {
     try {
         renderFrame();
-        return reply(json::object());
+        json r = json::object();
+        if (!app().progressiveComplete)  // the page asks for the next frame until the sum is complete
+            r["progress"] = {app().progress.passesDone, app().progress.passCount};
+        return reply(r);
     } catch (const ShaderError& e) {
         return errorReply(joinedLines(e.what()));
     } catch (const std::exception& e) {
@@ -392,7 +434,7 @@ EMSCRIPTEN_KEEPALIVE const std::uint8_t* sl_image_data() { return app().figure.r
 EMSCRIPTEN_KEEPALIVE const char* sl_read_pixels() {
     WebApp& a = app();
     try {
-        renderFrame();
+        renderFrame(true);
         if (!a.document) return errorReply("nothing is loaded");
         a.frame = readPixels(viewTarget(a.document->scene().width, a.document->scene().height));
         return reply(json{{"width", a.frame.width}, {"height", a.frame.height}});
