@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <sstream>
+#include <vector>
 
 namespace shadelab {
 namespace {
@@ -120,6 +121,21 @@ template <std::optional<float> Options::*Field>
 OptionSpec materialOption(const char* name, const char* field, const Range<float>& range, const char* help) {
     return {name, "", "X", OptionGroup::General, bounds(range), nullptr, field, help,
             [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = parseFloat(self.name, v); }};
+}
+// "R,G,B", each channel in the option's range.
+glm::vec3 colorIn(const OptionSpec& spec, const std::string& v) {
+    std::vector<float> channels;
+    std::stringstream list(v);
+    for (std::string item; std::getline(list, item, ',');) channels.push_back(floatIn(spec, item));
+    if (channels.size() != 3 || v.back() == ',')
+        throw InputError(std::string(spec.name) + ": expected R,G,B, three numbers " +
+                         betweenText(Range<double>{spec.bounds.lo, spec.bounds.hi}) + " (got \"" + quoteInput(v) + "\")");
+    return {channels[0], channels[1], channels[2]};
+}
+template <std::optional<glm::vec3> Options::*Field>
+OptionSpec colorOption(const char* name, const char* field, const char* help) {
+    return {name, "", "R,G,B", OptionGroup::General, bounds(kColorRange), nullptr, field, help,
+            [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = colorIn(self, v); }};
 }
 template <std::optional<std::string> Options::*Field>
 void setPath(Options& o, const OptionSpec&, const std::string& v) {
@@ -255,6 +271,13 @@ const OptionSpec kOptions[] = {
     materialOption<&Options::kd>("--kd", "objects[].material.kd", kCoefficientRange, "diffuse weight ({range}) of every object"),
     materialOption<&Options::ks>("--ks", "objects[].material.ks", kCoefficientRange, "specular weight ({range}) of every object"),
     materialOption<&Options::ke>("--ke", "objects[].material.ke", kExponentRange, "specular exponent ({range}) of every object"),
+    colorOption<&Options::color>("--color", "objects[].material.color",
+                                 "C, the diffuse and ambient colour of every object, linear RGB ({range} each); "
+                                 "replaces a glTF model's base colours"),
+    colorOption<&Options::specularColor>("--specular-color", "objects[].material.specular_color",
+                                         "S, the highlight's colour of every object, linear RGB ({range} each)"),
+    colorOption<&Options::ambient>("--ambient", "ambient", "A, the ambient light, linear RGB ({range} each)"),
+    colorOption<&Options::background>("--background", "background", "the background, linear RGB ({range} each)"),
     {"--size", "", "WxH", G::General, bounds(kImageSideRange), nullptr, "size",
      "image size in pixels, {range} per side, e.g. 1280x720",
      [](Options& o, const OptionSpec& self, const std::string& v) {

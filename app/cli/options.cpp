@@ -255,8 +255,12 @@ void applyOverrides(Scene& s, const Options& o) {
         if (o.kd) obj.material.kd = *o.kd;
         if (o.ks) obj.material.ks = *o.ks;
         if (o.ke) obj.material.ke = *o.ke;
+        if (o.color) obj.material.color = *o.color, obj.material.colorSet = true;
+        if (o.specularColor) obj.material.specularColor = *o.specularColor;
         checkCoefficients(obj.material, "--");
     }
+    if (o.ambient) s.ambient = *o.ambient;
+    if (o.background) s.background = *o.background;
     if (o.width) s.width = *o.width, s.height = *o.height;
     if (!o.lights.empty()) {
         s.lights = o.lights;

@@ -8,6 +8,7 @@
 #include "core/ui/view_names.hpp"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -74,6 +75,9 @@ struct Options {
     std::optional<FresnelMode> fresnel;     // --fresnel none|schlick|exact
     std::optional<OutputEncoding> outputEncoding;  // --output-encoding linear|srgb
     std::optional<float> ior;               // --ior X (1..10)
+    // --color, --specular-color R,G,B: C and S of every object; --ambient, --background R,G,B: the
+    // scene's A and background (linear RGB, 0..1).
+    std::optional<glm::vec3> color, specularColor, ambient, background;
     std::optional<TermView> show;           // --show all|ambient|diffuse|specular|light:N|unlit
     std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
     std::optional<float> diffFactor;        // --diff-factor X (1..1000)

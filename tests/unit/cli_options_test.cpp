@@ -1,5 +1,6 @@
 #include "cli/options.hpp"
 #include "core/base/error.hpp"
+#include "core/scene/scene_json.hpp"
 #include "core/ui/controls.hpp"
 
 #include <gtest/gtest.h>
@@ -456,4 +457,30 @@ TEST(CliOptions, OutputEncodingIsTheScenesField) {
     applyOverrides(untouched, parseOptions({}));
     EXPECT_FALSE(untouched.outputEncodingGiven);
     EXPECT_NE(errorOf({"--output-encoding", "gamma"}).find("--output-encoding: unknown value \"gamma\""), std::string::npos);
+}
+
+// The colours a scene file sets (C, S, A, background) as options too: the web page's panel is a
+// command line, and a sweep or a CI scene can set them without a file.
+TEST(CliOptions, ColoursAreTheScenesFields) {
+    Scene s = defaultScene();
+    s.objects.push_back(s.objects.front());
+    applyOverrides(s, parseOptions({"--color", "1,0.5,0", "--specular-color", "0,0,1", "--ambient", "0.2,0.3,0.4",
+                                    "--background", "1,1,1"}));
+    for (const SceneObject& o : s.objects) {
+        EXPECT_EQ(o.material.color, glm::vec3(1.0f, 0.5f, 0.0f));
+        EXPECT_TRUE(o.material.colorSet);  // so it also replaces a glTF model's base colours
+        EXPECT_EQ(o.material.specularColor, glm::vec3(0.0f, 0.0f, 1.0f));
+    }
+    EXPECT_EQ(s.ambient, glm::vec3(0.2f, 0.3f, 0.4f));
+    EXPECT_EQ(s.background, glm::vec3(1.0f));
+    Scene untouched = defaultScene();
+    const Scene before = untouched;
+    applyOverrides(untouched, parseOptions({}));
+    EXPECT_EQ(untouched.objects.front().material.color, before.objects.front().material.color);
+    EXPECT_EQ(untouched.background, before.background);
+    EXPECT_EQ(errorOf({"--color", "1,2,0"}), "--color: must be between 0 and 1 (got 2)");
+    EXPECT_EQ(errorOf({"--ambient", "1,0"}), "--ambient: expected R,G,B, three numbers between 0 and 1 (got \"1,0\")");
+    EXPECT_EQ(errorOf({"--background", "1,0,0,"}),
+              "--background: expected R,G,B, three numbers between 0 and 1 (got \"1,0,0,\")");
+    EXPECT_EQ(errorOf({"--specular-color", "red"}), "--specular-color: \"red\" is not a number");
 }
