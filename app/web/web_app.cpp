@@ -99,7 +99,16 @@ const char* reply(const json& j) {
     return app().reply.c_str();
 }
 
-const char* errorReply(const std::string& message) { return reply(json{{"error", oneLine(message)}}); }
+// What the web page lacks, said where a message names it: the compressed glTF extensions are decoded
+// by Debian's Linux libraries, which are not compiled to WebAssembly.
+std::string withWebNote(const std::string& message) {
+    for (const char* extension : {"KHR_draco_mesh_compression", "EXT_meshopt_compression"})
+        if (message.find(extension) != std::string::npos)
+            return message + " (the web page does not decode " + extension + "; the desktop shadelab does)";
+    return message;
+}
+
+const char* errorReply(const std::string& message) { return reply(json{{"error", oneLine(withWebNote(message))}}); }
 
 // The option table, the key table, the panel's sections and the lecture presets: what the page
 // builds its panel, its keys and its help from.
