@@ -187,8 +187,9 @@ void applyArguments(const std::vector<std::string>& args) {
     Scene scene = sceneFromOptions(o);
     const bool pinned = o.width.has_value();
     if (!pinned) scene.width = a.canvasWidth, scene.height = a.canvasHeight;
-    if (!a.document || o.input != a.input || pinned != a.pinned) {
-        // Another scene: built, framed as --output frames it, the camera its own.
+    if (!a.document || o.input != a.input || pinned != a.pinned || o.camera != a.options.camera) {
+        // Another scene (or another of its model's cameras): built, framed as --output frames it, the
+        // camera its own.
         auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
         frameIfNeeded(scene, *geometry);
         a.document = std::make_unique<SceneDocument>(std::move(scene), std::move(geometry));
