@@ -21,6 +21,7 @@
 #include "core/probe/probe.hpp"
 #include "core/scene/playlist.hpp"
 #include "core/scene/scene_json.hpp"
+#include "core/scene/scene_limits.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/controls.hpp"
 #include "core/ui/panel_sections.hpp"
@@ -30,6 +31,7 @@
 #include "render/overlay_renderer.hpp"
 #include "render/readback.hpp"
 #include "render/renderer.hpp"
+#include "render/shader_library.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/scene_document.hpp"
 #include "web/web_names.hpp"
@@ -135,8 +137,24 @@ json describe() {
     for (const char* s : kPanelSections) sections.push_back(s);
     json plots = json::array();
     for (const auto& [name, kind] : kPlotKindNames) plots.push_back(name);
+    // The --mesh and --light shorthands' parts (scene_limits.hpp, scene_names.hpp), for the page's
+    // Mesh and Lights sections.
+    auto range = [](const auto& r) { return json::array({r.lo, r.hi}); };
+    json meshes = json::array({
+        {{"name", "uvsphere"}, {"parameters", {{{"name", "slices"}, {"range", range(kUvSphereSlicesRange)}},
+                                               {{"name", "stacks"}, {"range", range(kUvSphereStacksRange)}}}}},
+        {{"name", "icosphere"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kIcoSphereSubdivisionsRange)}}}}},
+        {{"name", "torus"}, {"parameters", {{{"name", "major_segments"}, {"range", range(kTorusSegmentsRange)}},
+                                            {{"name", "minor_segments"}, {"range", range(kTorusSegmentsRange)}}}}},
+        {{"name", "cube"}, {"parameters", json::array()}},
+        {{"name", "plane"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kPlaneSubdivisionsRange)}}}}}});
+    json lightTypes = json::array(), attenuations = json::array();
+    for (const auto& [name, type] : kLightTypeNames) lightTypes.push_back(name);
+    for (const auto& [name, attenuation] : kAttenuationNames) attenuations.push_back(name);
     return {{"options", options}, {"controls", controls}, {"overlays", overlays}, {"presets", presets},
-            {"sections", sections}, {"plots", plots}, {"version", SHADELAB_VERSION}};
+            {"sections", sections}, {"plots", plots}, {"meshes", meshes},
+            {"lights", {{"types", lightTypes}, {"attenuation", attenuations}, {"intensity", range(kIntensityRange)}}},
+            {"version", SHADELAB_VERSION}};
 }
 
 // What the page shows around the canvas, from the scene as drawn.
@@ -401,6 +419,16 @@ EMSCRIPTEN_KEEPALIVE const char* sl_read_pixels() {
     }
 }
 EMSCRIPTEN_KEEPALIVE const std::uint8_t* sl_frame_data() { return app().frame.rgba.data(); }
+
+// The GLSL file `name` ("phong.frag", "lighting.glsl") as the program compiles it (built in):
+// {"name", "source"} or {"error": ...}. The page's Shader section.
+EMSCRIPTEN_KEEPALIVE const char* sl_shader(const char* name) {
+    try {
+        return reply(json{{"name", name}, {"source", ShaderLibrary().load(name)}});
+    } catch (const std::exception& e) {
+        return errorReply(e.what());
+    }
+}
 
 // {"renderer": GL_RENDERER, "version": GL_VERSION}
 EMSCRIPTEN_KEEPALIVE const char* sl_gl_info() {
