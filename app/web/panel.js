@@ -41,6 +41,7 @@ var Module = (function () {
   let probeAt = null;    // [x, y] canvas pixels of the probe shown
   let recorder = null;
   const controls = [];   // {update(scene)} of every panel control
+  const warnings = [];   // the program's "shadelab: warning: ..." lines since the last sl_apply()
 
   // ---------------------------------------------------------------------------------------------
   // Messages: #message (role=alert) holds an error in one line; #note a passing remark.
@@ -141,6 +142,8 @@ var Module = (function () {
     state = next;
     result = r;
     showError("");
+    const said = (r.warnings || []).concat(warnings.splice(0));
+    if (said.length) note("warning: " + said.join("; "), 10);
     afterApply();
     return r;
   }
@@ -187,10 +190,12 @@ var Module = (function () {
   function requestFrame() {
     if (framePending) return;
     framePending = true;
-    requestAnimationFrame(drawFrame);
+    requestAnimationFrame(() => {
+      framePending = false;
+      drawFrame();
+    });
   }
   function drawFrame() {
-    framePending = false;
     const r = callJson("sl_render");
     if (r.error) showError(r.error);
     hook.frames++;
@@ -208,10 +213,11 @@ var Module = (function () {
     const box = view.getBoundingClientRect();
     const dpr = window.devicePixelRatio || 1;
     if (result && result.pinned) {
-      // The pinned picture at one canvas pixel per device pixel, smaller where the view is.
-      const scale = Math.min(1, box.width * dpr / result.width, box.height * dpr / result.height);
-      canvas.style.width = (result.width * scale / dpr) + "px";
-      canvas.style.height = (result.height * scale / dpr) + "px";
+      // The pinned picture at one canvas pixel per CSS pixel (as the browser shows an image at
+      // 100%), smaller where the view is.
+      const scale = Math.min(1, box.width / result.width, box.height / result.height);
+      canvas.style.width = (result.width * scale) + "px";
+      canvas.style.height = (result.height * scale) + "px";
     } else {
       canvas.style.width = "100%";
       canvas.style.height = "100%";
@@ -220,6 +226,8 @@ var Module = (function () {
         const r = callJson("sl_resize", ["number", "number"], [w, h]);
         if (r.panes && result) Object.assign(result, { panes: r.panes, width: r.width, height: r.height });
         if (probeAt) clearProbe();
+        // A resized canvas is blank: drawn at once, before the browser shows it.
+        if (hook.ready) drawFrame();
       }
     }
     drawLabels();
@@ -645,7 +653,13 @@ var Module = (function () {
     // Plots.
     const plots = el("div", { class: "plots" });
     for (const kind of D.plots) {
-      const c = el("canvas", { "data-plot": kind, "aria-label": kind + " plot", role: "img" });
+      const c = el("canvas", { "data-plot": kind, "aria-label": kind + " plot (click: larger)", role: "img", title: "click: larger / smaller" });
+      c.addEventListener("click", () => {
+        const big = !c.classList.contains("big");
+        for (const other of document.querySelectorAll("canvas[data-plot].big")) other.classList.remove("big");
+        c.classList.toggle("big", big);
+        drawPlots();
+      });
       plots.append(el("figure", {}, c, el("figcaption", { text: kind })));
     }
     sectionBodies.plots.prepend(plots);
@@ -789,10 +803,10 @@ var Module = (function () {
   function drawPlots() {
     const section = $("#section-plots");
     if (!section || !section.open || !result) return;
-    const dpr = window.devicePixelRatio || 1;
     for (const c of document.querySelectorAll("canvas[data-plot]")) {
-      const cssWidth = c.parentElement.clientWidth || 280;
-      const w = Math.max(320, Math.round(cssWidth * dpr)), h = Math.round(w * 3 / 4);
+      // The figure's lettering has a fixed pixel size: the panel's plot is drawn at its smallest
+      // size (320x240) to be read there; a click shows it large (800x600) over the page.
+      const w = c.classList.contains("big") ? 800 : 320, h = w * 3 / 4;
       const r = callJson("sl_plot", ["string", "number", "number"], [c.dataset.plot, w, h]);
       if (r.error) {
         showError(r.error);
@@ -1017,7 +1031,7 @@ var Module = (function () {
     next.file = main.name;
     clearProbe();
     const r = applyState(next);
-    if (!r.error) note("opened " + main.name + " (a link cannot carry a file: it names the options only)", 6);
+    if (!r.error && !(r.warnings || []).length) note("opened " + main.name + " (a link cannot carry a file: it names the options only)", 6);
   }
   let dragDepth = 0;
   document.addEventListener("dragenter", (e) => { e.preventDefault(); dragDepth++; $("#drop").hidden = false; });
@@ -1084,7 +1098,7 @@ var Module = (function () {
     }
     return null;
   }
-  const WIDGET_KEYS = new Set([" ", "ArrowLeft", "ArrowRight", "ArrowUp", "ArrowDown", "Home", "End", "PageUp", "PageDown", "Enter"]);
+  const WIDGET_KEYS = new Set(["Tab", " ", "ArrowLeft", "ArrowRight", "ArrowUp", "ArrowDown", "Home", "End", "PageUp", "PageDown", "Enter"]);
   document.addEventListener("keydown", (e) => {
     if (!D || !Module.calledRun) return;
     const b = bindingOf(e);
@@ -1146,6 +1160,10 @@ var Module = (function () {
       case "record": return record();
       case "escape":
         if (!$("#help").hidden) return toggleHelp(false);
+        if (document.querySelector("canvas[data-plot].big")) {
+          document.querySelector("canvas[data-plot].big").classList.remove("big");
+          return drawPlots();
+        }
         return clearProbe();
       case "quit": return note("Q: close the browser tab to quit", 4);
     }
@@ -1170,6 +1188,7 @@ var Module = (function () {
     select.addEventListener("change", () => {
       const n = parseInt(select.value, 10);
       if (n >= 1) choosePreset(n);
+      canvas.focus({ preventScroll: true });  // the keys act on the view again (1, 2, 3, C ...)
     });
     $("#previous").addEventListener("click", () => run("previous-preset"));
     $("#next").addEventListener("click", () => run("next-preset"));
@@ -1267,7 +1286,8 @@ var Module = (function () {
     print: (text) => console.log(text),
     printErr: (text) => {
       console.warn(text);
-      if (/^shadelab: /.test(text)) showError(text.replace(/^shadelab: /, ""));
+      if (/^shadelab: warning: /.test(text)) warnings.push(text.replace(/^shadelab: /, ""));
+      else if (/^shadelab: /.test(text)) showError(text.replace(/^shadelab: /, ""));
     },
     onAbort: (what) => shadelabFailed("the program stopped (" + what + ")"),
     postRun: [start],

@@ -165,8 +165,13 @@ json describeScene() {
     for (const Pane& p : layoutPanes(s.layout, s.shading, s.width, s.height, s.diff))
         panes.push_back({{"x", p.x}, {"y", p.y}, {"width", p.width}, {"height", p.height}, {"mode", toString(p.mode)},
                          {"difference", p.difference}});
+    // What `shadelab` says on stderr as "warning: ..." (a model's texture that could not be read).
+    json warnings = json::array();
+    const SceneGeometry& geometry = *a.document->geometry();
+    for (std::size_t i = 0; i < geometry.gltfInfo.size() && i < s.objects.size(); ++i)
+        for (const std::string& w : geometry.gltfInfo[i].warnings) warnings.push_back(oneLine(s.objects[i].mesh.path + ": " + w));
     return {{"scene", json::parse(sceneToJson(s, "/"))}, {"title", s.title}, {"caption", s.caption},
-            {"width", s.width}, {"height", s.height}, {"pinned", a.pinned}, {"panes", panes}};
+            {"width", s.width}, {"height", s.height}, {"pinned", a.pinned}, {"panes", panes}, {"warnings", warnings}};
 }
 
 // Options the page cannot honour: anything that writes files or runs without the view.
@@ -307,7 +312,7 @@ extern "C" {
 EMSCRIPTEN_KEEPALIVE const char* sl_describe() { return reply(describe()); }
 
 // A command line as a JSON list of strings (["/share/.../06-exponent-32.json", "--ke", "128"]).
-// {"scene": the scene as JSON, "title", "caption", "panes": [...], ...}, or {"error": "one line"}
+// {"scene": the scene as JSON, "title", "caption", "panes": [...], "warnings": [...], ...}, or {"error": "one line"}
 // and nothing changes.
 EMSCRIPTEN_KEEPALIVE const char* sl_apply(const char* argumentsJson) {
     try {
