@@ -14,6 +14,7 @@ function shadelabFailed(text) {
   m.hidden = false;
   const n = document.getElementById("note");
   if (n) n.hidden = true;
+  document.body.classList.add("failed");
   if (window.shadelab) window.shadelab.lastError = m.textContent;
 }
 
@@ -703,7 +704,9 @@ var Module = (function () {
     // File.
     const file = el("input", { type: "file", name: "file", multiple: true, accept: ".gltf,.glb,.json,.bin,.png,.jpg,.jpeg,.ktx2,.webp" });
     file.addEventListener("change", () => { openFiles([...file.files]); file.value = ""; });
-    sectionBodies.file.append(labelled("open a scene or model", file, "a .json scene, or a .gltf / .glb model; a .gltf's .bin and images chosen with it"),
+    const fileRow = labelled("open a scene or model", file, "a .json scene, or a .gltf / .glb model; a .gltf's .bin and images chosen with it");
+    fileRow.classList.add("stack");
+    sectionBodies.file.append(fileRow,
       el("p", { class: "hint", text: "Or drop the files on the page. A .gltf needs its .bin and images chosen or dropped together with it." }));
     // Keys: the key table.
     sectionBodies.keys.append(keysTable());
@@ -1056,11 +1059,14 @@ var Module = (function () {
     "record": "a WebM download (the browser's MediaRecorder)",
     "play-pause": "the page plays no --animate animation",
     "quit": "close the browser tab",
+    "light-markers": "the 3D light crosses (overlay \"lights\")",
   };
+  // Mouse rows (no command) the page does otherwise.
+  const WEB_ROW_NOTE = { "drag a light marker": "not in the page: the Lights section sets positions" };
   function keysTable() {
     const table = el("table", { class: "keys" });
     for (const c of D.controls) {
-      const web = c.keys.map((k) => WEB_NOTE[k.command]).filter((x) => x);
+      const web = c.keys.map((k) => WEB_NOTE[k.command]).filter((x) => x).concat(WEB_ROW_NOTE[c.input] ? [WEB_ROW_NOTE[c.input]] : []);
       const action = c.action + (web.length ? " \u2014 here: " + [...new Set(web)].join("; ") : "");
       table.append(el("tr", {}, el("th", { text: c.input.replace(/\s{2,}/g, "  ") }), el("td", { text: action })));
     }
@@ -1135,7 +1141,7 @@ var Module = (function () {
         const d = $("#section-shader");
         d.open = true;
         showPanel(true);
-        d.scrollIntoView({ block: "start" });
+        $("#panel").scrollTop = d.offsetTop - $("#panel").offsetTop;  // scrollIntoView would scroll the page too
         return showShader();
       }
       case "reset-camera": return camera("reset");
@@ -1145,7 +1151,10 @@ var Module = (function () {
       case "first-preset": return choosePreset(1);
       case "last-preset": return choosePreset(D.presets.length);
       case "reset-preset":
-        if (state.preset) return choosePreset(state.preset);
+        if (state.preset) {
+          choosePreset(state.preset);
+          return camera("reset");  // the same file: the program keeps the document, the camera goes back
+        }
         return note("Backspace resets a lecture preset: none is shown", 4);
       case "toggle-panel": return showPanel(state.overrides.has("hide-panel"));
       case "fullscreen":
@@ -1246,7 +1255,7 @@ var Module = (function () {
   function start() {
     const gl = callJson("sl_gl_info");
     if (gl.error) {
-      shadelabFailed("this browser offers no WebGL2 (" + gl.error + ")");
+      shadelabFailed("this browser offers no WebGL2 (it is switched off, or the graphics driver is blocked: try another browser, or turn on hardware acceleration)");
       return;
     }
     D = callJson("sl_describe");
