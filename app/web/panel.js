@@ -342,11 +342,7 @@ var Module = (function () {
   function choiceControl(o, names, fallback) {
     const name = o.name.slice(2);
     const select = el("select", { name });
-    const fill = (list) => {
-      select.textContent = "";
-      for (const n of list) select.append(el("option", { value: n, text: n }));
-    };
-    fill(names);
+    for (const n of names) select.append(el("option", { value: n, text: n }));
     select.addEventListener("change", () => setOverride(name, select.value));
     controls.push({
       update() {
@@ -354,7 +350,6 @@ var Module = (function () {
         if (![...select.options].some((x) => x.value === v)) select.append(el("option", { value: v, text: v }));
         select.value = v;
       },
-      refill: fill,
     });
     return labelled(name, select, o.help);
   }
@@ -381,7 +376,7 @@ var Module = (function () {
       scheduleOverride(name, fmt(v));
     });
     box.addEventListener("change", () => setOverride(name, box.value === "" ? null : box.value.trim()));
-    controls.push({
+    const control = {
       update() {
         const v = shownValue(name, fallback);
         if (v === undefined || v === "") {
@@ -392,7 +387,8 @@ var Module = (function () {
         if (document.activeElement !== box) box.value = fmt(x);
         slider.value = toSlider(x);
       },
-    });
+    };
+    controls.push(control);
     const row = labelled(name, box, o.help);
     row.classList.add("number-row");
     row.append(slider);
@@ -411,14 +407,15 @@ var Module = (function () {
     return switchControl(o, () => state.overrides.get(name) === true, (on) => setOverride(name, on ? true : null));
   }
   // Slider changes are applied once a frame, however fast the input events come.
+  // One that comes after the input changed (another preset, a file) is dropped.
   let pendingOverride = null;
   function scheduleOverride(name, value) {
     const first = !pendingOverride;
-    pendingOverride = [name, value];
+    pendingOverride = [name, value, state.input];
     if (first) requestAnimationFrame(() => {
-      const [n, v] = pendingOverride;
+      const [n, v, input] = pendingOverride;
       pendingOverride = null;
-      setOverride(n, v);
+      if (input === state.input) setOverride(n, v);
     });
   }
 
@@ -745,7 +742,6 @@ var Module = (function () {
         else names.push(n);
       }
       const select = document.querySelector('#panel select[name="show"]');
-      const c = controls.find((x) => x.refill && select && select.options.length !== names.length);
       if (select) {
         const key = names.join("|");
         if (select.dataset.names !== key) {
@@ -754,7 +750,6 @@ var Module = (function () {
           select.dataset.names = key;
         }
       }
-      void c;
     }
     for (const c of controls) c.update();
     // The playlist.
@@ -1199,10 +1194,12 @@ var Module = (function () {
       if (n >= 1) choosePreset(n);
       canvas.focus({ preventScroll: true });  // the keys act on the view again (1, 2, 3, C ...)
     });
-    $("#previous").addEventListener("click", () => run("previous-preset"));
-    $("#next").addEventListener("click", () => run("next-preset"));
-    $("#screenshot").addEventListener("click", screenshot);
-    $("#record").addEventListener("click", record);
+    // The bar's buttons give the keyboard back to the view (arrows, Space, 1, 2, 3 ...).
+    const back = (f) => () => { f(); canvas.focus({ preventScroll: true }); };
+    $("#previous").addEventListener("click", back(() => run("previous-preset")));
+    $("#next").addEventListener("click", back(() => run("next-preset")));
+    $("#screenshot").addEventListener("click", back(screenshot));
+    $("#record").addEventListener("click", back(record));
     $("#help-button").addEventListener("click", () => toggleHelp());
   }
 
@@ -1245,7 +1242,7 @@ var Module = (function () {
       for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
       return { width: r.width, height: r.height, base64: btoa(text) };
     },
-    describe: () => D,
+    describe: null,  // sl_describe(): an object, and also callable (shadelab.describe().presets)
     probeAt: (x, y) => probe(x, y),
   };
   window.shadelab = hook;
@@ -1260,6 +1257,7 @@ var Module = (function () {
     }
     D = callJson("sl_describe");
     optionByName = new Map(D.options.map((o) => [o.name.replace(/^--/, ""), o]));
+    hook.describe = Object.assign(() => D, D);
     note("");
     const fromLink = stateFromQuery(location.search);
     state = fromLink.state;
