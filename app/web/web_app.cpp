@@ -21,6 +21,7 @@
 #include "core/probe/probe.hpp"
 #include "core/scene/playlist.hpp"
 #include "core/scene/scene_json.hpp"
+#include "core/scene/scene_limits.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/controls.hpp"
 #include "core/ui/panel_sections.hpp"
@@ -30,6 +31,7 @@
 #include "render/overlay_renderer.hpp"
 #include "render/readback.hpp"
 #include "render/renderer.hpp"
+#include "render/shader_library.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_arrows.hpp"
 #include "viewer/scene_document.hpp"
@@ -153,8 +155,24 @@ json describe() {
     for (const char* s : kPanelSections) sections.push_back(s);
     json plots = json::array();
     for (const auto& [name, kind] : kPlotKindNames) plots.push_back(name);
+    // The --mesh and --light shorthands' parts (scene_limits.hpp, scene_names.hpp), for the page's
+    // Mesh and Lights sections.
+    auto range = [](const auto& r) { return json::array({r.lo, r.hi}); };
+    json meshes = json::array({
+        {{"name", "uvsphere"}, {"parameters", {{{"name", "slices"}, {"range", range(kUvSphereSlicesRange)}},
+                                               {{"name", "stacks"}, {"range", range(kUvSphereStacksRange)}}}}},
+        {{"name", "icosphere"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kIcoSphereSubdivisionsRange)}}}}},
+        {{"name", "torus"}, {"parameters", {{{"name", "major_segments"}, {"range", range(kTorusSegmentsRange)}},
+                                            {{"name", "minor_segments"}, {"range", range(kTorusSegmentsRange)}}}}},
+        {{"name", "cube"}, {"parameters", json::array()}},
+        {{"name", "plane"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kPlaneSubdivisionsRange)}}}}}});
+    json lightTypes = json::array(), attenuations = json::array();
+    for (const auto& [name, type] : kLightTypeNames) lightTypes.push_back(name);
+    for (const auto& [name, attenuation] : kAttenuationNames) attenuations.push_back(name);
     return {{"options", options}, {"controls", controls}, {"overlays", overlays}, {"presets", presets},
-            {"sections", sections}, {"plots", plots}, {"version", SHADELAB_VERSION}};
+            {"sections", sections}, {"plots", plots}, {"meshes", meshes},
+            {"lights", {{"types", lightTypes}, {"attenuation", attenuations}, {"intensity", range(kIntensityRange)}}},
+            {"version", SHADELAB_VERSION}};
 }
 
 // What the page shows around the canvas, from the scene as drawn.
@@ -165,8 +183,13 @@ json describeScene() {
     for (const Pane& p : layoutPanes(s.layout, s.shading, s.width, s.height, s.diff))
         panes.push_back({{"x", p.x}, {"y", p.y}, {"width", p.width}, {"height", p.height}, {"mode", toString(p.mode)},
                          {"difference", p.difference}});
+    // What `shadelab` says on stderr as "warning: ..." (a model's texture that could not be read).
+    json warnings = json::array();
+    const SceneGeometry& geometry = *a.document->geometry();
+    for (std::size_t i = 0; i < geometry.gltfInfo.size() && i < s.objects.size(); ++i)
+        for (const std::string& w : geometry.gltfInfo[i].warnings) warnings.push_back(oneLine(s.objects[i].mesh.path + ": " + w));
     return {{"scene", json::parse(sceneToJson(s, "/"))}, {"title", s.title}, {"caption", s.caption},
-            {"width", s.width}, {"height", s.height}, {"pinned", a.pinned}, {"panes", panes}};
+            {"width", s.width}, {"height", s.height}, {"pinned", a.pinned}, {"panes", panes}, {"warnings", warnings}};
 }
 
 // Options the page cannot honour: anything that writes files or runs without the view.
@@ -194,6 +217,7 @@ void applyArguments(const std::vector<std::string>& args) {
         frameIfNeeded(scene, *geometry);
         a.document = std::make_unique<SceneDocument>(std::move(scene), std::move(geometry));
         ++a.documents;
+        a.uploadedGeometry = ~std::uint64_t(0);  // a new document counts its geometry from 0 again
         if (!pinned) a.document->followView();
     } else {
         // The same scene with other values: the camera stays where the user put it.
@@ -336,7 +360,7 @@ extern "C" {
 EMSCRIPTEN_KEEPALIVE const char* sl_describe() { return reply(describe()); }
 
 // A command line as a JSON list of strings (["/share/.../06-exponent-32.json", "--ke", "128"]).
-// {"scene": the scene as JSON, "title", "caption", "panes": [...], ...}, or {"error": "one line"}
+// {"scene": the scene as JSON, "title", "caption", "panes": [...], "warnings": [...], ...}, or {"error": "one line"}
 // and nothing changes.
 EMSCRIPTEN_KEEPALIVE const char* sl_apply(const char* argumentsJson) {
     try {
@@ -453,6 +477,16 @@ EMSCRIPTEN_KEEPALIVE const char* sl_read_pixels() {
     }
 }
 EMSCRIPTEN_KEEPALIVE const std::uint8_t* sl_frame_data() { return app().frame.rgba.data(); }
+
+// The GLSL file `name` ("phong.frag", "lighting.glsl") as the program compiles it (built in):
+// {"name", "source"} or {"error": ...}. The page's Shader section.
+EMSCRIPTEN_KEEPALIVE const char* sl_shader(const char* name) {
+    try {
+        return reply(json{{"name", name}, {"source", ShaderLibrary().load(name)}});
+    } catch (const std::exception& e) {
+        return errorReply(e.what());
+    }
+}
 
 // {"renderer": GL_RENDERER, "version": GL_VERSION}
 EMSCRIPTEN_KEEPALIVE const char* sl_gl_info() {
