@@ -431,6 +431,10 @@ var Module = (function () {
       case "show": return choiceControl(o, namesOf(o));  // light:N filled per scene in refreshPanel
       case "msaa": return choiceControl(o, namesOf(o), "4");  // web_app.cpp draws with 4 unless --msaa
       case "ka": case "kd": case "ks": return numberControl(o, undefined, [0, 1]);
+      case "color": return colourControl(o, "C colour");
+      case "specular-color": return colourControl(o, "S colour");
+      case "ambient": return colourControl(o, "A ambient");
+      case "background": return colourControl(o, "background");
       case "incidence": return numberControl(o, defaultFromHelp(o));
       case "shadows":
         return switchControl(o, () => result.scene.shadows === true, (on) => setOverride(on ? "shadows" : "no-shadows", true));
@@ -592,11 +596,20 @@ var Module = (function () {
     return part;
   }
 
-  // Colours without an option: shown (the scene's), changed in the scene file.
-  function colourRow(text, rgb) {
-    const c = el("input", { type: "color", disabled: true, "aria-readonly": "true" });
-    c.value = hex(rgb || [0, 0, 0]);
-    return labelled(text, c);
+  // An "R,G,B" option (--color, --specular-color, --ambient, --background): a colour picker whose
+  // value is the scene's until it is changed. The picker's 8 bits a channel are written as 0..1.
+  function colourControl(o, label) {
+    const name = o.name.slice(2);
+    const c = el("input", { type: "color", name });
+    c.addEventListener("input", () => scheduleOverride(name, rgbOf(c.value).map((x) => fmt(+x.toFixed(3))).join(",")));
+    controls.push({
+      update() {
+        let v = shownValue(name, undefined);
+        if (typeof v === "string") v = v.split(",").map(parseFloat);
+        if (Array.isArray(v)) c.value = hex(v);
+      },
+    });
+    return labelled(label, c, o.help);
   }
 
   // ---------------------------------------------------------------------------------------------
@@ -604,11 +617,12 @@ var Module = (function () {
   // Which option sits in which section is the page's choice (the table has no section column).
   const SECTION_OPTIONS = {
     shading: ["layout", "shading", "diff", "diff-factor", "reflection", "specular-normalization", "fresnel", "ior", "show", "output-encoding", "msaa"],
-    material: ["ka", "kd", "ks", "ke", "no-textures"],
+    material: ["ka", "kd", "ks", "ke", "color", "specular-color", "no-textures"],
     plots: ["incidence", "from-inside"],
     shadows: ["shadows"],
     overlays: ["formula"],
     camera: ["size"],
+    background: ["background", "ambient"],
   };
   const OPEN_BY_DEFAULT = new Set(["shading", "material"]);
   const sectionBodies = {};
@@ -636,18 +650,6 @@ var Module = (function () {
       });
       panel.append(details);
     }
-    // Material: the colours no option sets.
-    const colours = el("div", { id: "material-colours" });
-    sectionBodies.material.append(colours);
-    controls.push({
-      update() {
-        const s = result.scene, m = s.material || (s.objects && s.objects[0] && s.objects[0].material) || {};
-        colours.textContent = "";
-        if (m.color) colours.append(colourRow("C colour", m.color));
-        if (m.specular_color) colours.append(colourRow("S colour", m.specular_color));
-        colours.append(el("p", { class: "hint", text: "C and S: no option sets them; they are the scene file's." }));
-      },
-    });
     // Plots.
     const plots = el("div", { class: "plots" });
     for (const kind of D.plots) {
@@ -688,16 +690,6 @@ var Module = (function () {
     reset.addEventListener("click", () => camera("reset"));
     sectionBodies.camera.prepend(el("div", { class: "buttons" }, frame, reset),
       el("p", { class: "hint", text: "Left drag orbits, right or middle drag pans, the wheel zooms, a click probes." }));
-    // Background.
-    const bg = el("div");
-    sectionBodies.background.append(bg);
-    controls.push({
-      update() {
-        bg.textContent = "";
-        bg.append(colourRow("background", result.scene.background), colourRow("A ambient", result.scene.ambient),
-          el("p", { class: "hint", text: "No option sets the background or A: they are the scene file's." }));
-      },
-    });
     // File.
     const file = el("input", { type: "file", name: "file", multiple: true, accept: ".gltf,.glb,.json,.bin,.png,.jpg,.jpeg,.ktx2,.webp" });
     file.addEventListener("change", () => { openFiles([...file.files]); file.value = ""; });
