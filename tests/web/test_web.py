@@ -562,31 +562,34 @@ class Screenshots(PageTest):
     1920x1080 and a 2x device scale (960x540 CSS pixels, 1920x1080 device pixels). Look at them."""
 
     def shoot(self, driver, name, css_width, css_height, scale):
+        # The viewport (not the window, which counts the browser's frame) is css_width x css_height.
+        outer = driver.execute_script("return [outerWidth - innerWidth, outerHeight - innerHeight];")
+        driver.set_window_size(css_width + outer[0], css_height + outer[1])
         load_page(driver, "preset=6&layout=compare")
         time.sleep(0.5)
         path = os.path.join(ARGS.keep or WORK, name)
         os.makedirs(os.path.dirname(path), exist_ok=True)
         driver.save_screenshot(path)
+        print("  screenshot: %s" % path, file=sys.stderr)
         width, height, rgba = read_png(path)
         self.assertEqual((width, height), (css_width * scale, css_height * scale), path)
+        message = driver.execute_script("const m = document.getElementById('message');"
+                                        "return m && !m.hidden ? m.textContent : null;")
+        self.assertIsNone(message, "the page shows a message for ?preset=6&layout=compare (%s)" % path)
         colours = {rgba[i:i + 3] for i in range(0, len(rgba), 4 * 97)}
         self.assertGreater(len(colours), 20, path + " looks blank")
-        print("  screenshot: %s" % path, file=sys.stderr)
 
     def test_1920x1080(self):
-        DRIVER.set_window_size(1920, 1080)
         try:
-            inner = DRIVER.execute_script("return [innerWidth, innerHeight];")
-            self.shoot(DRIVER, "page-1920x1080.png", inner[0], inner[1], 1)
+            self.shoot(DRIVER, "page-1920x1080.png", 1920, 1080, 1)
         finally:
             DRIVER.set_window_size(1280, 900)
 
     def test_device_scale_2(self):
         driver = chromium(960, 540, scale=2)
         try:
-            inner = driver.execute_script("return [innerWidth, innerHeight, devicePixelRatio];")
-            self.assertEqual(inner[2], 2)
-            self.shoot(driver, "page-960x540@2x.png", inner[0], inner[1], 2)
+            self.assertEqual(driver.execute_script("return devicePixelRatio;"), 2)
+            self.shoot(driver, "page-960x540@2x.png", 960, 540, 2)
             severe = [e["message"] for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
             self.assertEqual(severe, [])
             # The panel's contract: an unpinned canvas has CSS size x devicePixelRatio pixels.
