@@ -174,7 +174,7 @@ void applyArguments(const std::vector<std::string>& args) {
         auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
         frameIfNeeded(scene, *geometry);
         a.document = std::make_unique<SceneDocument>(std::move(scene), std::move(geometry));
-        a.uploadedGeometry = ~std::uint64_t(0);  // a new document counts its geometry revisions from 0 again
+        a.uploadedGeometry = ~std::uint64_t(0);  // a new document counts its geometry from 0 again
         if (!pinned) a.document->followView();
     } else {
         // The same scene with other values: the camera stays where the user put it.
