@@ -488,8 +488,11 @@ class ApiParity(PageTest):
         """What the page cannot do is one line, and the picture stays."""
         apply(preset_args("06-exponent-32.json"))
         _, _, before = page_pixels()
+        write_to_page("/tmp/broken.gltf", b'{"asset": {"version": "2.0"}, "meshes": [')
+        write_to_page("/tmp/broken.json", b'{"mesh": ')
         for args, words in ((["--output", "x.png"], "--output"), (["--benchmark", "5"], "--benchmark"),
-                            (["--ke", "0"], "--ke"), (["/nowhere.json"], "nowhere.json"), (["--bogus"], "bogus")):
+                            (["--ke", "0"], "--ke"), (["/nowhere.json"], "nowhere.json"), (["--bogus"], "bogus"),
+                            (["/tmp/broken.gltf"], "broken.gltf"), (["/tmp/broken.json"], "broken.json")):
             r = apply(args)
             self.assertIn("error", r, args)
             self.assertIn(words, r["error"])
