@@ -123,7 +123,7 @@ def main():
 
     firsts = [first_frame_ms("") for _ in range(args.rounds)]
     page = [f[0] for f in firsts]
-    print("first frame, performance.now() from navigation start (default scene, 640x480): median %.0f ms "
+    print("first frame, performance.now() from navigation start (the page opened without parameters): median %.0f ms "
           "(%.0f-%.0f) over %d loads; driver.get to first frame seen: median %.0f ms" % (
               statistics.median(page), min(page), max(page), len(page), statistics.median(f[1] for f in firsts)))
 

@@ -720,7 +720,7 @@ class PanelPlaylist(PanelTest):
         described = DRIVER.execute_script("const d = window.shadelab.describe;"
                                           "return (typeof d === 'function' ? d() : d).presets;")
         self.assertEqual(len(described), len(presets()))
-        seen = []
+        seen, previous = [], None
         for i, p in enumerate(described):
             if i:
                 before = self.frames()
@@ -732,6 +732,12 @@ class PanelPlaylist(PanelTest):
             self.assertTrue(any(os.path.basename(a) == os.path.basename(p["path"]) for a in state)
                             or str(self.option("preset", state)) == str(i + 1), "preset %d: state %s" % (i + 1, state))
             self.assertIsNone(DRIVER.execute_script("return window.shadelab.lastError || null;"), p["path"])
+            shown = DRIVER.execute_script("return window.shadelab.readPixels();")
+            rgba = base64.b64decode(shown["base64"])
+            colours = {rgba[i:i + 3] for i in range(0, len(rgba), 4 * 7)}
+            self.assertGreaterEqual(len(colours), 3, "preset %d looks blank" % (i + 1))  # 11: ambient alone, flat colours
+            self.assertNotEqual(rgba, previous, "preset %d shows what preset %d showed" % (i + 1, i))
+            previous = rgba
             seen.append(title)
         self.assertEqual(len(set(seen)), len(presets()))
         DRIVER.find_element(By.ID, "previous").click()
