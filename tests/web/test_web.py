@@ -14,6 +14,8 @@ Two kinds of tests:
 
 - Api*: the program's exported functions (Module.ccall: sl_apply, sl_read_pixels, ...). They run on
   any page that loads index.js, the placeholder panel included.
+- HttpServer: one parity check over http://127.0.0.1; Screenshots: the page at 1920x1080 and at a 2x
+  device scale, opened with ?preset=6&layout=compare (so they need the panel's preset= too).
 - Panel*: the panel's contract (window.shadelab, the named form elements, #next, #message, the keys,
   the URL). Until app/web/panel.js offers it they FAIL, each with a line saying what is missing; they
   are never skipped.
@@ -47,7 +49,6 @@ import struct
 import subprocess
 import sys
 import tempfile
-import threading
 import time
 import unittest
 import urllib.parse
