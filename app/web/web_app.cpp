@@ -349,6 +349,18 @@ std::vector<std::string> argumentsFrom(const char* text) {
     return args;
 }
 
+// What a JSON error in sl_apply() is about: the page's list of options when it does not parse, else the
+// file the list names (a glTF's loader lets nlohmann's exception through here, where the desktop
+// build's tinygltf reports it with the file's name), as `shadelab FILE` would say.
+std::string jsonErrorLabel(const char* argumentsJson) {
+    const json j = json::parse(argumentsJson ? argumentsJson : "", nullptr, false);
+    if (j.is_array() && !j.empty() && j[0].is_string()) {
+        const std::string first = j[0].get<std::string>();
+        if (!first.empty() && first[0] != '-') return first + ": ";
+    }
+    return "the page's options: ";
+}
+
 }  // namespace
 }  // namespace shadelab
 
@@ -367,7 +379,7 @@ EMSCRIPTEN_KEEPALIVE const char* sl_apply(const char* argumentsJson) {
         applyArguments(argumentsFrom(argumentsJson));
         return reply(describeScene());
     } catch (const json::exception& e) {
-        return errorReply(std::string("the page's options: ") + e.what());
+        return errorReply(jsonErrorLabel(argumentsJson) + e.what());
     } catch (const ShaderError& e) {
         return errorReply(joinedLines(e.what()));
     } catch (const std::exception& e) {
