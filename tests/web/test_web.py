@@ -789,6 +789,113 @@ class PanelFiles(PanelTest):
             self.assertIn(extension, m["text"])
 
 
+class PanelViews(PanelTest):
+    """What the panel shows besides the canvas: the help, the probe, the plots, the downloads, a drop."""
+
+    def visible(self, element_id):
+        return DRIVER.execute_script(
+            "const e = document.getElementById(arguments[0]); return !!e && !e.hidden &&"
+            " e.getBoundingClientRect().height > 0;", element_id)
+
+    def test_help_is_the_key_table(self):
+        from selenium.webdriver.common.keys import Keys
+        self.open("size=" + SIZE)
+        self.assertFalse(self.visible("help"))
+        self.press(Keys.F1)
+        self.assertTrue(self.visible("help"), "F1 opens the help")
+        text = DRIVER.execute_script("return document.getElementById('help').textContent;")
+        controls = DRIVER.execute_script("const d = window.shadelab.describe; return (typeof d === 'function' ? d() : d).controls;")
+        for c in controls:  # every row of the key table, by its action (core/ui/controls.hpp)
+            self.assertIn(c["action"], text)
+        self.press(Keys.ESCAPE)
+        self.assertFalse(self.visible("help"), "Esc closes the help")
+
+    def test_click_probes_and_esc_clears(self):
+        from selenium.webdriver.common.action_chains import ActionChains
+        from selenium.webdriver.common.by import By
+        from selenium.webdriver.common.keys import Keys
+        self.open("preset=6&size=" + SIZE)
+        _, _, before = page_pixels()
+        frames = self.frames()
+        ActionChains(DRIVER).move_to_element(DRIVER.find_element(By.ID, "canvas")).click().perform()
+        wait_for(DRIVER, "return window.shadelab.frames > %d" % frames, "a frame after the probe click")
+        self.assertTrue(self.visible("probe"), "a click on the model shows the probe")
+        text = DRIVER.execute_script("return document.getElementById('probe').textContent;")
+        for field in ("N", "V", "diffuse", "specular"):
+            self.assertIn(field, text)
+        _, _, probed = page_pixels()
+        self.assertNotEqual(before, probed, "the probe's arrows are drawn")
+        self.press(Keys.ESCAPE)
+        self.assertFalse(self.visible("probe"), "Esc clears the probe")
+        _, _, cleared = page_pixels()
+        self.assertEqual(before, cleared, "the arrows go with the probe")
+
+    def plot_pixels(self):
+        return DRIVER.execute_script(
+            "return [...document.querySelectorAll('canvas[data-plot]')].map(c => {"
+            " const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;"
+            " let h = 0; for (let i = 0; i < d.length; i += 97) h = (h * 31 + d[i]) | 0;"
+            " return [c.dataset.plot, c.width, h]; });")
+
+    def test_plots_follow_the_exponent(self):
+        self.open("preset=6&size=" + SIZE + "&panel-sections=plots")
+        first = self.plot_pixels()
+        self.assertEqual(sorted(k for k, _, _ in first), ["fresnel", "lobe"])
+        self.assertTrue(all(w > 0 for _, w, _ in first), first)
+        DRIVER.execute_script("window.shadelab.apply(['%s/06-exponent-32.json', '--ke', '256', '--size', '%s']);"
+                              % (PAGE_PRESET_DIR, SIZE))
+        wait_for(DRIVER, "return true", "")
+        time.sleep(0.5)
+        after = dict((k, h) for k, _, h in self.plot_pixels())
+        self.assertNotEqual(dict((k, h) for k, _, h in first)["lobe"], after["lobe"], "the lobe follows k_e")
+
+    def downloads(self):
+        return DRIVER.execute_script("return window.__downloads;")
+
+    def catch_downloads(self):
+        # The page downloads through an <a download> it clicks: recorded here instead of saved.
+        DRIVER.execute_script(
+            "window.__downloads = []; HTMLAnchorElement.prototype.click = function () {"
+            " const a = this; fetch(a.href).then(r => r.blob()).then(b => window.__downloads.push("
+            "{name: a.download, type: b.type, size: b.size})); };")
+
+    def test_screenshot_and_record_buttons(self):
+        from selenium.webdriver.common.by import By
+        self.open("preset=6&size=" + SIZE)
+        self.catch_downloads()
+        DRIVER.find_element(By.ID, "screenshot").click()
+        wait_for(DRIVER, "return window.__downloads.length === 1", "the screenshot's download")
+        shot = self.downloads()[0]
+        self.assertTrue(shot["name"].endswith(".png"), shot)
+        self.assertEqual(shot["type"], "image/png")
+        self.assertGreater(shot["size"], 1000)
+        DRIVER.find_element(By.ID, "record").click()
+        time.sleep(1.5)
+        DRIVER.find_element(By.ID, "record").click()
+        wait_for(DRIVER, "return window.__downloads.length === 2", "the recording's download", timeout=20)
+        video = self.downloads()[1]
+        self.assertTrue(video["name"].endswith(".webm"), video)
+        self.assertTrue(video["type"].startswith("video/webm"), video)
+        self.assertGreater(video["size"], 0)
+
+    def test_drop_a_model(self):
+        self.open("size=" + SIZE)
+        _, _, before = page_pixels()
+        data = base64.b64encode(pack_glb(os.path.join(MODEL_DIR, "lowpoly_gem.gltf"))).decode()
+        frames = self.frames()
+        DRIVER.execute_script(
+            "const bytes = Uint8Array.from(atob(arguments[0]), c => c.charCodeAt(0));"
+            "const t = new DataTransfer(); t.items.add(new File([bytes], 'gem.glb'));"
+            "for (const type of ['dragenter', 'dragover', 'drop'])"
+            " document.getElementById('canvas').dispatchEvent(new DragEvent(type, {dataTransfer: t, bubbles: true, cancelable: true}));",
+            data)
+        wait_for(DRIVER, "return window.shadelab.frames > %d" % frames, "a frame after the drop")
+        self.assertTrue(any("gem.glb" in a for a in self.state()), self.state())
+        self.assertIsNone(DRIVER.execute_script("return window.shadelab.lastError || null;"))
+        _, _, after = page_pixels()
+        self.assertNotEqual(before, after)
+
+
 class PanelKeys(PanelTest):
     def test_keys(self):
         """The key table's keys change the state and the URL as the desktop viewer's do."""
