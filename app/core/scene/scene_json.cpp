@@ -204,7 +204,7 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
 
 Material SceneReader::material(const json& j, const std::string& path) const {
     Material m;
-    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke"});
+    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke", "anisotropy"});
     vec3(j, "color", path, m.color, 0.0, 1.0);
     m.colorSet = j.contains("color");
     vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
@@ -212,6 +212,8 @@ Material SceneReader::material(const json& j, const std::string& path) const {
     number(j, "kd", path, m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
     number(j, "ks", path, m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
     number(j, "ke", path, m.ke, kExponentRange.lo, kExponentRange.hi);
+    m.anisotropic = j.contains("anisotropy");
+    vec2(j, "anisotropy", path, m.anisotropy, kExponentRange.lo, kExponentRange.hi);
     return m;
 }
 
@@ -320,6 +322,10 @@ Scene SceneReader::read(const json& root) {
     text(root, "title", s.title);
     text(root, "caption", s.caption);
     choice(root, "reflection", "", s.reflection, kReflectionModelNames);
+    for (const SceneObject& o : s.objects)
+        if (o.material.anisotropic && s.reflection == ReflectionModel::Phong)
+            fail("reflection", "phong cannot go with a material's \"anisotropy\": Ashikhmin and Shirley's lobe is "
+                               "Blinn-Phong's (about H)");
     choice(root, "output_encoding", "", s.outputEncoding, kOutputEncodingNames);
     s.outputEncodingGiven = root.contains("output_encoding");
     vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
@@ -459,6 +465,7 @@ nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh) {
     j["kd"] = m.kd;
     j["ks"] = m.ks;
     j["ke"] = m.ke;
+    if (m.anisotropic) j["anisotropy"] = {m.anisotropy.x, m.anisotropy.y};
     return j;
 }
 
@@ -830,6 +837,14 @@ void checkCoefficients(const Material& m, const std::string& where) {
     check("kd", m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
     check("ks", m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
     check("ke", m.ke, kExponentRange.lo, kExponentRange.hi);
+}
+
+void checkAnisotropy(const Scene& s, const std::string& where) {
+    if (s.reflection != ReflectionModel::Phong) return;
+    for (const SceneObject& o : s.objects)
+        if (o.material.anisotropic)
+            throw InputError(where + "anisotropy: Ashikhmin and Shirley's lobe is Blinn-Phong's (about H); it needs "
+                                     "reflection blinn-phong, not phong");
 }
 
 void checkImageSize(int width, int height, const std::string& where) {
