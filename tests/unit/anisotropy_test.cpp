@@ -4,12 +4,16 @@
 // option with their refusals.
 #include "cli/options.hpp"
 #include "core/base/error.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/geometry/scene_geometry.hpp"
+#include "core/probe/probe.hpp"
 #include "core/geometry/mesh.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/shading/lighting.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <random>
@@ -188,4 +192,49 @@ TEST(Anisotropy, SceneFieldAndOption) {
     for (const char* bad : {"8", "8,", "8,256,3", "0,8", "8,1e9"}) EXPECT_THROW(parseOptions({"--anisotropy", bad}), InputError) << bad;
     Scene p = defaultScene();
     EXPECT_THROW(applyOverrides(p, parseOptions({"--anisotropy", "8,256", "--reflection", "phong"})), InputError);
+}
+
+// The probe's light entries: "tangent", "bitangent" and "exponent" at every evaluation of every mode,
+// against the formula: T and B unit and orthogonal to N and to each other, B = N x T (the sphere's
+// handedness is +1), on the untransformed sphere T along the parallels (Gouraud: exactly, at the
+// corner; Phong: to a few degrees), and the exponent (k_t (H.T)^2 + k_b (H.B)^2) / (1 - (H.N)^2) from the probe's own H and N.
+TEST(Anisotropy, ProbeReportsTheFrameAndTheExponent) {
+    Scene s = defaultScene();
+    s.objects[0].material.anisotropic = true;
+    s.objects[0].material.anisotropy = {8.0f, 256.0f};
+    s.layout = Layout::Compare;
+    s.width = 3 * 64;
+    s.height = 64;
+    const SceneGeometry g = buildSceneGeometry(s);
+    const SceneRayCaster caster(s, g);
+    int checked = 0;
+    for (int y = 1; y < s.height; y += 4)
+        for (int x = 1; x < s.width; x += 4) {
+            const ProbeResult r = probePixel(s, g, caster, x, y);
+            if (r.miss) continue;
+            for (const ProbeEvaluation& e : r.modes[0].evaluations) {
+                const glm::vec3 n = e.nrmWorld, t = e.frame.tangent, b = e.frame.bitangent;
+                ASSERT_TRUE(e.anisotropic);
+                EXPECT_NEAR(glm::length(t), 1.0f, 1e-5f);
+                EXPECT_NEAR(glm::dot(t, n), 0.0f, 1e-5f);
+                EXPECT_NEAR(glm::distance(b, glm::cross(n, t)), 0.0f, 1e-5f);
+                // Gouraud: the vertex's own frame. Phong: the corners' tangents interpolated, a few degrees
+                // off the parallel through the point itself (their weights are not the normal's).
+                const ShadingMode mode = r.modes[0].mode;
+                if (mode != ShadingMode::Flat && std::fabs(n.y) < 0.95f)
+                    EXPECT_NEAR(glm::distance(t, glm::normalize(glm::cross(glm::vec3(0, 1, 0), n))), 0.0f,
+                                mode == ShadingMode::Gouraud ? 1e-5f : 0.05f);
+                for (const ProbeLight& l : e.lights) {
+                    const double ht = glm::dot(l.halfway, t), hb = glm::dot(l.halfway, b), hn = l.hDotN;
+                    if (1.0 - hn * hn < 1e-4) continue;  // near H = N the quotient is rounding
+                    const double expected = (8.0 * ht * ht + 256.0 * hb * hb) / (1.0 - hn * hn);
+                    EXPECT_NEAR(l.exponent, expected, 1e-3 * expected) << x << "," << y;
+                    ++checked;
+                }
+            }
+            const nlohmann::json j = nlohmann::json::parse(probeToJson(s, r));
+            const nlohmann::json& light = j["evaluations"][0]["lights"][0];
+            EXPECT_TRUE(light.contains("tangent") && light.contains("bitangent") && light.contains("exponent")) << light.dump();
+        }
+    EXPECT_GT(checked, 200);
 }
