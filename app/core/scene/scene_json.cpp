@@ -456,7 +456,8 @@ nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
     return j;
 }
 
-nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh) {
+// `reflection`: anisotropy is written under blinn-phong only, where it applies (the reader refuses it under phong).
+nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh, ReflectionModel reflection) {
     nlohmann::ordered_json j;
     // A glTF model's own colours stay unless a colour was chosen: write it only then.
     if (m.colorSet || mesh.type != MeshSpec::Type::Gltf) j["color"] = vecJson(m.color);
@@ -465,7 +466,7 @@ nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh) {
     j["kd"] = m.kd;
     j["ks"] = m.ks;
     j["ke"] = m.ke;
-    if (m.anisotropic) j["anisotropy"] = {m.anisotropy.x, m.anisotropy.y};
+    if (m.anisotropic && reflection == ReflectionModel::BlinnPhong) j["anisotropy"] = {m.anisotropy.x, m.anisotropy.y};
     return j;
 }
 
@@ -521,13 +522,13 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     const bool shorthand = !s.usesObjectList && s.objects.size() == 1 && isIdentity(s.objects[0].transform);
     if (shorthand) {
         j["mesh"] = meshJson(s.objects[0].mesh, saveDir);
-        j["material"] = materialJson(s.objects[0].material, s.objects[0].mesh);
+        j["material"] = materialJson(s.objects[0].material, s.objects[0].mesh, s.reflection);
     } else {
         j["objects"] = nlohmann::ordered_json::array();
         for (const SceneObject& o : s.objects) {
             nlohmann::ordered_json oj;
             oj["mesh"] = meshJson(o.mesh, saveDir);
-            oj["material"] = materialJson(o.material, o.mesh);
+            oj["material"] = materialJson(o.material, o.mesh, s.reflection);
             oj["transform"] = {{"translation", vecJson(o.transform.translation)},
                                {"rotation_deg", vecJson(o.transform.rotationDeg)},
                                {"scale", vecJson(o.transform.scale)}};
