@@ -221,9 +221,10 @@ TEST(Anisotropy, ProbeReportsTheFrameAndTheExponent) {
                 // Gouraud: the vertex's own frame. Phong: the corners' tangents interpolated, a few degrees
                 // off the parallel through the point itself (their weights are not the normal's).
                 const ShadingMode mode = r.modes[0].mode;
-                if (mode != ShadingMode::Flat && std::fabs(n.y) < 0.95f)
+                if (mode != ShadingMode::Flat && std::fabs(n.y) < 0.95f) {
                     EXPECT_NEAR(glm::distance(t, glm::normalize(glm::cross(glm::vec3(0, 1, 0), n))), 0.0f,
                                 mode == ShadingMode::Gouraud ? 1e-5f : 0.05f);
+                }
                 for (const ProbeLight& l : e.lights) {
                     const double ht = glm::dot(l.halfway, t), hb = glm::dot(l.halfway, b), hn = l.hDotN;
                     if (1.0 - hn * hn < 1e-4) continue;  // near H = N the quotient is rounding
