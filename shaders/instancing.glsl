@@ -22,3 +22,5 @@ mat4 worldFromObject() { return u_worldFromObject; }
 // A normal in world space: the inverse transpose of the object's transform (not renormalised here).
 vec3 normalToWorld(vec3 nrmObject) { return mat3(u_normalWorldFromObject) * nrmObject; }
 #endif
+// A tangent lies in the surface: it goes with the transform itself, not its inverse transpose.
+vec3 tangentToWorld(vec3 tanObject) { return mat3(worldFromObject()) * tanObject; }

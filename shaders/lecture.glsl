@@ -6,7 +6,7 @@
 // Flat shading evaluates it once per triangle, Gouraud once per vertex, Phong once per fragment:
 // the three modes reach lecture() below through lighting.glsl's shade() and differ only in where
 // they call it. What this program adds around it
-// (distance falloff, spot cones, shadows, area lights, Fresnel, showing one term) is in lighting.glsl.
+// (distance falloff, spot cones, shadows, area lights, Fresnel, anisotropy, showing one term) is in lighting.glsl.
 #include "specialisation.glsl"
 
 struct Material {
@@ -23,6 +23,7 @@ vec3 toLight(int l, vec3 P);                   // from P towards light l (not un
 vec3 lightColor(int l);                        // L_l: the light's colour times its intensity
 float arriving(int l, vec3 P, vec3 N, vec3 I);  // 1, or less: falloff, cone and shadow (lighting.glsl)
 float lobeFactor(vec3 I, vec3 V, float k_e);   // 1, or the lobe's normalisation and Fresnel (lighting.glsl)
+float lobeExponent(vec3 H, float k_e);         // k_e, or anisotropic: k_t along T, k_b along B (lighting.glsl)
 
 // One light's term: L_l (k_d C max(0, N.I) + k_s S max(0, R(I).V)^k_e). N: the surface's unit
 // normal, I: the unit vector towards the light, V: the unit vector towards the eye.
@@ -30,7 +31,7 @@ vec3 oneLight(Material m, vec3 L_l, vec3 N, vec3 I, vec3 V) {
     vec3 R = 2.0 * dot(N, I) * N - I;  // I mirrored about N: where a mirror would send the light
     vec3 H = normalize(I + V);         // halfway between I and V (Blinn-Phong)
     float cosLobe = SL_REFLECTION == SL_REFLECTION_PHONG ? dot(R, V) : dot(H, N);
-    float spec_l = pow(max(cosLobe, 0.0), m.k_e) * lobeFactor(I, V, m.k_e);
+    float spec_l = pow(max(cosLobe, 0.0), lobeExponent(H, m.k_e)) * lobeFactor(I, V, m.k_e);
     vec3 diffuse = m.k_d * m.C * max(dot(N, I), 0.0);
     vec3 specular = m.k_s * m.S * spec_l;
     return L_l * (diffuse + specular);

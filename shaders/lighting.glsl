@@ -7,6 +7,8 @@
 //   - L_l arrives weakened: by the distance (inverse square), across a spot light's cone, and by
 //     shadows, v_l (how much of light l reaches the point; arriving());
 //   - spec_l may be normalised for constant energy and weighted by Fresnel's reflectance (lobeFactor());
+//   - spec_l's exponent may differ along the surface's tangent and bitangent: anisotropic reflection,
+//     Ashikhmin and Shirley's (lobeExponent(), SL_ANISOTROPY);
 //   - an area light is a sum of point lights, its samples (areaLights());
 //   - "show" keeps one term of the sum (termsShown()); E is the light a glTF material gives off
 //     (shaders/object_color.glsl); a textured flat or Gouraud surface splits the sum (shadeLectureTermsOfC).
@@ -84,13 +86,61 @@ float fresnelExact(float cosVH) {  // unpolarised (R_par + R_perp) / 2; no total
     return 0.5 * (par * par + perp * perp);
 }
 
+// ---- spec_l's exponent: anisotropic reflection (SL_ANISOTROPY) ----
+
+#if SL_ANISOTROPY
+// Brushed metal: Ashikhmin and Shirley's exponent, k_t along the surface's tangent T and k_b along its
+// bitangent B (core/shading/lighting.cpp, anisotropicExponent):
+//
+//   spec_l = max(0, H.N)^k(H),   k(H) = (k_t (H.T)^2 + k_b (H.B)^2) / (1 - (H.N)^2)
+//
+// 1 - (H.N)^2 is (H.T)^2 + (H.B)^2 for the orthonormal frame below, and computed so (no cancellation as
+// H nears N, where spec_l is 1 whatever k is). k_t = k_b = k_e gives Blinn-Phong's lobe exactly.
+//
+// The tangent where the point is shaded: the vertex's (gouraud.vert), the triangle's (flat.vert, the
+// same attribute: FlatMesh::tangents), interpolated (phong.vert passes v_tanWorld to phong.frag).
+#ifdef SL_VERTEX_STAGE
+layout(location = SL_ATTRIB_TANGENT) in vec4 a_tanObject;  // xyz the tangent, w the handedness
+vec3 tangentToWorld(vec3 tanObject);                       // shaders/instancing.glsl
+vec4 tangentHere() { return vec4(tangentToWorld(a_tanObject.xyz), a_tanObject.w); }
+#else
+in vec4 v_tanWorld;
+vec4 tangentHere() { return v_tanWorld; }
+#endif
+// The frame of the point being shaded, T and B (unit, orthogonal to N): shadeMaterial() sets it first.
+vec3 s_tangentWorld, s_bitangentWorld;
+void useTangentFrame(vec3 N) {
+    vec4 tanWorld = tangentHere();
+    vec3 T = tanWorld.xyz - N * dot(N, tanWorld.xyz);  // Gram-Schmidt against N
+    if (dot(T, T) < 1e-12) T = cross(vec3(0.0, 1.0, 0.0), N);  // nothing left: around the up axis
+    if (dot(T, T) < 1e-12) T = vec3(1.0, 0.0, 0.0) - N * N.x;
+    s_tangentWorld = normalize(T);
+    s_bitangentWorld = (tanWorld.w < 0.0 ? -1.0 : 1.0) * cross(N, s_tangentWorld);
+}
+float lobeExponent(vec3 H, float k_e) {
+    float ht = dot(H, s_tangentWorld), hb = dot(H, s_bitangentWorld);
+    float sinSq = ht * ht + hb * hb;  // 1 - (H.N)^2
+    return sinSq > 0.0 ? (u_anisotropy.x * ht * ht + u_anisotropy.y * hb * hb) / sinSq : u_anisotropy.x;
+}
+// "energy": Ashikhmin and Shirley's sqrt((k_t + 1)(k_b + 1)) / 8pi, relative to k_t = k_b = 32.
+float lobeNormalization(float k_e) {
+    return sqrt((u_anisotropy.x + 1.0) * (u_anisotropy.y + 1.0)) / (SL_ENERGY_REFERENCE_EXPONENT + 1.0);
+}
+#else
+void useTangentFrame(vec3 N) {}                        // no frame to set
+float lobeExponent(vec3 H, float k_e) { return k_e; }  // the lecture's: one exponent all round
+// "energy": n(k_e) / n(32), n = (k_e + 2) / 2pi (Phong) or (k_e + 8) / 8pi (Blinn-Phong).
+float lobeNormalization(float k_e) {
+    float n = SL_REFLECTION == SL_REFLECTION_PHONG ? 2.0 : 8.0;
+    return (k_e + n) / (SL_ENERGY_REFERENCE_EXPONENT + n);
+}
+#endif
+
 // spec_l's factor besides the lobe: 1 for the lecture's model; with "energy", n(k_e) / n(32): constant
 // reflected energy, the same look as "none" at k_e = 32; with Fresnel, the reflectance at V.H.
 float lobeFactor(vec3 I, vec3 V, float k_e) {
     float factor = 1.0;
-    float n = SL_REFLECTION == SL_REFLECTION_PHONG ? 2.0 : 8.0;
-    if (SL_SPECULAR_NORMALIZATION == SL_NORMALIZATION_ENERGY)
-        factor *= (k_e + n) / (SL_ENERGY_REFERENCE_EXPONENT + n);
+    if (SL_SPECULAR_NORMALIZATION == SL_NORMALIZATION_ENERGY) factor *= lobeNormalization(k_e);
     if (SL_FRESNEL == SL_FRESNEL_SCHLICK) factor *= fresnelSchlick(dot(V, normalize(I + V)));
     if (SL_FRESNEL == SL_FRESNEL_EXACT) factor *= fresnelExact(dot(V, normalize(I + V)));
     return factor;
@@ -186,6 +236,7 @@ vec3 shadeMaterial(Material m, vec3 P, vec3 N) {
     vec3 E = shownEmission();
     if (SL_SHOW == SL_SHOW_EMISSIVE) return E;
     Material shown = termsShown(m);
+    useTangentFrame(N);  // anisotropic reflection's T and B at P (nothing without SL_ANISOTROPY)
     vec3 V = normalize(toEye(P));
     return E + lecture(shown, ambientLight(), P, N, V) + areaLights(shown, P, N, V);
 }

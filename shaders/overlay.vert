@@ -11,11 +11,13 @@ layout(location = SL_ATTRIB_NORMAL) in vec3 a_nrmObject;
 
 uniform float u_normalLength;  // world units
 uniform float u_depthBias;     // NDC depth units pulled towards the viewer, so lines win over the surface
+uniform float u_tangentTips;   // 1: the tips are tangents (the tangents overlay), which go with the transform itself
 
 void main() {
     vec3 posWorld = (u_worldFromObject * vec4(a_posObject, 1.0)).xyz;
     if (dot(a_nrmObject, a_nrmObject) > 0.25)
-        posWorld += u_normalLength * normalize(mat3(u_normalWorldFromObject) * a_nrmObject);
+        posWorld += u_normalLength * normalize(u_tangentTips > 0.5 ? mat3(u_worldFromObject) * a_nrmObject
+                                                                   : mat3(u_normalWorldFromObject) * a_nrmObject);
     gl_Position = u_clipFromWorld * vec4(posWorld, 1.0);
     gl_Position.z -= u_depthBias * gl_Position.w;
 }

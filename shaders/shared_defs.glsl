@@ -10,6 +10,7 @@
 #define SL_ATTRIB_COLOR 4          // a_color (SL_TEXTURED)
 #define SL_ATTRIB_INSTANCE 5       // a_instanceFromPart, a mat4 in locations 5..8 (SL_INSTANCED: shaders/instancing.glsl)
 #define SL_ATTRIB_EMISSIVE_TEXCOORD 9  // a_emissiveTexcoord (SL_TEXTURED with SL_EMISSIVE_TEXTURE)
+#define SL_ATTRIB_TANGENT 10       // a_tanObject, xyz the tangent, w the handedness (SL_ANISOTROPY; flat: a_faceTanObject)
 #define SL_FLAT_NORMAL_Z_NEGATIVE 3.0  // added to the face normal's y where its z is negative (flat_packed.vert)
 
 #define SL_BINDING_FRAME 0         // FrameBlock: camera and lights, one per pane

@@ -48,6 +48,12 @@
 // normal flipped. Each mode flips where it knows which side the eye sees: phong.frag per fragment
 // (object_color.glsl, facingNormal), flat.vert per triangle, gouraud.vert evaluates both sides and
 // gouraud.frag picks one.
+// SL_ANISOTROPY = 1: a draw of an anisotropic material under Blinn-Phong (Ashikhmin and Shirley's
+// exponent, lighting.glsl): its vertices carry a tangent (SL_ATTRIB_TANGENT). Only such draws get the
+// define, and their own vertex arrays: every other draw compiles to the programs it always did.
+#ifndef SL_ANISOTROPY
+#define SL_ANISOTROPY 0
+#endif
 #ifndef SL_DOUBLE_SIDED
 #define SL_DOUBLE_SIDED 0
 #endif

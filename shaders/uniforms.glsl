@@ -44,4 +44,5 @@ layout(std140) uniform ObjectBlock {
     // What a glTF material adds (shaders/object_color.glsl); u_color.a is the base colour factor's alpha.
     vec4 u_emissive;                         // rgb: E's factor (emissiveFactor x emissive strength)
     vec4 u_alphaCutoff;                      // x: MASK's cutoff
+    vec4 u_anisotropy;                       // x: k_t, y: k_b (SL_ANISOTROPY: lighting.glsl, lobeExponent)
 };

@@ -271,6 +271,14 @@ const OptionSpec kOptions[] = {
     materialOption<&Options::kd>("--kd", "objects[].material.kd", kCoefficientRange, "diffuse weight ({range}) of every object"),
     materialOption<&Options::ks>("--ks", "objects[].material.ks", kCoefficientRange, "specular weight ({range}) of every object"),
     materialOption<&Options::ke>("--ke", "objects[].material.ke", kExponentRange, "specular exponent ({range}) of every object"),
+    {"--anisotropy", "", "KT,KB", G::General, bounds(kExponentRange), nullptr, "objects[].material.anisotropy",
+     "anisotropic (brushed-metal) highlights on every object: Ashikhmin and Shirley's exponent, k_t along the "
+     "surface's tangent and k_b along its bitangent ({range} each) instead of k_e; k_t = k_b = k_e is Blinn-Phong. "
+     "Needs `--reflection blinn-phong` (see *What is drawn*)",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const auto kb = pairOf(self.name, v, ',', "KT,KB, two exponents, e.g. 8,256");
+         o.anisotropy = glm::vec2(floatIn(self, kb.first), floatIn(self, kb.second));
+     }},
     colorOption<&Options::color>("--color", "objects[].material.color",
                                  "C, the diffuse and ambient colour of every object, linear RGB ({range} each); "
                                  "replaces a glTF model's base colours"),

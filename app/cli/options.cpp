@@ -257,8 +257,10 @@ void applyOverrides(Scene& s, const Options& o) {
         if (o.ke) obj.material.ke = *o.ke;
         if (o.color) obj.material.color = *o.color, obj.material.colorSet = true;
         if (o.specularColor) obj.material.specularColor = *o.specularColor;
+        if (o.anisotropy) obj.material.anisotropic = true, obj.material.anisotropy = *o.anisotropy;
         checkCoefficients(obj.material, "--");
     }
+    checkAnisotropy(s, o.anisotropy ? "--" : o.reflection ? "--reflection: " : "");
     if (o.ambient) s.ambient = *o.ambient;
     if (o.background) s.background = *o.background;
     if (o.width) s.width = *o.width, s.height = *o.height;

@@ -78,6 +78,7 @@ struct Options {
     // --color, --specular-color R,G,B: C and S of every object; --ambient, --background R,G,B: the
     // scene's A and background (linear RGB, 0..1).
     std::optional<glm::vec3> color, specularColor, ambient, background;
+    std::optional<glm::vec2> anisotropy;  // --anisotropy KT,KB: every object's k_t, k_b
     std::optional<TermView> show;           // --show all|ambient|diffuse|specular|light:N|unlit
     std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
     std::optional<float> diffFactor;        // --diff-factor X (1..1000)

@@ -108,9 +108,12 @@ void MeshCache::bindInstances(std::size_t object, const InstanceGroup& group) {
     }
 }
 
-void MeshCache::uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures) {
+void MeshCache::uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures, const std::vector<char>& tangents) {
     for (ShadingMode mode : modes)
-        for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) gpuMesh(o, mode);
+        for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) {
+            gpuMesh(o, mode);
+            if (o < tangents.size() && tangents[o]) gpuMesh(o, mode, true);
+        }
     if (textures)
         for (std::size_t o = 0; o < objectImages_.size(); ++o)
             for (std::size_t t = 0; t < objectImages_[o].size(); ++t) texture(o, int(t));
@@ -165,25 +168,39 @@ void interleave(InterleavedVertices& out, std::size_t count, std::size_t floats,
     if (in.emissive()) out.layout.push_back({SL_ATTRIB_EMISSIVE_TEXCOORD, 2});
 }
 
-// Gouraud and Phong: position xyz, normal xyz.
-InterleavedVertices smoothVertices(const Mesh& mesh) {
+// The anisotropic draws' tangent (xyz, w the handedness) after a vertex's other floats; a mesh
+// without tangents gets T = +x.
+void writeTangent(float* v, const std::vector<glm::vec4>& tangents, std::size_t i) {
+    const glm::vec4 t = i < tangents.size() ? tangents[i] : glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
+    v[0] = t.x, v[1] = t.y, v[2] = t.z, v[3] = t.w;
+}
+
+// Gouraud and Phong: position xyz, normal xyz (and, with `tangents`, the tangent xyzw).
+InterleavedVertices smoothVertices(const Mesh& mesh, bool tangents) {
     InterleavedVertices out;
     out.layout = {{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_NORMAL, 3}};
-    interleave(out, mesh.positions.size(), 6, {mesh.texcoords, mesh.colors, mesh.emissiveTexcoords}, [&](float* v, std::size_t i) {
-        const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
-        v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
-    });
+    if (tangents) out.layout.push_back({SL_ATTRIB_TANGENT, 4});
+    interleave(out, mesh.positions.size(), tangents ? 10 : 6, {mesh.texcoords, mesh.colors, mesh.emissiveTexcoords},
+               [&](float* v, std::size_t i) {
+                   const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
+                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
+                   if (tangents) writeTangent(v + 6, mesh.tangents, i);
+               });
     return out;
 }
 
-// Flat: position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert).
-InterleavedVertices flatVertices(const FlatMesh& flat) {
+// Flat: position xyz, the triangle's centroid xyz and its face normal xyz (shaders/flat.vert), and,
+// with `tangents`, its tangent xyzw.
+InterleavedVertices flatVertices(const FlatMesh& flat, bool tangents) {
     InterleavedVertices out;
     out.layout = {{SL_ATTRIB_POSITION, 3}, {SL_ATTRIB_CENTROID, 3}, {SL_ATTRIB_NORMAL, 3}};
-    interleave(out, flat.positions.size(), 9, {flat.texcoords, flat.colors, flat.emissiveTexcoords}, [&](float* v, std::size_t i) {
-        const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
-        v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
-    });
+    if (tangents) out.layout.push_back({SL_ATTRIB_TANGENT, 4});
+    interleave(out, flat.positions.size(), tangents ? 13 : 9, {flat.texcoords, flat.colors, flat.emissiveTexcoords},
+               [&](float* v, std::size_t i) {
+                   const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
+                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
+                   if (tangents) writeTangent(v + 9, flat.tangents, i);
+               });
     return out;
 }
 
@@ -242,9 +259,9 @@ const Mesh& MeshCache::uploadSource(std::size_t object) {
 // not depend on the mesh's size, so draw code llvmpipe compiled for one mesh serves the next (see
 // renderSceneHeadless()). Where C varies (Mesh::variesColor), each vertex also carries its texture
 // coordinates and colour.
-const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mode) {
+const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mode, bool tangents) {
     const bool flat = mode == ShadingMode::Flat;
-    GpuMesh& g = gpuMeshes_[object][flat ? 1 : 0];
+    GpuMesh& g = gpuMeshes_[object][(flat ? 1 : 0) + (tangents ? 2 : 0)];
     if (g.vao) return g;
     if (!geometry_) throw std::logic_error("mesh cache: a shading mode that was not uploaded before the CPU geometry was released");
     const Mesh& mesh = uploadSource(object);
@@ -252,10 +269,10 @@ const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mod
         const FlatMesh flatMesh =
             options_.meshOrder == RendererOptions::MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
         uploadVertexArray(g,
-                          options_.packedFlatVertices ? packedFlatVertices(flatMesh) : flatVertices(flatMesh),
+                          options_.packedFlatVertices && !tangents ? packedFlatVertices(flatMesh) : flatVertices(flatMesh, tangents),
                           flatMesh.indices);
     } else {
-        uploadVertexArray(g, smoothVertices(mesh), mesh.indices);
+        uploadVertexArray(g, smoothVertices(mesh, tangents), mesh.indices);
     }
     checkGl("mesh upload");
     if (gpuMeshes_[object][0].vao && gpuMeshes_[object][1].vao) orderedMeshes_[object] = Mesh{};  // both uploaded

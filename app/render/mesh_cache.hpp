@@ -26,7 +26,8 @@ public:
     void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
     // Uploads what `modes` draw (and the textures), then lets go of the CPU copy: a one-frame
     // headless render of a large model need not hold it twice. After this only `modes` can be drawn.
-    void uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures);
+    // `tangents`: per object, whether its anisotropic vertex arrays are drawn too (empty: none are).
+    void uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures, const std::vector<char>& tangents = {});
 
     std::size_t objects() const { return objectParts_.size(); }
     const std::vector<MeshPart>& parts(std::size_t object) const { return objectParts_[object]; }
@@ -44,8 +45,10 @@ public:
         gl::Buffer indices;
         GLsizei indexCount = 0;
     };
-    // The object's vertex array for `mode` (uploaded now if it was not).
-    const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode);
+    // The object's vertex array for `mode` (uploaded now if it was not). `tangents`: the anisotropic
+    // draws' own arrays, the same vertices with each one's tangent (Mesh::tangents; flat:
+    // FlatMesh::tangents) at SL_ATTRIB_TANGENT, flat's never packed. Other draws keep the arrays they had.
+    const GpuMesh& gpuMesh(std::size_t object, ShadingMode mode, bool tangents = false);
 
     // An instanced part's transforms, split by handedness (a mirroring one turns the winding): one
     // instanced draw each, reading them from the object's instance buffer from `first` on.
@@ -73,7 +76,7 @@ private:
     const RendererOptions options_;
     std::shared_ptr<const SceneGeometry> geometry_;
     std::vector<std::vector<MeshPart>> objectParts_;      // per object: its parts (one for a plain mesh)
-    std::vector<std::array<GpuMesh, 2>> gpuMeshes_;       // per object: [smooth, flat]
+    std::vector<std::array<GpuMesh, 4>> gpuMeshes_;       // per object: [smooth, flat, smooth + tangents, flat + tangents]
     std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both its uploads are done
     std::vector<Aabb> objectBoxes_;
     std::vector<std::size_t> objectTriangles_;

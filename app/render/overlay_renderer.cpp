@@ -55,6 +55,17 @@ std::vector<float> vertexNormalLines(const Mesh& mesh) {
     return out;
 }
 
+// From each vertex along its tangent T (Mesh::tangents), the direction k_t applies along.
+std::vector<float> tangentLines(const Mesh& mesh) {
+    std::vector<float> out;
+    out.reserve(mesh.tangents.size() * 2 * kFloatsPerVertex);
+    for (std::size_t i = 0; i < mesh.positions.size() && i < mesh.tangents.size(); ++i) {
+        pushVertex(out, mesh.positions[i]);
+        pushVertex(out, mesh.positions[i], glm::vec3(mesh.tangents[i]));
+    }
+    return out;
+}
+
 // From each triangle's centroid along the lecture's face normal (the one flat shading uses).
 std::vector<float> faceNormalLines(const Mesh& mesh) {
     std::vector<float> out;
@@ -94,6 +105,7 @@ OverlayRenderer::LineProgram OverlayRenderer::lineProgram(gl::Program program) {
     LineProgram p;
     p.normalLength = glGetUniformLocation(program.get(), "u_normalLength");
     p.depthBias = glGetUniformLocation(program.get(), "u_depthBias");
+    p.tangentTips = glGetUniformLocation(program.get(), "u_tangentTips");
     p.color = glGetUniformLocation(program.get(), "u_overlayColor");
     p.viewportSize = glGetUniformLocation(program.get(), "u_viewportSize");
     p.lineWidth = glGetUniformLocation(program.get(), "u_lineWidth");
@@ -146,6 +158,7 @@ const OverlayRenderer::Lines& OverlayRenderer::lines(std::size_t object, LineKin
     const Mesh& mesh = geometry_->meshes[object];
     const std::vector<float> data = kind == Edges           ? edgeLines(mesh)
                                     : kind == VertexNormals ? vertexNormalLines(mesh)
+                                    : kind == Tangents      ? tangentLines(mesh)
                                                             : faceNormalLines(mesh);
     upload(l.vao, l.vertices, data, GL_STATIC_DRAW);
     l.vertexCount = GLsizei(data.size() / kFloatsPerVertex);
@@ -199,17 +212,21 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
             const glm::vec3 s = glm::abs(scene.objects[o].transform.scale);
             const float normalLength = options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z});
             const std::pair<bool, LineKind> kinds[] = {
-                {options.wireframe, Edges}, {options.vertexNormals, VertexNormals}, {options.faceNormals, FaceNormals}};
+                {options.wireframe, Edges}, {options.vertexNormals, VertexNormals}, {options.faceNormals, FaceNormals},
+                {options.tangents, Tangents}};
             for (const auto& [enabled, kind] : kinds) {
                 if (!enabled) continue;
                 // Wireframe: light grey, half covering; vertex normals cyan; face normals yellow (the
-                // colours of the lecture's normal slides).
-                static const float kColors[kLineKinds][4] = {
-                    {0.92f, 0.92f, 0.92f, 0.55f}, {0.25f, 0.85f, 1.0f, 1.0f}, {1.0f, 0.85f, 0.2f, 1.0f}};
+                // colours of the lecture's normal slides); tangents magenta.
+                static const float kColors[kLineKinds][4] = {{0.92f, 0.92f, 0.92f, 0.55f},
+                                                             {0.25f, 0.85f, 1.0f, 1.0f},
+                                                             {1.0f, 0.85f, 0.2f, 1.0f},
+                                                             {1.0f, 0.3f, 0.85f, 1.0f}};
                 const Lines& l = lines(o, kind);
                 if (l.vertexCount == 0) continue;
                 const LineProgram& program = useWidth(std::max(1.0f, options.lineWidth * (kind == Edges ? 0.5f : 0.75f)));
                 glUniform1f(program.normalLength, normalLength);
+                glUniform1f(program.tangentTips, kind == Tangents ? 1.0f : 0.0f);
                 glUniform4fv(program.color, 1, kColors[kind]);
                 glBindVertexArray(l.vao.get());
                 glDrawArrays(GL_LINES, 0, l.vertexCount);
@@ -302,6 +319,7 @@ void OverlayRenderer::drawWorldLines(const std::vector<float>& data, const std::
     uniforms_.bindObject(identityObject);
     const LineProgram& p = useWidth(lineWidth_);
     glUniform1f(p.normalLength, 0.0f);
+    glUniform1f(p.tangentTips, 0.0f);
     glBindVertexArray(worldLines_.vao.get());
     for (std::size_t d = 0; d < runs.size(); ++d) {
         const GLint end = d + 1 < runs.size() ? runs[d + 1].first : GLint(data.size() / kFloatsPerVertex);

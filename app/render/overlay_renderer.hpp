@@ -25,6 +25,7 @@ struct OverlayOptions {
     bool wireframe = false;
     bool vertexNormals = false;
     bool faceNormals = false;
+    bool tangents = false;      // each vertex's tangent T (Mesh::tangents: anisotropic reflection's), as long as a normal
     bool lightMarkers = false;
     float normalScale = 0.12f;  // normal line length as a share of each object's bounding radius
     // Pixels wide: light markers, sample markers and arrows (the probe's N, I, V, R, H); normals get
@@ -34,13 +35,14 @@ struct OverlayOptions {
     // nx x ny sample positions are marked: the light selected in the viewer's panel.
     int sampleMarkersLight = -1;
     float lineWidth = 1.0f;
-    bool any() const { return wireframe || vertexNormals || faceNormals || lightMarkers || sampleMarkersLight >= 0; }
+    bool any() const { return wireframe || vertexNormals || faceNormals || tangents || lightMarkers || sampleMarkersLight >= 0; }
     // The switch of an overlay the command line and the panel name (core/ui/view_names.hpp).
     bool& shown(Overlay overlay) {
         switch (overlay) {
         case Overlay::Wireframe: return wireframe;
         case Overlay::VertexNormals: return vertexNormals;
         case Overlay::FaceNormals: return faceNormals;
+        case Overlay::Tangents: return tangents;
         case Overlay::LightMarkers: break;
         }
         return lightMarkers;
@@ -70,7 +72,7 @@ public:
                 const std::vector<OverlayArrow>& arrows = {});
 
 private:
-    enum LineKind { Edges, VertexNormals, FaceNormals, kLineKinds };
+    enum LineKind { Edges, VertexNormals, FaceNormals, Tangents, kLineKinds };
     struct Lines {
         gl::VertexArray vao;
         gl::Buffer vertices;
@@ -88,7 +90,7 @@ private:
     // One-pixel GL lines, and lines widened to quads by shaders/overlay_wide.geom.
     struct LineProgram {
         gl::Program program;
-        GLint normalLength = -1, depthBias = -1, color = -1, viewportSize = -1, lineWidth = -1;
+        GLint normalLength = -1, depthBias = -1, color = -1, viewportSize = -1, lineWidth = -1, tangentTips = -1;
     };
     static LineProgram lineProgram(gl::Program program);
     // Makes the program for lines `pixels` wide current (and sets its width and pane size).

@@ -100,11 +100,12 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.emissive) defines.push_back("SL_EMISSIVE 1");
     if (variant.emissive && variant.emissiveTexture && variant.textured) defines.push_back("SL_EMISSIVE_TEXTURE 1");
     if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");
+    if (variant.anisotropic) defines.push_back("SL_ANISOTROPY 1");
     // flat.vert + flat.frag, …; the speed variants are programs of their own (shaders/flat_packed.vert,
     // shaders/phong_interpolated.vert and .frag).
-    const bool interpolated = variant.interpolatedInputs && mode == ShadingMode::Phong;
+    const bool interpolated = variant.interpolatedInputs && mode == ShadingMode::Phong && !variant.anisotropic;
     const std::string name = interpolated ? std::string("phong_interpolated") : toString(mode);
-    const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ ? "flat_packed" : name;
+    const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ && !variant.anisotropic ? "flat_packed" : name;
     std::string key = vertex;
     for (const std::string& d : defines) key += ";" + d;
     gl::Program& p = programs_[key];

@@ -24,6 +24,8 @@ public:
         // What a glTF material adds (shaders/object_color.glsl): SL_ALPHA_MODE, and E with or without its texture.
         int alphaMode = SL_ALPHA_OPAQUE;
         bool emissive = false, emissiveTexture = false;
+        // SL_ANISOTROPY: an anisotropic material, its vertices with tangents (flat: flat.vert, never packed).
+        bool anisotropic = false;
     };
     // `packedFlatVertices`: flat shading's vertex stage is flat_packed.vert (RendererOptions).
     ProgramCache(ShaderLibrary shaders, bool packedFlatVertices);

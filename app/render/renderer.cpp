@@ -33,13 +33,19 @@ void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
 unsigned variantKey(const ProgramCache::Variant& v) {
     return unsigned(v.accumulate) | unsigned(v.interpolatedInputs) << 1 | unsigned(v.textured) << 2 |
            unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 | unsigned(v.emissiveTexture) << 7 |
-           unsigned(v.doubleSided) << 8;
+           unsigned(v.doubleSided) << 8 | unsigned(v.anisotropic) << 9;
 }
 
 void bindTexture(int unit, GLuint texture) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, texture);
     glActiveTexture(GL_TEXTURE0);
+}
+
+// Whether an object's draws are anisotropic (SL_ANISOTROPY and vertex arrays with tangents): its
+// material asks for it and the lobe is Blinn-Phong's (core/shading/lighting.hpp, anisotropicLobe).
+bool anisotropicObject(const Scene& s, std::size_t object) {
+    return object < s.objects.size() && s.objects[object].material.anisotropic && s.reflection == ReflectionModel::BlinnPhong;
 }
 
 gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
@@ -98,6 +104,8 @@ gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, float
     b.coefficients[1] = o.material.kd;
     b.coefficients[2] = o.material.ks;
     b.coefficients[3] = o.material.ke;
+    b.anisotropy[0] = o.material.anisotropy.x;
+    b.anisotropy[1] = o.material.anisotropy.y;
     return b;
 }
 
@@ -130,7 +138,9 @@ void Renderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
 void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
     std::vector<ShadingMode> modes;
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1, scene.diff)) modes.push_back(pane.mode);
-    meshes_.uploadAndRelease(modes, scene.textures);
+    std::vector<char> tangents(meshes_.objects(), 0);
+    for (std::size_t o = 0; o < tangents.size() && o < scene.objects.size(); ++o) tangents[o] = anisotropicObject(scene, o);
+    meshes_.uploadAndRelease(modes, scene.textures, tangents);
 }
 
 std::string Renderer::glRenderer() const { return reinterpret_cast<const char*>(glGetString(GL_RENDERER)); }
@@ -151,6 +161,12 @@ void Renderer::preparePrograms(const Scene& scene) {
             if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && mayInterpolate())
                 programs_.get(ShadingMode::Phong, scene, {false, true, t, false, d});
         }
+    bool anisotropic = false;
+    for (std::size_t o = 0; o < meshes_.objects(); ++o) anisotropic = anisotropic || anisotropicObject(scene, o);
+    if (!anisotropic) return;
+    ProgramCache::Variant v;
+    v.anisotropic = true;
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) programs_.get(mode, scene, v);
 }
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
@@ -348,7 +364,8 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
     // Only the variants some draw uses are built (each is an LLVM compile on first use).
     const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
     std::vector<char> inputs(objects, 0);
-    for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene);
+    // Anisotropic objects take the tangent from their own vertex arrays, which the speed variant does not read.
+    for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene) && !anisotropicObject(scene, o);
     std::map<unsigned, GLuint> programs;  // by variantKey()
     GLuint current = 0;
     bool blending = false;
@@ -363,6 +380,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
                       : draw.alphaMode == AlphaMode::Blend && !accumulate ? SL_ALPHA_BLEND : SL_ALPHA_OPAQUE;
         v.emissive = draw.emissive != glm::vec3(0.0f);
         v.emissiveTexture = draw.emissiveTexture >= 0;
+        v.anisotropic = anisotropicObject(scene, draw.object);
         GLuint& variant = programs[variantKey(v)];
         if (!variant) variant = programs_.get(pane.mode, scene, v);
         if (variant != current) glUseProgram(current = variant);
@@ -382,7 +400,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
         }
         if (draw.textured) bindTexture(SL_TEXTURE_BASE_COLOR, meshes_.texture(draw.object, draw.texture));
         if (v.emissiveTexture) bindTexture(SL_TEXTURE_EMISSIVE, meshes_.texture(draw.object, draw.emissiveTexture));
-        const MeshCache::GpuMesh& mesh = meshes_.gpuMesh(draw.object, pane.mode);
+        const MeshCache::GpuMesh& mesh = meshes_.gpuMesh(draw.object, pane.mode, v.anisotropic);
         uniforms_->bindObject(d);
         // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
         const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);

@@ -147,7 +147,8 @@ void sectionShading(Scene& scene) {
     }
 }
 
-void sectionMaterial(Material& m) {
+// `reflection`: anisotropy is Blinn-Phong's lobe; under Phong its controls are greyed out (and not applied).
+void sectionMaterial(Material& m, ReflectionModel reflection) {
     colorEdit("colour C", m.color);
     colorEdit("specular S", m.specularColor);
     coefficient("k_a ambient", m.ka, 1.0f);
@@ -156,6 +157,19 @@ void sectionMaterial(Material& m) {
     // The exponent is what the lecture sweeps: a logarithmic slider gives 1..10 as much travel as 100..1000.
     if (ImGui::SliderFloat("k_e exponent", &m.ke, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.ke = std::clamp(m.ke, kExponentRange.lo, kExponentRange.hi);
+    // Anisotropic reflection (brushed metal): Ashikhmin and Shirley's k_t along the tangent, k_b along
+    // the bitangent, in place of k_e; logarithmic like k_e. Switching it on starts both at k_e.
+    ImGui::BeginDisabled(reflection != ReflectionModel::BlinnPhong);
+    const bool wasOn = m.anisotropic;
+    ImGui::Checkbox("anisotropic (Blinn-Phong)", &m.anisotropic);
+    if (m.anisotropic && !wasOn) m.anisotropy = glm::vec2(m.ke);
+    ImGui::BeginDisabled(!m.anisotropic);
+    if (ImGui::SliderFloat("k_t along T", &m.anisotropy.x, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
+        m.anisotropy.x = std::clamp(m.anisotropy.x, kExponentRange.lo, kExponentRange.hi);
+    if (ImGui::SliderFloat("k_b along B", &m.anisotropy.y, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
+        m.anisotropy.y = std::clamp(m.anisotropy.y, kExponentRange.lo, kExponentRange.hi);
+    ImGui::EndDisabled();
+    ImGui::EndDisabled();
 }
 
 // The lecture's plots for the current parameters (core/figures/plot.hpp): rebuilt every frame, which costs
@@ -317,6 +331,7 @@ void sectionOverlays(ViewSettings& s) {
     overlay(Overlay::VertexNormals);
     ImGui::SameLine();
     overlay(Overlay::FaceNormals);
+    overlay(Overlay::Tangents);
     ImGui::SliderFloat("normal length", &s.overlays.normalScale, 0.02f, 0.5f, "%.2f x radius");
     ImGui::Checkbox("light labels (L)", &s.lightLabels);
     ImGui::SameLine();
@@ -497,7 +512,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (object && section("Material", kPanelSections[1], true)) {
         if (scene.objects.size() > 1)
             ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
-        sectionMaterial(object->material);
+        sectionMaterial(object->material, scene.reflection);
     }
     if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
         sectionPlots(scene, object ? object->material : Material{}, settings.plots);

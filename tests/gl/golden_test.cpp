@@ -72,5 +72,6 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                                            "shadow_directional", "shadow_area_1x1", "shadow_area_4x4",
                                            "shadow_area_8x8", "shadow_objects_compare", "shadow_spot", "gltf_lights_compare", "textured_globe_compare",
                                            "textured_toycar_compare", "vertex_colors_compare", "textured_multiuv", "textured_cube",
-                                           "textured_sheencloth", "textured_suzanne", "textured_unicode", "material_panels"),
+                                           "textured_sheencloth", "textured_suzanne", "textured_unicode", "material_panels",
+                                           "brushed_metal_compare"),
                          [](const auto& p) { return std::string(p.param); });

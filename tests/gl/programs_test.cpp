@@ -119,6 +119,37 @@ TEST_F(GlContext, DoubleSidedVariantsCompile) {
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// Anisotropic reflection (SL_ANISOTROPY) with every other switch of a draw, in each mode: textured,
+// instanced, double-sided, a progressive pass, alpha mask, emission; 16 shadowed lights of every kind
+// (the largest Gouraud case) and none. Flat's anisotropic draws never take the packed vertices.
+TEST_F(GlContext, AnisotropicVariantsCompile) {
+    Scene none, many;
+    none.lights.clear();
+    many.lights.assign(SL_MAX_LIGHTS, Light{});
+    for (std::size_t l = 0; l < many.lights.size(); ++l) many.lights[l].type = LightType(l % 4);
+    many.shadows.enabled = true;
+    many.specularNormalization = SpecularNormalization::Energy;
+    many.fresnel = FresnelMode::Exact;
+    using Variant = ProgramCache::Variant;
+    std::vector<Variant> variants(6);
+    variants[1].textured = true;
+    variants[2].textured = variants[2].instanced = variants[2].doubleSided = true;
+    variants[3].accumulate = true;
+    variants[4].textured = true, variants[4].alphaMode = SL_ALPHA_MASK, variants[4].emissive = variants[4].emissiveTexture = true;
+    variants[5].interpolatedInputs = true;  // ignored for anisotropic draws: the plain phong program
+    for (Variant& v : variants) v.anisotropic = true;
+    for (bool packed : {false, true}) {
+        ProgramCache cache{ShaderLibrary(), packed};
+        for (const Scene* scene : {&none, &many})
+            for (const Variant& v : variants)
+                for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+                    SCOPED_TRACE(std::string(toString(mode)) + (packed ? " packed" : ""));
+                    EXPECT_NE(cache.get(mode, *scene, v), 0u);
+                }
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 // Scenes that use none of issue 6's switches get exactly the defines (so the programs) they had before.
 TEST(ProgramDefines, DefaultScenesAreNotSpecialisedForTheLectureSwitches) {
     Scene scene;

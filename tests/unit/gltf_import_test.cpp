@@ -3,6 +3,7 @@
 // file and the offending accessor/primitive; none may crash (CI also runs this under ASan + UBSan).
 #include "core/base/error.hpp"
 #include "core/geometry/gltf_import.hpp"
+#include "core/shading/lighting.hpp"
 #include "core/image/image.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "test_dir.hpp"
@@ -1025,4 +1026,28 @@ TEST(SharedModels, MaterialAlphaAndEmissionAreRead) {
         EXPECT_NEAR(m.emissiveTexcoords[m.indices[i]].x, p.y + 0.5f, 1e-6f);
         EXPECT_NEAR(m.emissiveTexcoords[m.indices[i]].y, p.x - 1.2f + 0.5f, 1e-6f);
     }
+}
+
+// Issue 30 (anisotropy): TANGENT is the tangent frame where the file gives it: xyz made orthogonal to
+// the normal, w the handedness; a mirroring node flips the handedness. Without it the quad, which has
+// no texture coordinates, gets the frame around the up axis.
+TEST_F(Gltf, TangentGivesTheTangentFrame) {
+    Doc d;
+    append<float>(d.bin, {0, 1, 0.1f, -1, 0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1});
+    d.j["buffers"][0]["byteLength"] = 124;
+    d.j["bufferViews"].push_back(json{{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 64}});
+    d.j["accessors"].push_back(json{{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC4"}});
+    d.j["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = 2;
+    const Mesh m = loadGltf(writeGltf("tangents", d));
+    ASSERT_EQ(m.tangents.size(), 4u);
+    for (const glm::vec4& t : m.tangents) {
+        EXPECT_NEAR(glm::distance(glm::vec3(t), glm::vec3(0, 1, 0)), 0.0f, 1e-6f);  // z removed: orthogonal to N = +z
+        EXPECT_EQ(t.w, -1.0f);
+    }
+    d.j["nodes"][0]["scale"] = json::array({-1, 1, 1});
+    const Mesh mirrored = loadGltf(writeGltf("mirrored", d));
+    for (const glm::vec4& t : mirrored.tangents) EXPECT_EQ(t.w, 1.0f);
+    const Mesh plain = loadGltf(writeGltf("plain", Doc()));
+    ASSERT_EQ(plain.tangents.size(), 4u);
+    for (const glm::vec4& t : plain.tangents) EXPECT_EQ(t, tangentAroundUp(glm::vec3(0, 0, 1)));
 }

@@ -79,7 +79,7 @@ TEST(ShaderListing, TheFormulasTermLinesAreMarked) {
     } cases[] = {{"lecture.glsl", "vec3 L = m.k_a * A * m.C;", FormulaTerm::Ambient},
                  {"lecture.glsl", "vec3 diffuse = m.k_d * m.C * max(dot(N, I), 0.0);", FormulaTerm::Diffuse},
                  {"lecture.glsl", "vec3 R = 2.0 * dot(N, I) * N - I;", FormulaTerm::Specular},
-                 {"lecture.glsl", "float spec_l = pow(max(cosLobe, 0.0), m.k_e)", FormulaTerm::Specular},
+                 {"lecture.glsl", "float spec_l = pow(max(cosLobe, 0.0), lobeExponent(H, m.k_e))", FormulaTerm::Specular},
                  {"lecture.glsl", "vec3 specular = m.k_s * m.S * spec_l;", FormulaTerm::Specular},
                  {"lecture.glsl", "vec3 I = normalize(toLight(l, P));", FormulaTerm::None},
                  {"lighting.glsl", "if (SL_FRESNEL == SL_FRESNEL_SCHLICK) factor *= fresnelSchlick(", FormulaTerm::Specular},

@@ -97,7 +97,9 @@ Rgba8 dimmed(Rgba8 c) { return Rgba8{c.r, c.g, c.b, kDimAlpha}; }
 std::string lobeFactors(const FormulaInput& in) {
     std::string s;
     if (in.env.normalization == SpecularNormalization::Energy)
-        s += in.env.model == ReflectionModel::Phong ? " · (k_e + 2)/34" : " · (k_e + 8)/40";
+        s += anisotropicLobe(in.material, in.env) ? " · √((k_t + 1)(k_b + 1))/33"
+             : in.env.model == ReflectionModel::Phong ? " · (k_e + 2)/34"
+                                                      : " · (k_e + 8)/40";
     if (in.env.fresnel != FresnelMode::None) s += " · F(V·H_l)";
     return s;
 }
@@ -109,6 +111,12 @@ std::string fresnelLine(const FormulaInput& in) {
         return "F = R_0 + (1 − R_0)(1 − V·H_l)^5,   R_0 = ((n_1 − n_2)/(n_1 + n_2))^2 = " +
                formulaNumber(fresnelR0(1.0f, in.env.ior)) + ",   " + media;
     return "F = (R_∥ + R_⊥)/2  (exact Fresnel),   " + media;
+}
+
+// Anisotropic reflection's exponent (Ashikhmin and Shirley's), with the material's k_t and k_b.
+std::string anisotropyLine(const FormulaInput& in) {
+    return "k(H_l) = (k_t (H_l·T)^2 + k_b (H_l·B)^2) / (1 − (H_l·N)^2),   k_t = " + formulaNumber(in.material.anisotropy.x) +
+           " along T,  k_b = " + formulaNumber(in.material.anisotropy.y) + " along B";
 }
 
 // E's own line: what a glTF material's emission is made of.
@@ -148,6 +156,13 @@ public:
             const Span s = set_.set(kEmissiveLine, pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Emissive),
                                     FormulaTerm::Emissive);
             box(FormulaTerm::Emissive, s, baseline, kFresnelSize * size_);
+            bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
+        }
+        if (anisotropicLobe(in_.material, in_.env)) {
+            baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
+            const Span s = set_.set(anisotropyLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
+                                    FormulaTerm::Specular);
+            box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
         if (in_.env.fresnel != FresnelMode::None) {
@@ -252,14 +267,17 @@ private:
         const float start = x_;
         piece("spec_l = ", FormulaTerm::Specular, baseline);
         piece(in_.env.model == ReflectionModel::Phong ? "max(0, R(I_l)·V)" : "max(0, H_l·N)", FormulaTerm::Specular, baseline);
-        keSpan_ = piece("^{k_e}", FormulaTerm::Specular, baseline, FormulaRun::Kind::Coefficient);
+        keSpan_ = piece(anisotropicLobe(in_.material, in_.env) ? "^{k(H_l)}" : "^{k_e}", FormulaTerm::Specular, baseline,
+                        FormulaRun::Kind::Coefficient);
         piece(lobeFactors(in_), FormulaTerm::Specular, baseline);
         box(FormulaTerm::Specular, Span{start, x_}, baseline, size_);
     }
 
     void keValue(float baseline) {
         float rowEnd = 0.0f;
-        valueUnder(keSpan_, formulaNumber(in_.material.ke), FormulaTerm::Specular, baseline, rowEnd);
+        // Anisotropic: the exponent varies with H; its line below gives k_t and k_b.
+        if (!anisotropicLobe(in_.material, in_.env))
+            valueUnder(keSpan_, formulaNumber(in_.material.ke), FormulaTerm::Specular, baseline, rowEnd);
     }
 
     const FormulaInput& in_;

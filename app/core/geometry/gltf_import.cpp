@@ -3,6 +3,7 @@
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/geometry/gltf_extensions.hpp"
+#include "core/shading/lighting.hpp"
 #include "core/base/json_depth.hpp"
 #include "core/scene/scene_names.hpp"
 #include "platform/platform.hpp"
@@ -149,6 +150,10 @@ private:
     std::vector<glm::vec2> texcoords(const tinygltf::Primitive& p, const MaterialTexture& t, std::size_t count,
                                      const std::string& where) const;
     std::vector<glm::vec4> vertexColors(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
+    // TANGENT (xyz, w the handedness), or empty; appended to *out_ baked with `world` (w = 0 where a
+    // primitive has none: completeTangents fills those).
+    std::vector<glm::vec4> readTangents(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
+    void appendTangents(std::uint32_t base, std::size_t count, const std::vector<glm::vec4>& tangents, const glm::mat4& world);
     std::map<std::pair<int, int>, int> textureSlots_;  // (image, sampler) -> slot, or -1
 
     const std::string& path_;
@@ -548,6 +553,43 @@ std::vector<glm::vec4> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     return out;
 }
 
+std::vector<glm::vec4> GltfReader::readTangents(const tinygltf::Primitive& p, std::size_t count,
+                                                const std::string& where) const {
+    const auto it = p.attributes.find("TANGENT");
+    if (it == p.attributes.end()) return {};
+    const std::string name = where + " TANGENT (accessor " + std::to_string(it->second) + ")";
+    const View v = view(it->second, where + " TANGENT", {TINYGLTF_TYPE_VEC4},
+                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
+    if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized) fail(name, "integer tangents must be normalized");
+    if (v.count != count)
+        fail(name, "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
+    std::vector<glm::vec4> out(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::vec4 t(scalarAt(v, i, 0), scalarAt(v, i, 1), scalarAt(v, i, 2), scalarAt(v, i, 3));
+        if (!isFinite(glm::vec3(t)) || !std::isfinite(t.w)) fail(name, "tangent " + std::to_string(i) + " is not finite");
+        out[i] = glm::vec4(glm::vec3(t), t.w < 0.0f ? -1.0f : 1.0f);
+    }
+    return out;
+}
+
+// Tangents go with the node transform (not its inverse transpose); a mirroring one flips the handedness.
+void GltfReader::appendTangents(std::uint32_t base, std::size_t count, const std::vector<glm::vec4>& tangents,
+                                const glm::mat4& world) {
+    if (tangents.empty() && out_->tangents.empty()) return;
+    out_->tangents.resize(base, glm::vec4(0.0f));
+    const glm::mat3 m(world);
+    const float handedness = glm::determinant(m) < 0.0f ? -1.0f : 1.0f;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (tangents.empty()) {
+            out_->tangents.push_back(glm::vec4(0.0f));
+            continue;
+        }
+        const glm::vec3& n = out_->normals[base + i];
+        const glm::vec3 t = orthogonalTangent(m * glm::vec3(tangents[i]), n, glm::vec3(0.0f));
+        out_->tangents.push_back(t == glm::vec3(0.0f) ? glm::vec4(0.0f) : glm::vec4(t, tangents[i].w * handedness));
+    }
+}
+
 // The triangles of a strip or a fan (or a list, its last partial triangle dropped) as a triangle list.
 std::vector<std::uint32_t> triangleList(int mode, std::vector<std::uint32_t> order) {
     std::vector<std::uint32_t> tris;
@@ -591,6 +633,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     std::vector<glm::vec2> uvs = texture.slot >= 0 ? texcoords(p, texture, vertexCount, where) : std::vector<glm::vec2>();
     const int textureSlot = uvs.empty() ? -1 : texture.slot;
     const std::vector<glm::vec4> colors = vertexColors(p, vertexCount, where);
+    const std::vector<glm::vec4> tangents = readTangents(p, vertexCount, where);
     // E where it varies: the emissive texture at its own coordinates.
     const MaterialTexture emissive = emissiveTexture(p.material);
     std::vector<glm::vec2> emissiveUvs = emissive.slot >= 0 ? texcoords(p, emissive, vertexCount, where) : std::vector<glm::vec2>();
@@ -599,6 +642,7 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     const auto base = std::uint32_t(out_->positions.size());
     bakeVertices(std::move(positions), std::move(normals), world, posIt->second, where);
     appendColorInputs(base, vertexCount, uvs, colors, emissiveUvs);
+    appendTangents(base, vertexCount, tangents, world);
     // A mirroring transform (negative determinant) turns counter-clockwise triangles clockwise, so
     // their winding is flipped back.
     const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
@@ -1013,6 +1057,7 @@ Mesh GltfReader::read() {
         instancedPass_ = false;
         info_ = baked;
         compact->textures = mesh_.textures;
+        completeTangents(*compact);
         if (instancesInvertible(*compact)) mesh_.instanced = std::move(compact);
     }
     info_.meshes = int(model_.meshes.size());
@@ -1044,6 +1089,7 @@ Mesh GltfReader::read() {
         c.target = c.eye + forward * std::max(glm::dot(centre - c.eye, forward), std::max(c.znear, 1e-3f) * 2.0f);
     }
     if (mesh_.indices.empty()) info_.warnings.push_back("nothing to draw: the default scene has no triangles");
+    completeTangents(mesh_);  // TANGENT where given, else from the texture coordinates or the up axis
     return std::move(mesh_);
 }
 

@@ -1,5 +1,7 @@
 #include "core/geometry/mesh.hpp"
 
+#include "core/shading/lighting.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -164,15 +166,67 @@ Mesh makePlane(float size, int subdivisions) {
 }
 
 Mesh makeProceduralMesh(const MeshSpec& s) {
+    Mesh m;
     switch (s.type) {
-    case MeshSpec::Type::UvSphere: return makeUvSphere(s.slices, s.stacks, s.radius);
-    case MeshSpec::Type::IcoSphere: return makeIcoSphere(s.subdivisions, s.radius);
-    case MeshSpec::Type::Torus: return makeTorus(s.majorRadius, s.minorRadius, s.majorSegments, s.minorSegments);
-    case MeshSpec::Type::Cube: return makeCube(s.size);
-    case MeshSpec::Type::Plane: return makePlane(s.size, s.planeSubdivisions);
+    case MeshSpec::Type::UvSphere: m = makeUvSphere(s.slices, s.stacks, s.radius); break;
+    case MeshSpec::Type::IcoSphere: m = makeIcoSphere(s.subdivisions, s.radius); break;
+    case MeshSpec::Type::Torus: m = makeTorus(s.majorRadius, s.minorRadius, s.majorSegments, s.minorSegments); break;
+    case MeshSpec::Type::Cube: m = makeCube(s.size); break;
+    case MeshSpec::Type::Plane: m = makePlane(s.size, s.planeSubdivisions); break;
     case MeshSpec::Type::Gltf: break;
     }
-    return Mesh{};
+    completeTangents(m);  // no texture coordinates: around the up axis
+    return m;
+}
+
+TangentSource completeTangents(Mesh& m) {
+    const std::size_t n = m.positions.size();
+    if (m.tangents.size() != n) m.tangents.assign(n, glm::vec4(0.0f));
+    bool missing = false;
+    for (const glm::vec4& t : m.tangents) missing = missing || t.w == 0.0f;
+    if (!missing) return TangentSource::Given;
+    TangentSource source = TangentSource::UpAxis;
+    std::vector<glm::vec3> tu, tv;  // per vertex: the sums of dP/du and dP/dv of its triangles
+    if (m.variesColor()) {
+        tu.assign(n, glm::vec3(0.0f));
+        tv.assign(n, glm::vec3(0.0f));
+        for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+            const std::uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+            const glm::vec3 e1 = m.positions[b] - m.positions[a], e2 = m.positions[c] - m.positions[a];
+            const glm::vec2 d1 = m.texcoords[b] - m.texcoords[a], d2 = m.texcoords[c] - m.texcoords[a];
+            const float det = d1.x * d2.y - d2.x * d1.y;
+            if (!(std::fabs(det) > 1e-12f)) continue;  // no texture-space area: no direction to take
+            const glm::vec3 dpdu = (e1 * d2.y - e2 * d1.y) / det, dpdv = (e2 * d1.x - e1 * d2.x) / det;
+            for (std::uint32_t v : {a, b, c}) tu[v] += dpdu, tv[v] += dpdv;
+        }
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+        glm::vec4& out = m.tangents[v];
+        if (out.w != 0.0f) continue;
+        const glm::vec3& nrm = m.normals[v];
+        const glm::vec4 up = tangentAroundUp(nrm);
+        out = up;
+        if (tu.empty()) continue;
+        const glm::vec3 t = orthogonalTangent(tu[v], nrm, glm::vec3(0.0f));
+        if (t == glm::vec3(0.0f)) continue;
+        out = glm::vec4(t, glm::dot(glm::cross(nrm, t), tv[v]) < 0.0f ? -1.0f : 1.0f);
+        source = TangentSource::Texcoords;
+    }
+    return source;
+}
+
+const char* toString(TangentSource s) {
+    switch (s) {
+    case TangentSource::Given: return "tangent";
+    case TangentSource::Texcoords: return "texcoords";
+    case TangentSource::UpAxis: return "up-axis";
+    }
+    return "up-axis";
+}
+
+glm::vec4 faceTangent(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const glm::vec3& faceNrm) {
+    const glm::vec3 sum = glm::vec3(a) + glm::vec3(b) + glm::vec3(c);
+    return glm::vec4(orthogonalTangent(sum, faceNrm, glm::vec3(tangentAroundUp(faceNrm))), c.w);
 }
 
 FlatMesh makeFlatMesh(const Mesh& m) {
@@ -184,6 +238,8 @@ FlatMesh makeFlatMesh(const Mesh& m) {
     f.texcoords = m.texcoords;
     f.colors = m.colors;
     f.emissiveTexcoords = m.emissiveTexcoords;
+    const bool tangents = m.tangents.size() == m.positions.size();
+    if (tangents) f.tangents = m.tangents;
     f.indices.resize(m.indices.size());
     std::vector<bool> claimed(vertexCount, false);
     for (size_t t = 0; t < triangles; ++t) {
@@ -197,11 +253,14 @@ FlatMesh makeFlatMesh(const Mesh& m) {
             ++rotations;
         }
         uint32_t provoking = corner[2];
+        const glm::vec4 tangent = tangents ? faceTangent(m.tangents[corner[0]], m.tangents[corner[1]], m.tangents[corner[2]], n)
+                                           : glm::vec4(0.0f);
         if (rotations == 3) {  // all three corners already provoke other triangles: a vertex of its own
             provoking = uint32_t(f.positions.size());
             f.positions.push_back(m.positions[corner[2]]);
             f.normals.push_back(n);
             f.centroids.push_back(centroid);
+            if (tangents) f.tangents.push_back(tangent);
             if (m.variesColor()) {
                 f.texcoords.push_back(m.texcoords[corner[2]]);
                 f.colors.push_back(m.colors[corner[2]]);
@@ -211,6 +270,7 @@ FlatMesh makeFlatMesh(const Mesh& m) {
             claimed[provoking] = true;
             f.normals[provoking] = n;
             f.centroids[provoking] = centroid;
+            if (tangents) f.tangents[provoking] = tangent;
         }
         f.indices[3 * t] = corner[0];
         f.indices[3 * t + 1] = corner[1];

@@ -69,6 +69,10 @@ struct Mesh {
     // The emissive textures' coordinates (their TEXCOORD_n, transformed), one per position where a
     // part has an emissive texture (the mesh then varies its colour too), else empty.
     std::vector<glm::vec2> emissiveTexcoords;
+    // The tangent frame, one per position (object space): xyz the unit tangent T, orthogonal to the
+    // normal, w the handedness (the bitangent is B = w N x T). glTF's TANGENT where the file gives it;
+    // completeTangents() fills the rest (w = 0 marks a vertex still to fill).
+    std::vector<glm::vec4> tangents;
     std::vector<std::shared_ptr<const TextureImage>> textures;  // shared by copies of the mesh
     // The same surface with instanced parts (MeshPart::instances) drawn once each, for the renderer's
     // instanced draws; this mesh holds every instance baked, which everything else reads. Null: none.
@@ -103,6 +107,17 @@ Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int mino
 Mesh makeCube(float size);                                     // 24 vertices, one normal per face
 Mesh makePlane(float size, int subdivisions);                  // x-z square at y = 0, facing +y
 
+// Where a vertex's tangent frame comes from (anisotropic reflection), in this order of preference.
+enum class TangentSource { Given, Texcoords, UpAxis };
+// (tangentAroundUp and orthogonalTangent: core/shading/lighting.hpp.)
+// Fills Mesh::tangents where the file gave none (w = 0, or the whole array when empty): from the
+// texture coordinates where the mesh has them (each triangle's dP/du and dP/dv accumulated per vertex,
+// then Gram-Schmidt against N, w the sign of B against N x T), else around the up axis. A vertex
+// whose triangles' coordinates are degenerate gets the up-axis frame. Returns the source used for the
+// filled vertices (Given when the file gave every tangent).
+TangentSource completeTangents(Mesh& mesh);
+const char* toString(TangentSource source);
+
 // Builds a procedural mesh (not glTF: see gltf_import.hpp).
 Mesh makeProceduralMesh(const MeshSpec& spec);
 
@@ -120,7 +135,14 @@ struct FlatMesh {
     std::vector<glm::vec2> texcoords;   // as the Mesh's (empty when it has none), copied to added vertices
     std::vector<glm::vec4> colors;
     std::vector<glm::vec2> emissiveTexcoords;
+    // Anisotropic draws: at each provoking vertex the triangle's tangent (its corners' tangents averaged,
+    // then Gram-Schmidt against the face normal), its w the provoking corner's; elsewhere the vertex's.
+    // Empty when the mesh has no tangents.
+    std::vector<glm::vec4> tangents;
 };
+// The tangent flat shading evaluates a triangle with: its corners' tangents averaged (handedness of
+// the last corner), made orthogonal to the face normal `faceNrm`.
+glm::vec4 faceTangent(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const glm::vec3& faceNrm);
 FlatMesh makeFlatMesh(const Mesh& mesh);
 
 struct BoundingSphere {

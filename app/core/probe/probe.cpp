@@ -28,6 +28,7 @@ struct TriangleContext {
     glm::mat3 normalWorldFromObject;
     glm::vec3 posObject[3];
     glm::vec3 nrmObject[3];
+    glm::vec4 tanObject[3];  // Mesh::tangents (xyz, w the handedness)
     std::uint32_t vertex[3];
     glm::vec3 barycentric;
     float facing = 1.0f;  // -1: the back of a double-sided part, where every normal is flipped (glTF)
@@ -59,11 +60,14 @@ glm::vec3 shownEmission(const TriangleContext& c) {
 
 // The formula at one point with one unit normal: shadeTerms with, when shadows are on, an occlusion
 // test by ray cast; then the lecture's vectors for each light.
+// `tanWorld`: the tangent there (xyz in world space, any length; w the handedness).
 ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, const glm::vec3& posWorld,
-                         const glm::vec3& nrmWorld) {
+                         const glm::vec3& nrmWorld, const glm::vec4& tanWorld) {
     ProbeEvaluation e;
     e.posWorld = posWorld;
     e.nrmWorld = nrmWorld;
+    e.anisotropic = anisotropicLobe(material, c.env);
+    e.frame = tangentFrame(nrmWorld, glm::vec3(tanWorld), tanWorld.w);
     e.viewWorld = glm::normalize(c.env.eyeWorld - posWorld);
     const std::size_t lightCount = c.env.lights.size();
     e.lights.resize(lightCount);
@@ -79,7 +83,7 @@ ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, con
             return hidden ? 0.0f : 1.0f;
         };
     }
-    e.terms = shadeTerms(material, c.env, posWorld, nrmWorld, visibility);
+    e.terms = shadeTerms(material, c.env, posWorld, nrmWorld, visibility, &e.frame);
     for (std::size_t l = 0; l < lightCount; ++l) {
         const Light& light = c.env.lights[l];
         ProbeLight& out = e.lights[l];
@@ -90,6 +94,7 @@ ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, con
         out.rDotV = glm::dot(out.reflected, e.viewWorld);
         out.halfway = glm::normalize(out.towardLight + e.viewWorld);
         out.hDotN = glm::dot(out.halfway, nrmWorld);
+        out.exponent = e.anisotropic ? anisotropicExponent(material.anisotropy, out.halfway, e.frame) : material.ke;
         out.diffuse = e.terms.lights[l].diffuse;
         out.specular = e.terms.lights[l].specular;
         out.visibility = out.samplesTested > 0 ? float(out.samplesVisible) / float(out.samplesTested) : 1.0f;
@@ -98,6 +103,8 @@ ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, con
 }
 
 glm::vec3 toWorld(const glm::mat4& m, const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); }
+// A tangent to world space as the shaders take it (tangentToWorld: the transform itself), w kept.
+glm::vec4 tangentToWorld(const glm::mat4& m, const glm::vec4& t) { return glm::vec4(glm::mat3(m) * glm::vec3(t), t.w); }
 
 ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
     ModeProbe m;
@@ -113,7 +120,11 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         const glm::vec3 nrm = w.x * (c.normalWorldFromObject * c.nrmObject[0]) +
                               w.y * (c.normalWorldFromObject * c.nrmObject[1]) +
                               w.z * (c.normalWorldFromObject * c.nrmObject[2]);
-        m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), c.facing * glm::normalize(nrm)));
+        // phong.vert passes the tangent to world space; the rasteriser interpolates all four components.
+        const glm::vec4 tan = w.x * tangentToWorld(c.worldFromObject, c.tanObject[0]) +
+                              w.y * tangentToWorld(c.worldFromObject, c.tanObject[1]) +
+                              w.z * tangentToWorld(c.worldFromObject, c.tanObject[2]);
+        m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), c.facing * glm::normalize(nrm), tan));
         m.color = m.evaluations[0].terms.total;
         break;
     }
@@ -122,7 +133,8 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         glm::vec3 termsOfC(0.0f), specular(0.0f);
         for (int k = 0; k < 3; ++k) {
             ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, c.posObject[k]),
-                                         c.facing * glm::normalize(c.normalWorldFromObject * c.nrmObject[k]));
+                                         c.facing * glm::normalize(c.normalWorldFromObject * c.nrmObject[k]),
+                                         tangentToWorld(c.worldFromObject, c.tanObject[k]));
             e.site = ProbeEvaluation::Site::Vertex;
             e.vertex = c.vertex[k];
             m.color += w[k] * e.terms.total;
@@ -139,8 +151,9 @@ ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
         // both taken to world space by flat.vert.
         const glm::vec3 centroid = (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f;
         const glm::vec3 face = faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
+        const glm::vec4 tan = faceTangent(c.tanObject[0], c.tanObject[1], c.tanObject[2], face);
         ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid),
-                                     c.facing * glm::normalize(c.normalWorldFromObject * face));
+                                     c.facing * glm::normalize(c.normalWorldFromObject * face), tangentToWorld(c.worldFromObject, tan));
         e.site = ProbeEvaluation::Site::Centroid;
         m.color = e.terms.total;
         if (c.baseMaterial) {
@@ -224,11 +237,12 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
     if (part) r.alphaMode = part->alphaMode, r.alpha = part->baseAlpha, r.alphaCutoff = part->alphaCutoff;
     const LightingEnvironment env = lightingEnvironment(scene);
     const glm::mat4 world = worldFromObject(scene.objects[anchor.object].transform);
-    TriangleContext c{scene, env, r.material, caster, world, normalWorldFromObject(world), {}, {}, {}, anchor.barycentric};
+    TriangleContext c{scene, env, r.material, caster, world, normalWorldFromObject(world), {}, {}, {}, {}, anchor.barycentric};
     for (int k = 0; k < 3; ++k) {
         c.vertex[k] = mesh.indices[3 * anchor.triangle + std::size_t(k)];
         c.posObject[k] = mesh.positions[c.vertex[k]];
         c.nrmObject[k] = mesh.normals[c.vertex[k]];
+        c.tanObject[k] = c.vertex[k] < mesh.tangents.size() ? mesh.tangents[c.vertex[k]] : tangentAroundUp(c.nrmObject[k]);
     }
     // A double-sided part seen from behind is lit with its normals flipped; a single-sided one is
     // culled there (the ray cast does not find it), so its facing is not asked.

@@ -5,6 +5,8 @@
 //   gouraud  at the triangle's three corners with their vertex normals (gouraud.vert), the three
 //            clamped colours then weighted by the point's perspective-correct barycentrics;
 //   flat     once, at the triangle's centroid with its face normal (flat.vert, FlatMesh).
+// With anisotropy each evaluation has its tangent frame likewise: the tangents interpolated (phong), the
+// corner's (gouraud), the corners' averaged (flat: faceTangent); each made orthogonal to that N.
 // On the back of a double-sided part every normal is flipped, as the shaders do (SL_DOUBLE_SIDED).
 // The numbers are the CPU reference's (core/shading/lighting.hpp, shadeTerms), so the probe's total is the
 // rendered pixel (tests/gl/probe_test.cpp checks that). With shadows on, the occlusion term v(p, I)
@@ -35,6 +37,8 @@ struct ProbeLight {
     float rDotV = 0.0f;
     glm::vec3 halfway{0.0f};      // H = normalize(I + V)
     float hDotN = 0.0f;
+    // The lobe's exponent: k_e, or with anisotropy Ashikhmin and Shirley's at H (anisotropicExponent).
+    float exponent = 0.0f;
     glm::vec3 diffuse{0.0f};      // L_l k_d C max(0, N.I), occlusion included (ShadingTerms::lights)
     glm::vec3 specular{0.0f};     // L_l k_s S spec_l (with the scene's normalisation and Fresnel)
     // Shadows on: light samples that reached the occlusion test (in front of the surface and of an area
@@ -52,6 +56,10 @@ struct ProbeEvaluation {
     glm::vec3 posWorld{0.0f};
     glm::vec3 nrmWorld{0.0f};     // N, unit
     glm::vec3 viewWorld{0.0f};    // V, unit, toward the eye
+    // Anisotropic reflection: the tangent frame there (T, B), as the mode's shader builds it from the
+    // mesh's tangents (Mesh::tangents): interpolated (phong), the corner's (gouraud), the face's (flat).
+    bool anisotropic = false;
+    TangentFrame frame;
     ShadingTerms terms;           // ambient, diffuse, specular, shown (before clamping), total (clamped)
     std::vector<ProbeLight> lights;  // in the order of Scene::lights
 };

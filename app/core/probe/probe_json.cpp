@@ -54,6 +54,8 @@ json evaluationJson(const Scene& scene, const ProbeEvaluation& e) {
                       {"H.N", number(p.hDotN)},
                       {"diffuse", vec(p.diffuse)},
                       {"specular", vec(p.specular)}};
+        light["exponent"] = number(p.exponent);
+        if (e.anisotropic) light["tangent"] = vec(e.frame.tangent), light["bitangent"] = vec(e.frame.bitangent);
         if (scene.lights[l].type == LightType::Area)
             light["samples"] = json::array({scene.lights[l].samples.x, scene.lights[l].samples.y});
         if (scene.shadows.enabled) {
@@ -157,6 +159,7 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
     const Material& m = r.material;
     j["material"] = {{"C", vec(m.color)}, {"S", vec(m.specularColor)}, {"ka", number(m.ka)},
                      {"kd", number(m.kd)}, {"ks", number(m.ks)},         {"ke", number(m.ke)}};
+    if (m.anisotropic) j["material"]["anisotropy"] = json::array({number(m.anisotropy.x), number(m.anisotropy.y)});
     if (r.textured) {
         // C = base colour x texel: flat and Gouraud evaluate their terms with the base colour and
         // multiply the ambient and diffuse parts by the texel per fragment; Phong evaluates with C.

@@ -39,6 +39,11 @@ struct Material {
     // E, the light the surface gives off, added to the sum: L = E + k_a A C + ... . Not part of the
     // scene format: a glTF material's emission (MeshPart::emissive), set where a part is shaded.
     glm::vec3 emissive{0.0f};
+    // Anisotropic reflection ("anisotropy": [k_t, k_b]): Ashikhmin and Shirley's exponent replaces k_e,
+    // k_t along the surface's tangent T and k_b along its bitangent B (core/shading/lighting.hpp,
+    // anisotropicExponent). Off unless the scene or --anisotropy gives it; Blinn-Phong's lobe only.
+    bool anisotropic = false;
+    glm::vec2 anisotropy{32.0f};   // k_t, k_b (each in kExponentRange)
 };
 
 struct MeshSpec {

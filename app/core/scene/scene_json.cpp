@@ -204,7 +204,7 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
 
 Material SceneReader::material(const json& j, const std::string& path) const {
     Material m;
-    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke"});
+    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke", "anisotropy"});
     vec3(j, "color", path, m.color, 0.0, 1.0);
     m.colorSet = j.contains("color");
     vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
@@ -212,6 +212,8 @@ Material SceneReader::material(const json& j, const std::string& path) const {
     number(j, "kd", path, m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
     number(j, "ks", path, m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
     number(j, "ke", path, m.ke, kExponentRange.lo, kExponentRange.hi);
+    m.anisotropic = j.contains("anisotropy");
+    vec2(j, "anisotropy", path, m.anisotropy, kExponentRange.lo, kExponentRange.hi);
     return m;
 }
 
@@ -320,6 +322,10 @@ Scene SceneReader::read(const json& root) {
     text(root, "title", s.title);
     text(root, "caption", s.caption);
     choice(root, "reflection", "", s.reflection, kReflectionModelNames);
+    for (const SceneObject& o : s.objects)
+        if (o.material.anisotropic && s.reflection == ReflectionModel::Phong)
+            fail("reflection", "phong cannot go with a material's \"anisotropy\": Ashikhmin and Shirley's lobe is "
+                               "Blinn-Phong's (about H)");
     choice(root, "output_encoding", "", s.outputEncoding, kOutputEncodingNames);
     s.outputEncodingGiven = root.contains("output_encoding");
     vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
@@ -450,7 +456,8 @@ nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
     return j;
 }
 
-nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh) {
+// `reflection`: anisotropy is written under blinn-phong only, where it applies (the reader refuses it under phong).
+nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh, ReflectionModel reflection) {
     nlohmann::ordered_json j;
     // A glTF model's own colours stay unless a colour was chosen: write it only then.
     if (m.colorSet || mesh.type != MeshSpec::Type::Gltf) j["color"] = vecJson(m.color);
@@ -459,6 +466,7 @@ nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh) {
     j["kd"] = m.kd;
     j["ks"] = m.ks;
     j["ke"] = m.ke;
+    if (m.anisotropic && reflection == ReflectionModel::BlinnPhong) j["anisotropy"] = {m.anisotropy.x, m.anisotropy.y};
     return j;
 }
 
@@ -514,13 +522,13 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     const bool shorthand = !s.usesObjectList && s.objects.size() == 1 && isIdentity(s.objects[0].transform);
     if (shorthand) {
         j["mesh"] = meshJson(s.objects[0].mesh, saveDir);
-        j["material"] = materialJson(s.objects[0].material, s.objects[0].mesh);
+        j["material"] = materialJson(s.objects[0].material, s.objects[0].mesh, s.reflection);
     } else {
         j["objects"] = nlohmann::ordered_json::array();
         for (const SceneObject& o : s.objects) {
             nlohmann::ordered_json oj;
             oj["mesh"] = meshJson(o.mesh, saveDir);
-            oj["material"] = materialJson(o.material, o.mesh);
+            oj["material"] = materialJson(o.material, o.mesh, s.reflection);
             oj["transform"] = {{"translation", vecJson(o.transform.translation)},
                                {"rotation_deg", vecJson(o.transform.rotationDeg)},
                                {"scale", vecJson(o.transform.scale)}};
@@ -830,6 +838,14 @@ void checkCoefficients(const Material& m, const std::string& where) {
     check("kd", m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
     check("ks", m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
     check("ke", m.ke, kExponentRange.lo, kExponentRange.hi);
+}
+
+void checkAnisotropy(const Scene& s, const std::string& where) {
+    if (s.reflection != ReflectionModel::Phong) return;
+    for (const SceneObject& o : s.objects)
+        if (o.material.anisotropic)
+            throw InputError(where + "anisotropy: Ashikhmin and Shirley's lobe is Blinn-Phong's (about H); it needs "
+                                     "reflection blinn-phong, not phong");
 }
 
 void checkImageSize(int width, int height, const std::string& where) {

@@ -44,6 +44,9 @@ Light parseLightShorthand(const std::string& text, const std::string& optionName
 TermView parseTermView(const std::string& text, const std::string& where);
 
 void checkCoefficients(const Material& m, const std::string& where);
+// InputError "WHEREanisotropy: ..." when an object's material is anisotropic under reflection phong
+// (Ashikhmin and Shirley's lobe is Blinn-Phong's, about H).
+void checkAnisotropy(const Scene& scene, const std::string& where);
 void checkImageSize(int width, int height, const std::string& where);
 
 }  // namespace shadelab

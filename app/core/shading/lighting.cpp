@@ -15,12 +15,15 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 
 // One light sample's addend: radiance * (k_d C (N.I) + k_s S spec), nothing when N.I <= 0.
+// `frame`: the tangent frame, for an anisotropic lobe (else unused).
 void addSample(LightShare& t, const Material& m, const LightingEnvironment& env, const glm::vec3& n,
-               const glm::vec3& v, const glm::vec3& i, const glm::vec3& radiance) {
+               const glm::vec3& v, const glm::vec3& i, const glm::vec3& radiance, const TangentFrame& frame) {
     const float nDotI = glm::dot(n, i);
     if (nDotI <= 0.0f) return;  // light behind the surface: no diffuse, no specular
     t.diffuse += radiance * m.kd * m.color * nDotI;
-    t.specular += radiance * m.ks * m.specularColor * specularTerm(env, m.ke, n, i, v);
+    const float spec = anisotropicLobe(m, env) ? anisotropicSpecularTerm(env, m.anisotropy, n, i, v, frame)
+                                               : specularTerm(env, m.ke, n, i, v);
+    t.specular += radiance * m.ks * m.specularColor * spec;
 }
 
 }  // namespace
@@ -103,6 +106,49 @@ float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n,
     return spec;
 }
 
+glm::vec3 orthogonalTangent(const glm::vec3& t, const glm::vec3& n, const glm::vec3& fallback) {
+    const glm::vec3 g = t - n * glm::dot(n, t);
+    const float len = glm::length(g);
+    return len > 1e-6f * std::max(glm::length(t), 1e-30f) && std::isfinite(len) ? g / len : fallback;
+}
+
+glm::vec4 tangentAroundUp(const glm::vec3& n) {
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    const glm::vec3 t = orthogonalTangent(glm::cross(up, n), n, orthogonalTangent(glm::vec3(1.0f, 0.0f, 0.0f), n, glm::vec3(0.0f, 0.0f, 1.0f)));
+    return glm::vec4(t, 1.0f);
+}
+
+TangentFrame tangentFrame(const glm::vec3& n, const glm::vec3& t, float w) {
+    TangentFrame f;
+    f.tangent = orthogonalTangent(t, n, glm::vec3(tangentAroundUp(n)));
+    f.bitangent = (w < 0.0f ? -1.0f : 1.0f) * glm::cross(n, f.tangent);
+    return f;
+}
+
+bool anisotropicLobe(const Material& m, const LightingEnvironment& env) {
+    return m.anisotropic && env.model == ReflectionModel::BlinnPhong;
+}
+
+float anisotropicExponent(const glm::vec2& k, const glm::vec3& h, const TangentFrame& f) {
+    const float ht = glm::dot(h, f.tangent), hb = glm::dot(h, f.bitangent);
+    const float sinSq = ht * ht + hb * hb;  // 1 - (H.N)^2
+    return sinSq > 0.0f ? (k.x * ht * ht + k.y * hb * hb) / sinSq : k.x;
+}
+
+float anisotropicEnergyScale(const glm::vec2& k) {
+    return std::sqrt((k.x + 1.0f) * (k.y + 1.0f)) / (kEnergyReferenceExponent + 1.0f);
+}
+
+float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k, const glm::vec3& n, const glm::vec3& i,
+                              const glm::vec3& v, const TangentFrame& frame) {
+    if (glm::dot(n, i) <= 0.0f) return 0.0f;  // light behind the surface
+    const glm::vec3 h = glm::normalize(i + v);
+    float spec = std::pow(std::max(glm::dot(h, n), 0.0f), anisotropicExponent(k, h, frame));
+    if (env.normalization == SpecularNormalization::Energy) spec *= anisotropicEnergyScale(k);
+    if (env.fresnel != FresnelMode::None) spec *= fresnelWeight(env.fresnel, std::max(glm::dot(v, h), 0.0f), env.ior);
+    return spec;
+}
+
 float attenuationFactor(const Light& light, float r2) {
     if (light.attenuation != Attenuation::InverseSquare) return 1.0f;
     float f = 1.0f / r2;
@@ -162,8 +208,9 @@ glm::vec3 areaSamplePosition(const Light& l, int i, int j) {
 }
 
 ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& p, const glm::vec3& n,
-                        const Visibility& visibility) {
+                        const Visibility& visibility, const TangentFrame* tangents) {
     ShadingTerms t;
+    const TangentFrame frame = tangents ? *tangents : tangentFrame(n, glm::vec3(tangentAroundUp(n)), 1.0f);
     t.lights.resize(env.lights.size());
     const glm::vec3 v = glm::normalize(env.eyeWorld - p);
     t.emissive = m.emissive;
@@ -178,7 +225,7 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
         switch (light.type) {
         case LightType::Directional: {
             const glm::vec3 i = glm::normalize(-light.direction);
-            addSample(t.lights[li], m, env, n, v, i, power * visible(li, 0, i, std::numeric_limits<float>::infinity()));
+            addSample(t.lights[li], m, env, n, v, i, power * visible(li, 0, i, std::numeric_limits<float>::infinity()), frame);
             break;
         }
         case LightType::Point:
@@ -188,7 +235,7 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
             const glm::vec3 i = d / r;
             const float cone = spotFalloff(light, i);
             addSample(t.lights[li], m, env, n, v, i,
-                      power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? visible(li, 0, i, r) : 1.0f));
+                      power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? visible(li, 0, i, r) : 1.0f), frame);
             break;
         }
         case LightType::Area: {
@@ -203,7 +250,7 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
                     if (light.twoSided) cosLight = std::fabs(cosLight);
                     if (cosLight <= 0.0f) continue;  // behind the emitting side
                     const float vis = visible(li, sj * light.samples.x + si, i, r);
-                    addSample(t.lights[li], m, env, n, v, i, power * (attenuationFactor(light, r2) * cosLight * share * vis));
+                    addSample(t.lights[li], m, env, n, v, i, power * (attenuationFactor(light, r2) * cosLight * share * vis), frame);
                 }
             break;
         }

@@ -25,12 +25,18 @@
 // - "fresnel": spec is multiplied by F(V.H), the reflectance of a surface of relative index of
 //   refraction `ior` (= eta2/eta1, light arriving from eta1 = air): Schlick's R0 + (1 - R0)(1 - cos)^5,
 //   or the exact unpolarised Fresnel average (R_par + R_perp) / 2.
+// - "anisotropy": [k_t, k_b] (Blinn-Phong only): Ashikhmin and Shirley's exponent replaces k_e,
+//     spec = max(0, H.N)^k(H),  k(H) = (k_t (H.T)^2 + k_b (H.B)^2) / (1 - (H.N)^2)   (spec = 1 where H = N)
+//   with T, B the surface's unit tangent and bitangent (TangentFrame). k_t = k_b = k_e is Blinn-Phong's
+//   lobe exactly. With "energy", their normalisation sqrt((k_t + 1)(k_b + 1)) / 8pi, read relative to
+//   k_t = k_b = 32 like the isotropic lobe: spec is multiplied by sqrt((k_t + 1)(k_b + 1)) / 33.
 // - "show": only one addend is drawn (ambient, diffuse, specular, one light's diffuse + specular) or
 //   the unlit colour C; the total is that addend clamped to [0, 1].
 #include "core/scene/scene.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -99,6 +105,34 @@ float fresnelWeight(FresnelMode mode, float cosVH, float ior);
 // (normal, toward the light, toward the eye). The lobe plot (core/figures/plot.hpp) draws this function.
 float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v);
 
+// The frame around the model's up axis (+y in object space): T = normalize(up x N), along the
+// parallels of a sphere (eastward), B = N x T towards the north pole; at a pole (N along +-y) T = +x.
+// w = 1.
+glm::vec4 tangentAroundUp(const glm::vec3& n);
+// Gram-Schmidt: `t` made orthogonal to the unit normal `n` and unit length; `fallback` where nothing
+// of it is left.
+glm::vec3 orthogonalTangent(const glm::vec3& t, const glm::vec3& n, const glm::vec3& fallback);
+// The tangent frame at a shaded point (world space, unit, both orthogonal to N): T along which k_t
+// applies, B = w N x T along which k_b applies.
+struct TangentFrame {
+    glm::vec3 tangent{1.0f, 0.0f, 0.0f};
+    glm::vec3 bitangent{0.0f, 0.0f, 1.0f};
+};
+// The frame from a tangent `t` (any length; w the handedness) at unit normal `n`: T = t made orthogonal to
+// N (Gram-Schmidt; around the up axis where nothing is left), B = w N x T. The shaders do the same.
+TangentFrame tangentFrame(const glm::vec3& n, const glm::vec3& t, float w);
+// Whether the anisotropic lobe applies: the material asks for it and the lobe is Blinn-Phong's.
+bool anisotropicLobe(const Material& m, const LightingEnvironment& env);
+// Ashikhmin and Shirley's exponent at halfway vector `h`: (k_t (H.T)^2 + k_b (H.B)^2) / (1 - (H.N)^2),
+// with 1 - (H.N)^2 computed as (H.T)^2 + (H.B)^2 (the same for an orthonormal frame, and without
+// cancellation as H nears N); k_t where H = N, where spec is 1 whatever the exponent.
+float anisotropicExponent(const glm::vec2& k, const glm::vec3& h, const TangentFrame& frame);
+// What "energy" multiplies the anisotropic lobe by: sqrt((k_t + 1)(k_b + 1)) / sqrt(33 * 33).
+float anisotropicEnergyScale(const glm::vec2& k);
+// spec with the anisotropic lobe (as specularTerm, the exponent anisotropicExponent's).
+float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k, const glm::vec3& n, const glm::vec3& i,
+                              const glm::vec3& v, const TangentFrame& frame);
+
 // The occlusion test toward one light sample: from the shaded point along `towardLight` (unit) for
 // `distance` (infinite for directional lights). Returns v in [0, 1]: 1 visible, 0 occluded.
 struct LightRay {
@@ -109,12 +143,14 @@ struct LightRay {
 };
 using Visibility = std::function<float(const glm::vec3& posWorld, const LightRay& ray)>;
 
-// nrmWorld must be unit length. Without a visibility every light sample is visible.
+// nrmWorld must be unit length. Without a visibility every light sample is visible. `frame`: the
+// tangent frame for an anisotropic material; null: the frame around world +y (tangentFrame(n, +y x n)),
+// which is the procedural meshes' own where their transform does not rotate them.
 ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& posWorld,
-                        const glm::vec3& nrmWorld, const Visibility& visibility = {});
+                        const glm::vec3& nrmWorld, const Visibility& visibility = {}, const TangentFrame* frame = nullptr);
 inline glm::vec3 shade(const Material& m, const LightingEnvironment& env, const glm::vec3& posWorld,
-                       const glm::vec3& nrmWorld, const Visibility& visibility = {}) {
-    return shadeTerms(m, env, posWorld, nrmWorld, visibility).total;
+                       const glm::vec3& nrmWorld, const Visibility& visibility = {}, const TangentFrame* frame = nullptr) {
+    return shadeTerms(m, env, posWorld, nrmWorld, visibility, frame).total;
 }
 
 // The distance falloff of a point or area light at squared distance r2: 1 (none), 1/r2

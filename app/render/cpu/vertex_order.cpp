@@ -89,6 +89,7 @@ Mesh orderedForVertexCache(const Mesh& mesh) {
     const std::vector<std::uint32_t> oldFromNew = renumberVerticesByFirstUse(out.indices, vertexCount);
     out.positions = permuted(mesh.positions, oldFromNew);
     out.normals = permuted(mesh.normals, oldFromNew);
+    if (!mesh.tangents.empty()) out.tangents = permuted(mesh.tangents, oldFromNew);
     if (mesh.variesColor()) {
         out.texcoords = permuted(mesh.texcoords, oldFromNew);
         out.colors = permuted(mesh.colors, oldFromNew);
@@ -104,6 +105,7 @@ FlatMesh makeOrderedFlatMesh(const Mesh& orderedMesh) {
     flat.positions = permuted(flat.positions, oldFromNew);
     flat.normals = permuted(flat.normals, oldFromNew);
     flat.centroids = permuted(flat.centroids, oldFromNew);
+    if (!flat.tangents.empty()) flat.tangents = permuted(flat.tangents, oldFromNew);
     if (!flat.texcoords.empty()) {
         flat.texcoords = permuted(flat.texcoords, oldFromNew);
         flat.colors = permuted(flat.colors, oldFromNew);
