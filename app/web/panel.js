@@ -431,6 +431,7 @@ var Module = (function () {
       case "show": return choiceControl(o, namesOf(o));  // light:N filled per scene in refreshPanel
       case "msaa": return choiceControl(o, namesOf(o), "4");  // web_app.cpp draws with 4 unless --msaa
       case "ka": case "kd": case "ks": return numberControl(o, undefined, [0, 1]);
+      case "anisotropy": return anisotropyControl(o);
       case "color": return colourControl(o, "C colour");
       case "specular-color": return colourControl(o, "S colour");
       case "ambient": return colourControl(o, "A ambient");
@@ -596,6 +597,50 @@ var Module = (function () {
     return part;
   }
 
+  // --anisotropy KT,KB: a switch and two logarithmic sliders (k_t along the tangent, k_b along the
+  // bitangent), as the desktop panel's. Off is no override: the scene's own (usually none). The
+  // lobe is Blinn-Phong's (the option needs --reflection blinn-phong): switched on, it asks for it.
+  function anisotropyControl(o) {
+    const [lo, hi] = o.range;
+    const toSlider = (v) => Math.log10(Math.max(lo, v)), fromSlider = (t) => +Math.pow(10, t).toPrecision(3);
+    const on = el("input", { type: "checkbox", "aria-label": "anisotropy on" });
+    const box = el("input", { type: "text", name: "anisotropy", class: "text", spellcheck: "false", placeholder: "KT,KB e.g. 8,256" });
+    const sliders = ["k_t (tangent)", "k_b (bitangent)"].map((label) =>
+      el("input", { type: "range", "aria-label": label + " (logarithmic slider)", min: toSlider(lo), max: toSlider(hi), step: (toSlider(hi) - toSlider(lo)) / 1000 }));
+    const current = () => {
+      const v = shownValue("anisotropy", undefined);
+      if (v === undefined || v === null || v === "") return null;
+      return (Array.isArray(v) ? v : String(v).split(",")).map(parseFloat);
+    };
+    const set = (pair) => {
+      const next = cloneState(state);
+      if (pair) {
+        next.overrides.set("anisotropy", pair.map(fmt).join(","));
+        next.overrides.set("reflection", "blinn-phong");
+      } else next.overrides.delete("anisotropy");
+      applyState(next);
+    };
+    on.addEventListener("change", () => set(on.checked ? [8, 256] : null));
+    box.addEventListener("change", () => set(box.value.trim() ? box.value.trim().split(",").map(parseFloat) : null));
+    sliders.forEach((slider, i) => slider.addEventListener("input", () => {
+      const pair = current() || [8, 256];
+      pair[i] = fromSlider(parseFloat(slider.value));
+      scheduleOverride("anisotropy", pair.map(fmt).join(","));
+    }));
+    controls.push({
+      update() {
+        const pair = current();
+        on.checked = !!pair;
+        if (document.activeElement !== box) box.value = pair ? pair.map(fmt).join(",") : "";
+        sliders.forEach((slider, i) => { slider.disabled = !pair; if (pair) slider.value = toSlider(pair[i]); });
+      },
+    });
+    box.id = "c" + (++uid);
+    const row = el("div", { class: "row number-row" }, el("label", { for: box.id, title: o.help }, on, " anisotropy"), box);
+    for (const slider of sliders) row.append(slider);
+    return row;
+  }
+
   // An "R,G,B" option (--color, --specular-color, --ambient, --background): a colour picker whose
   // value is the scene's until it is changed. The picker's 8 bits a channel are written as 0..1.
   function colourControl(o, label) {
@@ -617,7 +662,7 @@ var Module = (function () {
   // Which option sits in which section is the page's choice (the table has no section column).
   const SECTION_OPTIONS = {
     shading: ["layout", "shading", "diff", "diff-factor", "reflection", "specular-normalization", "fresnel", "ior", "show", "output-encoding", "msaa"],
-    material: ["ka", "kd", "ks", "ke", "color", "specular-color", "no-textures"],
+    material: ["ka", "kd", "ks", "ke", "anisotropy", "color", "specular-color", "no-textures"],
     plots: ["incidence", "from-inside"],
     shadows: ["shadows"],
     overlays: ["formula"],

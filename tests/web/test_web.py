@@ -440,7 +440,10 @@ class ApiParity(PageTest):
                  ["--fresnel", "schlick", "--ior", "1.8"], ["--specular-normalization", "energy"],
                  ["--ka", "0.4", "--kd", "0.3", "--ks", "1.2"], ["--formula"], ["--formula", "--layout", "compare"],
                  ["--light", "point:-3,4,5:color=1,0.6,0.3", "--light", "directional:1,-1,-1:intensity=0.5"],
-                 ["--mesh", "icosphere:2", "--layout", "compare"]]
+                 ["--mesh", "icosphere:2", "--layout", "compare"],
+                 ["--color", "0.2,0.4,0.9", "--specular-color", "1,0.8,0.3", "--ambient", "0.3,0.3,0.4",
+                  "--background", "0.9,0.9,0.85"],
+                 ["--reflection", "blinn-phong", "--anisotropy", "8,256", "--layout", "compare"]]
         for i, more in enumerate(steps):
             name = "values-%02d-%s" % (i, "".join(a.strip("-")[:6] for a in more[:3]).replace(":", ""))
             self.assertParity(preset_args(preset, *more), preset_args(preset, *more, page=False), name)
