@@ -182,6 +182,20 @@ std::optional<TriangleHit> SceneRayCaster::nearestFrontFace(const glm::vec3& ori
     return best;
 }
 
+std::size_t SceneRayCaster::trianglesTested(const glm::vec3& origin, const glm::vec3& direction, float tMin,
+                                            float tMax) const {
+    std::size_t tested = 0;
+    traverse(origin, direction, tMin, tMax, [&](const Triangle& tri) {
+        ++tested;
+        RayTriangle h;
+        if (intersect(tri.a, tri.edge1, tri.edge2, origin, direction, tri.doubleSided ? 0.0f : tri.frontSign, h) &&
+            h.t >= tMin && h.t <= tMax)
+            tMax = h.t;  // as nearestFrontFace: a nearer hit prunes the boxes behind it
+        return false;
+    });
+    return tested;
+}
+
 bool SceneRayCaster::occluded(const glm::vec3& origin, const glm::vec3& direction, float tMin, float tMax) const {
     bool hit = false;
     traverse(origin, direction, tMin, tMax, [&](const Triangle& tri) {

@@ -39,6 +39,10 @@ public:
     // True when any triangle, either face (the shadow pass draws both), is hit at t in (tMin, tMax).
     bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMin, float tMax) const;
 
+    // How many triangles nearestFrontFace() tests for this ray: the hierarchy's work, which tests
+    // measure instead of wall-clock time.
+    std::size_t trianglesTested(const glm::vec3& origin, const glm::vec3& direction, float tMin, float tMax) const;
+
     std::size_t triangleCount() const { return triangles_.size(); }
     // Half the diagonal of the box around every triangle, world units (0 when empty): a length scale
     // for offsets that must be small against the scene.
