@@ -687,16 +687,20 @@ void Viewer::resetPreset() {
         return;
     }
     showingPreset("reset preset " + std::to_string(playlist_.current() + 1) + " from ");
+    // A reset is asked for: a short word over the view (no path, the caption shows which preset).
+    setStatus("preset reset to its file", false);
 }
 
-// The document shows the current preset now: the panel's File path is its file, and the status line
-// (and with -v the terminal, which the viewer tests read) says so: `what` followed by the path.
+// The document shows the current preset now: the panel's File path is its file. A slide change shows
+// no message over the view (the caption band has the position, "16 / 23"); the path is for -v only
+// (the terminal, which the viewer tests read). A message of the preset left stays behind with it,
+// errors excepted.
 void Viewer::showingPreset(const std::string& what) {
     const Preset& p = playlist_.preset(playlist_.current());
     settings_.scenePath = p.path;
     settings_.selectedObject = 0;
-    setStatus(what + p.path, false);
-    if (options_.verbose) std::cerr << "shadelab: " << status_.message << "\n";
+    if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
+    if (options_.verbose) std::cerr << "shadelab: " << what << p.path << "\n";
 }
 
 // Mesh edits in the panel rebuild geometry here, once per change; every other frame only compares specs.
