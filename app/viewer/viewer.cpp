@@ -346,9 +346,23 @@ Viewer::FrameLayout Viewer::layout() const {
     // From the top: the status strip, the caption band (at most a fifth of the view's height), the view.
     const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
     const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
-    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits,
-                                                          std::floor((float(windowHeight) - stripUnits) / 6.0f))
+    const float captionMax = std::floor((float(windowHeight) - stripUnits) / 6.0f);
+    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax)
                                           : CaptionLayout{};
+    // With a playlist the band is as high as the longest caption of the playlist needs at this width,
+    // its text as large as the smallest of theirs: the 3D view's rectangle (and so the framing) is the
+    // same on every preset, a caption that wraps to one more line does not push the view down.
+    for (std::size_t i = 0; settings_.showCaption && i < playlist_.size(); ++i) {
+        if (i == playlist_.current()) continue;  // the document's own scene above (its title may be edited)
+        const CaptionLayout other = layoutCaption(playlist_.preset(i).scene, "00 / 00", viewUnits, captionMax);
+        if (other.height <= 0.0f) continue;
+        if (l.captionText.height <= 0.0f || other.captionSize < l.captionText.captionSize) {
+            l.captionText.titleSize = other.titleSize;
+            l.captionText.captionSize = other.captionSize;
+            l.captionText.pad = other.pad;
+        }
+        l.captionText.height = std::max(l.captionText.height, other.height);
+    }
     const float captionUnits = l.captionText.height;
     const int bandPixels = std::min(int(std::lround((stripUnits + captionUnits) * l.scale)), l.framebufferHeight);
     l.viewHeight = l.framebufferHeight - bandPixels;
