@@ -571,6 +571,17 @@ UiRect labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string&
 
 }  // namespace
 
+void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebufferScale) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
+    const float width = 2.0f;  // ImGui units: 2 px at scale 1, 4 at 2x
+    for (std::size_t i = 1; i < panes.size(); ++i) {
+        const float x = std::round(view.x + float(panes[i].x) / framebufferScale);
+        draw->AddRectFilled(ImVec2(x - width * 0.5f, view.y), ImVec2(x + width * 0.5f, view.y + view.height),
+                            IM_COL32(150, 150, 160, 255));
+    }
+}
+
 float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     float bottom = view.y;

@@ -104,6 +104,9 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
 // `framebufferScale` converts the renderer's pixel panes to ImGui units.
 // Returns the bottom of the lowest label (ImGui units; view.y when there are none).
 float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
+// A thin line between side by side panes (compare, diff) over the view, so the class sees where one
+// pane ends; 2 px at content scale 1. Not part of the 3D view's pixels (F12, --output).
+void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebufferScale);
 
 // A preset's title and caption, sized for a projector and fitted into at most `maxHeight`: the band's
 // text sizes and height (0: no title or caption).

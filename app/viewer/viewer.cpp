@@ -270,6 +270,7 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
 // The camera follows the view (size, layout, bands, pane labels) until zoomed or panned; near and far
 // follow the eye. Draws the pane labels first, since they push the framing down; returns where they end.
 float Viewer::followView(const FrameLayout& l) {
+    drawPaneSeparators(document_.scene(), l.view, l.scale);
     const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
     const auto panes = layoutPanes(document_.scene().layout, document_.scene().shading, document_.scene().width,
                                    document_.scene().height, document_.scene().diff);
