@@ -112,8 +112,11 @@ void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebuffe
 // text sizes and height (0: no title or caption).
 struct CaptionLayout {
     float titleSize = 0, captionSize = 0, pad = 0, height = 0;
+    float zoom = 0;  // the text size, as a share of the one for a 1000-unit view
 };
-CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight);
+// `maxZoom` caps the text size (a playlist's captions share the smallest one).
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight,
+                            float maxZoom = 1e9f);
 // Draws it into `band` (above the 3D view), with `counter` ("3 / 20") at the right.
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 

@@ -350,19 +350,30 @@ Viewer::FrameLayout Viewer::layout() const {
     const float captionMax = std::floor((float(windowHeight) - stripUnits) / 6.0f);
     l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax)
                                           : CaptionLayout{};
-    // With a playlist the band is as high as the longest caption of the playlist needs at this width,
-    // its text as large as the smallest of theirs: the 3D view's rectangle (and so the framing) is the
-    // same on every preset, a caption that wraps to one more line does not push the view down.
-    for (std::size_t i = 0; settings_.showCaption && i < playlist_.size(); ++i) {
-        if (i == playlist_.current()) continue;  // the document's own scene above (its title may be edited)
-        const CaptionLayout other = layoutCaption(playlist_.preset(i).scene, "00 / 00", viewUnits, captionMax);
-        if (other.height <= 0.0f) continue;
-        if (l.captionText.height <= 0.0f || other.captionSize < l.captionText.captionSize) {
-            l.captionText.titleSize = other.titleSize;
-            l.captionText.captionSize = other.captionSize;
-            l.captionText.pad = other.pad;
+    // With a playlist every preset's caption has the same text size, the smallest any of them needs
+    // to fit, and the band is as high as the longest caption of the playlist takes at that size: the
+    // 3D view's rectangle (and so the framing) is the same on every preset, a caption that wraps to one
+    // more line does not push the view down.
+    if (settings_.showCaption && playlist_.size() > 1) {
+        const auto sceneOf = [&](std::size_t i) -> const Scene& {
+            return i == playlist_.current() ? document_.scene() : playlist_.preset(i).scene;  // its title may be edited
+        };
+        float zoom = 1e9f;
+        for (std::size_t i = 0; i < playlist_.size(); ++i) {
+            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax);
+            if (c.height > 0.0f) zoom = std::min(zoom, c.zoom);
         }
-        l.captionText.height = std::max(l.captionText.height, other.height);
+        float height = 0.0f;
+        for (std::size_t i = 0; i < playlist_.size(); ++i)
+            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, zoom).height);
+        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, zoom);
+        if (height > 0.0f) {
+            if (l.captionText.height <= 0.0f) {  // an empty band with the position, as the others
+                static const Scene blank = [] { Scene s; s.title = " "; return s; }();
+                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, zoom);
+            }
+            l.captionText.height = height;
+        }
     }
     const float captionUnits = l.captionText.height;
     const int bandPixels = std::min(int(std::lround((stripUnits + captionUnits) * l.scale)), l.framebufferHeight);
