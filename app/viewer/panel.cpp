@@ -571,6 +571,17 @@ UiRect labelBox(ImDrawList* draw, float fontSize, ImVec2 pos, const std::string&
 
 }  // namespace
 
+void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebufferScale) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
+    const float width = 2.0f;  // ImGui units: 2 px at scale 1, 4 at 2x
+    for (std::size_t i = 1; i < panes.size(); ++i) {
+        const float x = std::round(view.x + float(panes[i].x) / framebufferScale);
+        draw->AddRectFilled(ImVec2(x - width * 0.5f, view.y), ImVec2(x + width * 0.5f, view.y + view.height),
+                            IM_COL32(150, 150, 160, 255));
+    }
+}
+
 float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     float bottom = view.y;
@@ -606,14 +617,15 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
     return bottom;
 }
 
-CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight) {
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight, float maxZoom) {
     CaptionLayout l;
     if (scene.title.empty() && scene.caption.empty()) return l;
     ImFont* font = ImGui::GetFont();
     // Sizes follow the view's width (a 1000-unit view gets 1.6 times the panel's font for the title,
     // 1.25 for the caption); smaller in steps while the band would take more than `maxHeight`.
-    float zoom = std::clamp(width / 1000.0f, 0.7f, 1.25f);
+    float zoom = std::min(std::clamp(width / 1000.0f, 0.7f, 1.25f), maxZoom);
     for (int step = 0; step < 8; ++step, zoom *= 0.9f) {
+        l.zoom = zoom;
         l.titleSize = ImGui::GetFontSize() * 1.6f * zoom;
         l.captionSize = ImGui::GetFontSize() * 1.25f * zoom;
         l.pad = l.captionSize * 0.45f;

@@ -104,13 +104,19 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
 // `framebufferScale` converts the renderer's pixel panes to ImGui units.
 // Returns the bottom of the lowest label (ImGui units; view.y when there are none).
 float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
+// A thin line between side by side panes (compare, diff) over the view, so the class sees where one
+// pane ends; 2 px at content scale 1. Not part of the 3D view's pixels (F12, --output).
+void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebufferScale);
 
 // A preset's title and caption, sized for a projector and fitted into at most `maxHeight`: the band's
 // text sizes and height (0: no title or caption).
 struct CaptionLayout {
     float titleSize = 0, captionSize = 0, pad = 0, height = 0;
+    float zoom = 0;  // the text size, as a share of the one for a 1000-unit view
 };
-CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight);
+// `maxZoom` caps the text size (a playlist's captions share the smallest one).
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight,
+                            float maxZoom = 1e9f);
 // Draws it into `band` (above the 3D view), with `counter` ("3 / 20") at the right.
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 

@@ -18,6 +18,10 @@
 namespace shadelab {
 namespace {
 
+// The share of each half of the pane a fitted model may take: 5% margin; in side by side panes
+// (compare, diff) 15%, the lecture-hall rule.
+constexpr float kFitMargin = 0.95f, kPaneFitMargin = 0.85f;
+
 // Whether a camera was meant to show the whole model: it fits the view's height (a narrower image
 // than the one the camera was made for, or a --size override, cuts only the sides). A camera that
 // crops the model top and bottom too (a close-up, a floor that fills the view) was meant to crop it.
@@ -158,9 +162,18 @@ void SceneDocument::followView() {
     // A camera that shows the whole model: back only as far as it takes to keep it whole in this pane.
     // One that crops it (a close-up): the same width at the target's depth as the scene's own pane
     // showed, further back in a narrower pane.
+    // The lecture-hall rule: side by side panes (compare, diff) are narrow, and a model 5% from their
+    // edges looks cramped next to its neighbour; the narrower the pane than the scene's own, the more
+    // margin, up to 15% on each side once it is 15% narrower. At the scene's own size the margin is the
+    // plain 5% (the view is then the headless image).
+    float margin = kFitMargin;
+    if (multiPane()) {
+        const float narrower = std::clamp((homeAspect_ / aspect - 1.0f) / 0.15f, 0.0f, 1.0f);
+        margin -= (kFitMargin - kPaneFitMargin) * narrower;
+    }
     float fitAspect = aspect;
     const Camera clear = clearOfLabels(c, fitAspect);
-    const float distance = homeFits_ ? std::max(homeDistance, fitDistance(clear, b, fitAspect, 0.95f))
+    const float distance = homeFits_ ? std::max(homeDistance, fitDistance(clear, b, fitAspect, margin))
                                      : homeDistance * std::max(1.0f, homeAspect_ / aspect);
     Camera placed = c;
     placed.eye = c.target + distance * dir;
@@ -186,8 +199,15 @@ Camera SceneDocument::clearOfLabels(const Camera& c, float& aspect) const {
     return narrower;
 }
 
+bool SceneDocument::multiPane() const {
+    return layoutPanes(scene_.layout, scene_.shading, scene_.width, scene_.height, scene_.diff).size() > 1;
+}
+
 void SceneDocument::frameInsidePane(Camera& c, const BoundingSphere& b, float aspect) const {
     Camera narrower = clearOfLabels(c, aspect);
+    // Side by side panes: the lecture-hall margin (the model in 85% of the pane rather than 95%).
+    if (multiPane())
+        narrower.fovYDeg = glm::degrees(2.0f * std::atan(std::tan(glm::radians(narrower.fovYDeg) / 2.0f) * kPaneFitMargin / kFitMargin));
     frameCamera(narrower, b, aspect);
     narrower.fovYDeg = c.fovYDeg;
     c = narrower;

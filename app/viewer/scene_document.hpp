@@ -68,10 +68,12 @@ public:
     // caption or the panel appearing never crops the model. Zooming, panning or editing the camera
     // (stopFollowing) turns it off until F, R or another scene.
     //  - a scene's own camera ("home") that shows the model's whole height: kept where the whole model
-    //    fits this pane, else moved back along its viewing direction until it does (5% margin);
+    //    fits this pane, else moved back along its viewing direction until it does (5% margin; in
+    //    compare and diff, up to 15% as the pane gets narrower than the scene's own, the lecture hall);
     //  - one that crops the model (a close-up): moved back in a pane narrower than the one the scene
     //    was made for until the same width shows;
-    //  - F, or a model without a camera: the whole model, centred, filling 90% of the tighter side.
+    //  - F, or a model without a camera: the whole model, centred, filling 90% of the tighter side
+    //    (about 80% in compare and diff).
     void followView();
     void frameModel();     // F
     void resetCamera();    // R: the home camera, followed
@@ -96,6 +98,7 @@ private:
     void startFraming(int fileWidth, int fileHeight);
     Camera clearOfLabels(const Camera& camera, float& aspect) const;
     void frameInsidePane(Camera& camera, const BoundingSphere& bounds, float aspect) const;
+    bool multiPane() const;  // compare or diff: panes side by side
 
     // A camera placed by framing or by the clip planes: an edit only when it moved.
     void placeCamera(const Camera& placed);

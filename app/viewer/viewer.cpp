@@ -270,6 +270,7 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
 // The camera follows the view (size, layout, bands, pane labels) until zoomed or panned; near and far
 // follow the eye. Draws the pane labels first, since they push the framing down; returns where they end.
 float Viewer::followView(const FrameLayout& l) {
+    drawPaneSeparators(document_.scene(), l.view, l.scale);
     const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
     const auto panes = layoutPanes(document_.scene().layout, document_.scene().shading, document_.scene().width,
                                    document_.scene().height, document_.scene().diff);
@@ -346,9 +347,34 @@ Viewer::FrameLayout Viewer::layout() const {
     // From the top: the status strip, the caption band (at most a fifth of the view's height), the view.
     const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
     const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
-    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits,
-                                                          std::floor((float(windowHeight) - stripUnits) / 6.0f))
+    const float captionMax = std::floor((float(windowHeight) - stripUnits) / 6.0f);
+    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax)
                                           : CaptionLayout{};
+    // With a playlist every preset's caption has the same text size, the smallest any of them needs
+    // to fit, and the band is as high as the longest caption of the playlist takes at that size: the
+    // 3D view's rectangle (and so the framing) is the same on every preset, a caption that wraps to one
+    // more line does not push the view down.
+    if (settings_.showCaption && playlist_.size() > 1) {
+        const auto sceneOf = [&](std::size_t i) -> const Scene& {
+            return i == playlist_.current() ? document_.scene() : playlist_.preset(i).scene;  // its title may be edited
+        };
+        float zoom = 1e9f;
+        for (std::size_t i = 0; i < playlist_.size(); ++i) {
+            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax);
+            if (c.height > 0.0f) zoom = std::min(zoom, c.zoom);
+        }
+        float height = 0.0f;
+        for (std::size_t i = 0; i < playlist_.size(); ++i)
+            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, zoom).height);
+        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, zoom);
+        if (height > 0.0f) {
+            if (l.captionText.height <= 0.0f) {  // an empty band with the position, as the others
+                static const Scene blank = [] { Scene s; s.title = " "; return s; }();
+                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, zoom);
+            }
+            l.captionText.height = height;
+        }
+    }
     const float captionUnits = l.captionText.height;
     const int bandPixels = std::min(int(std::lround((stripUnits + captionUnits) * l.scale)), l.framebufferHeight);
     l.viewHeight = l.framebufferHeight - bandPixels;
@@ -687,16 +713,20 @@ void Viewer::resetPreset() {
         return;
     }
     showingPreset("reset preset " + std::to_string(playlist_.current() + 1) + " from ");
+    // A reset is asked for: a short word over the view (no path, the caption shows which preset).
+    setStatus("preset reset to its file", false);
 }
 
-// The document shows the current preset now: the panel's File path is its file, and the status line
-// (and with -v the terminal, which the viewer tests read) says so: `what` followed by the path.
+// The document shows the current preset now: the panel's File path is its file. A slide change shows
+// no message over the view (the caption band has the position, "16 / 23"); the path is for -v only
+// (the terminal, which the viewer tests read). A message of the preset left stays behind with it,
+// errors excepted.
 void Viewer::showingPreset(const std::string& what) {
     const Preset& p = playlist_.preset(playlist_.current());
     settings_.scenePath = p.path;
     settings_.selectedObject = 0;
-    setStatus(what + p.path, false);
-    if (options_.verbose) std::cerr << "shadelab: " << status_.message << "\n";
+    if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
+    if (options_.verbose) std::cerr << "shadelab: " << what << p.path << "\n";
 }
 
 // Mesh edits in the panel rebuild geometry here, once per change; every other frame only compares specs.

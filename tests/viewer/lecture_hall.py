@@ -13,6 +13,10 @@
   remember  window size and UI scale come back in the next session; --reset-layout forgets them
   hidpi     at a 2x content scale (Xft.dpi 192) the view keeps half the window and the panes show the
             whole model
+  slides    at 1920x1080: the k_e series 04-08 (one caption wraps to two lines) has the very same view
+            rectangle and sphere on every slide; compare panes leave a margin (at least 6% of the pane's
+            width each side) and a separator line is drawn between them in the window, not in F12's image;
+            a slide change puts no message over the view (the window's view equals a fresh session's)
 
 usage: lecture_hall.py SCENARIO SHADELAB ASSETS OUTDIR   (inside an X server: see xvfb_run.sh)
 Exits 77 (skipped) where libXtst or xdotool is missing. The screenshots stay in OUTDIR to be looked at.
@@ -104,6 +108,21 @@ def model_pixels(image, x0, x1):
     background = rows[height - 1][x0]
     return sum(1 for y in range(0, height, 2) for x in range(x0, x1, 2)
                if max(abs(a - b) for a, b in zip(rows[y][x], background)) > 6)
+
+
+def model_box(image, x0=0, x1=None):
+    """(left, top, right, bottom) of what differs from the background in x0..x1, or None."""
+    width, height, rows = image
+    x1 = width if x1 is None else x1
+    background = rows[height - 1][x0]
+    xs, ys = [], []
+    for y in range(height):
+        row = rows[y]
+        hits = [x for x in range(x0, x1) if max(abs(a - b) for a, b in zip(row[x], background)) > 6]
+        if hits:
+            xs += (hits[0], hits[-1])
+            ys.append(y)
+    return (min(xs), min(ys), max(xs), max(ys)) if xs else None
 
 
 def window_id():
@@ -221,6 +240,48 @@ elif scenario == "hidpi":
         for x0, x1 in panes(image, 3):
             check(not touches_border(image, x0, x1), f"2x maximised: the model touches pane {x0}..{x1}")
     quit_viewer(proc, display)
+elif scenario == "slides":
+    window, fresh = os.path.join(out, "window-compare.png"), os.path.join(out, "window-fresh.png")
+    proc, display = start_viewer([shadelab, "--playlist", playlist, "--screenshot", window], out)
+    display.move(300, 500, 0.5)
+    resize(1920, 1080)
+    for _ in range(3):
+        display.key("Next")
+    frames = {}
+    for preset in range(4, 9):  # the k_e series: one camera, one sphere; 07's caption wraps
+        image = shot(f"preset{preset:02d}-1920x1080")
+        if image:
+            frames[preset] = (image[0], image[1], model_box(image))
+        display.key("Next")
+    print("k_e series (view width, height, sphere box):", frames)
+    check(len(set(frames.values())) == 1, f"the k_e series is not framed alike: {frames}")
+    display.key("Home")  # preset 1: compare
+    compare = shot("compare-1920x1080")
+    if compare:
+        for x0, x1 in panes(compare, 3):
+            box = model_box(compare, x0 + 2, x1 - 2)
+            margin = min(box[0] - x0, x1 - 1 - box[2]) if box else 0
+            print(f"compare pane {x0}..{x1}: sphere {box}, side margin {margin} px ({100 * margin / (x1 - x0):.1f}%)")
+            check(margin >= 0.06 * (x1 - x0), f"compare pane {x0}..{x1}: the model is {margin} px from its side")
+    display.key("Next")   # away and back: slide changes, the last two things before quitting
+    display.key("Prior")
+    quit_viewer(proc, display)
+    proc, display = start_viewer([shadelab, "--playlist", playlist, "--screenshot", fresh], out)
+    display.move(300, 500, 0.5)
+    resize(1920, 1080)
+    quit_viewer(proc, display)
+    if compare and os.path.exists(window) and os.path.exists(fresh):
+        w, h = compare[0], compare[1]
+        a, b = read_png(open(window, "rb").read()), read_png(open(fresh, "rb").read())
+        top = a[1] - h  # the view is the window's bottom-left w x h
+        differ = sum(1 for y in range(top, a[1]) for x in range(0, w, 2) if a[2][y][x] != b[2][y][x])
+        check(differ == 0, f"after a slide change {differ} pixels of the view differ from a fresh session's (a message?)")
+        separator = lambda p: abs(p[0] - 150) <= 12 and abs(p[1] - 150) <= 12 and abs(p[2] - 160) <= 12
+        for x0, _ in panes(compare, 3)[1:]:
+            in_window = sum(1 for y in range(top, a[1]) if any(separator(a[2][y][x]) for x in range(x0 - 2, x0 + 2)))
+            in_view = sum(1 for y in range(h) if any(separator(compare[2][y][x]) for x in range(x0 - 2, x0 + 2)))
+            check(in_window > 0.8 * h, f"no separator at x {x0} in the window: {in_window} of {h} rows")
+            check(in_view < 0.05 * h, f"a separator at x {x0} in the F12 image: {in_view} of {h} rows")
 elif scenario == "lightdrag":
     # A point light on the viewing axis, between the eye (0, 1.5, 4.8) and the target: its marker is
     # at the view's centre, (400, 300) in the view, (400, 324) on the screen under the status strip.

@@ -78,6 +78,26 @@ void expectSameImage(const Image& actual, const Image& expected, const std::stri
     EXPECT_TRUE(r.matches(tolerance)) << what << ": " << describe(r, tolerance);
 }
 
+// The window draws a thin separator between compare panes over the 3D view (not in the view's own
+// pixels): window and view are compared pane by pane, leaving out 3 columns either side of each of the
+// `panes` - 1 boundaries. Returns whether the window has the separator's grey at every boundary.
+bool expectSameImageBesideSeparators(const Image& window, const Image& view, int panes, const std::string& what) {
+    bool separators = true;
+    for (int i = 0; i < panes; ++i) {
+        const int x0 = i == 0 ? 0 : i * view.width / panes + 3, x1 = i + 1 == panes ? view.width : (i + 1) * view.width / panes - 3;
+        expectSameImage(crop(window, x0, 0, x1 - x0, window.height), crop(view, x0, 0, x1 - x0, view.height),
+                        what + ", pane " + std::to_string(i));
+        if (i == 0) continue;
+        bool found = false;
+        for (int x = x0 - 6; x < x0; ++x) {
+            const std::uint8_t* p = window.pixel(x, window.height / 2);
+            found = found || (p[0] == 150 && p[1] == 150 && p[2] == 160);
+        }
+        separators = separators && found;
+    }
+    return separators;
+}
+
 TEST(NoDisplay, SaysSoInOneLineAndExits2) {
     const std::string dir = outDir();
     const RunResult r = shadelab("--frames 1", dir, "env -u DISPLAY -u WAYLAND_DISPLAY");
@@ -116,9 +136,11 @@ TEST(Window, Opens) {
         EXPECT_GT(p[0], 60) << "pane " << pane;
         EXPECT_GT(p[0], p[2]) << "pane " << pane;
     }
-    // Below the strip and the pane labels, the window shows exactly the 3D view.
-    expectSameImage(crop(window, 0, kStripPixels + 100, view.width, 300), crop(view, 0, 100, view.width, 300),
-                    "window vs 3D view");
+    // Below the strip and the pane labels, the window shows exactly the 3D view, but for the panes'
+    // separators (drawn over the view, not in its pixels).
+    EXPECT_TRUE(expectSameImageBesideSeparators(crop(window, 0, kStripPixels + 100, view.width, 300),
+                                                crop(view, 0, 100, view.width, 300), 3, "window vs 3D view"))
+        << "no separator between the compare panes in the window";
 }
 
 // A scene loaded in the window gives the same 3D pixels as the headless --output render of that scene,
@@ -146,8 +168,9 @@ TEST(Window, MatchesHeadless) {
     ASSERT_EQ(window.width, expected.width);
     ASSERT_EQ(window.height, expected.height + kStripPixels);
     const int top = 60, rows = expected.height - top;
-    expectSameImage(crop(window, 0, kStripPixels + top, window.width, rows), crop(expected, 0, top, expected.width, rows),
-                    "whole window, panel hidden");
+    EXPECT_TRUE(expectSameImageBesideSeparators(crop(window, 0, kStripPixels + top, window.width, rows),
+                                                crop(expected, 0, top, expected.width, rows), 3, "whole window, panel hidden"))
+        << "no separator between the compare panes in the window";
 }
 
 // --animate in the viewer: a scripted run steps 1/30 s a frame, so its 16th frame shows t = 0.5 s of the
