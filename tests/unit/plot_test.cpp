@@ -39,6 +39,49 @@ void expectClose(double actual, double expected, const std::string& what) {
 
 }  // namespace
 
+// ---- The BRDF as a function (issue 30, part 3): lobe3d and brdf-slice
+
+namespace {
+
+Material anisotropicMaterial(float kt, float kb) {
+    Material m;
+    m.anisotropic = true;
+    m.anisotropy = {kt, kb};
+    return m;
+}
+
+LightingEnvironment modelEnv(ReflectionModel model) {
+    LightingEnvironment env;
+    env.model = model;
+    return env;
+}
+
+// All points of the plot's polylines, in order: two plots are the same picture when these are.
+std::vector<glm::vec2> allPoints(const Plot& plot) {
+    std::vector<glm::vec2> out;
+    for (const PlotPolyline& l : plot.lines) out.insert(out.end(), l.points.begin(), l.points.end());
+    return out;
+}
+
+// The point of the surface farthest from the origin (the lobe's peak) as a unit direction.
+glm::vec3 peakDirection(const LobeSurface& s) {
+    glm::vec3 best(0.0f);
+    auto consider = [&](const std::vector<glm::vec3>& curve) {
+        for (const glm::vec3& p : curve)
+            if (glm::length(p) > glm::length(best)) best = p;
+    };
+    for (const auto& c : s.rings) consider(c);
+    for (const auto& c : s.meridians) consider(c);
+    consider(s.planeOfIncidence);
+    return glm::normalize(best);
+}
+
+double angleDeg(const glm::vec3& a, const glm::vec3& b) {
+    return std::acos(std::clamp(double(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0)) * 180.0 / kPi;
+}
+
+}  // namespace
+
 TEST(LobePlot, SamplesAreThePhongAndBlinnPhongLobesInThePlane) {
     const LightingEnvironment env;  // heuristic lobes, no Fresnel
     for (float ke : {1.0f, 8.0f, 32.0f, 1000.0f})
@@ -312,10 +355,12 @@ TEST(PlotLayout, DashesCoverTheirShareOfTheLine) {
 // The PNGs --plot writes, against goldens that were looked at. The rasteriser is plain float code, so
 // the same build reproduces them exactly; the tolerance (the golden tests' defaults) absorbs another
 // compiler's rounding of a few edge pixels. SHADELAB_UPDATE_GOLDENS=1 rewrites them.
-TEST(PlotGolden, LobeAndFresnel) {
+TEST(PlotGolden, LobeFresnelAndBrdf) {
     LightingEnvironment env;
     const std::pair<std::string, Plot> cases[] = {{"plot_lobe", lobePlot(env, 32.0f, 45.0f)},
-                                                  {"plot_fresnel_inside", fresnelPlot(1.5f, 1.0f)}};
+                                                  {"plot_fresnel_inside", fresnelPlot(1.5f, 1.0f)},
+                                                  {"plot_lobe3d", lobe3dPlot(Material{}, modelEnv(ReflectionModel::Phong), 60.0f)},
+                                                  {"plot_brdf_slice", brdfSlicePlot(anisotropicMaterial(8.0f, 128.0f), env, 45.0f)}};
     for (const auto& [name, plot] : cases) {
         const Image actual = renderPlotImage(plot, 640, 480);
         const std::string golden = std::string(SHADELAB_SOURCE_DIR) + "/tests/golden/" + name + ".png";
@@ -336,49 +381,6 @@ TEST(PlotGolden, LobeAndFresnel) {
                                           << SHADELAB_TEST_OUTPUT_DIR << ")";
     }
 }
-
-// ---- The BRDF as a function (issue 30, part 3): lobe3d and brdf-slice
-
-namespace {
-
-Material anisotropicMaterial(float kt, float kb) {
-    Material m;
-    m.anisotropic = true;
-    m.anisotropy = {kt, kb};
-    return m;
-}
-
-LightingEnvironment modelEnv(ReflectionModel model) {
-    LightingEnvironment env;
-    env.model = model;
-    return env;
-}
-
-// All points of the plot's polylines, in order: two plots are the same picture when these are.
-std::vector<glm::vec2> allPoints(const Plot& plot) {
-    std::vector<glm::vec2> out;
-    for (const PlotPolyline& l : plot.lines) out.insert(out.end(), l.points.begin(), l.points.end());
-    return out;
-}
-
-// The point of the surface farthest from the origin (the lobe's peak) as a unit direction.
-glm::vec3 peakDirection(const LobeSurface& s) {
-    glm::vec3 best(0.0f);
-    auto consider = [&](const std::vector<glm::vec3>& curve) {
-        for (const glm::vec3& p : curve)
-            if (glm::length(p) > glm::length(best)) best = p;
-    };
-    for (const auto& c : s.rings) consider(c);
-    for (const auto& c : s.meridians) consider(c);
-    consider(s.planeOfIncidence);
-    return glm::normalize(best);
-}
-
-double angleDeg(const glm::vec3& a, const glm::vec3& b) {
-    return std::acos(std::clamp(double(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0)) * 180.0 / kPi;
-}
-
-}  // namespace
 
 // f_r is core/shading's: brdf() against the formula written out, k_d + k_s spec / (N.I), and the
 // renderer's own shade() for one directional light of radiance 1 with white colours.

@@ -335,15 +335,14 @@ Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float inci
     Plot p;
     p.kind = PlotKind::BrdfSlice;
     p.title = "BRDF f_r(delta_phi; theta_i -> theta_o): " + lobeName(m, env);
-    p.subtitle = "colour: log f_r, f_r = k_d + k_s spec / (N.I) (k_d = " + shortNumber(m.kd) + ", k_s = " + shortNumber(m.ks) +
-                 ")" + modifiers(env) + ". Left: the plane of incidence; right: theta_i = " + shortNumber(incidenceDeg) +
-                 " deg, delta_phi = phi_o - phi_i";
-    if (anisotropic) p.subtitle += ". Anisotropic: the rows (phi_i = 0 and 90 deg) differ, so f_r needs phi_i too: 4-D";
+    p.subtitle = "colour: log f_r, f_r = k_d + k_s spec / (N.I), k_d = " + shortNumber(m.kd) + ", k_s = " + shortNumber(m.ks) +
+                 modifiers(env) + "; delta_phi = phi_o - phi_i";
+    if (anisotropic) p.subtitle += "; rows: light along T (phi_i = 0) and along B (phi_i = 90 deg) differ: f_r needs phi_i too (4-D)";
 
     // Panels in plot units, each 1 tall: the plane of incidence 1 wide with its colour bar, the azimuth
-    // slice 1.5 wide with its own; rows 1.8 apart (room for the axis numbers, names and row titles).
+    // slice 1.5 wide with its own; rows 1.6 apart (room for the axis numbers and names).
     const float aX0 = 0.0f, aX1 = 1.0f, aBar0 = 1.1f, aBar1 = 1.16f, bX0 = 1.8f, bX1 = 3.3f, bBar0 = 3.36f, bBar1 = 3.42f;
-    const float rowStep = 1.8f;
+    const float rowStep = 1.6f;
     for (std::size_t r = 0; r < phis.size(); ++r) {
         const float y0 = rowStep * float(r), y1 = y0 + 1.0f;
         for (int panel = 0; panel < 2; ++panel) {
@@ -360,9 +359,9 @@ Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float inci
             p.lines.push_back(line("frame", {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}}, kPlotAxis));
             p.labels.push_back(label({x0, y1}, "theta_o", {0.0f, 1.0f}, {0.0f, -0.3f}));
         }
-        if (anisotropic)
-            p.labels.push_back(label({0.5f * (bX0 + bX1), y1}, r == 1 ? "phi_i = 0: light along T (k_t)" : "phi_i = 90 deg: light along B (k_b)",
-                                     {0.5f, 1.0f}, {0.0f, -1.5f}, kYellow));
+        if (anisotropic)  // which row, in the azimuth slice's top right corner (dark: the lobe is at 180)
+            p.labels.push_back(label({bX1, y1}, r == 1 ? "phi_i = 0, along T" : "phi_i = 90 deg, along B", {1.0f, 0.0f},
+                                     {-0.3f, 0.2f}, kYellow));
         // Plane of incidence: theta_i along x (0..90), signed theta_o along y: 90 .. 0 .. 90 with the mirror side up.
         auto ax = [&](float thetaI) { return aX0 + (aX1 - aX0) * thetaI / 90.0f; };
         auto ay = [&](float thetaO) { return y0 + (thetaO + 90.0f) / 180.0f; };
