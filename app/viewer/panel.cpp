@@ -189,6 +189,14 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
     // evaluations; two rows of them with anisotropy).
     ImGui::Spacing();
     plotWidget("##lobe3d", scenePlot(PlotKind::Lobe3d, scene, material, plots), width * 0.9f);
+    // Dragging the 3-D lobe turns it (the widget holds the mouse, so the scene's camera stays put);
+    // a double click goes back to the PNG's view.
+    if (ImGui::IsItemActive()) {
+        const ImVec2 delta = ImGui::GetIO().MouseDelta;
+        plots.lobeView.azimuthDeg = std::fmod(plots.lobeView.azimuthDeg - 0.5f * delta.x, 360.0f);
+        plots.lobeView.elevationDeg = std::clamp(plots.lobeView.elevationDeg + 0.5f * delta.y, 0.0f, 89.0f);
+    }
+    if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) plots.lobeView = LobeView{};
     ImGui::Spacing();
     const bool twoRows = anisotropicLobe(material, lightingEnvironment(scene));
     plotWidget("##brdf-slice", scenePlot(PlotKind::BrdfSlice, scene, material, plots), width * (twoRows ? 1.0f : 0.65f));

@@ -285,13 +285,13 @@ TEST(ScenePlot, TakesTheScenesParameters) {
     scene.reflection = ReflectionModel::BlinnPhong;
     Material m;
     m.ke = 200.0f;
-    const Plot lobe = scenePlot(PlotKind::Lobe, scene, m, PlotSettings{60.0f, false});
+    const Plot lobe = scenePlot(PlotKind::Lobe, scene, m, PlotSettings{60.0f, false, {}});
     EXPECT_NE(lobe.title.find("k_e = 200"), std::string::npos) << lobe.title;
     EXPECT_NE(lobe.title.find("theta_i = 60 deg"), std::string::npos) << lobe.title;
     EXPECT_NE(lineNamed(lobe, "Blinn-Phong").name.find("(in use)"), std::string::npos);
-    const Plot outside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, false});
+    const Plot outside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, false, {}});
     EXPECT_NE(outside.title.find("eta_1 = 1.00 -> eta_2 = 1.80"), std::string::npos) << outside.title;
-    const Plot inside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, true});
+    const Plot inside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, true, {}});
     EXPECT_NE(inside.title.find("eta_1 = 1.80 -> eta_2 = 1.00"), std::string::npos) << inside.title;
     EXPECT_TRUE(hasLineNamed(inside, "critical angle"));
 }
@@ -488,7 +488,22 @@ TEST(BrdfPlot, SlicePanelsAndTheMirrorRidge) {
             if (g.at(c, row) > g.at(c, best)) best = row;
         EXPECT_EQ(best, 90 + c) << "theta_i " << c + 0.5;  // row 90 + c holds theta_o = c + 0.5
     }
-    const Plot p = scenePlot(PlotKind::BrdfSlice, Scene{}, m, PlotSettings{30.0f, false});
+    const Plot p = scenePlot(PlotKind::BrdfSlice, Scene{}, m, PlotSettings{30.0f, false, {}});
     EXPECT_NE(p.title.find("f_r(delta_phi; theta_i -> theta_o)"), std::string::npos) << p.title;
     EXPECT_EQ(lectureNotation("delta_phi, phi_i, omega_o"), "\u0394\u03c6, \u03c6_i, \u03c9_o");
+}
+
+// The viewer turns the 3-D lobe through PlotSettings::lobeView; the default is the PNG's view, and a
+// view from straight above (elevation 89) sees N end-on: its arrow projects to (almost) a point.
+TEST(BrdfPlot, Lobe3dViewTurns) {
+    Scene scene;
+    Material m;
+    PlotSettings settings;
+    const Plot fixed = scenePlot(PlotKind::Lobe3d, scene, m, settings);
+    EXPECT_EQ(allPoints(fixed), allPoints(lobe3dPlot(m, lightingEnvironment(scene), settings.incidenceDeg)));
+    settings.lobeView.azimuthDeg = 30.0f;
+    EXPECT_NE(allPoints(scenePlot(PlotKind::Lobe3d, scene, m, settings)), allPoints(fixed));
+    const LobeView above{0.0f, 89.0f};
+    EXPECT_LT(glm::length(lobe3dProjection(glm::vec3(0.0f, 1.0f, 0.0f), above)), 0.02f);
+    EXPECT_NEAR(glm::length(lobe3dProjection(glm::vec3(1.0f, 0.0f, 0.0f), above)), 1.0f, 1e-3f);
 }

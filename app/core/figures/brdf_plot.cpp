@@ -163,15 +163,14 @@ LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env,
     return s;
 }
 
-glm::vec2 lobe3dProjection(const glm::vec3& p) {
-    // Seen from 30 degrees to the right of the plane of incidence's front and 25 degrees above the surface.
-    static const glm::vec3 eye = glm::normalize(directionAt(65.0f, -60.0f));
-    static const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), eye));
-    static const glm::vec3 up = glm::cross(eye, right);
+glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view) {
+    const glm::vec3 eye = directionAt(90.0f - std::clamp(view.elevationDeg, 0.0f, 89.0f), view.azimuthDeg);
+    const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), eye));
+    const glm::vec3 up = glm::cross(eye, right);
     return {glm::dot(p, right), glm::dot(p, up)};
 }
 
-Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg) {
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg, const LobeView& view) {
     const LobeSurface s = sampleLobeSurface(m, env, incidenceDeg);
     const float peak = s.peak > 1e-6f ? s.peak : 1.0f;
     const float step = niceStep(peak, 3);
@@ -184,10 +183,10 @@ Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float inciden
     p.subtitle = "radius = f_r = k_d + k_s spec / (N.I) over the hemisphere of omega_o (k_d = " + shortNumber(m.kd) +
                  ", k_s = " + shortNumber(m.ks) + ")" + modifiers(env);
     p.equalAspect = true;
-    auto project = [](const std::vector<glm::vec3>& points) {
+    auto project = [&](const std::vector<glm::vec3>& points) {
         std::vector<glm::vec2> out;
         out.reserve(points.size());
-        for (const glm::vec3& q : points) out.push_back(lobe3dProjection(q));
+        for (const glm::vec3& q : points) out.push_back(lobe3dProjection(q, view));
         return out;
     };
 
@@ -197,7 +196,7 @@ Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float inciden
         std::vector<glm::vec3> circle;
         for (int d = 0; d <= 360; d += 4) circle.push_back(radius * directionAt(90.0f, float(d)));
         p.lines.push_back(line("grid", project(circle), kPlotGrid));
-        p.labels.push_back(label(lobe3dProjection(radius * directionAt(90.0f, -90.0f)), shortNumber(radius), {0.5f, 0.0f},
+        p.labels.push_back(label(lobe3dProjection(radius * directionAt(90.0f, view.azimuthDeg - 30.0f), view), shortNumber(radius), {0.5f, 0.0f},
                                  {0.0f, 0.2f}, kPlotAxis));
     }
     for (int d = 0; d < 360; d += 45) {
@@ -226,7 +225,7 @@ Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float inciden
         a.arrow = true;
         a.dashed = dashed;
         p.lines.push_back(std::move(a));
-        p.labels.push_back(label(lobe3dProjection(arrowLength * d), name, align, {0.0f, 0.0f}, color));
+        p.labels.push_back(label(lobe3dProjection(arrowLength * d, view), name, align, {0.0f, 0.0f}, color));
     };
     arrow("N", glm::vec3(0.0f, 1.0f, 0.0f), kPlotText, false, {0.5f, 1.1f});
     arrow("omega_i", s.i, kGreen, false, {1.0f, 1.0f});

@@ -138,11 +138,18 @@ struct LobeSurface {
     float peak = 0.0f;                                 // the largest f_r on the surface
 };
 LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, float incidenceDeg);
-// The surface projected orthographically from a fixed oblique view (from the front right, 25 degrees
-// above the surface), with N, I, R (and T, B when anisotropic) and reference circles in the surface.
-Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg);
+// Where the 3-D lobe is seen from: the eye's azimuth phi (from T, as directionAt) and elevation above
+// the surface. The default is the PNG's fixed oblique view, from the front right, 25 degrees up; the
+// viewer's Plots section turns it with the mouse.
+struct LobeView {
+    float azimuthDeg = -60.0f;
+    float elevationDeg = 25.0f;   // 0..89
+};
+// The surface projected orthographically from `view`, with N, I, R (and T, B when anisotropic) and
+// reference circles in the surface.
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg, const LobeView& view = {});
 // The view: plot x = dot(p, right), plot y = dot(p, up).
-glm::vec2 lobe3dProjection(const glm::vec3& p);
+glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view = {});
 
 // Heat maps of f_r on a logarithmic colour scale (one for each kind of panel; in the plane of incidence
 // its top is the largest value up to theta_i = 80 deg, beyond which f_r's 1 / (N.I) grows without bound):
@@ -168,6 +175,7 @@ struct PlotSettings {
     float incidenceDeg = 45.0f;   // angle between I and N, 0..kIncidenceDegRange.hi
     bool fromInside = false;      // false: from air into the material (eta1 = 1, eta2 = ior), as the
                                   // renderer's Fresnel term; true: eta1 = ior, eta2 = 1 (total internal reflection)
+    LobeView lobeView;            // the 3-D lobe's view (the CLI keeps the default)
 };
 
 // The plot for a scene: the lobe at material.ke with the scene's reflection model, normalisation,
