@@ -363,10 +363,13 @@ const OptionSpec kOptions[] = {
     {"--plot", "", "KIND", G::General, kNoBounds, [] { return namesList(kPlotKindNames, " | "); }, "",
      "{names}, with `--output`: the lecture's plot for the scene's parameters, drawn on the CPU (no GL), {plot-size} "
      "unless `--size` ({plot-sizes}): lobe = Phong and Blinn-Phong spec in the plane of incidence for "
-     "k_e; fresnel = R_par, R_perp, their average and Schlick over the angle of incidence (see *Plots*)",
+     "k_e; fresnel = R_par, R_perp, their average and Schlick over the angle of incidence; lobe3d = the BRDF "
+     "f_r(omega_i -> omega_o) for the light at `--incidence` as a 3-D polar surface over the hemisphere; brdf-slice = "
+     "heat maps of f_r over (theta_i, theta_o) in the plane of incidence and over (delta_phi, theta_o) at `--incidence` "
+     "(with `--anisotropy`, at phi_i = 0 and 90 deg) (see *Plots*)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.plot = choice(self.name, v, kPlotKindNames); }},
     {"--incidence", "", "DEG", G::General, bounds(kIncidenceDegRange), nullptr, "",
-     "the lobe plot's angle between the incoming light I and N ({range}, default 45)",
+     "the lobe, lobe3d and brdf-slice plots' angle between the incoming light I and N ({range}, default 45)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.incidenceDeg = floatIn(self, v, " degrees"); }},
     {"--from-inside", "", "", G::General, kNoBounds, nullptr, "",
      "the Fresnel plot from inside the material (eta1 = `--ior`, eta2 = 1): total internal reflection past the "

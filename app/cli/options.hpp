@@ -89,7 +89,7 @@ struct Options {
     std::optional<int> fps;
     std::optional<double> duration;
     bool dither = false;
-    std::optional<PlotKind> plot;           // --plot lobe|fresnel: write that plot (no GL) to --output
+    std::optional<PlotKind> plot;           // --plot lobe|fresnel|lobe3d|brdf-slice: write that plot (no GL) to --output
     std::optional<float> incidenceDeg;      // --incidence DEG (0..89): the lobe plot's incoming direction
     bool fromInside = false;                // --from-inside: Fresnel plot with eta1 = ior, eta2 = 1
     // --probe X,Y: with --output, print every term of the formula at that pixel as JSON; in the viewer,

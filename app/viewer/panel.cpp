@@ -173,7 +173,8 @@ void sectionMaterial(Material& m, ReflectionModel reflection) {
 }
 
 // The lecture's plots for the current parameters (core/figures/plot.hpp): rebuilt every frame, which costs
-// about a thousand formula evaluations, so every slider in the panel moves the curves at once.
+// about a thousand formula evaluations for the 2-D plots (tens of thousands for the BRDF's), so every
+// slider in the panel moves the curves at once.
 void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
     ImGui::SliderFloat("incidence", &plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi, "\u03b8_i = %.1f\u00b0");
     plots.incidenceDeg = std::clamp(plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi);
@@ -184,6 +185,21 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
     plotWidget("##lobe", scenePlot(PlotKind::Lobe, scene, material, plots), width * 0.85f);
     ImGui::Spacing();
     plotWidget("##fresnel", scenePlot(PlotKind::Fresnel, scene, material, plots), width * 0.95f);
+    // The BRDF as a function (issue 30): the 3-D lobe from a fixed view, and the heat maps (about 32 000
+    // evaluations; two rows of them with anisotropy).
+    ImGui::Spacing();
+    plotWidget("##lobe3d", scenePlot(PlotKind::Lobe3d, scene, material, plots), width * 0.9f);
+    // Dragging the 3-D lobe turns it (the widget holds the mouse, so the scene's camera stays put);
+    // a double click goes back to the PNG's view.
+    if (ImGui::IsItemActive()) {
+        const ImVec2 delta = ImGui::GetIO().MouseDelta;
+        plots.lobeView.azimuthDeg = std::fmod(plots.lobeView.azimuthDeg - 0.5f * delta.x, 360.0f);
+        plots.lobeView.elevationDeg = std::clamp(plots.lobeView.elevationDeg + 0.5f * delta.y, 0.0f, 89.0f);
+    }
+    if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) plots.lobeView = LobeView{};
+    ImGui::Spacing();
+    const bool twoRows = anisotropicLobe(material, lightingEnvironment(scene));
+    plotWidget("##brdf-slice", scenePlot(PlotKind::BrdfSlice, scene, material, plots), width * (twoRows ? 1.0f : 0.65f));
 }
 
 void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& textures) {

@@ -28,6 +28,9 @@ public:
         if (ab.x * ac.y - ab.y * ac.x < 0.0f) std::swap(b, c);
         draw_->AddTriangleFilled(at(a), at(b), at(c), imColor(color));
     }
+    void fillRect(glm::vec2 lo, glm::vec2 hi, Rgba8 color) override {
+        draw_->AddRectFilled(at(lo), at(hi), imColor(color));  // not antialiased: heat map cells meet without seams
+    }
     void text(glm::vec2 topLeft, const std::string& text, Rgba8 color) override {
         draw_->AddText(at(topLeft), imColor(color), lectureNotation(text).c_str());
     }

@@ -188,6 +188,9 @@ TEST(CliOptions, Plots) {
     EXPECT_TRUE(plotSettings(o).fromInside);
     EXPECT_FLOAT_EQ(plotSettings(parseOptions({})).incidenceDeg, 45.0f);  // the default
     EXPECT_EQ(parseOptions({"--plot=lobe", "-o", "l.png", "--size", "320x240"}).plot, PlotKind::Lobe);
+    EXPECT_EQ(parseOptions({"--plot", "lobe3d", "-o", "l.png"}).plot, PlotKind::Lobe3d);
+    EXPECT_EQ(parseOptions({"--plot", "brdf-slice", "-o", "b.png", "--anisotropy", "8,64"}).plot, PlotKind::BrdfSlice);
+    EXPECT_NE(errorOf({"--plot", "brdf", "-o", "x.png"}).find("(expected one of lobe, fresnel, lobe3d, brdf-slice)"), std::string::npos);
     // The viewer's Plots section takes them too (no --output there).
     EXPECT_FLOAT_EQ(*parseOptions({"--incidence", "0"}).incidenceDeg, 0.0f);
 

@@ -39,6 +39,49 @@ void expectClose(double actual, double expected, const std::string& what) {
 
 }  // namespace
 
+// ---- The BRDF as a function (issue 30, part 3): lobe3d and brdf-slice
+
+namespace {
+
+Material anisotropicMaterial(float kt, float kb) {
+    Material m;
+    m.anisotropic = true;
+    m.anisotropy = {kt, kb};
+    return m;
+}
+
+LightingEnvironment modelEnv(ReflectionModel model) {
+    LightingEnvironment env;
+    env.model = model;
+    return env;
+}
+
+// All points of the plot's polylines, in order: two plots are the same picture when these are.
+std::vector<glm::vec2> allPoints(const Plot& plot) {
+    std::vector<glm::vec2> out;
+    for (const PlotPolyline& l : plot.lines) out.insert(out.end(), l.points.begin(), l.points.end());
+    return out;
+}
+
+// The point of the surface farthest from the origin (the lobe's peak) as a unit direction.
+glm::vec3 peakDirection(const LobeSurface& s) {
+    glm::vec3 best(0.0f);
+    auto consider = [&](const std::vector<glm::vec3>& curve) {
+        for (const glm::vec3& p : curve)
+            if (glm::length(p) > glm::length(best)) best = p;
+    };
+    for (const auto& c : s.rings) consider(c);
+    for (const auto& c : s.meridians) consider(c);
+    consider(s.planeOfIncidence);
+    return glm::normalize(best);
+}
+
+double angleDeg(const glm::vec3& a, const glm::vec3& b) {
+    return std::acos(std::clamp(double(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0)) * 180.0 / kPi;
+}
+
+}  // namespace
+
 TEST(LobePlot, SamplesAreThePhongAndBlinnPhongLobesInThePlane) {
     const LightingEnvironment env;  // heuristic lobes, no Fresnel
     for (float ke : {1.0f, 8.0f, 32.0f, 1000.0f})
@@ -242,13 +285,13 @@ TEST(ScenePlot, TakesTheScenesParameters) {
     scene.reflection = ReflectionModel::BlinnPhong;
     Material m;
     m.ke = 200.0f;
-    const Plot lobe = scenePlot(PlotKind::Lobe, scene, m, PlotSettings{60.0f, false});
+    const Plot lobe = scenePlot(PlotKind::Lobe, scene, m, PlotSettings{60.0f, false, {}});
     EXPECT_NE(lobe.title.find("k_e = 200"), std::string::npos) << lobe.title;
     EXPECT_NE(lobe.title.find("theta_i = 60 deg"), std::string::npos) << lobe.title;
     EXPECT_NE(lineNamed(lobe, "Blinn-Phong").name.find("(in use)"), std::string::npos);
-    const Plot outside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, false});
+    const Plot outside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, false, {}});
     EXPECT_NE(outside.title.find("eta_1 = 1.00 -> eta_2 = 1.80"), std::string::npos) << outside.title;
-    const Plot inside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, true});
+    const Plot inside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, true, {}});
     EXPECT_NE(inside.title.find("eta_1 = 1.80 -> eta_2 = 1.00"), std::string::npos) << inside.title;
     EXPECT_TRUE(hasLineNamed(inside, "critical angle"));
 }
@@ -261,7 +304,12 @@ TEST(PlotLayout, EverythingFitsAndCirclesStayRound) {
     LightingEnvironment env;
     env.normalization = SpecularNormalization::Energy;
     env.fresnel = FresnelMode::Exact;
-    for (const Plot& plot : {lobePlot(env, 32.0f, 45.0f), fresnelPlot(1.5f, 1.0f)})
+    Material anisotropic;
+    anisotropic.anisotropic = true;
+    anisotropic.anisotropy = {4.0f, 400.0f};
+    for (const Plot& plot : {lobePlot(env, 32.0f, 45.0f), fresnelPlot(1.5f, 1.0f), lobe3dPlot(Material{}, env, 45.0f),
+                             lobe3dPlot(anisotropic, env, 45.0f), brdfSlicePlot(Material{}, env, 45.0f),
+                             brdfSlicePlot(anisotropic, env, 45.0f)})
         for (const glm::vec2 size : {glm::vec2(320, 240), glm::vec2(800, 600), glm::vec2(1600, 500)}) {
             const PlotLayout l = layoutPlot(plot, size, 10.0f, measure);
             const std::string what = std::string(toString(plot.kind)) + " at " + std::to_string(int(size.x)) + "x" +
@@ -307,10 +355,12 @@ TEST(PlotLayout, DashesCoverTheirShareOfTheLine) {
 // The PNGs --plot writes, against goldens that were looked at. The rasteriser is plain float code, so
 // the same build reproduces them exactly; the tolerance (the golden tests' defaults) absorbs another
 // compiler's rounding of a few edge pixels. SHADELAB_UPDATE_GOLDENS=1 rewrites them.
-TEST(PlotGolden, LobeAndFresnel) {
+TEST(PlotGolden, LobeFresnelAndBrdf) {
     LightingEnvironment env;
     const std::pair<std::string, Plot> cases[] = {{"plot_lobe", lobePlot(env, 32.0f, 45.0f)},
-                                                  {"plot_fresnel_inside", fresnelPlot(1.5f, 1.0f)}};
+                                                  {"plot_fresnel_inside", fresnelPlot(1.5f, 1.0f)},
+                                                  {"plot_lobe3d", lobe3dPlot(Material{}, modelEnv(ReflectionModel::Phong), 60.0f)},
+                                                  {"plot_brdf_slice", brdfSlicePlot(anisotropicMaterial(8.0f, 128.0f), env, 45.0f)}};
     for (const auto& [name, plot] : cases) {
         const Image actual = renderPlotImage(plot, 640, 480);
         const std::string golden = std::string(SHADELAB_SOURCE_DIR) + "/tests/golden/" + name + ".png";
@@ -330,4 +380,130 @@ TEST(PlotGolden, LobeAndFresnel) {
         EXPECT_TRUE(r.matches(tolerance)) << name << ": " << describe(r, tolerance) << " (actual and diff in "
                                           << SHADELAB_TEST_OUTPUT_DIR << ")";
     }
+}
+
+// f_r is core/shading's: brdf() against the formula written out, k_d + k_s spec / (N.I), and the
+// renderer's own shade() for one directional light of radiance 1 with white colours.
+TEST(BrdfPlot, FrIsTheRenderersFormula) {
+    Material m;
+    m.color = m.specularColor = glm::vec3(1.0f);
+    m.ka = 0.0f;
+    m.kd = 0.2f;  // small weights: the shaded sum stays below 1 (no clamping)
+    m.ks = 0.3f;
+    LightingEnvironment env;
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    for (float thetaI : {10.0f, 45.0f, 70.0f})
+        for (float thetaO : {0.0f, 30.0f, 60.0f})
+            for (float dphi : {0.0f, 90.0f, 170.0f, 180.0f}) {
+                const glm::vec3 i = directionAt(thetaI, 0.0f), v = directionAt(thetaO, dphi);
+                const BrdfValue f = brdf(m, env, n, i, v, plotTangentFrame());
+                expectClose(f.total(), m.kd + m.ks * specularTerm(env, m.ke, n, i, v) / std::cos(rad(thetaI)), "f_r");
+                // The renderer: L_o = L (k_d (N.I) + k_s spec) = f_r E with E = L (N.I), L = 1.
+                Light light;
+                light.type = LightType::Directional;
+                light.direction = -i;
+                light.color = glm::vec3(1.0f);
+                light.intensity = 1.0f;
+                env.lights = {light};
+                env.eyeWorld = 10.0f * v;
+                const glm::vec3 shaded = shade(m, env, glm::vec3(0.0f), n);
+                expectClose(shaded.x, f.total() * std::cos(rad(thetaI)), "shade()");
+            }
+}
+
+// The surface's peak lies along R = 2(N.I)N - I for Phong; for Blinn-Phong where the half vector
+// H = normalize(I + V) is N (the same direction R); with and without anisotropy.
+TEST(BrdfPlot, Lobe3dPeaksAlongTheMirrorDirection) {
+    for (float incidence : {0.0f, 30.0f, 60.0f})
+        for (float ke : {8.0f, 32.0f, 500.0f}) {
+            Material m;
+            m.ke = ke;
+            const std::string at = "theta_i " + std::to_string(incidence) + ", k_e " + std::to_string(ke);
+            const LobeSurface phong = sampleLobeSurface(m, modelEnv(ReflectionModel::Phong), incidence);
+            const glm::vec3 r = 2.0f * glm::dot(glm::vec3(0, 1, 0), phong.i) * glm::vec3(0, 1, 0) - phong.i;
+            EXPECT_LT(angleDeg(peakDirection(phong), r), 0.5) << "Phong, " << at;
+            const LobeSurface blinn = sampleLobeSurface(m, modelEnv(ReflectionModel::BlinnPhong), incidence);
+            const glm::vec3 h = glm::normalize(blinn.i + peakDirection(blinn));
+            EXPECT_LT(angleDeg(h, glm::vec3(0, 1, 0)), 0.5) << "Blinn-Phong, " << at;
+            const LobeSurface aniso = sampleLobeSurface(anisotropicMaterial(ke, 4.0f * ke), modelEnv(ReflectionModel::BlinnPhong), incidence);
+            EXPECT_LT(angleDeg(glm::normalize(aniso.i + peakDirection(aniso)), glm::vec3(0, 1, 0)), 0.5) << "anisotropic, " << at;
+            // The peak's value is f_r there: k_d + k_s / cos theta_i.
+            expectClose(phong.peak, m.kd + m.ks / std::cos(rad(incidence)), "peak, " + at);
+        }
+}
+
+// The pictures follow k_e and anisotropy: a narrower lobe, an elongated one; k_t = k_b is Blinn-Phong's.
+TEST(BrdfPlot, PlotsChangeWithKeAndAnisotropy) {
+    const LightingEnvironment env = modelEnv(ReflectionModel::BlinnPhong);
+    Material m8, m64;
+    m8.ke = 8.0f;
+    m64.ke = 64.0f;
+    EXPECT_NE(allPoints(lobe3dPlot(m8, env, 45.0f)), allPoints(lobe3dPlot(m64, env, 45.0f)));
+    EXPECT_NE(sampleAzimuthSlice(m8, env, 45.0f, 0.0f).values, sampleAzimuthSlice(m64, env, 45.0f, 0.0f).values);
+    EXPECT_NE(sampleIncidencePlane(m8, env, 0.0f).values, sampleIncidencePlane(m64, env, 0.0f).values);
+
+    // k_t != k_b: another surface than k_t = k_b, and a delta_phi slice that is not symmetric about the
+    // plane of incidence once the light is off the tangent's axis... and one that differs between phi_i = 0 and 90.
+    const Material iso = anisotropicMaterial(32.0f, 32.0f), aniso = anisotropicMaterial(8.0f, 256.0f);
+    const LobeSurface sIso = sampleLobeSurface(iso, env, 45.0f), sAniso = sampleLobeSurface(aniso, env, 45.0f);
+    EXPECT_NE(sIso.rings, sAniso.rings);
+    const BrdfSliceGrid a0 = sampleAzimuthSlice(aniso, env, 45.0f, 0.0f), a90 = sampleAzimuthSlice(aniso, env, 45.0f, 90.0f);
+    double largest = 0.0;
+    for (std::size_t k = 0; k < a0.values.size(); ++k) largest = std::max(largest, std::abs(double(a0.values[k]) - a90.values[k]));
+    EXPECT_GT(largest, 0.1) << "phi_i = 0 and 90 deg give the same slice";
+    const BrdfSliceGrid slanted = sampleAzimuthSlice(aniso, env, 45.0f, 30.0f);
+    double asymmetry = 0.0;
+    for (int row = 0; row < slanted.rows; ++row)
+        for (int c = 0; c < slanted.columns; ++c)
+            asymmetry = std::max(asymmetry, std::abs(double(slanted.at(c, row)) - slanted.at(slanted.columns - 1 - c, row)));
+    EXPECT_GT(asymmetry, 0.1) << "k_t != k_b at phi_i = 30 deg: the slice is not symmetric in delta_phi";
+
+    // k_t = k_b: the same BRDF at every phi_i, symmetric in delta_phi about 180 deg, and Blinn-Phong's values.
+    Material blinn;
+    blinn.ke = 32.0f;
+    const BrdfSliceGrid b = sampleAzimuthSlice(blinn, env, 45.0f, 0.0f);
+    for (float phi : {0.0f, 30.0f, 90.0f}) {
+        const BrdfSliceGrid g = sampleAzimuthSlice(iso, env, 45.0f, phi);
+        for (int row = 0; row < g.rows; ++row)
+            for (int c = 0; c < g.columns; ++c) {
+                EXPECT_NEAR(g.at(c, row), g.at(g.columns - 1 - c, row), 1e-4f * (1.0f + g.at(c, row)))
+                    << "phi_i " << phi << ", column " << c << ", row " << row;
+                EXPECT_NEAR(g.at(c, row), b.at(c, row), 1e-3f * (1.0f + b.at(c, row))) << "phi_i " << phi;
+            }
+    }
+}
+
+// The isotropic plot has one row of panels (two heat maps, each with its colour bar), the anisotropic one two,
+// and the incidence plane's ridge is R: theta_o = theta_i on the mirror side.
+TEST(BrdfPlot, SlicePanelsAndTheMirrorRidge) {
+    const LightingEnvironment env = modelEnv(ReflectionModel::Phong);
+    Material m;
+    m.ke = 200.0f;
+    EXPECT_EQ(brdfSlicePlot(m, env, 45.0f).heatMaps.size(), 4u);  // two panels, two colour bars
+    EXPECT_EQ(brdfSlicePlot(anisotropicMaterial(8.0f, 64.0f), modelEnv(ReflectionModel::BlinnPhong), 45.0f).heatMaps.size(), 6u);
+    const BrdfSliceGrid g = sampleIncidencePlane(m, env, 0.0f);
+    for (int c = 0; c < g.columns; c += 10) {
+        int best = 0;
+        for (int row = 0; row < g.rows; ++row)
+            if (g.at(c, row) > g.at(c, best)) best = row;
+        EXPECT_EQ(best, 90 + c) << "theta_i " << c + 0.5;  // row 90 + c holds theta_o = c + 0.5
+    }
+    const Plot p = scenePlot(PlotKind::BrdfSlice, Scene{}, m, PlotSettings{30.0f, false, {}});
+    EXPECT_NE(p.title.find("f_r(delta_phi; theta_i -> theta_o)"), std::string::npos) << p.title;
+    EXPECT_EQ(lectureNotation("delta_phi, phi_i, omega_o"), "\u0394\u03c6, \u03c6_i, \u03c9_o");
+}
+
+// The viewer turns the 3-D lobe through PlotSettings::lobeView; the default is the PNG's view, and a
+// view from straight above (elevation 89) sees N end-on: its arrow projects to (almost) a point.
+TEST(BrdfPlot, Lobe3dViewTurns) {
+    Scene scene;
+    Material m;
+    PlotSettings settings;
+    const Plot fixed = scenePlot(PlotKind::Lobe3d, scene, m, settings);
+    EXPECT_EQ(allPoints(fixed), allPoints(lobe3dPlot(m, lightingEnvironment(scene), settings.incidenceDeg)));
+    settings.lobeView.azimuthDeg = 30.0f;
+    EXPECT_NE(allPoints(scenePlot(PlotKind::Lobe3d, scene, m, settings)), allPoints(fixed));
+    const LobeView above{0.0f, 89.0f};
+    EXPECT_LT(glm::length(lobe3dProjection(glm::vec3(0.0f, 1.0f, 0.0f), above)), 0.02f);
+    EXPECT_NEAR(glm::length(lobe3dProjection(glm::vec3(1.0f, 0.0f, 0.0f), above)), 1.0f, 1e-3f);
 }

@@ -245,7 +245,12 @@ Plot fresnelPlot(float eta1, float eta2) {
 }
 
 Plot scenePlot(PlotKind kind, const Scene& scene, const Material& material, const PlotSettings& settings) {
-    if (kind == PlotKind::Lobe) return lobePlot(lightingEnvironment(scene), material.ke, settings.incidenceDeg);
+    switch (kind) {
+    case PlotKind::Lobe: return lobePlot(lightingEnvironment(scene), material.ke, settings.incidenceDeg);
+    case PlotKind::Lobe3d: return lobe3dPlot(material, lightingEnvironment(scene), settings.incidenceDeg, settings.lobeView);
+    case PlotKind::BrdfSlice: return brdfSlicePlot(material, lightingEnvironment(scene), settings.incidenceDeg);
+    case PlotKind::Fresnel: break;
+    }
     return settings.fromInside ? fresnelPlot(scene.ior, 1.0f) : fresnelPlot(1.0f, scene.ior);
 }
 
@@ -369,6 +374,19 @@ PlotLayout paintPlot(const Plot& plot, glm::vec2 size, float lineUnit, PlotPaint
             painter.fillTriangle(pixels.back(), left, right, l.color);
         }
     };
+    for (const PlotHeatMap& h : plot.heatMaps) {
+        // Cell edges computed once per column and row, so neighbours share them exactly.
+        const glm::vec2 lo = layout.toPixels(h.min), hi = layout.toPixels(h.max);
+        for (int r = 0; r < h.rows; ++r) {
+            const float y0 = lo.y + (hi.y - lo.y) * float(r) / float(h.rows), y1 = lo.y + (hi.y - lo.y) * float(r + 1) / float(h.rows);
+            for (int c = 0; c < h.columns; ++c) {
+                const float x0 = lo.x + (hi.x - lo.x) * float(c) / float(h.columns);
+                const float x1 = lo.x + (hi.x - lo.x) * float(c + 1) / float(h.columns);
+                painter.fillRect({x0, std::min(y0, y1)}, {x1, std::max(y0, y1)},
+                                 h.cells[std::size_t(r) * std::size_t(h.columns) + std::size_t(c)]);
+            }
+        }
+    }
     for (const PlotPolyline& l : plot.lines) {
         std::vector<glm::vec2> pixels;
         pixels.reserve(l.points.size());
@@ -426,6 +444,7 @@ std::pair<glm::vec2, glm::vec2> arrowHead(glm::vec2 from, glm::vec2 tip, float l
 
 std::string lectureNotation(std::string text) {
     static const std::pair<const char*, const char*> kSymbols[] = {
+        {"delta_phi", "\u0394\u03c6"}, {">=", "\u2265"}, {"phi_", "\u03c6_"}, {"omega_", "\u03c9_"},
         {"theta_", "\u03b8_"}, {"eta_1", "\u03b7\u2081"}, {"eta_2", "\u03b7\u2082"}, {" deg", "\u00b0"},
         {"->", "\u2192"}, {"R_par", "R\u2225"}, {"R_perp", "R\u22a5"}, {"R.V", "R\u00b7V"}, {"N.H", "N\u00b7H"},
         {"V.H", "V\u00b7H"}, {"N.I", "N\u00b7I"}};

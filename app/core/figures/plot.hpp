@@ -4,7 +4,10 @@
 //    Phong and Blinn-Phong at the scene's k_e, with the incoming direction I, the normal N and the
 //    mirror direction R marked;
 //  - the Fresnel reflectance over the angle of incidence: R_par, R_perp, their average (unpolarised
-//    light) and Schlick's approximation, with the critical angle marked when eta1 > eta2.
+//    light) and Schlick's approximation, with the critical angle marked when eta1 > eta2;
+//  - the BRDF as a function (issue 30): f_r(omega_i -> omega_o) for one light direction as a 3-D polar
+//    surface over the hemisphere (lobe3d), and heat maps of the isotropic BRDF's parameterisation
+//    f_r(delta_phi; theta_i -> theta_o) (brdf-slice). Their f_r is core/shading's brdf().
 // The values come from core/shading/lighting (specularTerm, fresnelExact, fresnelSchlick), so the plots show
 // exactly what the renderer computes. A Plot is a small display list in plot coordinates — polylines
 // and labels, a title and a legend — and layoutPlot maps it onto a pixel rectangle; plot_image.cpp
@@ -24,8 +27,9 @@
 
 namespace shadelab {
 
-enum class PlotKind { Lobe, Fresnel };
-inline constexpr EnumName<PlotKind> kPlotKindNames[] = {{"lobe", PlotKind::Lobe}, {"fresnel", PlotKind::Fresnel}};
+enum class PlotKind { Lobe, Fresnel, Lobe3d, BrdfSlice };
+inline constexpr EnumName<PlotKind> kPlotKindNames[] = {
+    {"lobe", PlotKind::Lobe}, {"fresnel", PlotKind::Fresnel}, {"lobe3d", PlotKind::Lobe3d}, {"brdf-slice", PlotKind::BrdfSlice}};
 const char* toString(PlotKind kind);
 
 // ---- The curves' values
@@ -79,6 +83,14 @@ struct PlotLabel {
     Rgba8 color;
 };
 
+// A grid of coloured cells over a rectangle of plot coordinates (a heat map): `columns` x `rows` cells,
+// row-major, row 0 at min.y. Painted before the lines, without antialiasing between cells.
+struct PlotHeatMap {
+    glm::vec2 min{0.0f}, max{1.0f};
+    int columns = 0, rows = 0;
+    std::vector<Rgba8> cells;
+};
+
 struct Plot {
     PlotKind kind = PlotKind::Fresnel;
     std::string title;                // what is plotted, for which parameters (the layout wraps it)
@@ -87,6 +99,7 @@ struct Plot {
     bool equalAspect = false;         // one unit spans as many pixels along x as along y (polar plots)
     std::vector<PlotPolyline> lines;  // in drawing order: grid first, curves last
     std::vector<PlotLabel> labels;
+    std::vector<PlotHeatMap> heatMaps; // under the lines
 };
 
 // The colours, for a dark background (the viewer's panel, and the PNG, as the sweep sheets: both read
@@ -105,12 +118,64 @@ Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg);
 // R_par, R_perp, their average and Schlick for light going from eta1 into eta2.
 Plot fresnelPlot(float eta1, float eta2);
 
+// ---- The BRDF plots (issue 30, part 3)
+//
+// Both work in the surface's own frame: N = +y, the tangent T = +x (phi = 0; where k_t applies) and the
+// bitangent B = N x T = -z (k_b). A direction at (theta, phi) is (sin theta cos phi, cos theta, -sin theta sin phi).
+// The value is brdf() of core/shading for the scene's model, normalisation and Fresnel mode and the
+// material's k_d, k_s, k_e or anisotropy.
+glm::vec3 directionAt(float thetaDeg, float phiDeg);
+TangentFrame plotTangentFrame();
+
+// The 3-D lobe for the light at (incidenceDeg, phi_i = 180 deg: I on the left, as in the lobe plot):
+// the surface r(omega_o) = f_r(I -> omega_o) over the upper hemisphere as curves on a grid centred on
+// the mirror direction R (rings at fixed angles from R, dense near R where the lobe is; and meridians
+// through R), cut at the horizon; in 3-D plot-frame points (direction * f_r).
+struct LobeSurface {
+    glm::vec3 i{0.0f}, r{0.0f};                        // unit: toward the light, its mirror direction
+    std::vector<std::vector<glm::vec3>> rings, meridians;
+    std::vector<glm::vec3> planeOfIncidence;           // the 2-D lobe: the surface cut by the x-y plane
+    float peak = 0.0f;                                 // the largest f_r on the surface
+};
+LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, float incidenceDeg);
+// Where the 3-D lobe is seen from: the eye's azimuth phi (from T, as directionAt) and elevation above
+// the surface. The default is the PNG's fixed oblique view, from the front right, 25 degrees up; the
+// viewer's Plots section turns it with the mouse.
+struct LobeView {
+    float azimuthDeg = -60.0f;
+    float elevationDeg = 25.0f;   // 0..89
+};
+// The surface projected orthographically from `view`, with N, I, R (and T, B when anisotropic) and
+// reference circles in the surface.
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg, const LobeView& view = {});
+// The view: plot x = dot(p, right), plot y = dot(p, up).
+glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view = {});
+
+// Heat maps of f_r on a logarithmic colour scale (one for each kind of panel; in the plane of incidence
+// its top is the largest value up to theta_i = 80 deg, beyond which f_r's 1 / (N.I) grows without bound):
+//  - over (theta_i, theta_o) in the plane of incidence: theta_o from -90 (delta_phi = 0, the light's
+//    side) through 0 to 90 (delta_phi = 180 deg, the mirror side, where theta_o = theta_i is R);
+//  - over (delta_phi, theta_o) at theta_i = incidenceDeg, delta_phi = phi_o - phi_i from 0 to 360.
+// Isotropic: one of each (phi_i = 0). Anisotropic: both at phi_i = 0 and at phi_i = 90 deg, one row
+// each, which differ: the fourth angle.
+struct BrdfSliceGrid {
+    int columns = 0, rows = 0;
+    std::vector<float> values;                         // row-major, row 0 at the lowest theta_o
+    float at(int column, int row) const { return values[std::size_t(row) * std::size_t(columns) + std::size_t(column)]; }
+};
+BrdfSliceGrid sampleIncidencePlane(const Material& m, const LightingEnvironment& env, float phiIDeg);      // 90 x 180, 1 deg cells
+BrdfSliceGrid sampleAzimuthSlice(const Material& m, const LightingEnvironment& env, float thetaIDeg, float phiIDeg);  // 180 x 90, 2 x 1 deg
+Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float incidenceDeg);
+// The colour scale: t in [0, 1] to viridis (dark purple to yellow; readable on the dark background).
+Rgba8 heatColor(float t);
+
 // What the plots take beside the scene: the lobe's incoming direction, and which side of the surface
 // the Fresnel plot's light comes from.
 struct PlotSettings {
     float incidenceDeg = 45.0f;   // angle between I and N, 0..kIncidenceDegRange.hi
     bool fromInside = false;      // false: from air into the material (eta1 = 1, eta2 = ior), as the
                                   // renderer's Fresnel term; true: eta1 = ior, eta2 = 1 (total internal reflection)
+    LobeView lobeView;            // the 3-D lobe's view (the CLI keeps the default)
 };
 
 // The plot for a scene: the lobe at material.ke with the scene's reflection model, normalisation,
@@ -165,6 +230,12 @@ public:
     // One polyline, `width` pixels wide, blended once (joints are not drawn twice).
     virtual void stroke(const std::vector<glm::vec2>& pixels, Rgba8 color, float width) = 0;
     virtual void fillTriangle(glm::vec2 a, glm::vec2 b, glm::vec2 c, Rgba8 color) = 0;
+    // An axis-aligned rectangle (a heat map's cell): neighbouring cells must meet without a seam. The
+    // default is two triangles; painters that antialias triangles override it.
+    virtual void fillRect(glm::vec2 lo, glm::vec2 hi, Rgba8 color) {
+        fillTriangle(lo, {hi.x, lo.y}, hi, color);
+        fillTriangle(lo, hi, {lo.x, hi.y}, color);
+    }
     virtual void text(glm::vec2 topLeft, const std::string& text, Rgba8 color) = 0;
 };
 // Lays the plot out in `size` and paints lines, arrowheads, labels, title and legend (not the

@@ -59,6 +59,16 @@ public:
             }
         flush(box, color);
     }
+    // Pixels whose centres lie in [lo, hi): cells that share an edge share no pixel and leave none out.
+    void fillRect(glm::vec2 lo, glm::vec2 hi, Rgba8 color) override {
+        const int x0 = std::max(0, int(std::ceil(lo.x - 0.5f))), x1 = std::min(image_.width, int(std::ceil(hi.x - 0.5f)));
+        const int y0 = std::max(0, int(std::ceil(lo.y - 0.5f))), y1 = std::min(image_.height, int(std::ceil(hi.y - 0.5f)));
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                std::uint8_t* p = image_.pixel(x, y);
+                p[0] = color.r, p[1] = color.g, p[2] = color.b;
+            }
+    }
     void text(glm::vec2 topLeft, const std::string& text, Rgba8 color) override {
         if (font_) return font_->draw(image_, topLeft.x, topLeft.y, lectureNotation(text), pixels(), color);
         drawText(image_, int(std::lround(topLeft.x)), int(std::lround(topLeft.y)), text, textScale_, color);

@@ -1,5 +1,5 @@
 #pragma once
-// The lecture's plots (core/figures/plot.hpp) rasterised on the CPU into an image, for --plot lobe|fresnel:
+// The lecture's plots (core/figures/plot.hpp) rasterised on the CPU into an image, for --plot KIND:
 // antialiased lines (coverage from the distance to each segment), filled arrowheads, and
 // DejaVu Sans text through stb_truetype (core/image/truetype_text.hpp; stb_easy_font, core/image/text.hpp, where
 // the font file is missing). No GL, no context.

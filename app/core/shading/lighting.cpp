@@ -21,9 +21,7 @@ void addSample(LightShare& t, const Material& m, const LightingEnvironment& env,
     const float nDotI = glm::dot(n, i);
     if (nDotI <= 0.0f) return;  // light behind the surface: no diffuse, no specular
     t.diffuse += radiance * m.kd * m.color * nDotI;
-    const float spec = anisotropicLobe(m, env) ? anisotropicSpecularTerm(env, m.anisotropy, n, i, v, frame)
-                                               : specularTerm(env, m.ke, n, i, v);
-    t.specular += radiance * m.ks * m.specularColor * spec;
+    t.specular += radiance * m.ks * m.specularColor * lobeTerm(m, env, n, i, v, frame);
 }
 
 }  // namespace
@@ -147,6 +145,18 @@ float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k
     if (env.normalization == SpecularNormalization::Energy) spec *= anisotropicEnergyScale(k);
     if (env.fresnel != FresnelMode::None) spec *= fresnelWeight(env.fresnel, std::max(glm::dot(v, h), 0.0f), env.ior);
     return spec;
+}
+
+float lobeTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
+               const TangentFrame& frame) {
+    return anisotropicLobe(m, env) ? anisotropicSpecularTerm(env, m.anisotropy, n, i, v, frame) : specularTerm(env, m.ke, n, i, v);
+}
+
+BrdfValue brdf(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
+               const TangentFrame& frame) {
+    const float nDotI = glm::dot(n, i);
+    if (nDotI <= 0.0f) return {};  // light behind the surface
+    return {m.kd, m.ks * lobeTerm(m, env, n, i, v, frame) / nDotI};
 }
 
 float attenuationFactor(const Light& light, float r2) {

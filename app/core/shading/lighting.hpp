@@ -133,6 +133,24 @@ float anisotropicEnergyScale(const glm::vec2& k);
 float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k, const glm::vec3& n, const glm::vec3& i,
                               const glm::vec3& v, const TangentFrame& frame);
 
+// The lobe a material gets from one light direction: anisotropicSpecularTerm where anisotropicLobe,
+// else specularTerm at k_e. `frame` is used only by the anisotropic lobe. The renderer's spec.
+float lobeTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
+               const TangentFrame& frame);
+// The BRDF of the formula above, f_r(I -> V) = dL(V) / dE(I), in the renderer's units: a light of
+// radiance L (colour * intensity) gives the irradiance E = L (N.I) and the reflected radiance
+// L (k_d (N.I) + k_s spec), so f_r = k_d + k_s spec / (N.I), for white C and S (the colours multiply
+// it channel by channel). 0 where N.I <= 0. With energy normalisation the renderer's lights carry the
+// factor pi, so this is pi times the physical k_d / pi + ...: the same picture. The BRDF plots
+// (core/figures/plot.hpp: lobe3d, brdf-slice) draw this function.
+struct BrdfValue {
+    float diffuse = 0.0f;             // k_d
+    float specular = 0.0f;            // k_s spec / (N.I)
+    float total() const { return diffuse + specular; }
+};
+BrdfValue brdf(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
+               const TangentFrame& frame);
+
 // The occlusion test toward one light sample: from the shaded point along `towardLight` (unit) for
 // `distance` (infinite for directional lights). Returns v in [0, 1]: 1 visible, 0 occluded.
 struct LightRay {

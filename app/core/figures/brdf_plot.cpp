@@ -1,0 +1,416 @@
+// The BRDF as a function (issue 30, part 3): the 3-D lobe and the heat maps of the isotropic
+// parameterisation, both from core/shading's brdf() (see plot.hpp).
+#include "core/figures/plot.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <tuple>
+
+namespace shadelab {
+namespace {
+
+// The lobe plot's colours (plot.cpp): Okabe-Ito, lightened for the dark background.
+constexpr Rgba8 kOrange{240, 170, 40, 255};
+constexpr Rgba8 kSkyBlue{86, 180, 233, 255};
+constexpr Rgba8 kYellow{240, 228, 66, 255};
+constexpr Rgba8 kGreen{40, 200, 150, 255};
+constexpr Rgba8 kPurple{204, 121, 167, 255};
+// The mesh lines, dimmer than the curves so the plane-of-incidence cut and the arrows stand out.
+constexpr Rgba8 kRingColor{190, 140, 50, 255};
+constexpr Rgba8 kMeridianColor{70, 140, 185, 255};
+
+std::string format(const char* fmt, double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, fmt, value);
+    return buffer;
+}
+std::string shortNumber(float v) { return format("%g", double(v)); }
+
+PlotPolyline line(std::string name, std::vector<glm::vec2> points, Rgba8 color, float width = 1.0f) {
+    PlotPolyline l;
+    l.name = std::move(name);
+    l.points = std::move(points);
+    l.color = color;
+    l.width = width;
+    return l;
+}
+
+PlotLabel label(glm::vec2 at, std::string text, glm::vec2 align, glm::vec2 offset, Rgba8 color = kPlotText) {
+    return PlotLabel{at, std::move(text), align, offset, color};
+}
+
+// 1, 2, 2.5 or 5 times a power of ten: the smallest step with `count` steps reaching `peak`.
+float niceStep(float peak, int count) {
+    const float raw = std::max(peak, 1e-12f) / float(count);
+    const float decade = std::pow(10.0f, std::floor(std::log10(raw)));
+    for (float m : {1.0f, 2.0f, 2.5f, 5.0f, 10.0f})
+        if (m * decade * float(count) >= peak * (1.0f - 1e-6f)) return m * decade;
+    return 10.0f * decade;
+}
+
+// "Blinn-Phong k_e = 32", "anisotropic k_t = 8, k_b = 256": the lobe in use.
+std::string lobeName(const Material& m, const LightingEnvironment& env) {
+    if (anisotropicLobe(m, env))
+        return "anisotropic Blinn-Phong k_t = " + shortNumber(m.anisotropy.x) + ", k_b = " + shortNumber(m.anisotropy.y);
+    return std::string(env.model == ReflectionModel::Phong ? "Phong" : "Blinn-Phong") + " k_e = " + shortNumber(m.ke);
+}
+
+// What else shapes f_r: normalisation and Fresnel, as the lobe plot's subtitle says them.
+std::string modifiers(const LightingEnvironment& env) {
+    std::string s;
+    if (env.normalization == SpecularNormalization::Energy) s += ", energy-normalised";
+    if (env.fresnel != FresnelMode::None)
+        s += std::string(", times F(V.H) ") + toString(env.fresnel) + " for ior " + format("%.2f", double(env.ior));
+    return s;
+}
+
+float fr(const Material& m, const LightingEnvironment& env, const glm::vec3& i, const glm::vec3& v) {
+    static const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    return brdf(m, env, n, i, v, plotTangentFrame()).total();
+}
+
+}  // namespace
+
+glm::vec3 directionAt(float thetaDeg, float phiDeg) {
+    const float t = glm::radians(thetaDeg), p = glm::radians(phiDeg);
+    return {std::sin(t) * std::cos(p), std::cos(t), -std::sin(t) * std::sin(p)};
+}
+
+TangentFrame plotTangentFrame() {
+    return TangentFrame{glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, -1.0f)};
+}
+
+// ---- The 3-D lobe
+
+LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, float incidenceDeg) {
+    LobeSurface s;
+    s.i = directionAt(incidenceDeg, 180.0f);
+    s.r = directionAt(incidenceDeg, 0.0f);
+    // The grid around R: d(alpha, beta) = cos alpha R + sin alpha (cos beta b1 + sin beta b2).
+    const glm::vec3 b1(0.0f, 0.0f, 1.0f), b2 = glm::cross(s.r, b1);
+    auto dir = [&](float alphaDeg, float betaDeg) {
+        const float a = glm::radians(alphaDeg), b = glm::radians(betaDeg);
+        return std::cos(a) * s.r + std::sin(a) * (std::cos(b) * b1 + std::sin(b) * b2);
+    };
+    // The lobe's half width at half its height: Phong's cos^k falls to 1/2 at acos(2^(-1/k)) from R;
+    // Blinn-Phong's spans about twice that in V. The narrower exponent of an anisotropic lobe.
+    const float k = anisotropicLobe(m, env) ? std::min(m.anisotropy.x, m.anisotropy.y) : m.ke;
+    const float halfWidth =
+        std::min(60.0f, (env.model == ReflectionModel::Phong ? 1.0f : 2.0f) * glm::degrees(std::acos(std::pow(0.5f, 1.0f / std::max(k, 1e-3f)))));
+
+    // One curve through directions `dirs` (dense), cut where it leaves the upper hemisphere; the cut
+    // ends exactly on the horizon.
+    auto addCurve = [&](const std::vector<glm::vec3>& dirs, std::vector<std::vector<glm::vec3>>& out) {
+        std::vector<glm::vec3> current;
+        auto point = [&](const glm::vec3& d) {
+            const float f = fr(m, env, s.i, d);
+            s.peak = std::max(s.peak, f);
+            return d * f;
+        };
+        for (std::size_t k2 = 0; k2 < dirs.size(); ++k2) {
+            const glm::vec3& d = dirs[k2];
+            if (k2 > 0 && (dirs[k2 - 1].y >= 0.0f) != (d.y >= 0.0f)) {
+                const glm::vec3& p = dirs[k2 - 1];
+                const float t = p.y / (p.y - d.y);
+                glm::vec3 h = p + t * (d - p);
+                h.y = 0.0f;
+                if (glm::length(h) > 1e-6f) current.push_back(point(glm::normalize(h)));
+                if (d.y < 0.0f) {
+                    if (current.size() > 1) out.push_back(std::move(current));
+                    current.clear();
+                }
+            }
+            if (d.y >= 0.0f) current.push_back(point(d));
+        }
+        if (current.size() > 1) out.push_back(std::move(current));
+    };
+
+    std::vector<float> alphas;
+    for (int q = 0; q <= 120; ++q) alphas.push_back(3.0f * halfWidth * float(q) / 120.0f);
+    for (int d = 1; d <= 180; ++d)
+        if (float(d) > 3.0f * halfWidth) alphas.push_back(float(d));
+    for (int b = 0; b < 360; b += 15) {
+        std::vector<glm::vec3> dirs;
+        for (float a : alphas) dirs.push_back(dir(a, float(b)));
+        addCurve(dirs, s.meridians);
+    }
+    std::vector<float> ringAlphas;
+    for (float f : {0.5f, 1.0f, 1.5f, 2.0f, 3.0f}) ringAlphas.push_back(f * halfWidth);
+    for (int d = 15; d < 180; d += 15)
+        if (std::none_of(ringAlphas.begin(), ringAlphas.end(), [&](float a) { return std::abs(a - float(d)) < 6.0f; }))
+            ringAlphas.push_back(float(d));
+    for (float a : ringAlphas) {
+        std::vector<glm::vec3> dirs;
+        for (int b = 0; b <= 360; b += 3) dirs.push_back(dir(a, float(b)));
+        addCurve(dirs, s.rings);
+    }
+    // The plane of incidence from the light's side horizon over N to the mirror side's, densely near R.
+    std::vector<float> thetas;
+    for (int d = -90; d <= 90; ++d) thetas.push_back(float(d));
+    for (int q = -120; q <= 120; ++q) thetas.push_back(incidenceDeg + 3.0f * halfWidth * float(q) / 120.0f);
+    std::sort(thetas.begin(), thetas.end());
+    for (float t : thetas)
+        if (t >= -90.0f && t <= 90.0f) {
+            const glm::vec3 d = directionAt(std::abs(t), t < 0.0f ? 180.0f : 0.0f);
+            const float f = fr(m, env, s.i, d);
+            s.peak = std::max(s.peak, f);
+            s.planeOfIncidence.push_back(d * f);
+        }
+    return s;
+}
+
+glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view) {
+    const glm::vec3 eye = directionAt(90.0f - std::clamp(view.elevationDeg, 0.0f, 89.0f), view.azimuthDeg);
+    const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), eye));
+    const glm::vec3 up = glm::cross(eye, right);
+    return {glm::dot(p, right), glm::dot(p, up)};
+}
+
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg, const LobeView& view) {
+    const LobeSurface s = sampleLobeSurface(m, env, incidenceDeg);
+    const float peak = s.peak > 1e-6f ? s.peak : 1.0f;
+    const float step = niceStep(peak, 3);
+    const int circles = std::max(1, int(std::ceil(peak / step - 1e-4f)));
+    const float outer = step * float(circles);
+
+    Plot p;
+    p.kind = PlotKind::Lobe3d;
+    p.title = "BRDF lobe f_r(omega_i -> omega_o): theta_i = " + shortNumber(incidenceDeg) + " deg, " + lobeName(m, env);
+    p.subtitle = "radius = f_r = k_d + k_s spec / (N.I) over the hemisphere of omega_o (k_d = " + shortNumber(m.kd) +
+                 ", k_s = " + shortNumber(m.ks) + ")" + modifiers(env);
+    p.equalAspect = true;
+    auto project = [&](const std::vector<glm::vec3>& points) {
+        std::vector<glm::vec2> out;
+        out.reserve(points.size());
+        for (const glm::vec3& q : points) out.push_back(lobe3dProjection(q, view));
+        return out;
+    };
+
+    // The surface's plane: circles at round f_r values, labelled at the front.
+    for (int c = 1; c <= circles; ++c) {
+        const float radius = step * float(c);
+        std::vector<glm::vec3> circle;
+        for (int d = 0; d <= 360; d += 4) circle.push_back(radius * directionAt(90.0f, float(d)));
+        p.lines.push_back(line("grid", project(circle), kPlotGrid));
+        p.labels.push_back(label(lobe3dProjection(radius * directionAt(90.0f, view.azimuthDeg - 30.0f), view), shortNumber(radius), {0.5f, 0.0f},
+                                 {0.0f, 0.2f}, kPlotAxis));
+    }
+    for (int d = 0; d < 360; d += 45) {
+        PlotPolyline spoke = line("grid", project({glm::vec3(0.0f), outer * directionAt(90.0f, float(d))}), kPlotGrid);
+        spoke.dashed = true;
+        p.lines.push_back(std::move(spoke));
+    }
+
+    for (const auto& ring : s.meridians) p.lines.push_back(line("meridian", project(ring), kMeridianColor));
+    for (const auto& ring : s.rings) p.lines.push_back(line("ring", project(ring), kRingColor));
+    if (!p.lines.empty()) {
+        // One legend entry per mesh family.
+        for (auto it = p.lines.begin(); it != p.lines.end(); ++it)
+            if (it->name == "meridian") { it->inLegend = true, it->name = "meridians through R"; break; }
+        for (auto it = p.lines.begin(); it != p.lines.end(); ++it)
+            if (it->name == "ring") { it->inLegend = true, it->name = "rings around R"; break; }
+    }
+    PlotPolyline cut = line("in the plane of incidence", project(s.planeOfIncidence), kYellow, 2.0f);
+    cut.inLegend = true;
+    p.lines.push_back(std::move(cut));
+
+    // N, omega_i (toward the light) and R from the point outward, as in the lobe plot.
+    const float arrowLength = 1.15f * outer;
+    auto arrow = [&](const std::string& name, const glm::vec3& d, Rgba8 color, bool dashed, glm::vec2 align) {
+        PlotPolyline a = line(name, project({glm::vec3(0.0f), arrowLength * d}), color, 1.5f);
+        a.arrow = true;
+        a.dashed = dashed;
+        p.lines.push_back(std::move(a));
+        p.labels.push_back(label(lobe3dProjection(arrowLength * d, view), name, align, {0.0f, 0.0f}, color));
+    };
+    arrow("N", glm::vec3(0.0f, 1.0f, 0.0f), kPlotText, false, {0.5f, 1.1f});
+    arrow("omega_i", s.i, kGreen, false, {1.0f, 1.0f});
+    arrow("R", s.r, kPlotAxis, true, {0.0f, 1.0f});
+    if (anisotropicLobe(m, env)) {
+        const TangentFrame f = plotTangentFrame();
+        arrow("T (k_t)", f.tangent, kPurple, false, {0.0f, 0.0f});
+        arrow("B (k_b)", f.bitangent, kPurple, false, {1.0f, 0.0f});
+    }
+
+    // The shown rectangle: every point of the picture, with a little room.
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (const PlotPolyline& l : p.lines)
+        for (const glm::vec2& q : l.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    const glm::vec2 margin = 0.04f * (hi - lo);
+    p.min = lo - margin;
+    p.max = hi + margin;
+    return p;
+}
+
+// ---- The heat maps
+
+BrdfSliceGrid sampleIncidencePlane(const Material& m, const LightingEnvironment& env, float phiIDeg) {
+    BrdfSliceGrid g;
+    g.columns = 90;
+    g.rows = 180;
+    g.values.reserve(std::size_t(g.columns * g.rows));
+    for (int row = 0; row < g.rows; ++row) {
+        const float thetaO = -89.5f + float(row);  // signed: < 0 on the light's side
+        const glm::vec3 v = directionAt(std::abs(thetaO), phiIDeg + (thetaO < 0.0f ? 0.0f : 180.0f));
+        for (int c = 0; c < g.columns; ++c) g.values.push_back(fr(m, env, directionAt(0.5f + float(c), phiIDeg), v));
+    }
+    return g;
+}
+
+BrdfSliceGrid sampleAzimuthSlice(const Material& m, const LightingEnvironment& env, float thetaIDeg, float phiIDeg) {
+    BrdfSliceGrid g;
+    g.columns = 180;
+    g.rows = 90;
+    g.values.reserve(std::size_t(g.columns * g.rows));
+    const glm::vec3 i = directionAt(thetaIDeg, phiIDeg);
+    for (int row = 0; row < g.rows; ++row)
+        for (int c = 0; c < g.columns; ++c) g.values.push_back(fr(m, env, i, directionAt(0.5f + float(row), phiIDeg + 1.0f + 2.0f * float(c))));
+    return g;
+}
+
+Rgba8 heatColor(float t) {
+    // Viridis at nine stops (matplotlib's), linearly between them.
+    static const std::uint8_t kStops[9][3] = {{68, 1, 84},    {71, 44, 122},  {59, 81, 139},  {44, 113, 142}, {33, 145, 140},
+                                              {39, 173, 129}, {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
+    const float x = std::clamp(t, 0.0f, 1.0f) * 8.0f;
+    const int k = std::min(7, int(x));
+    const float f = x - float(k);
+    auto mix = [&](int ch) { return std::uint8_t(std::lround(float(kStops[k][ch]) + (float(kStops[k + 1][ch]) - float(kStops[k][ch])) * f)); };
+    return Rgba8{mix(0), mix(1), mix(2), 255};
+}
+
+namespace {
+
+// A heat map's colour scale: log10 f_r from lo to hi. f_r = k_d + k_s spec / (N.I) grows without bound
+// as theta_i nears 90 deg (the 1 / (N.I); the heuristic lobe is not reciprocal), so in the plane of
+// incidence hi is the largest value up to theta_i = kClipThetaIDeg and larger ones take the top colour
+// (the bar says ">="). lo is the smallest value, at most three decades below hi (k_d = 0 has 0s).
+struct HeatScale {
+    float lo = 0.1f, hi = 1.0f;
+    bool clipped = false;
+    float t(float v) const {
+        return hi > lo ? std::log10(std::max(v, 1e-30f) / lo) / std::log10(hi / lo) : 1.0f;
+    }
+};
+constexpr float kClipThetaIDeg = 80.0f;
+
+HeatScale heatScale(const std::vector<const BrdfSliceGrid*>& grids, bool clipGrazing) {
+    HeatScale s;
+    float lo = 1e30f, hi = 0.0f, all = 0.0f;
+    for (const BrdfSliceGrid* g : grids)
+        for (int row = 0; row < g->rows; ++row)
+            for (int c = 0; c < g->columns; ++c) {
+                const float v = g->at(c, row);
+                all = std::max(all, v);
+                lo = std::min(lo, v);
+                if (!clipGrazing || 0.5f + float(c) <= kClipThetaIDeg) hi = std::max(hi, v);
+            }
+    s.hi = hi > 0.0f ? hi : 1.0f;
+    s.lo = std::max(lo, s.hi * 1e-3f);
+    if (s.lo >= s.hi) s.lo = 0.5f * s.hi;  // a constant BRDF (k_s = 0): one colour, the bar still reads
+    s.clipped = all > s.hi * 1.0001f;
+    return s;
+}
+
+}  // namespace
+
+Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float incidenceDeg) {
+    const bool anisotropic = anisotropicLobe(m, env);
+    const std::vector<float> phis = anisotropic ? std::vector<float>{90.0f, 0.0f} : std::vector<float>{0.0f};  // bottom row first
+    std::vector<BrdfSliceGrid> planes, slices;
+    for (float phi : phis) {
+        planes.push_back(sampleIncidencePlane(m, env, phi));
+        slices.push_back(sampleAzimuthSlice(m, env, incidenceDeg, phi));
+    }
+    std::vector<const BrdfSliceGrid*> planePtrs, slicePtrs;
+    for (std::size_t r = 0; r < phis.size(); ++r) planePtrs.push_back(&planes[r]), slicePtrs.push_back(&slices[r]);
+    // One scale per kind of panel, shared by the rows so that phi_i = 0 and 90 compare.
+    const HeatScale planeScale = heatScale(planePtrs, true), sliceScale = heatScale(slicePtrs, false);
+
+    Plot p;
+    p.kind = PlotKind::BrdfSlice;
+    p.title = "BRDF f_r(delta_phi; theta_i -> theta_o): " + lobeName(m, env);
+    p.subtitle = "colour: log f_r, f_r = k_d + k_s spec / (N.I), k_d = " + shortNumber(m.kd) + ", k_s = " + shortNumber(m.ks) +
+                 modifiers(env) + "; delta_phi = phi_o - phi_i";
+    if (anisotropic) p.subtitle += "; rows: light along T (phi_i = 0) and along B (phi_i = 90 deg) differ: f_r needs phi_i too (4-D)";
+
+    // Panels in plot units, each 1 tall: the plane of incidence 1 wide with its colour bar, the azimuth
+    // slice 1.5 wide with its own; rows 1.6 apart (room for the axis numbers and names).
+    const float aX0 = 0.0f, aX1 = 1.0f, aBar0 = 1.1f, aBar1 = 1.16f, bX0 = 1.8f, bX1 = 3.3f, bBar0 = 3.36f, bBar1 = 3.42f;
+    const float rowStep = 1.6f;
+    for (std::size_t r = 0; r < phis.size(); ++r) {
+        const float y0 = rowStep * float(r), y1 = y0 + 1.0f;
+        for (int panel = 0; panel < 2; ++panel) {
+            const BrdfSliceGrid& g = panel == 0 ? planes[r] : slices[r];
+            const HeatScale& scale = panel == 0 ? planeScale : sliceScale;
+            const float x0 = panel == 0 ? aX0 : bX0, x1 = panel == 0 ? aX1 : bX1;
+            PlotHeatMap h;
+            h.min = {x0, y0};
+            h.max = {x1, y1};
+            h.columns = g.columns;
+            h.rows = g.rows;
+            for (float v : g.values) h.cells.push_back(heatColor(scale.t(v)));
+            p.heatMaps.push_back(std::move(h));
+            p.lines.push_back(line("frame", {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}}, kPlotAxis));
+            p.labels.push_back(label({x0, y1}, "theta_o", {0.0f, 1.0f}, {0.0f, -0.3f}));
+        }
+        if (anisotropic)  // which row, in the azimuth slice's top right corner (dark: the lobe is at 180)
+            p.labels.push_back(label({bX1, y1}, r == 1 ? "phi_i = 0, along T" : "phi_i = 90 deg, along B", {1.0f, 0.0f},
+                                     {-0.3f, 0.2f}, kYellow));
+        // Plane of incidence: theta_i along x (0..90), signed theta_o along y: 90 .. 0 .. 90 with the mirror side up.
+        auto ax = [&](float thetaI) { return aX0 + (aX1 - aX0) * thetaI / 90.0f; };
+        auto ay = [&](float thetaO) { return y0 + (thetaO + 90.0f) / 180.0f; };
+        for (int d = 0; d <= 90; d += 30) p.labels.push_back(label({ax(float(d)), y0}, std::to_string(d), {0.5f, 0.0f}, {0.0f, 0.2f}, kPlotAxis));
+        for (int d = -90; d <= 90; d += 45)
+            p.labels.push_back(label({aX0, ay(float(d))}, std::to_string(std::abs(d)), {1.0f, 0.5f}, {-0.3f, 0.0f}, kPlotAxis));
+        p.labels.push_back(label({0.5f * (aX0 + aX1), y0}, "theta_i (deg)", {0.5f, 0.0f}, {0.0f, 1.3f}));
+        p.labels.push_back(label({aX0, ay(90.0f)}, "delta_phi = 180", {0.0f, 0.0f}, {0.3f, 0.2f}));
+        p.labels.push_back(label({aX0, ay(-90.0f)}, "delta_phi = 0", {0.0f, 1.0f}, {0.3f, -0.2f}));
+        PlotPolyline mirror = line("R", {{ax(0.0f), ay(0.0f)}, {ax(90.0f), ay(90.0f)}}, kPlotText, 1.0f);
+        mirror.dashed = true;
+        p.lines.push_back(std::move(mirror));
+        p.labels.push_back(label({ax(45.0f), ay(45.0f)}, "R", {0.0f, 0.0f}, {0.4f, 0.0f}, kPlotText));
+        // The azimuth slice: delta_phi along x (0..360), theta_o along y (0..90).
+        auto bx = [&](float dphi) { return bX0 + (bX1 - bX0) * dphi / 360.0f; };
+        auto by = [&](float thetaO) { return y0 + thetaO / 90.0f; };
+        for (int d = 0; d <= 360; d += 90) p.labels.push_back(label({bx(float(d)), y0}, std::to_string(d), {0.5f, 0.0f}, {0.0f, 0.2f}, kPlotAxis));
+        for (int d = 0; d <= 90; d += 30) p.labels.push_back(label({bX0, by(float(d))}, std::to_string(d), {1.0f, 0.5f}, {-0.3f, 0.0f}, kPlotAxis));
+        p.labels.push_back(label({0.5f * (bX0 + bX1), y0}, "delta_phi (deg)", {0.5f, 0.0f}, {0.0f, 1.3f}));
+        PlotPolyline rMark = line("R", {{bx(180.0f), by(incidenceDeg) - 0.08f}, {bx(180.0f), by(incidenceDeg) - 0.03f}}, kPlotText, 1.5f);
+        p.lines.push_back(rMark);
+        rMark.points = {{bx(180.0f), by(incidenceDeg) + 0.03f}, {bx(180.0f), by(incidenceDeg) + 0.08f}};
+        p.lines.push_back(std::move(rMark));
+        p.labels.push_back(label({bx(180.0f), by(incidenceDeg)}, "R", {0.0f, 0.5f}, {0.6f, 0.0f}, kPlotText));
+    }
+
+    // The colour bars, as tall as the rows: lo at the bottom, hi at the top, ticks evenly in log f_r.
+    const float barTop = rowStep * float(phis.size() - 1) + 1.0f;
+    for (const auto& [x0, x1, scale] : {std::tuple{aBar0, aBar1, planeScale}, std::tuple{bBar0, bBar1, sliceScale}}) {
+        PlotHeatMap bar;
+        bar.min = {x0, 0.0f};
+        bar.max = {x1, barTop};
+        bar.columns = 1;
+        bar.rows = 240;
+        for (int r = 0; r < bar.rows; ++r) bar.cells.push_back(heatColor((float(r) + 0.5f) / float(bar.rows)));
+        p.heatMaps.push_back(std::move(bar));
+        p.lines.push_back(line("frame", {{x0, 0.0f}, {x1, 0.0f}, {x1, barTop}, {x0, barTop}, {x0, 0.0f}}, kPlotAxis));
+        const int ticks = 3;
+        for (int k = 0; k <= ticks; ++k) {
+            const float y = barTop * float(k) / float(ticks);
+            const float value = scale.lo * std::pow(scale.hi / scale.lo, float(k) / float(ticks));
+            p.lines.push_back(line("tick", {{x1, y}, {x1 + 0.03f, y}}, kPlotAxis));
+            const std::string text = (k == ticks && scale.clipped ? ">=" : "") + format("%.3g", double(value));
+            p.labels.push_back(label({x1, y}, text, {0.0f, 0.5f}, {0.4f, 0.0f}, kPlotAxis));
+        }
+        p.labels.push_back(label({x0, barTop}, "f_r", {0.0f, 1.0f}, {0.0f, -0.3f}));
+    }
+    p.min = {aX0, 0.0f};
+    p.max = {bBar1, barTop};
+    return p;
+}
+
+}  // namespace shadelab
