@@ -14,8 +14,6 @@ namespace shadelab {
 namespace {
 
 // The lobe plot's colours (plot.cpp): Okabe-Ito, lightened for the dark background.
-constexpr Rgba8 kOrange{240, 170, 40, 255};
-constexpr Rgba8 kSkyBlue{86, 180, 233, 255};
 constexpr Rgba8 kYellow{240, 228, 66, 255};
 constexpr Rgba8 kGreen{40, 200, 150, 255};
 constexpr Rgba8 kPurple{204, 121, 167, 255};
