@@ -1,6 +1,7 @@
 // The BRDF as a function (issue 30, part 3): the 3-D lobe and the heat maps of the isotropic
 // parameterisation, both from core/shading's brdf() (see plot.hpp).
 #include "core/figures/plot.hpp"
+#include "core/figures/plot_parts.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -13,42 +14,11 @@
 namespace shadelab {
 namespace {
 
-// The lobe plot's colours (plot.cpp): Okabe-Ito, lightened for the dark background.
-constexpr Rgba8 kYellow{240, 228, 66, 255};
-constexpr Rgba8 kGreen{40, 200, 150, 255};
-constexpr Rgba8 kPurple{204, 121, 167, 255};
+using namespace plot_parts;
+
 // The mesh lines, dimmer than the curves so the plane-of-incidence cut and the arrows stand out.
 constexpr Rgba8 kRingColor{190, 140, 50, 255};
 constexpr Rgba8 kMeridianColor{70, 140, 185, 255};
-
-std::string format(const char* fmt, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, fmt, value);
-    return buffer;
-}
-std::string shortNumber(float v) { return format("%g", double(v)); }
-
-PlotPolyline line(std::string name, std::vector<glm::vec2> points, Rgba8 color, float width = 1.0f) {
-    PlotPolyline l;
-    l.name = std::move(name);
-    l.points = std::move(points);
-    l.color = color;
-    l.width = width;
-    return l;
-}
-
-PlotLabel label(glm::vec2 at, std::string text, glm::vec2 align, glm::vec2 offset, Rgba8 color = kPlotText) {
-    return PlotLabel{at, std::move(text), align, offset, color};
-}
-
-// 1, 2, 2.5 or 5 times a power of ten: the smallest step with `count` steps reaching `peak`.
-float niceStep(float peak, int count) {
-    const float raw = std::max(peak, 1e-12f) / float(count);
-    const float decade = std::pow(10.0f, std::floor(std::log10(raw)));
-    for (float m : {1.0f, 2.0f, 2.5f, 5.0f, 10.0f})
-        if (m * decade * float(count) >= peak * (1.0f - 1e-6f)) return m * decade;
-    return 10.0f * decade;
-}
 
 // "Blinn-Phong k_e = 32", "anisotropic k_t = 8, k_b = 256": the lobe in use.
 std::string lobeName(const Material& m, const LightingEnvironment& env) {

@@ -1,4 +1,5 @@
 #include "core/figures/plot.hpp"
+#include "core/figures/plot_parts.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -11,22 +12,9 @@
 namespace shadelab {
 namespace {
 
-// Curve colours (see kPlotBackground): Okabe-Ito orange, sky blue, vermillion, bluish green and yellow,
-// lightened where the original is too dark on the dark background.
-constexpr Rgba8 kOrange{240, 170, 40, 255};
-constexpr Rgba8 kSkyBlue{86, 180, 233, 255};
-constexpr Rgba8 kVermillion{240, 100, 60, 255};
-constexpr Rgba8 kGreen{40, 200, 150, 255};
-constexpr Rgba8 kYellow{240, 228, 66, 255};
-constexpr Rgba8 kPurple{204, 121, 167, 255};
+using namespace plot_parts;
 
 constexpr float kCurveWidth = 2.0f;
-
-std::string format(const char* fmt, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, fmt, value);
-    return buffer;
-}
 
 // Sorted, with values closer than `tolerance` merged.
 std::vector<float> sortedUnique(std::vector<float> values, float tolerance) {
@@ -35,31 +23,6 @@ std::vector<float> sortedUnique(std::vector<float> values, float tolerance) {
     for (float v : values)
         if (out.empty() || v - out.back() > tolerance) out.push_back(v);
     return out;
-}
-
-// The smallest step of 1, 2, 2.5 or 5 times a power of ten with `count` steps reaching `peak`.
-float niceStep(float peak, int count) {
-    const float raw = std::max(peak, 1e-12f) / float(count);
-    const float decade = std::pow(10.0f, std::floor(std::log10(raw)));
-    for (float m : {1.0f, 2.0f, 2.5f, 5.0f, 10.0f})
-        if (m * decade * float(count) >= peak * (1.0f - 1e-6f)) return m * decade;
-    return 10.0f * decade;
-}
-
-// "0.25", "2", "1.5e+03": short labels for ring and tick values.
-std::string shortNumber(float v) { return format("%g", double(v)); }
-
-PlotPolyline line(std::string name, std::vector<glm::vec2> points, Rgba8 color, float width = 1.0f) {
-    PlotPolyline l;
-    l.name = std::move(name);
-    l.points = std::move(points);
-    l.color = color;
-    l.width = width;
-    return l;
-}
-
-PlotLabel label(glm::vec2 at, std::string text, glm::vec2 align, glm::vec2 offset, Rgba8 color = kPlotText) {
-    return PlotLabel{at, std::move(text), align, offset, color};
 }
 
 glm::vec2 unitAt(float angleFromNDeg) {
