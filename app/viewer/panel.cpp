@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <optional>
 #include <string>
 
 namespace shadelab {
@@ -172,10 +173,37 @@ void sectionMaterial(Material& m, ReflectionModel reflection) {
     ImGui::EndDisabled();
 }
 
+// With a probed pixel, the 3-D lobe is that point's: its N, its I toward the selected light (or the first
+// lit one) and its V, in its tangent frame when the lobe is anisotropic, and its material. Gouraud
+// evaluates at the triangle's corners: corner a's.
+struct ProbedLobe {
+    LobeIncidence incidence;
+    Material material;
+    int light = 0;
+};
+std::optional<ProbedLobe> probedLobe(const Scene& scene, const ProbeResult* probe, int selectedLight) {
+    if (!probe || probe->miss || probe->modes.empty() || probe->modes[0].evaluations.empty()) return std::nullopt;
+    const ModeProbe& mode = probe->modes[0];
+    const ProbeEvaluation& e = mode.evaluations[0];
+    std::vector<int> candidates;
+    if (selectedLight >= 0 && selectedLight < int(e.lights.size())) candidates.push_back(selectedLight);
+    for (int k = 0; k < int(e.lights.size()); ++k) candidates.push_back(k);
+    const TangentFrame* frame = e.anisotropic && anisotropicLobe(probe->material, lightingEnvironment(scene)) ? &e.frame : nullptr;
+    for (int k : candidates) {
+        std::optional<LobeIncidence> li =
+            lobeIncidenceAt(e.nrmWorld, e.lights[std::size_t(k)].towardLight, e.viewWorld, frame);
+        if (!li) continue;
+        li->where = "at pixel " + std::to_string(probe->x) + ", " + std::to_string(probe->y) +
+                    (mode.mode == ShadingMode::Gouraud ? " (corner a)" : "") + ", light " + std::to_string(k);
+        return ProbedLobe{*li, probe->material, k};
+    }
+    return std::nullopt;
+}
+
 // The lecture's plots for the current parameters (core/figures/plot.hpp): rebuilt every frame, which costs
 // about a thousand formula evaluations for the 2-D plots (tens of thousands for the BRDF's), so every
 // slider in the panel moves the curves at once.
-void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
+void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, const ProbeResult* probe, int selectedLight) {
     ImGui::SliderFloat("incidence", &plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi, "\u03b8_i = %.1f\u00b0");
     plots.incidenceDeg = std::clamp(plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi);
     iorSlider(scene);
@@ -188,7 +216,15 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots) {
     // The BRDF as a function (issue 30): the 3-D lobe from a fixed view, and the heat maps (about 32 000
     // evaluations; two rows of them with anisotropy).
     ImGui::Spacing();
-    plotWidget("##lobe3d", scenePlot(PlotKind::Lobe3d, scene, material, plots), width * 0.9f);
+    const std::optional<ProbedLobe> probed = probedLobe(scene, probe, selectedLight);
+    if (probed) {
+        ImGui::TextWrapped("3-D lobe: the probed point's own N, I (light %d) and V; Esc clears the probe.", probed->light);
+    } else if (probe && !probe->miss) {
+        ImGui::TextWrapped("3-D lobe: every light is behind the probed point; the incidence above is drawn.");
+    }
+    plots.probed = probed ? std::optional<LobeIncidence>(probed->incidence) : std::nullopt;
+    plotWidget("##lobe3d", scenePlot(PlotKind::Lobe3d, scene, probed ? probed->material : material, plots), width * 0.9f);
+    plots.probed.reset();
     // Dragging the 3-D lobe turns it (the widget holds the mouse, so the scene's camera stays put);
     // a double click goes back to the PNG's view.
     if (ImGui::IsItemActive()) {
@@ -531,7 +567,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         sectionMaterial(object->material, scene.reflection);
     }
     if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
-        sectionPlots(scene, object ? object->material : Material{}, settings.plots);
+        sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight);
     // S opens or closes it, and brings it into view.
     if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
     if (section("Shader: the GLSL of the pane's mode (S)", kPanelSections[3], false)) {

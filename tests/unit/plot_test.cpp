@@ -285,13 +285,13 @@ TEST(ScenePlot, TakesTheScenesParameters) {
     scene.reflection = ReflectionModel::BlinnPhong;
     Material m;
     m.ke = 200.0f;
-    const Plot lobe = scenePlot(PlotKind::Lobe, scene, m, PlotSettings{60.0f, false, {}});
+    const Plot lobe = scenePlot(PlotKind::Lobe, scene, m, PlotSettings{60.0f, false, {}, {}});
     EXPECT_NE(lobe.title.find("k_e = 200"), std::string::npos) << lobe.title;
     EXPECT_NE(lobe.title.find("theta_i = 60 deg"), std::string::npos) << lobe.title;
     EXPECT_NE(lineNamed(lobe, "Blinn-Phong").name.find("(in use)"), std::string::npos);
-    const Plot outside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, false, {}});
+    const Plot outside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, false, {}, {}});
     EXPECT_NE(outside.title.find("eta_1 = 1.00 -> eta_2 = 1.80"), std::string::npos) << outside.title;
-    const Plot inside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, true, {}});
+    const Plot inside = scenePlot(PlotKind::Fresnel, scene, m, PlotSettings{45.0f, true, {}, {}});
     EXPECT_NE(inside.title.find("eta_1 = 1.80 -> eta_2 = 1.00"), std::string::npos) << inside.title;
     EXPECT_TRUE(hasLineNamed(inside, "critical angle"));
 }
@@ -488,7 +488,7 @@ TEST(BrdfPlot, SlicePanelsAndTheMirrorRidge) {
             if (g.at(c, row) > g.at(c, best)) best = row;
         EXPECT_EQ(best, 90 + c) << "theta_i " << c + 0.5;  // row 90 + c holds theta_o = c + 0.5
     }
-    const Plot p = scenePlot(PlotKind::BrdfSlice, Scene{}, m, PlotSettings{30.0f, false, {}});
+    const Plot p = scenePlot(PlotKind::BrdfSlice, Scene{}, m, PlotSettings{30.0f, false, {}, {}});
     EXPECT_NE(p.title.find("f_r(delta_phi; theta_i -> theta_o)"), std::string::npos) << p.title;
     EXPECT_EQ(lectureNotation("delta_phi, phi_i, omega_o"), "\u0394\u03c6, \u03c6_i, \u03c9_o");
 }
@@ -506,4 +506,51 @@ TEST(BrdfPlot, Lobe3dViewTurns) {
     const LobeView above{0.0f, 89.0f};
     EXPECT_LT(glm::length(lobe3dProjection(glm::vec3(0.0f, 1.0f, 0.0f), above)), 0.02f);
     EXPECT_NEAR(glm::length(lobe3dProjection(glm::vec3(1.0f, 0.0f, 0.0f), above)), 1.0f, 1e-3f);
+}
+
+// The viewer's 3-D lobe at a probed point (PlotSettings::probed, from lobeIncidenceAt): the point's own
+// N, I and V in any orientation give the plot's frame the same angles; an anisotropic point's light
+// keeps its azimuth between T and B; a light behind the surface gives no lobe.
+TEST(BrdfPlot, Lobe3dFollowsAProbedPoint) {
+    const LightingEnvironment env = modelEnv(ReflectionModel::BlinnPhong);
+    // A tilted surface point: N, with I 35 deg from it and V 50 deg from it on another side.
+    const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 0.8f, -0.5f));
+    const glm::vec3 across = glm::normalize(glm::cross(n, glm::vec3(0.0f, 0.0f, 1.0f)));
+    const glm::vec3 other = glm::cross(n, across);
+    const glm::vec3 i = float(std::cos(rad(35.0))) * n + float(std::sin(rad(35.0))) * across;
+    const glm::vec3 v = glm::normalize(float(std::cos(rad(50.0))) * n + float(std::sin(rad(50.0))) * (0.6f * across + 0.8f * other));
+    const std::optional<LobeIncidence> li = lobeIncidenceAt(n, i, v, nullptr);
+    ASSERT_TRUE(li.has_value());
+    EXPECT_LT(angleDeg(li->toLight, directionAt(35.0f, 180.0f)), 0.01) << "isotropic: I on the left, 35 deg from N";
+    ASSERT_TRUE(li->toEye.has_value());
+    expectClose(glm::dot(*li->toEye, glm::vec3(0, 1, 0)), glm::dot(v, n), "N.V");
+    expectClose(glm::dot(*li->toEye, li->toLight), glm::dot(v, i), "I.V");
+    // The probed plot is the slider's plot at that angle, plus V and the place in the title.
+    Material m;
+    Scene scene;
+    PlotSettings settings;
+    settings.probed = *li;
+    settings.probed->where = "at pixel 10, 20";
+    const Plot probed = scenePlot(PlotKind::Lobe3d, scene, m, settings);
+    EXPECT_NE(probed.title.find("at pixel 10, 20: theta_i = 35 deg"), std::string::npos) << probed.title;
+    EXPECT_EQ(std::count_if(probed.lines.begin(), probed.lines.end(), [](const PlotPolyline& l) { return l.name == "V"; }), 1);
+    const LobeSurface s = sampleLobeSurface(m, env, li->toLight), slider = sampleLobeSurface(m, env, 35.0f);
+    expectClose(s.peak, slider.peak, "peak");
+    EXPECT_LT(angleDeg(s.r, slider.r), 0.01);
+
+    // Anisotropic: the point's T and B are the plot's; the light 30 deg round from T toward B.
+    const TangentFrame frame{across, other};  // B = N x T here
+    const glm::vec3 i2 = float(std::cos(rad(40.0))) * n + float(std::sin(rad(40.0))) * (float(std::cos(rad(30.0))) * across + float(std::sin(rad(30.0))) * other);
+    const std::optional<LobeIncidence> a = lobeIncidenceAt(n, i2, v, &frame);
+    ASSERT_TRUE(a.has_value());
+    EXPECT_LT(angleDeg(a->toLight, directionAt(40.0f, 30.0f)), 0.01) << "B is at phi = 90 deg: 30 deg round from T toward B";
+    const Material aniso = anisotropicMaterial(8.0f, 256.0f);
+    const Plot turned = lobe3dPlot(aniso, env, *a);
+    EXPECT_NE(turned.title.find("theta_i = 40 deg, phi_i = 30 deg"), std::string::npos) << turned.title;
+    EXPECT_NE(allPoints(turned), allPoints(lobe3dPlot(aniso, env, lobeIncidence(40.0f))));
+    // Peak along H = N, as for the slider's lobe.
+    const LobeSurface sa = sampleLobeSurface(aniso, env, a->toLight);
+    EXPECT_LT(angleDeg(glm::normalize(sa.i + peakDirection(sa)), glm::vec3(0, 1, 0)), 0.5);
+
+    EXPECT_FALSE(lobeIncidenceAt(n, -i, v, nullptr).has_value()) << "light behind the surface";
 }

@@ -55,11 +55,21 @@ TangentFrame plotTangentFrame() {
 // ---- The 3-D lobe
 
 LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, float incidenceDeg) {
+    return sampleLobeSurface(m, env, directionAt(incidenceDeg, 180.0f));
+}
+
+LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, const glm::vec3& toLight) {
     LobeSurface s;
-    s.i = directionAt(incidenceDeg, 180.0f);
-    s.r = directionAt(incidenceDeg, 0.0f);
-    // The grid around R: d(alpha, beta) = cos alpha R + sin alpha (cos beta b1 + sin beta b2).
-    const glm::vec3 b1(0.0f, 0.0f, 1.0f), b2 = glm::cross(s.r, b1);
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    s.i = toLight;
+    s.r = 2.0f * glm::dot(n, s.i) * n - s.i;  // R(I) = 2 (N.I) N - I
+    const float incidenceDeg = glm::degrees(std::acos(std::clamp(s.i.y, -1.0f, 1.0f)));
+    // The light's side of the surface: its direction projected on the surface (at normal incidence, -T).
+    const glm::vec3 flat(s.i.x, 0.0f, s.i.z);
+    const glm::vec3 lightSide = glm::length(flat) > 1e-6f ? glm::normalize(flat) : glm::vec3(-1.0f, 0.0f, 0.0f);
+    // The grid around R: d(alpha, beta) = cos alpha R + sin alpha (cos beta b1 + sin beta b2), b1 in the
+    // surface across the plane of incidence.
+    const glm::vec3 b1 = glm::cross(n, lightSide), b2 = glm::cross(s.r, b1);
     auto dir = [&](float alphaDeg, float betaDeg) {
         const float a = glm::radians(alphaDeg), b = glm::radians(betaDeg);
         return std::cos(a) * s.r + std::sin(a) * (std::cos(b) * b1 + std::sin(b) * b2);
@@ -117,13 +127,17 @@ LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env,
         addCurve(dirs, s.rings);
     }
     // The plane of incidence from the light's side horizon over N to the mirror side's, densely near R.
+    auto inPlane = [&](float signedThetaDeg) {  // < 0: on the light's side
+        const float t = glm::radians(signedThetaDeg);
+        return std::cos(t) * n - std::sin(t) * lightSide;
+    };
     std::vector<float> thetas;
     for (int d = -90; d <= 90; ++d) thetas.push_back(float(d));
     for (int q = -120; q <= 120; ++q) thetas.push_back(incidenceDeg + 3.0f * halfWidth * float(q) / 120.0f);
     std::sort(thetas.begin(), thetas.end());
     for (float t : thetas)
         if (t >= -90.0f && t <= 90.0f) {
-            const glm::vec3 d = directionAt(std::abs(t), t < 0.0f ? 180.0f : 0.0f);
+            const glm::vec3 d = inPlane(t);
             const float f = fr(m, env, s.i, d);
             s.peak = std::max(s.peak, f);
             s.planeOfIncidence.push_back(d * f);
@@ -138,8 +152,42 @@ glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view) {
     return {glm::dot(p, right), glm::dot(p, up)};
 }
 
+LobeIncidence lobeIncidence(float incidenceDeg) {
+    LobeIncidence li;
+    li.toLight = directionAt(incidenceDeg, 180.0f);
+    return li;
+}
+
+std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3& i, const glm::vec3& v, const TangentFrame* frame) {
+    if (glm::dot(n, i) <= 1e-4f) return std::nullopt;
+    glm::vec3 t, b;
+    if (frame) {
+        t = frame->tangent, b = frame->bitangent;
+    } else {
+        // Isotropic: T opposite to I's part along the surface (I on the left), B = N x T as in the plot.
+        const glm::vec3 flat = i - glm::dot(n, i) * n;
+        if (glm::length(flat) > 1e-6f) {
+            t = -glm::normalize(flat);
+        } else {  // I along N: any T across N
+            t = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f)));
+        }
+        b = glm::cross(n, t);
+    }
+    // The plot's frame: T = +x, N = +y, B = -z.
+    auto local = [&](const glm::vec3& d) { return glm::normalize(glm::vec3(glm::dot(d, t), glm::dot(d, n), -glm::dot(d, b))); };
+    LobeIncidence li;
+    li.toLight = local(i);
+    li.toEye = local(v);
+    return li;
+}
+
 Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg, const LobeView& view) {
-    const LobeSurface s = sampleLobeSurface(m, env, incidenceDeg);
+    return lobe3dPlot(m, env, lobeIncidence(incidenceDeg), view);
+}
+
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, const LobeIncidence& incidence, const LobeView& view) {
+    const LobeSurface s = sampleLobeSurface(m, env, incidence.toLight);
+    const float incidenceDeg = glm::degrees(std::acos(std::clamp(s.i.y, -1.0f, 1.0f)));
     const float peak = s.peak > 1e-6f ? s.peak : 1.0f;
     const float step = niceStep(peak, 3);
     const int circles = std::max(1, int(std::ceil(peak / step - 1e-4f)));
@@ -147,7 +195,14 @@ Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float inciden
 
     Plot p;
     p.kind = PlotKind::Lobe3d;
-    p.title = "BRDF lobe f_r(omega_i -> omega_o): theta_i = " + shortNumber(incidenceDeg) + " deg, " + lobeName(m, env);
+    // theta_i as the slider gives it (0.1 deg); phi_i matters only to an anisotropic lobe.
+    std::string angles = "theta_i = " + shortNumber(std::round(incidenceDeg * 10.0f) / 10.0f) + " deg";
+    if (anisotropicLobe(m, env) && std::abs(s.i.y) < 0.99999f) {
+        const float phi = glm::degrees(std::atan2(-s.i.z, s.i.x));
+        angles += ", phi_i = " + shortNumber(std::round((phi < 0.0f ? phi + 360.0f : phi) * 10.0f) / 10.0f) + " deg";
+    }
+    p.title = "BRDF lobe f_r(omega_i -> omega_o)" + (incidence.where.empty() ? std::string() : " " + incidence.where) + ": " + angles +
+              ", " + lobeName(m, env);
     p.subtitle = "radius = f_r = k_d + k_s spec / (N.I) over the hemisphere of omega_o (k_d = " + shortNumber(m.kd) +
                  ", k_s = " + shortNumber(m.ks) + ")" + modifiers(env);
     p.equalAspect = true;
@@ -198,6 +253,7 @@ Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float inciden
     arrow("N", glm::vec3(0.0f, 1.0f, 0.0f), kPlotText, false, {0.5f, 1.1f});
     arrow("omega_i", s.i, kGreen, false, {1.0f, 1.0f});
     arrow("R", s.r, kPlotAxis, true, {0.0f, 1.0f});
+    if (incidence.toEye) arrow("V", *incidence.toEye, kSkyBlue, false, {0.5f, 1.1f});
     if (anisotropicLobe(m, env)) {
         const TangentFrame f = plotTangentFrame();
         arrow("T (k_t)", f.tangent, kPurple, false, {0.0f, 0.0f});

@@ -210,7 +210,9 @@ Plot fresnelPlot(float eta1, float eta2) {
 Plot scenePlot(PlotKind kind, const Scene& scene, const Material& material, const PlotSettings& settings) {
     switch (kind) {
     case PlotKind::Lobe: return lobePlot(lightingEnvironment(scene), material.ke, settings.incidenceDeg);
-    case PlotKind::Lobe3d: return lobe3dPlot(material, lightingEnvironment(scene), settings.incidenceDeg, settings.lobeView);
+    case PlotKind::Lobe3d:
+        return lobe3dPlot(material, lightingEnvironment(scene), settings.probed ? *settings.probed : lobeIncidence(settings.incidenceDeg),
+                          settings.lobeView);
     case PlotKind::BrdfSlice: return brdfSlicePlot(material, lightingEnvironment(scene), settings.incidenceDeg);
     case PlotKind::Fresnel: break;
     }

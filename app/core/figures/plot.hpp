@@ -138,6 +138,23 @@ struct LobeSurface {
     float peak = 0.0f;                                 // the largest f_r on the surface
 };
 LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, float incidenceDeg);
+// The same for any light direction `toLight` (unit, in the plot's frame, above the surface: y > 0).
+LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, const glm::vec3& toLight);
+
+// Where the light and the eye are for the 3-D lobe, in the plot's frame (N = +y, T = +x, B = -z). The
+// PNG's: the light at the incidence angle on the left (phi_i = 180 deg), no eye. The viewer's, once a
+// pixel is probed: that point's own I and V (lobeIncidenceAt).
+struct LobeIncidence {
+    glm::vec3 toLight{0.0f, 1.0f, 0.0f};   // omega_i, unit, y > 0
+    std::optional<glm::vec3> toEye;        // V, unit (drawn when set)
+    std::string where;                     // "at pixel 412, 300": said in the title when set
+};
+LobeIncidence lobeIncidence(float incidenceDeg);
+// A surface point's N, I (toward the light) and V (toward the eye) in world space, into the plot's frame.
+// Anisotropic (`frame` set): the point's T and B are the plot's T and B, so phi_i is where the light is
+// between them. Isotropic: azimuth does not matter, and the frame is turned to put I on the left
+// (phi_i = 180 deg), as in the PNG. None when the light is behind the surface (N.I <= 0): no lobe.
+std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3& i, const glm::vec3& v, const TangentFrame* frame);
 // Where the 3-D lobe is seen from: the eye's azimuth phi (from T, as directionAt) and elevation above
 // the surface. The default is the PNG's fixed oblique view, from the front right, 25 degrees up; the
 // viewer's Plots section turns it with the mouse.
@@ -148,6 +165,7 @@ struct LobeView {
 // The surface projected orthographically from `view`, with N, I, R (and T, B when anisotropic) and
 // reference circles in the surface.
 Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg, const LobeView& view = {});
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, const LobeIncidence& incidence, const LobeView& view = {});
 // The view: plot x = dot(p, right), plot y = dot(p, up).
 glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view = {});
 
@@ -176,6 +194,9 @@ struct PlotSettings {
     bool fromInside = false;      // false: from air into the material (eta1 = 1, eta2 = ior), as the
                                   // renderer's Fresnel term; true: eta1 = ior, eta2 = 1 (total internal reflection)
     LobeView lobeView;            // the 3-D lobe's view (the CLI keeps the default)
+    // The viewer with a probed pixel: the 3-D lobe of that point's own I and V (incidenceDeg is then
+    // not used for it). The CLI leaves it unset.
+    std::optional<LobeIncidence> probed;
 };
 
 // The plot for a scene: the lobe at material.ke with the scene's reflection model, normalisation,
