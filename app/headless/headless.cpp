@@ -5,6 +5,8 @@
 #include "render/multisample_target.hpp"
 #include "render/renderer.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -287,15 +289,24 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
 }
 
 std::string toJson(const BenchmarkResult& r) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "{\"frames\": %d, \"triangles\": %zu, \"size\": [%d, %d], \"shading\": \"%s\", \"layout\": \"%s\", "
-                  "\"msaa\": %d, \"median_ms\": %.3f, \"p95_ms\": %.3f, \"min_ms\": %.3f, \"max_ms\": %.3f, \"backend\": \"%s\", "
-                  "\"gl_renderer\": \"%s\"}",
-                  r.frames, r.triangles, r.width, r.height,
-                  r.layout == Layout::Compare ? toString(Layout::Compare) : toString(r.mode), toString(r.layout), r.msaa, r.medianMs, r.p95Ms,
-                  r.minMs, r.maxMs, r.backend.c_str(), r.glRenderer.c_str());
-    return buf;
+    // Milliseconds to the microsecond: what a timer on this machine can tell apart.
+    auto ms = [](double v) { return std::round(v * 1000.0) / 1000.0; };
+    const nlohmann::ordered_json j = {
+        {"frames", r.frames},
+        {"triangles", r.triangles},
+        {"size", {r.width, r.height}},
+        {"shading", r.layout == Layout::Compare ? toString(Layout::Compare) : toString(r.mode)},
+        {"layout", toString(r.layout)},
+        {"msaa", r.msaa},
+        {"median_ms", ms(r.medianMs)},
+        {"p95_ms", ms(r.p95Ms)},
+        {"min_ms", ms(r.minMs)},
+        {"max_ms", ms(r.maxMs)},
+        {"backend", r.backend},
+        {"gl_renderer", r.glRenderer},  // the driver's own text: quotes and backslashes escaped
+    };
+    // Invalid UTF-8 in a driver's name is replaced rather than thrown over.
+    return j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 }  // namespace shadelab

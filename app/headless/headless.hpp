@@ -1,5 +1,6 @@
 #pragma once
-// Headless rendering: one frame to an image, or a timed run of frames, on an OSMesa context.
+// Headless rendering: one frame to an image, or a timed run of frames, on a headless context (OSMesa or
+// EGL, headless/headless_context.hpp).
 #include "core/image/image.hpp"
 #include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"

@@ -6,6 +6,9 @@
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 #include "render/renderer.hpp"
+#include "headless/headless.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
@@ -263,4 +266,25 @@ TEST_F(GlContext, RendersIntoAnyFramebufferWithoutGlErrors) {
     glDeleteFramebuffers(1, &fbo);
     glDeleteRenderbuffers(1, &color);
     glDeleteRenderbuffers(1, &depth);
+}
+
+// --benchmark's JSON lines: a driver's name is its own text, quotes and backslashes included (it was
+// written into the line unescaped), and every field reads back as written.
+TEST(BenchmarkJson, IsValidWhateverTheDriverIsCalled) {
+    shadelab::BenchmarkResult r;
+    r.frames = 7;
+    r.triangles = 1234;
+    r.width = 64, r.height = 48;
+    r.layout = shadelab::Layout::Single;
+    r.mode = shadelab::ShadingMode::Gouraud;
+    r.medianMs = 1.23456;
+    r.glRenderer = "GPU \"X\" C:\\drivers\\x";
+    r.backend = "egl";
+    const nlohmann::json j = nlohmann::json::parse(shadelab::toJson(r));
+    EXPECT_EQ(j.at("gl_renderer"), r.glRenderer);
+    EXPECT_EQ(j.at("shading"), "gouraud");
+    EXPECT_EQ(j.at("layout"), "single");
+    EXPECT_EQ(j.at("size"), nlohmann::json::array({64, 48}));
+    EXPECT_EQ(j.at("triangles"), 1234);
+    EXPECT_DOUBLE_EQ(j.at("median_ms").get<double>(), 1.235);
 }
