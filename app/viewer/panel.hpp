@@ -38,10 +38,12 @@ struct ViewSettings {
     // arrows show only this light's I, R and H.
     int selectedLight = -1;
     // The Shader section (viewer/shader_view.hpp): the pane whose mode it lists (-1: the probed one or
-    // the first), the shader error it last scrolled to, and S's request to open or close it.
+    // the first), and S's request to open or close it. After a failed reload (focusShaderError): the
+    // file the error is in when no pane's mode runs it (shown as one more tab), and the error's file
+    // and line, selected and scrolled to once shown.
     int shaderPane = -1;
-    std::string shaderErrorSeen;
-    std::optional<std::pair<std::string, int>> shaderScrollTo;  // a new error's file and line, until shown
+    std::string shaderErrorFile;
+    std::optional<std::pair<std::string, int>> shaderScrollTo;
     std::optional<bool> openShader;
 };
 

@@ -6,7 +6,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace shadelab {
 namespace {
@@ -77,38 +80,61 @@ void drawLine(const GlslLine& line, float width) {
 
 }  // namespace
 
+bool focusShaderError(const Scene& scene, ViewSettings& settings, const std::string& log) {
+    settings.shaderErrorFile.clear();
+    settings.shaderScrollTo.reset();
+    const std::vector<GlslError> errors = glslErrors(log);
+    const auto located = std::find_if(errors.begin(), errors.end(), [](const GlslError& e) { return !e.file.empty(); });
+    if (located == errors.end()) return false;
+    const std::vector<Pane> panes = shadedPanes(scene);
+    const auto runs = [&](const Pane& p) {
+        const std::vector<std::string> files = shaderFilesOf(p.mode);
+        return std::find(files.begin(), files.end(), located->file) != files.end();
+    };
+    // The pane shown now when it runs the file (lighting.glsl: every pane), else the first that does.
+    const int shown = std::clamp(settings.shaderPane, 0, std::max(int(panes.size()) - 1, 0));
+    if (panes.empty() || !runs(panes[std::size_t(shown)])) {
+        const auto pane = std::find_if(panes.begin(), panes.end(), runs);
+        if (pane != panes.end()) settings.shaderPane = int(pane - panes.begin());
+        else settings.shaderErrorFile = located->file;  // e.g. phong.frag while the single pane is flat
+    } else {
+        settings.shaderPane = shown;
+    }
+    settings.shaderScrollTo = std::pair(located->file, located->line);
+    return true;
+}
+
 void sectionShader(const Scene& scene, ViewSettings& settings, const PanelStatus& status, const ProbeResult* probe) {
     const ShadingMode mode = chosenMode(scene, settings, probe);
     legend();
     const std::vector<GlslError> errors = glslErrors(status.shaderError);
-    // A new error: its file's tab is selected and its line scrolled to, once.
-    const bool newError = status.shaderError != settings.shaderErrorSeen;
-    settings.shaderErrorSeen = status.shaderError;
-    const std::vector<std::string> files = shaderFilesOf(mode);
-    if (newError) {
-        settings.shaderScrollTo.reset();
-        for (const GlslError& e : errors)
-            if (!settings.shaderScrollTo && std::find(files.begin(), files.end(), e.file) != files.end())
-                settings.shaderScrollTo = std::pair(e.file, e.line);
-    }
+    if (status.shaderError.empty()) settings.shaderErrorFile.clear();
+    std::vector<std::string> files = shaderFilesOf(mode);
+    if (!settings.shaderErrorFile.empty() && std::find(files.begin(), files.end(), settings.shaderErrorFile) == files.end())
+        files.push_back(settings.shaderErrorFile);
     if (!status.shaderError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), "the last reload failed (F5 again after a fix):");
     for (const GlslError& e : errors) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), "  %s", e.message.c_str());
     if (!ImGui::BeginTabBar("##glsl files")) return;
+    // The error's tab is selected (ImGui shows it from the next frame) and its line scrolled to once
+    // its text is drawn; then a click on another tab stays.
+    const std::optional<std::pair<std::string, int>> scrollTo = settings.shaderScrollTo;
     for (const std::string& file : files) {
-        const bool scrollHere = settings.shaderScrollTo && settings.shaderScrollTo->first == file;
-        if (!ImGui::BeginTabItem(file.c_str(), nullptr, newError && scrollHere ? ImGuiTabItemFlags_SetSelected : 0)) continue;
+        const bool scrollHere = scrollTo && scrollTo->first == file;
+        if (!ImGui::BeginTabItem(file.c_str(), nullptr, scrollHere ? ImGuiTabItemFlags_SetSelected : 0)) continue;
         const auto text = status.shaderSources.find(file);
         if (text == status.shaderSources.end()) {
             ImGui::TextDisabled("%s: not found", file.c_str());
         } else {
             ImFont* mono = monoFont();
             if (mono) ImGui::PushFont(mono);
-            const float rows = 26.0f;
-            ImGui::BeginChild("##listing", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()), true,
+            // Up to 26 rows, fewer where the panel is lower, so the error's line scrolled to is in sight.
+            const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
+            const float rows = std::clamp(std::floor(ImGui::GetWindowHeight() / rowHeight) - 9.0f, 8.0f, 26.0f);
+            ImGui::BeginChild("##listing", ImVec2(0.0f, rows * rowHeight), true,
                               ImGuiWindowFlags_HorizontalScrollbar);
             const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 60.0f);
             for (const GlslLine& line : listGlsl(file, text->second, errors)) {
-                if (scrollHere && line.number == settings.shaderScrollTo->second) ImGui::SetScrollHereY(0.3f);
+                if (scrollHere && line.number == scrollTo->second) ImGui::SetScrollHereY(0.3f);
                 drawLine(line, width);
             }
             if (scrollHere) settings.shaderScrollTo.reset();
@@ -118,6 +144,7 @@ void sectionShader(const Scene& scene, ViewSettings& settings, const PanelStatus
         ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
+    if (scrollTo && std::find(files.begin(), files.end(), scrollTo->first) == files.end()) settings.shaderScrollTo.reset();
 }
 
 }  // namespace shadelab

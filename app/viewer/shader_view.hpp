@@ -11,4 +11,10 @@ namespace shadelab {
 
 void sectionShader(const Scene& scene, ViewSettings& settings, const PanelStatus& status, const ProbeResult* probe);
 
+// After a failed reload (F5): points the Shader view at the first error of `log` that names a file,
+// in whatever layout: the pane whose mode runs that file is chosen (else the file is shown as one more
+// tab beside the pane's), and its tab is selected and the line scrolled to when the view is next drawn.
+// Returns whether the log names a file.
+bool focusShaderError(const Scene& scene, ViewSettings& settings, const std::string& log);
+
 }  // namespace shadelab

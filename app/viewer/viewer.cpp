@@ -11,6 +11,7 @@
 #include "viewer/formula_view.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
+#include "viewer/shader_view.hpp"
 
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -902,6 +903,9 @@ void Viewer::reloadShaders() {
     } catch (const std::exception& e) {
         status_.shaderError = e.what();
         setStatus(std::string("shaders not reloaded, the previous ones stay:\n") + e.what(), true);
+        // The Shader view shows the error's file and line, whichever pane or layout is up (each F5).
+        if (focusShaderError(document_.scene(), settings_, status_.shaderError))
+            settings_.openShader = true, settings_.showPanel = true;
     }
 }
 
