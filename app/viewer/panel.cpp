@@ -764,10 +764,69 @@ struct LightLabelStyle {
     ImDrawList* draw;
     float font, thick, ring;  // text size, line width, marker radius
 };
+// A model's outline in the pane, for the labels to keep off: the disc its bounding sphere covers.
+struct ModelDisc {
+    ImVec2 centre;
+    float radius;
+};
 struct LightLabelArea {
     ImVec2 lo, hi;
     ImVec2 centre;
+    std::vector<ModelDisc> models;
 };
+
+bool boxOnModel(const LightLabelArea& a, ImVec2 lo, ImVec2 hi) {
+    for (const ModelDisc& m : a.models) {
+        const float dx = std::clamp(m.centre.x, lo.x, hi.x) - m.centre.x, dy = std::clamp(m.centre.y, lo.y, hi.y) - m.centre.y;
+        if (dx * dx + dy * dy < m.radius * m.radius) return true;
+    }
+    return false;
+}
+
+// A marker's label where it covers no model (issue 31: "0 point" over all three spheres): beside the
+// marker at `at` (right, left, above, below, `gap` away), else moved out along the line from the
+// model's centre through the marker until it clears every model, tied to the marker by a thin line.
+// Where nothing is clear (a model filling the pane) it stays beside the marker.
+UiRect placeLabel(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, float gap, const std::string& label,
+                  ImU32 colour) {
+    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str());
+    const float pad = s.font * 0.3f;
+    // The text's top-left corner kept inside the area, as labelBox does.
+    const auto inside = [&](ImVec2 p) {
+        return ImVec2(std::max(std::min(p.x, a.hi.x - size.x - pad), a.lo.x + pad),
+                      std::max(std::min(p.y, a.hi.y - size.y - pad), a.lo.y + pad));
+    };
+    const auto clear = [&](ImVec2 p) {
+        return !boxOnModel(a, ImVec2(p.x - pad, p.y - pad), ImVec2(p.x + size.x + pad, p.y + size.y + pad));
+    };
+    const ImVec2 beside[] = {ImVec2(at.x + gap, at.y - size.y * 0.5f), ImVec2(at.x - gap - size.x, at.y - size.y * 0.5f),
+                             ImVec2(at.x - size.x * 0.5f, at.y - gap - size.y), ImVec2(at.x - size.x * 0.5f, at.y + gap)};
+    for (const ImVec2& p : beside)
+        if (clear(inside(p))) return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
+    // Out from the nearest model's centre (up when the marker is at it), a third of the font a step.
+    const ModelDisc* nearest = nullptr;
+    float best = 1e30f;
+    for (const ModelDisc& m : a.models) {
+        const float d = std::hypot(at.x - m.centre.x, at.y - m.centre.y) - m.radius;
+        if (d < best) best = d, nearest = &m;
+    }
+    if (nearest) {
+        ImVec2 u(at.x - nearest->centre.x, at.y - nearest->centre.y);
+        const float len = std::hypot(u.x, u.y);
+        u = len > 1e-3f ? ImVec2(u.x / len, u.y / len) : ImVec2(0.0f, -1.0f);
+        const float reach = std::hypot(a.hi.x - a.lo.x, a.hi.y - a.lo.y);
+        for (float t = gap; t < reach; t += s.font * 0.33f) {
+            const ImVec2 c(at.x + u.x * t, at.y + u.y * t);  // the box's centre, then its nearest point to the marker
+            const ImVec2 p = inside(ImVec2(c.x - size.x * 0.5f + u.x * size.x * 0.5f, c.y - size.y * 0.5f + u.y * size.y * 0.5f));
+            if (!clear(p)) continue;
+            const ImVec2 near(std::clamp(at.x, p.x - pad, p.x + size.x + pad), std::clamp(at.y, p.y - pad, p.y + size.y + pad));
+            const float dx = near.x - at.x, dy = near.y - at.y, d = std::hypot(dx, dy);
+            if (d > s.ring) s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour, 1.0f + s.thick * 0.4f);
+            return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
+        }
+    }
+    return labelBox(s.draw, s.font, beside[0], label, colour, a.lo, a.hi);
+}
 
 // A directional light: an arrow from `from` along the light's travel to `to`; its tail is the handle
 // that drags the direction, and the label sits beside it.
@@ -780,15 +839,15 @@ UiRect drawDirectionArrow(const LightLabelStyle& s, const LightLabelArea& a, ImV
     const float head = s.font * 0.7f;
     s.draw->AddTriangleFilled(to, ImVec2(to.x - u.x * head + n.x * head * 0.5f, to.y - u.y * head + n.y * head * 0.5f),
                               ImVec2(to.x - u.x * head - n.x * head * 0.5f, to.y - u.y * head - n.y * head * 0.5f), colour);
-    return labelBox(s.draw, s.font, ImVec2(from.x + s.ring * 0.5f, from.y - s.font * 1.4f), label, colour, a.lo, a.hi);
+    return placeLabel(s, a, from, s.ring, label, colour);
 }
 
-// A light in view: a ring and a dot at it, the label to its right.
+// A light in view: a ring and a dot at it, the label beside it off the models (placeLabel).
 UiRect drawLightMarker(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, const std::string& label,
                        ImU32 colour) {
     s.draw->AddCircle(at, s.ring, colour, 24, s.thick);
     s.draw->AddCircleFilled(at, s.thick, colour);
-    return labelBox(s.draw, s.font, ImVec2(at.x + s.ring * 1.4f, at.y - s.font * 0.5f), label, colour, a.lo, a.hi);
+    return placeLabel(s, a, at, s.ring * 1.4f, label, colour);
 }
 
 // A light outside the pane (or behind the eye, `behind`): an arrow at the border pointing toward `at`,
@@ -817,13 +876,18 @@ UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
         pos.x = u.x > 0.0f ? tip.x + head * 0.6f : tip.x - head * 0.6f - size.x;
         pos.y = u.y > 0.0f ? tip.y - head * 1.2f - size.y : tip.y + head * 1.2f;
     }
-    return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
+    const float pad = s.font * 0.3f;
+    pos.x = std::max(std::min(pos.x, a.hi.x - size.x - pad), a.lo.x + pad);
+    pos.y = std::max(std::min(pos.y, a.hi.y - size.y - pad), a.lo.y + pad);
+    if (!boxOnModel(a, ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad)))
+        return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
+    return placeLabel(s, a, tip, head * 1.2f, label, colour);  // a model reaches the border there
 }
 
 }  // namespace
 
 std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
-                                    float top) {
+                                    float top, const std::vector<BoundingSphere>& models) {
     std::vector<UiRect> boxes;
     if (scene.lights.empty()) return boxes;
     const float font = ImGui::GetFontSize();
@@ -835,9 +899,23 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
         // Labels and border arrows stay below the pane labels (`top`).
         const float y0 = std::min(std::max(paneTop, top), y1);
         style.draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
-        const LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f)};
+        LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f), {}};
         // projectToImage gives image pixels of the whole view (the pane's offset included).
         auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
+        // Each model's disc: its bounding sphere's centre and the farthest of four points on its rim
+        // across the view (a sphere off the axis projects a little wider than its centre's distance says).
+        const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+        const glm::vec3 right = glm::normalize(glm::cross(forward, scene.camera.up)), up = glm::cross(right, forward);
+        for (const BoundingSphere& m : models) {
+            const glm::vec3 c = projectToImage(scene.camera, pane, m.center);
+            if (!(c.z > 0.0f) || m.radius <= 0.0f) continue;
+            float radius = 0.0f;
+            for (const glm::vec3& rim : {right, -right, up, -up}) {
+                const glm::vec3 p = projectToImage(scene.camera, pane, m.center + rim * m.radius);
+                if (p.z > 0.0f) radius = std::max(radius, glm::length(glm::vec2(p) - glm::vec2(c)));
+            }
+            area.models.push_back({toUi(c), radius * 1.05f / framebufferScale});
+        }
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& l = scene.lights[i];
             const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);

@@ -134,9 +134,11 @@ void drawHelpOverlay(const UiRect& view);
 // Each light's marker over the view: a ring with its number and kind, an arrow along a directional
 // light's travel, or an arrow at the pane's border toward a light outside it. Lines thicken with the
 // UI scale. `selected`: the panel's selected light, drawn highlighted. Labels and border arrows stay
-// below `top` (the pane labels' bottom). Returns the labels' boxes, for the probe's labels to avoid.
+// below `top` (the pane labels' bottom) and off the `models` (world-space bounding spheres of the
+// objects: a label that would cover one moves out, tied to its marker by a line). Returns the labels'
+// boxes, for the probe's labels to avoid.
 std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
-                                    float top);
+                                    float top, const std::vector<BoundingSphere>& models = {});
 
 // Where light `light`'s marker is grabbed (world space): a point or area light's position; for a
 // directional light the tail of its arrow, a third of the eye's distance up-light of the target.

@@ -287,7 +287,7 @@ float Viewer::followView(const FrameLayout& l) {
 std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
     const std::vector<UiRect> lightBoxes =
         settings_.lightLabels ? drawLightLabels(animatedScene_ ? *animatedScene_ : document_.scene(), l.view, l.scale,
-                                                settings_.selectedLight, labelsBottom)
+                                                settings_.selectedLight, labelsBottom, modelSpheres())
                               : std::vector<UiRect>{};
     UiRect messageArea = l.view;  // above the formula when it is shown
     if (settings_.showFormula) {  // the values drawn this frame: an animated k_e moves under its symbol
@@ -922,6 +922,24 @@ const SceneRayCaster& Viewer::rayCaster() {
         for (const SceneObject& o : scene.objects) casterTransforms_.push_back(o.transform);
     }
     return *caster_;
+}
+
+const std::vector<BoundingSphere>& Viewer::modelSpheres() {
+    const Scene& scene = document_.scene();
+    const auto& geometry = document_.geometry();
+    bool same = spheresGeometry_ == document_.geometryRevision() && spheresTransforms_.size() == scene.objects.size();
+    for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
+        same = sameTransform(spheresTransforms_[o], scene.objects[o].transform);
+    if (same) return modelSpheres_;
+    modelSpheres_.clear();
+    spheresTransforms_.clear();
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        spheresTransforms_.push_back(scene.objects[o].transform);
+        if (!geometry || o >= geometry->meshes.size() || scene.objects[o].mesh.type == MeshSpec::Type::Plane) continue;
+        modelSpheres_.push_back(worldBounds({&geometry->meshes[o]}, {worldFromObject(scene.objects[o].transform)}));
+    }
+    spheresGeometry_ = document_.geometryRevision();
+    return modelSpheres_;
 }
 
 void Viewer::setProbe(int x, int y) {

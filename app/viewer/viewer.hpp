@@ -211,6 +211,12 @@ private:
     std::weak_ptr<const SceneGeometry> casterGeometry_;
     std::vector<Transform> casterTransforms_;
     const SceneRayCaster noTriangles_;         // what probeAnchor() gets when shadows are off (it is not used)
+    // Each object's world-space bounding sphere (a plane, a floor, left out): the light labels keep
+    // off them. Recomputed when the geometry or a transform changes.
+    const std::vector<BoundingSphere>& modelSpheres();
+    std::vector<BoundingSphere> modelSpheres_;
+    std::optional<std::uint64_t> spheresGeometry_;
+    std::vector<Transform> spheresTransforms_;
 };
 
 }  // namespace shadelab

@@ -13,6 +13,8 @@
   remember  window size and UI scale come back in the next session; --reset-layout forgets them
   hidpi     at a 2x content scale (Xft.dpi 192) the view keeps half the window and the panes show the
             whole model
+  labels    at 1920x1080, at UI scale 1 and 1.5: the light labels keep off the spheres in compare (the
+            window's view differs from F12's image on under 0.3% of a model's pixels: markers, not labels)
   slides    at 1920x1080: the k_e series 04-08 (one caption wraps to two lines) has the very same view
             rectangle and sphere on every slide; compare panes leave a margin (at least 6% of the pane's
             width each side) and a separator line is drawn between them in the window, not in F12's image;
@@ -282,6 +284,30 @@ elif scenario == "slides":
             in_view = sum(1 for y in range(h) if any(separator(compare[2][y][x]) for x in range(x0 - 2, x0 + 2)))
             check(in_window > 0.8 * h, f"no separator at x {x0} in the window: {in_window} of {h} rows")
             check(in_view < 0.05 * h, f"a separator at x {x0} in the F12 image: {in_view} of {h} rows")
+elif scenario == "labels":
+    # The light labels keep off the models: where the window's view differs from F12's image (the
+    # overlays) on a model's pixels, only the markers' arrows and rings may be, not a label's box.
+    for name, extra in (("scale1", []), ("ui1.5", ["--ui-scale", "1.5"])):
+        window = os.path.join(out, f"labels-{name}.png")
+        proc, display = start_viewer([shadelab, "--playlist", playlist, "--screenshot", window] + extra, out)
+        display.move(300, 500, 0.5)
+        resize(1920, 1080)
+        display.move(5, 1075, 0.5)  # the cursor off the view
+        view = shot(f"labels-{name}-view")
+        quit_viewer(proc, display)
+        if not view or not os.path.exists(window):
+            continue
+        w, h, rows = view
+        win = read_png(open(window, "rb").read())
+        top = win[1] - h
+        for x0, x1 in panes(view, 3):
+            background = rows[h - 1][x0]
+            covered = sum(1 for y in range(h) for x in range(x0 + 3, x1 - 3)
+                          if max(abs(a - b) for a, b in zip(rows[y][x], background)) > 6
+                          and max(abs(a - b) for a, b in zip(rows[y][x], win[2][top + y][x])) > 40)
+            model = model_pixels(view, x0 + 3, x1 - 3) * 4
+            print(f"{name} pane {x0}..{x1}: {covered} of the model's ~{model} pixels covered by overlays")
+            check(covered < 0.003 * model, f"{name}: overlays cover {covered} of the model's ~{model} pixels in pane {x0}..{x1}")
 elif scenario == "lightdrag":
     # A point light on the viewing axis, between the eye (0, 1.5, 4.8) and the target: its marker is
     # at the view's centre, (400, 300) in the view, (400, 324) on the screen under the status strip.
