@@ -467,8 +467,8 @@ const OptionSpec kOptions[] = {
      "start with light N selected in the panel (an area light shows its samples)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.selectLight = intIn(self, v); }},
     {"--ui-scale", "", "S", G::Viewer, bounds(kUiScaleRange), nullptr, "",
-     "panel, captions, pane labels, HUD and probe labels S times larger ({range}, on top of the monitor's content "
-     "scale); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer",
+     "panel and HUD S times larger ({range}, on top of the monitor's content scale; the text over the view, "
+     "captions and labels, is at least 2.4% of the window's height whatever S is); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.uiScale = floatIn(self, v); }},
     {"--fullscreen", "", "", G::Viewer, kNoBounds, nullptr, "", "cover the whole monitor (F11 toggles)",
      setTrue<&Options::fullscreen>},

@@ -1,5 +1,6 @@
 #include "viewer/panel.hpp"
 
+#include "core/figures/formula.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/ui/controls.hpp"
 #include "core/ui/panel_sections.hpp"
@@ -35,10 +36,17 @@ bool colorEdit(const char* label, glm::vec3& color) {
     return true;
 }
 
-bool coefficient(const char* label, float& value, float sliderMax) {
-    if (!ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f")) return false;
-    value = std::clamp(value, kCoefficientRange.lo, kCoefficientRange.hi);
-    return true;
+// While the widget just drawn is dragged (or typed into), its value for the large readout over the
+// view ("k_e = 37.2", issue 31): the panel's numbers are too small for a hall.
+void readoutWhileActive(std::string& readout, const char* name, float value) {
+    if (ImGui::IsItemActive()) readout = std::string(name) + " = " + formulaNumber(value);
+}
+
+bool coefficient(const char* label, float& value, float sliderMax, std::string& readout, const char* name) {
+    const bool changed = ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f");
+    if (changed) value = std::clamp(value, kCoefficientRange.lo, kCoefficientRange.hi);
+    readoutWhileActive(readout, name, value);
+    return changed;
 }
 
 template <typename E>
@@ -148,15 +156,16 @@ void sectionShading(Scene& scene) {
 }
 
 // `reflection`: anisotropy is Blinn-Phong's lobe; under Phong its controls are greyed out (and not applied).
-void sectionMaterial(Material& m, ReflectionModel reflection) {
+void sectionMaterial(Material& m, ReflectionModel reflection, std::string& readout) {
     colorEdit("colour C", m.color);
     colorEdit("specular S", m.specularColor);
-    coefficient("k_a ambient", m.ka, 1.0f);
-    coefficient("k_d diffuse", m.kd, 1.0f);
-    coefficient("k_s specular", m.ks, 1.0f);
+    coefficient("k_a ambient", m.ka, 1.0f, readout, "k_a");
+    coefficient("k_d diffuse", m.kd, 1.0f, readout, "k_d");
+    coefficient("k_s specular", m.ks, 1.0f, readout, "k_s");
     // The exponent is what the lecture sweeps: a logarithmic slider gives 1..10 as much travel as 100..1000.
     if (ImGui::SliderFloat("k_e exponent", &m.ke, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.ke = std::clamp(m.ke, kExponentRange.lo, kExponentRange.hi);
+    readoutWhileActive(readout, "k_e", m.ke);
     // Anisotropic reflection (brushed metal): Ashikhmin and Shirley's k_t along the tangent, k_b along
     // the bitangent, in place of k_e; logarithmic like k_e. Switching it on starts both at k_e.
     ImGui::BeginDisabled(reflection != ReflectionModel::BlinnPhong);
@@ -166,8 +175,10 @@ void sectionMaterial(Material& m, ReflectionModel reflection) {
     ImGui::BeginDisabled(!m.anisotropic);
     if (ImGui::SliderFloat("k_t along T", &m.anisotropy.x, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.anisotropy.x = std::clamp(m.anisotropy.x, kExponentRange.lo, kExponentRange.hi);
+    readoutWhileActive(readout, "k_t", m.anisotropy.x);
     if (ImGui::SliderFloat("k_b along B", &m.anisotropy.y, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.anisotropy.y = std::clamp(m.anisotropy.y, kExponentRange.lo, kExponentRange.hi);
+    readoutWhileActive(readout, "k_b", m.anisotropy.y);
     ImGui::EndDisabled();
     ImGui::EndDisabled();
 }
@@ -254,7 +265,7 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
     }
 }
 
-void sectionLights(Scene& scene, int& selected) {
+void sectionLights(Scene& scene, int& selected, std::string& readout) {
     colorEdit("ambient A", scene.ambient);
     ImGui::TextDisabled("click a light's name to select it (again: none)");
     int remove = -1;
@@ -294,6 +305,7 @@ void sectionLights(Scene& scene, int& selected) {
             }
             colorEdit("colour", l.color);
             ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+            readoutWhileActive(readout, "intensity", l.intensity);
             if (l.type != LightType::Directional) {
                 combo("attenuation", l.attenuation, kAttenuationNames);
                 if (l.attenuation == Attenuation::InverseSquare) {
@@ -357,6 +369,7 @@ void sectionOverlays(ViewSettings& s) {
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);
     ImGui::Checkbox("frame time also when Tab hides the panel", &s.readoutWhenHidden);
+    ImGui::Checkbox("view text for a hall (sized from the window's height)", &s.presentationText);
 }
 
 void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
@@ -522,13 +535,14 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         return open;
     };
     settings.openSections.clear();
+    settings.readout.clear();
     if (section("Shading", kPanelSections[0], true)) sectionShading(scene);
     settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
     SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
     if (object && section("Material", kPanelSections[1], true)) {
         if (scene.objects.size() > 1)
             ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
-        sectionMaterial(object->material, scene.reflection);
+        sectionMaterial(object->material, scene.reflection, settings.readout);
     }
     if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
         sectionPlots(scene, object ? object->material : Material{}, settings.plots);
@@ -541,7 +555,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     settings.openShader.reset();
     if (object && section("Mesh", kPanelSections[4], true))
         sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
-    if (section("Lights", kPanelSections[5], true)) sectionLights(scene, settings.selectedLight);
+    if (section("Lights", kPanelSections[5], true)) sectionLights(scene, settings.selectedLight, settings.readout);
     if (section("Shadows", kPanelSections[6], true)) sectionShadows(scene.shadows);
     if (section("Overlays", kPanelSections[7], true)) {
         sectionOverlays(settings);
@@ -598,10 +612,10 @@ void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebuffe
     }
 }
 
-float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
+float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale, float fontSize) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     float bottom = view.y;
-    const float fontSize = ImGui::GetFontSize() * 1.4f;  // read from the back of a lecture hall
+    if (fontSize <= 0.0f) fontSize = ImGui::GetFontSize() * 1.4f;  // read from the back of a lecture hall
     const float pad = fontSize * 0.3f;
     const std::string diffLabel = "|" + shadingName(scene.diff.a) + " \u2212 " + shadingName(scene.diff.b) + "| \u00d7 " +
                                   std::to_string(int(std::lround(scene.diff.factor)));
@@ -633,17 +647,20 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
     return bottom;
 }
 
-CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight, float maxZoom) {
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight, float maxZoom,
+                            float viewText) {
     CaptionLayout l;
     if (scene.title.empty() && scene.caption.empty()) return l;
     ImFont* font = ImGui::GetFont();
     // Sizes follow the view's width (a 1000-unit view gets 1.6 times the panel's font for the title,
-    // 1.25 for the caption); smaller in steps while the band would take more than `maxHeight`.
-    float zoom = std::min(std::clamp(width / 1000.0f, 0.7f, 1.25f), maxZoom);
+    // 1.25 for the caption), or the view text's size where that is larger (the caption 1.25 times
+    // it: 3% of the window's height); smaller in steps while the band would take more than `maxHeight`.
+    const float base = std::max(ImGui::GetFontSize() * std::clamp(width / 1000.0f, 0.7f, 1.25f), viewText);
+    float zoom = std::min(1.0f, maxZoom);
     for (int step = 0; step < 8; ++step, zoom *= 0.9f) {
         l.zoom = zoom;
-        l.titleSize = ImGui::GetFontSize() * 1.6f * zoom;
-        l.captionSize = ImGui::GetFontSize() * 1.25f * zoom;
+        l.titleSize = base * 1.6f * zoom;
+        l.captionSize = base * 1.25f * zoom;
         l.pad = l.captionSize * 0.45f;
         const float counterWidth =
             counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;

@@ -28,6 +28,10 @@ struct ViewSettings {
     bool lightLabels = true;       // L: each light's marker, number and kind drawn over the view
     bool showFormula = false;      // E, --formula: the lecture's formula over the view (viewer/formula_view.hpp)
     bool readoutWhenHidden = true; // Tab keeps the frame-time strip (a switch in the Overlays section)
+    // The text over the view (caption, labels, formula, messages) sized from the window's height for
+    // a lecture hall, whatever the panel's UI scale (a switch in the Overlays section); off: the panel's.
+    bool presentationText = true;
+    std::string readout;           // this frame's live value ("k_e = 37.2") of a slider being dragged
     std::string scenePath;         // the Save / Load field
     int selectedObject = 0;        // whose material, mesh and transform the panel shows
     PlotSettings plots;            // the Plots section's incidence angle and side of the surface
@@ -71,6 +75,7 @@ struct PanelStatus {
     std::map<std::string, std::string> shaderSources;
     std::string shaderError;
     std::string animation;            // --animate: "1.25 s of 4.00 s"; empty without animations
+    std::string readout;              // the large readout over the view this frame ("k_e = 37.2")
     bool playing = false;
     bool recording = false;           // Ctrl+R: the view is being recorded
     std::string lastRecording;        // path of the last saved recording
@@ -105,7 +110,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
 // model ("Phong shading · Blinn-Phong lobe"), two lines where the pane is narrow. `view` is the 3D view;
 // `framebufferScale` converts the renderer's pixel panes to ImGui units.
 // Returns the bottom of the lowest label (ImGui units; view.y when there are none).
-float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
+// `fontSize`: the labels' text size (0: 1.4 times the current font's).
+float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale, float fontSize = 0.0f);
 // A thin line between side by side panes (compare, diff) over the view, so the class sees where one
 // pane ends; 2 px at content scale 1. Not part of the 3D view's pixels (F12, --output).
 void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebufferScale);
@@ -114,11 +120,13 @@ void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebuffe
 // text sizes and height (0: no title or caption).
 struct CaptionLayout {
     float titleSize = 0, captionSize = 0, pad = 0, height = 0;
-    float zoom = 0;  // the text size, as a share of the one for a 1000-unit view
+    float zoom = 0;  // the text size, as a share of the largest (1: not made smaller to fit)
 };
-// `maxZoom` caps the text size (a playlist's captions share the smallest one).
+// `maxZoom` caps the text size (a playlist's captions share the smallest one). `viewText`: the view
+// text's size (ImGui units; the caption is 1.25 times it, the title 1.6 times), where that is larger
+// than the size the view's width gives the panel's font.
 CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight,
-                            float maxZoom = 1e9f);
+                            float maxZoom = 1e9f, float viewText = 0.0f);
 // Draws it into `band` (above the 3D view), with `counter` ("3 / 20") at the right.
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 

@@ -52,6 +52,11 @@ constexpr float kPanelEms = 30.0f;
 constexpr float kFontPixels = 16.0f;
 // The status strip above the view, in font heights.
 constexpr float kStripEms = 1.5f;
+// The text over the view (issue 31, item 2) with the presentation setting: this share of the window's
+// height (26 px of 1080; the caption 1.25 times it, 3% of the height; the formula's main line too,
+// its values as large as its symbols), never smaller than the panel's text.
+constexpr float kViewTextShare = 0.024f;
+constexpr float kFormulaOfViewText = 1.25f;  // the formula's main line, in view text sizes
 // How long a message stays over the view (an error longer), in seconds.
 constexpr double kMessageSeconds = 5.0, kErrorSeconds = 12.0;
 // Render on demand: frames drawn after the last event, so ImGui's hover and click states settle.
@@ -209,6 +214,10 @@ bool Viewer::frame(bool last) {
     imgui_.holdTappedKeys(keys);
     const bool still = countEvents();
     imgui_.setScale(window_.contentScale() * uiScale_);  // rebuilds the font only when it changed
+    {
+        const float panelText = std::round(kFontPixels * imgui_.scale()), windowText = windowTextSize();
+        imgui_.setViewTextSize(std::max(panelText, windowText), std::max(kFormulaSize * panelText, kFormulaOfViewText * windowText));
+    }
     imgui_.newFrame();
     const FrameLayout l = layout();
     document_.setViewSize(std::max(l.viewWidth, 1), std::max(l.viewHeight, 1));
@@ -272,7 +281,10 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
 // follow the eye. Draws the pane labels first, since they push the framing down; returns where they end.
 float Viewer::followView(const FrameLayout& l) {
     drawPaneSeparators(document_.scene(), l.view, l.scale);
-    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
+    ImGui::PushFont(imgui_.viewFont());
+    const float labelSize = std::max(1.4f * ImGui::GetIO().Fonts->Fonts[0]->FontSize, 1.1f * l.windowText);
+    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale, labelSize) : l.view.y;
+    ImGui::PopFont();
     const auto panes = layoutPanes(document_.scene().layout, document_.scene().shading, document_.scene().width,
                                    document_.scene().height, document_.scene().diff);
     const float paneUnits = float(std::max(panes.front().height, 1)) / l.scale;
@@ -285,6 +297,7 @@ float Viewer::followView(const FrameLayout& l) {
 // The text over the view below the pane labels: the light labels, the caption, the status message and
 // the help. Returns the light labels' boxes (the probe's labels keep off them).
 std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
+    ImGui::PushFont(imgui_.viewFont());
     const std::vector<UiRect> lightBoxes =
         settings_.lightLabels ? drawLightLabels(animatedScene_ ? *animatedScene_ : document_.scene(), l.view, l.scale,
                                                 settings_.selectedLight, labelsBottom, modelSpheres())
@@ -295,7 +308,9 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
         const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
         const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
         messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale,
-                                                  imgui_.formulaFont()) - l.view.y;
+                                                  imgui_.formulaFont(), imgui_.formulaFont()
+                                                                            ? imgui_.formulaFont()->FontSize / kFormulaSize
+                                                                            : 0.0f) - l.view.y;
     }
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
@@ -305,8 +320,48 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
     }
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, messageArea);
+    drawReadout(l, labelsBottom);
+    ImGui::PopFont();
     if (showHelp_) drawHelpOverlay(l.view);
     return lightBoxes;
+}
+
+namespace {
+// What a playing ramp sets, as the readout says it ("k_e = 37.2"); empty for orbits and names.
+std::string rampReadout(const Scene& scene, const std::vector<Animation>& animations, int selectedObject) {
+    const auto object = std::size_t(std::max(selectedObject, 0));
+    const Material* m = object < scene.objects.size() ? &scene.objects[object].material : nullptr;
+    for (const Animation& a : animations) {
+        if (a.kind != Animation::Kind::Ramp) continue;
+        const std::string& p = a.parameter;
+        if (m && p == "ke") return "k_e = " + formulaNumber(m->ke);
+        if (m && p == "ks") return "k_s = " + formulaNumber(m->ks);
+        if (m && p == "kd") return "k_d = " + formulaNumber(m->kd);
+        if (m && p == "ka") return "k_a = " + formulaNumber(m->ka);
+        if (p == "ior") return "ior = " + formulaNumber(scene.ior);
+        if (p == "intensity" && !scene.lights.empty()) return "intensity = " + formulaNumber(scene.lights[0].intensity);
+    }
+    return "";
+}
+}  // namespace
+
+void Viewer::drawReadout(const FrameLayout& l, float labelsBottom) {
+    std::string text = settings_.readout;
+    if (text.empty() && animatedScene_ && (playing_ || options_.frames > 0))
+        text = rampReadout(*animatedScene_, options_.animations, settings_.selectedObject);
+    status_.readout = text;
+    if (text.empty() || l.view.width <= 0.0f) return;
+    // Twice the view text (52 px in a 1080-px window), on a dark box in the specular colour, at the
+    // top left below the pane labels (lights are most often up and to the right).
+    const float size = 2.0f * l.viewText, pad = 0.3f * size;
+    ImFont* font = imgui_.formulaFont() ? imgui_.formulaFont() : ImGui::GetFont();  // rasterised larger
+    const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0.0f, text.c_str());
+    const ImVec2 at(std::round(l.view.x + 2.0f * pad), std::round(labelsBottom + 2.0f * pad));
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad), ImVec2(at.x + extent.x + pad, at.y + extent.y + pad),
+                        IM_COL32(0, 0, 0, kFormulaBackingAlpha), pad);
+    const Rgba8 c = termColor(FormulaTerm::Specular);
+    draw->AddText(font, size, at, IM_COL32(c.r, c.g, c.b, 255), text.c_str());
 }
 
 // The 3D view, anti-aliased where it pays: always on a GPU; on a software rasterizer only once the
@@ -335,8 +390,16 @@ void Viewer::recordFrameTime(std::chrono::steady_clock::time_point start, bool l
     }
 }
 
+float Viewer::windowTextSize() const {
+    int windowWidth = 0, windowHeight = 0;
+    window_.windowSize(windowWidth, windowHeight);
+    return settings_.presentationText ? std::round(kViewTextShare * float(windowHeight)) : 0.0f;
+}
+
 Viewer::FrameLayout Viewer::layout() const {
     FrameLayout l;
+    l.windowText = windowTextSize();
+    l.viewText = std::max(ImGui::GetFontSize(), l.windowText);
     window_.framebufferSize(l.framebufferWidth, l.framebufferHeight);
     int windowWidth = 0, windowHeight = 0;
     window_.windowSize(windowWidth, windowHeight);
@@ -349,7 +412,7 @@ Viewer::FrameLayout Viewer::layout() const {
     const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
     const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
     const float captionMax = std::floor((float(windowHeight) - stripUnits) / 6.0f);
-    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax)
+    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax, 1e9f, l.windowText)
                                           : CaptionLayout{};
     // With a playlist every preset's caption has the same text size, the smallest any of them needs
     // to fit, and the band is as high as the longest caption of the playlist takes at that size: the
@@ -361,17 +424,17 @@ Viewer::FrameLayout Viewer::layout() const {
         };
         float zoom = 1e9f;
         for (std::size_t i = 0; i < playlist_.size(); ++i) {
-            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax);
+            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, 1e9f, l.windowText);
             if (c.height > 0.0f) zoom = std::min(zoom, c.zoom);
         }
         float height = 0.0f;
         for (std::size_t i = 0; i < playlist_.size(); ++i)
-            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, zoom).height);
-        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, zoom);
+            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, zoom, l.windowText).height);
+        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, zoom, l.windowText);
         if (height > 0.0f) {
             if (l.captionText.height <= 0.0f) {  // an empty band with the position, as the others
                 static const Scene blank = [] { Scene s; s.title = " "; return s; }();
-                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, zoom);
+                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, zoom, l.windowText);
             }
             l.captionText.height = height;
         }
@@ -403,7 +466,7 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys
         const glm::vec2 pixel((io.MousePos.x - l.view.x) * l.scale, (io.MousePos.y - l.view.y) * l.scale);
         for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
             if (pixel.x < float(pane.x) || pixel.x >= float(pane.x + pane.width)) continue;
-            const int light = lightAtPixel(scene, pane, pixel, ImGui::GetFontSize() * l.scale);
+            const int light = lightAtPixel(scene, pane, pixel, l.viewText * l.scale);
             if (light >= 0) lightDrag_ = LightDrag{light, pane};
         }
     }
@@ -978,7 +1041,9 @@ std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std:
     std::vector<OverlayArrow> arrows;
     if (!probe_) return arrows;
     const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_, settings_.selectedLight);
+    ImGui::PushFont(imgui_.viewFont());
     drawProbeLabels(scene, labelled, l.view, l.scale, avoid);
+    ImGui::PopFont();
     for (const ProbeArrow& a : labelled) arrows.push_back(a.arrow);
     return arrows;
 }

@@ -93,7 +93,11 @@ private:
         float scale = 1.0f;                 // framebuffer pixels per ImGui unit
         UiRect strip, caption, view, panel; // ImGui units
         CaptionLayout captionText;
+        // The text over the view (ImGui units): the window-height size (0 with the presentation
+        // setting off) and the size drawn, never below the panel's text.
+        float windowText = 0.0f, viewText = 0.0f;
     };
+    float windowTextSize() const;  // FrameLayout::windowText, before the frame's layout
 
     bool frame(bool last);
     // frame()'s steps.
@@ -101,6 +105,9 @@ private:
     PanelRequests panelEdits(const FrameLayout& layout);
     float followView(const FrameLayout& layout);
     std::vector<UiRect> drawViewText(const FrameLayout& layout, float labelsBottom);
+    // The value being changed, large over the view's top left: a slider dragged in the panel, else
+    // the number a playing --animate ramp sets (k_e while it sweeps).
+    void drawReadout(const FrameLayout& layout, float labelsBottom);
     Image drawView(const FrameLayout& layout, bool still, bool last, const std::vector<OverlayArrow>& arrows);
     void recordFrameTime(std::chrono::steady_clock::time_point start, bool last);
     // Whether the next frame can wait for an event: nothing moves, nothing is pending.

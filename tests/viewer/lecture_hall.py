@@ -15,6 +15,8 @@
             whole model
   labels    at 1920x1080, at UI scale 1 and 1.5: the light labels keep off the spheres in compare (the
             window's view differs from F12's image on under 0.3% of a model's pixels: markers, not labels)
+  viewtext  at 1920x1080 with the panel at UI scale 0.8: the caption's lines are at least 3% of the window's
+            height; a playing k_e ramp shows a large live readout of k_e
   slides    at 1920x1080: the k_e series 04-08 (one caption wraps to two lines) has the very same view
             rectangle and sphere on every slide; compare panes leave a margin (at least 6% of the pane's
             width each side) and a separator line is drawn between them in the window, not in F12's image;
@@ -308,6 +310,39 @@ elif scenario == "labels":
             model = model_pixels(view, x0 + 3, x1 - 3) * 4
             print(f"{name} pane {x0}..{x1}: {covered} of the model's ~{model} pixels covered by overlays")
             check(covered < 0.003 * model, f"{name}: overlays cover {covered} of the model's ~{model} pixels in pane {x0}..{x1}")
+elif scenario == "viewtext":
+    # The view's text is sized from the window's height, not the panel's scale: at 1920x1080, with the
+    # panel at UI scale 0.8, the caption's text lines are at least as tall as 3% of the window's height
+    # makes DejaVu Sans' ascender-to-descender (0.85 of its size; 0.78 counted with anti-aliasing); and a playing k_e ramp shows a large
+    # live readout ("k_e = ...") in the specular colour at the view's top left.
+    window = os.path.join(out, "viewtext.png")
+    proc, display = start_viewer([shadelab, "--playlist", playlist, "--ui-scale", "0.8", "--screenshot", window], out)
+    display.move(300, 500, 0.5)
+    resize(1920, 1080)
+    display.move(5, 1075, 0.5)
+    quit_viewer(proc, display)
+    width, height, rows = read_png(open(window, "rb").read())
+    band = lambda p: abs(p[0] - 24) <= 2 and abs(p[1] - 24) <= 2 and abs(p[2] - 30) <= 2  # the caption band
+    band_rows = [y for y in range(height) if band(rows[y][8]) and band(rows[y][400])]
+    lines, run = [], 0
+    for y in range(band_rows[0], band_rows[-1] + 1) if band_rows else []:
+        lit = any(min(rows[y][x]) > 150 for x in range(8, 1300))
+        if lit:
+            run += 1
+        elif run:
+            lines.append(run)
+            run = 0
+    print(f"caption band rows {band_rows[0] if band_rows else None}..{band_rows[-1] if band_rows else None}, text lines {lines} px")
+    check(len(lines) >= 2 and min(lines[1:]) >= 0.78 * 0.03 * 1080,
+          f"the caption's lines are {lines[1:]} px tall, under 3% of the 1080-px window")
+    animated = os.path.join(out, "readout.png")
+    subprocess.run([shadelab, "--size", "960x540", "--animate", "ke=1..1000:log:4", "--frames", "40", "--screenshot", animated],
+                   check=True, env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(out, "config")))
+    width, height, rows = read_png(open(animated, "rb").read())
+    gold = sum(1 for y in range(height // 3) for x in range(0, 480)
+               if rows[y][x][0] > 170 and 0.65 * rows[y][x][0] < rows[y][x][1] < 0.9 * rows[y][x][0] and rows[y][x][2] < 0.5 * rows[y][x][0])
+    print(f"readout: {gold} gold pixels at the view's top left")
+    check(gold > 300, f"no live k_e readout over the view while the ramp plays ({gold} gold pixels)")
 elif scenario == "lightdrag":
     # A point light on the viewing axis, between the eye (0, 1.5, 4.8) and the target: its marker is
     # at the view's centre, (400, 300) in the view, (400, 324) on the screen under the status strip.
