@@ -548,7 +548,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         sectionPlots(scene, object ? object->material : Material{}, settings.plots);
     // S opens or closes it, and brings it into view.
     if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
-    if (section("Shader: the GLSL of the pane's mode (S)", kPanelSections[3], false)) {
+    if (section("Shader: the GLSL of the pane's mode (S: large over the view)", kPanelSections[3], false)) {
         if (settings.openShader) ImGui::SetScrollHereY(0.0f);
         sectionShader(scene, settings, status, probe);
     }

@@ -49,6 +49,7 @@ struct ViewSettings {
     std::string shaderErrorFile;
     std::optional<std::pair<std::string, int>> shaderScrollTo;
     std::optional<bool> openShader;
+    bool shaderOverView = false;  // S: the Shader view large over the 3D view (drawShaderOverView)
 };
 
 // What the panel shows besides the scene.

@@ -318,10 +318,17 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
                                                        : std::string();
         drawCaption(document_.scene(), counter, l.captionText, l.caption);
     }
+    if (settings_.shaderOverView) {  // the message beside the shader view, not over its lines
+        const float shader = std::round(messageArea.width * kShaderOverViewShare);
+        messageArea.x += shader, messageArea.width -= shader;
+    }
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, messageArea);
     drawReadout(l, labelsBottom);
     ImGui::PopFont();
+    if (settings_.shaderOverView)
+        drawShaderOverView(animatedScene_ ? *animatedScene_ : document_.scene(), settings_, status_, probe_ ? &*probe_ : nullptr,
+                           l.view, imgui_.viewFont(), imgui_.viewMonoFont());
     if (showHelp_) drawHelpOverlay(l.view);
     return lightBoxes;
 }
@@ -589,13 +596,7 @@ void Viewer::runCommand(ViewerCommand command) {
     case ViewerCommand::FaceNormals: overlays.faceNormals = !overlays.faceNormals; break;
     case ViewerCommand::LightMarkers: settings_.lightLabels = !settings_.lightLabels; break;
     case ViewerCommand::Formula: settings_.showFormula = !settings_.showFormula; break;
-    case ViewerCommand::ShaderSection: {
-        // The Shader section: opened (and the panel shown) or closed again.
-        const auto& open = settings_.openSections;
-        settings_.openShader = !(settings_.showPanel && std::find(open.begin(), open.end(), "shader") != open.end());
-        settings_.showPanel = true;
-        break;
-    }
+    case ViewerCommand::ShaderSection: settings_.shaderOverView = !settings_.shaderOverView; break;
     case ViewerCommand::ResetCamera: document_.resetCamera(); break;
     case ViewerCommand::FrameModel: document_.frameModel(); break;
     case ViewerCommand::NextPreset: case ViewerCommand::PreviousPreset: case ViewerCommand::FirstPreset:
@@ -967,8 +968,7 @@ void Viewer::reloadShaders() {
         status_.shaderError = e.what();
         setStatus(std::string("shaders not reloaded, the previous ones stay:\n") + e.what(), true);
         // The Shader view shows the error's file and line, whichever pane or layout is up (each F5).
-        if (focusShaderError(document_.scene(), settings_, status_.shaderError))
-            settings_.openShader = true, settings_.showPanel = true;
+        if (focusShaderError(document_.scene(), settings_, status_.shaderError)) settings_.shaderOverView = true;
     }
 }
 

@@ -17,6 +17,8 @@
             window's view differs from F12's image on under 0.3% of a model's pixels: markers, not labels)
   viewtext  at 1920x1080 with the panel at UI scale 0.8: the caption's lines are at least 3% of the window's
             height; a playing k_e ramp shows a large live readout of k_e
+  shaderview at 1920x1080, S: the shader's lines over the view are at least 2% of the window's height
+            tall (a term line's bar) and the wrapped code reaches across the box
   slides    at 1920x1080: the k_e series 04-08 (one caption wraps to two lines) has the very same view
             rectangle and sphere on every slide; compare panes leave a margin (at least 6% of the pane's
             width each side) and a separator line is drawn between them in the window, not in F12's image;
@@ -343,6 +345,33 @@ elif scenario == "viewtext":
                if rows[y][x][0] > 170 and 0.65 * rows[y][x][0] < rows[y][x][1] < 0.9 * rows[y][x][0] and rows[y][x][2] < 0.5 * rows[y][x][0])
     print(f"readout: {gold} gold pixels at the view's top left")
     check(gold > 300, f"no live k_e readout over the view while the ramp plays ({gold} gold pixels)")
+elif scenario == "shaderview":
+    # S puts the shader over the view for the hall: at 1920x1080 the term lines' bars (ambient blue, a
+    # solid bar as high as a line) are at least 2% of the window's height tall (the view text; the
+    # panel's listing is 14 px), and the wrapped code reaches across the box (past 45% of the view).
+    window = os.path.join(out, "shaderview.png")
+    proc, display = start_viewer([shadelab, "--playlist", playlist, "--screenshot", window], out)
+    display.move(300, 500, 0.5)
+    resize(1920, 1080)
+    display.move(1700, 1000, 0.3)
+    display.key("s")
+    quit_viewer(proc, display)
+    width, height, rows = read_png(open(window, "rb").read())
+    view_width = 1440  # the panel is 30 font heights (480 px) at scale 1
+    ambient = lambda p: abs(p[0] - 110) <= 3 and abs(p[1] - 175) <= 3 and abs(p[2] - 255) <= 3
+    best = 0
+    for x in range(0, 80):
+        run = 0
+        for y in range(height):
+            run = run + 1 if ambient(rows[y][x]) else 0
+            best = max(best, run)
+    # Code and comment text (comments are grey, about 79 with anti-aliasing) over the darkened scene
+    # (at most about 35), below the pane labels.
+    text_far = sum(1 for y in range(260, height) for x in range(int(0.45 * view_width), int(0.6 * view_width))
+                   if max(rows[y][x]) > 70)
+    print(f"shader view: ambient bar {best} px tall, {text_far} light pixels between 45% and 60% of the view")
+    check(best >= 0.02 * 1080, f"the shader view's lines are {best} px tall (under 2% of the 1080-px window)")
+    check(text_far > 500, f"the shader view's code does not reach across 60% of the view ({text_far} pixels)")
 elif scenario == "lightdrag":
     # A point light on the viewing axis, between the eye (0, 1.5, 4.8) and the target: its marker is
     # at the view's centre, (400, 300) in the view, (400, 324) on the screen under the status strip.
