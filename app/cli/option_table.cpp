@@ -334,7 +334,7 @@ const OptionSpec kOptions[] = {
     // Animations and videos (core/scene/animation.hpp, video/video_encoder.hpp; checked in options.cpp).
     {"--animate", "", "SPEC", G::General, kNoBounds, nullptr, "",
      "with `--output FILE.gif|.mp4|.webm`: render an animation to a video; without, the viewer plays it (Space "
-     "pauses). Repeatable (at most {max-animations}, "
+     "pauses; with `--playlist` on every preset, from its start at each slide, capped at the display's refresh). Repeatable (at most {max-animations}, "
      "all at once). SPEC: `light-orbit[:SECONDS]` (the first light circles the camera's target at its height), "
      "`camera-orbit[:SECONDS]` (a turntable about the target and the up axis), or a ramp `PARAM=A..B[:log][:SECONDS]` "
      "of any `--sweep` parameter from A to B (`:log`: equal ratios, e.g. `ke=1..1000:log`; names switch half way). "

@@ -102,6 +102,10 @@ void ImGuiLayer::buildFonts() {
     // panel's pixels do not depend on what is under it, so it can be cached (see render).
     style.Colors[ImGuiCol_WindowBg].w = 1.0f;
     style.WindowBorderSize = 0.0f;
+    // A slider's handle half transparent and narrow, so the digits of the value under it stay readable.
+    style.Colors[ImGuiCol_SliderGrab].w = 0.55f;
+    style.Colors[ImGuiCol_SliderGrabActive].w = 0.7f;
+    style.GrabMinSize = 6.0f;
     style.ScaleAllSizes(scale_);
 }
 

@@ -522,6 +522,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
         sectionPlaylist(settings, status, requests);
     // The probe's terms come first: a click on the view is a question the panel answers at once.
+    if (probe && settings.scrollToProbe) ImGui::SetScrollHereY(0.0f), settings.scrollToProbe = false;
     if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
         requests.clearProbe |= probeSection(scene, *probe);
     // A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
@@ -703,10 +704,15 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
     const ImVec2 lo(strip.x, strip.y), hi(strip.x + strip.width, strip.y + strip.height);
     draw->PushClipRect(lo, hi, true);
     draw->AddRectFilled(lo, hi, IM_COL32(16, 16, 20, 255));
-    char text[512];
+    char timing[64] = "idle";
     const double ms = status.frameMs;
-    std::snprintf(text, sizeof text, "%.1f ms (%.0f FPS)  \u00b7  %zu triangles  \u00b7  %s%s%s%s%s", ms,
-                  ms > 0.0 ? 1000.0 / ms : 0.0, status.frameTriangles, status.glRenderer.c_str(),
+    if (!status.idle) {  // no frame in the last second yet: the first one after a sleep
+        if (ms > 0.0) std::snprintf(timing, sizeof timing, "%.1f ms (%.0f FPS)", ms, 1000.0 / ms);
+        else std::snprintf(timing, sizeof timing, "\u2026 ms");
+    }
+    char text[512];
+    std::snprintf(text, sizeof text, "%s  \u00b7  %zu triangles  \u00b7  %s%s%s%s%s", timing, status.frameTriangles,
+                  status.glRenderer.c_str(),
                   status.progress.empty() ? "" : "  \u00b7  ", status.progress.c_str(),
                   status.animation.empty() ? "" : status.playing ? "  \u00b7  playing " : "  \u00b7  paused at ",
                   status.animation.c_str());

@@ -50,6 +50,7 @@ struct ViewSettings {
     std::optional<std::pair<std::string, int>> shaderScrollTo;
     std::optional<bool> openShader;
     bool shaderOverView = false;  // S: the Shader view large over the 3D view (drawShaderOverView)
+    bool scrollToProbe = false;   // a new probe: the panel scrolls to its Probe section once
 };
 
 // What the panel shows besides the scene.
@@ -66,7 +67,8 @@ struct PanelStatus {
     std::vector<std::string> presetTitles;
     int currentPreset = 0;
     bool scrollToPreset = false;
-    double frameMs = 0.0;             // the last frame's own time, without waiting for input
+    double frameMs = 0.0;             // the mean own time (no waiting for input) of the last second's frames; 0: none
+    bool idle = false;                // nothing more is drawn after this frame until an event (render on demand)
     float uiScale = 1.0f;             // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
     int msaa = 1;                     // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;
@@ -131,7 +133,8 @@ CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, floa
 // Draws it into `band` (above the 3D view), with `counter` ("3 / 20") at the right.
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 
-// The status strip above the view: frame time, FPS, triangles, GL renderer, progressive passes.
+// The status strip above the view: frame time (the mean of the last second's frames) and the FPS it
+// allows, or "idle" while nothing is drawn; triangles, GL renderer, progressive passes.
 void drawStatusStrip(const PanelStatus& status, const UiRect& strip);
 
 // The last message over the bottom of the 3D view (where the lecturer looks), red for an error.

@@ -173,10 +173,28 @@ void Viewer::run() {
             if (messageShown_ && untilMessageGoes <= 0.0) break;
             window_.waitEvents(messageShown_ ? untilMessageGoes + 0.01 : 10.0);
         }
+        if (options_.frames == 0 && (playing_ || recording_)) waitForRefresh();
+        frameBegun_ = std::chrono::steady_clock::now();
         if (frame(options_.frames > 0 && n >= options_.frames)) break;
     }
     stopRecording();  // quitting while recording keeps the video
     savePrefs();
+}
+
+// A playing animation or a recording draws frame after frame: at most one a display refresh (60 Hz
+// where the monitor does not say), also where swapping buffers does not wait for the display
+// (llvmpipe on X11 and Xvfb, where it burnt 1.6 cores). Events wake the wait; they are handled by the
+// frame that follows, when it is due.
+int Viewer::frameCapHz() const {
+    const int hz = window_.refreshRate();
+    return hz >= 24 && hz <= 240 ? hz : 60;
+}
+
+void Viewer::waitForRefresh() {
+    const auto due = frameBegun_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                       std::chrono::duration<double>(1.0 / frameCapHz()));
+    for (auto now = std::chrono::steady_clock::now(); now < due; now = std::chrono::steady_clock::now())
+        window_.waitEvents(std::chrono::duration<double>(due - now).count());
 }
 
 // The layout as the session leaves it, for the next one (a person's sessions only).
@@ -231,7 +249,10 @@ bool Viewer::frame(bool last) {
     advanceAnimation();
     const std::vector<OverlayArrow> arrows = probeOverlays(l, drawViewText(l, labelsBottom));
     const Image view = drawView(l, still, last, arrows);
-    status_.frameMs = frameMs_;
+    // The mean of the frames drawn in the last second; "idle" where this is the last frame before the
+    // viewer sleeps (a scripted run never does).
+    status_.frameMs = frameRate_.meanMs(std::chrono::steady_clock::now()).value_or(0.0);
+    status_.idle = options_.frames == 0 && idle();
     drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
     imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
     if (screenshotRequested_) saveScreenshot(view);
@@ -325,6 +346,15 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, messageArea);
     drawReadout(l, labelsBottom);
+    if (recording_) {  // a red dot and REC at the view's top right while recording, after the message fades
+        const float size = l.viewText, r = 0.4f * size;
+        const ImVec2 at(l.view.x + l.view.width - 3.5f * size, labelsBottom + 0.6f * size);
+        ImDrawList* draw = ImGui::GetForegroundDrawList();
+        draw->AddRectFilled(ImVec2(at.x - 0.5f * size, at.y - 0.3f * size), ImVec2(at.x + 3.2f * size, at.y + 1.3f * size),
+                            IM_COL32(0, 0, 0, 170), 0.3f * size);
+        draw->AddCircleFilled(ImVec2(at.x + r, at.y + 0.5f * size), r, IM_COL32(230, 30, 30, 255));
+        draw->AddText(ImGui::GetFont(), size, ImVec2(at.x + 2.6f * r, at.y), IM_COL32(255, 255, 255, 255), "REC");
+    }
     ImGui::PopFont();
     if (settings_.shaderOverView)
         drawShaderOverView(animatedScene_ ? *animatedScene_ : document_.scene(), settings_, status_, probe_ ? &*probe_ : nullptr,
@@ -387,7 +417,9 @@ Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::v
 
 // The frame's own time (polling to swap, no waiting), for the status strip and -v's median.
 void Viewer::recordFrameTime(std::chrono::steady_clock::time_point start, bool last) {
-    frameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const auto end = std::chrono::steady_clock::now();
+    frameMs_ = std::chrono::duration<double, std::milli>(end - start).count();
+    frameRate_.add(end, frameMs_);
     if (frameTimes_.size() < 100000) frameTimes_.push_back(frameMs_);
     if (last && options_.verbose && !frameTimes_.empty()) {
         // The median frame's own time: bench/README.md's panel figures.
@@ -582,7 +614,12 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
 void Viewer::runCommand(ViewerCommand command) {
     const auto scene = [this]() -> Scene& { return document_.edit(); };  // the commands that change the scene
     const auto single = [&](ShadingMode mode) { scene().shading = mode, scene().layout = Layout::Single; };
-    const auto toggle = [&](Layout layout) { scene().layout = document_.scene().layout == layout ? Layout::Single : layout; };
+    // C and D toggle: pressed again, back to the layout before (D twice from compare: compare again).
+    const auto toggle = [&](Layout layout) {
+        const Layout now = document_.scene().layout;
+        if (now != layout) layoutBeforeToggle_ = now;
+        scene().layout = now == layout ? (layoutBeforeToggle_ == layout ? Layout::Single : layoutBeforeToggle_) : layout;
+    };
     OverlayOptions& overlays = settings_.overlays;
     switch (command) {
     case ViewerCommand::None: break;
@@ -597,8 +634,8 @@ void Viewer::runCommand(ViewerCommand command) {
     case ViewerCommand::LightMarkers: settings_.lightLabels = !settings_.lightLabels; break;
     case ViewerCommand::Formula: settings_.showFormula = !settings_.showFormula; break;
     case ViewerCommand::ShaderSection: settings_.shaderOverView = !settings_.shaderOverView; break;
-    case ViewerCommand::ResetCamera: document_.resetCamera(); break;
-    case ViewerCommand::FrameModel: document_.frameModel(); break;
+    case ViewerCommand::ResetCamera: document_.resetCamera(), cameraMoved(); break;
+    case ViewerCommand::FrameModel: document_.frameModel(), cameraMoved(); break;
     case ViewerCommand::NextPreset: case ViewerCommand::PreviousPreset: case ViewerCommand::FirstPreset:
     case ViewerCommand::LastPreset: case ViewerCommand::ResetPreset: runPlaylistCommand(command); break;
     case ViewerCommand::UiLarger: setUiScale(uiScale_ * 1.25f); break;
@@ -645,8 +682,9 @@ void Viewer::advanceAnimation() {
         playing_ = false;
         setStatus(e.what(), true);
     }
-    char text[64];
-    std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);
+    char text[96];
+    if (options_.frames > 0) std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);  // a scripted run: 1/30 s a frame
+    else std::snprintf(text, sizeof text, "%.2f s of %.2f s (at most %d frames/s)", t, loop, frameCapHz());
     status_.animation = text;
     status_.playing = playing_;
     const auto now = std::chrono::steady_clock::now();
@@ -711,8 +749,8 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
     if (r.msaa > 0) msaaSamples_ = r.msaa;
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
-    if (r.resetCamera) document_.resetCamera();
-    if (r.frameModel) document_.frameModel();
+    if (r.resetCamera) document_.resetCamera(), cameraMoved();
+    if (r.frameModel) document_.frameModel(), cameraMoved();
     if (r.modelCamera >= 0) {
         // Through the model's camera, as --camera N: no longer framed by shadelab (F or R frame again).
         document_.edit().modelCamera = r.modelCamera;
@@ -790,6 +828,9 @@ void Viewer::showingPreset(const std::string& what) {
     const Preset& p = playlist_.preset(playlist_.current());
     settings_.scenePath = p.path;
     settings_.selectedObject = 0;
+    // --animate with a playlist: every preset plays it from its start (also after one it did not fit).
+    animationSeconds_ = 0.0;
+    playing_ = !options_.animations.empty();
     if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
     if (options_.verbose) std::cerr << "shadelab: " << what << p.path << "\n";
 }
@@ -1020,6 +1061,7 @@ void Viewer::setProbe(int x, int y) {
     }
     probeAnchor_ = r.anchor;
     probeGeometry_ = document_.geometry();
+    settings_.scrollToProbe = true;  // the panel shows its Probe section, wherever it was scrolled
     setStatus("probe at pixel " + std::to_string(x) + "," + std::to_string(y) + " (Esc clears it)", false);
 }
 
@@ -1046,6 +1088,12 @@ std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std:
     ImGui::PopFont();
     for (const ProbeArrow& a : labelled) arrows.push_back(a.arrow);
     return arrows;
+}
+
+// The camera jumped (R, F): a message about the old view ("probe at pixel ...") would lie over the new
+// one (the probe's arrows run through it), so it goes; errors stay.
+void Viewer::cameraMoved() {
+    if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
 }
 
 void Viewer::setStatus(std::string message, bool isError) {

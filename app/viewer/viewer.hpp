@@ -14,6 +14,7 @@
 #include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
 #include "render/renderer.hpp"
+#include "viewer/frame_rate.hpp"
 #include "viewer/glfw_window.hpp"
 #include "viewer/imgui_layer.hpp"
 #include "viewer/panel.hpp"
@@ -131,6 +132,8 @@ private:
     void reloadShaders();
     void readShaderSources(const ShaderLibrary& shaders);  // for the panel's Shader section
     void setStatus(std::string message, bool isError);
+    void cameraMoved();
+    Layout layoutBeforeToggle_ = Layout::Single;  // what C or D pressed again goes back to
     // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
     // the same surface point with the scene as it is then.
     void setProbe(int x, int y);
@@ -168,6 +171,7 @@ private:
     int framesToDraw_ = 2;
     double frameMs_ = 0.0;
     std::vector<double> frameTimes_;            // every frame's own time, for -v's median at the end
+    FrameRate frameRate_;                       // the status strip's mean of the last second's frames
     // Anti-aliasing: the multisampled target, its samples, whether the GL is a software rasterizer
     // (there only a still view is drawn anti-aliased: 4x costs several times a frame on llvmpipe), and
     // whether the last frame was.
@@ -188,6 +192,10 @@ private:
     std::chrono::steady_clock::time_point animationTick_;
     std::optional<Scene> animatedScene_;
     void advanceAnimation();
+    // The frame cap while an animation plays or a recording runs (the display's refresh, else 60 Hz).
+    int frameCapHz() const;
+    void waitForRefresh();
+    std::chrono::steady_clock::time_point frameBegun_;
     // Ctrl+R / the record button: recording the view as shown to a timestamped MP4 (viewer/view_recorder.hpp).
     std::unique_ptr<ViewRecorder> recording_;
     bool recordToggled_ = false;  // start or stop at this frame's end, once the view is drawn

@@ -19,6 +19,7 @@
             height; a playing k_e ramp shows a large live readout of k_e
   shaderview at 1920x1080, S: the shader's lines over the view are at least 2% of the window's height
             tall (a term line's bar) and the wrapped code reaches across the box
+  animcap   a playing --animate draws at most 60 frames a second (the display's refresh), counted by -v
   slides    at 1920x1080: the k_e series 04-08 (one caption wraps to two lines) has the very same view
             rectangle and sphere on every slide; compare panes leave a margin (at least 6% of the pane's
             width each side) and a separator line is drawn between them in the window, not in F12's image;
@@ -372,6 +373,22 @@ elif scenario == "shaderview":
     print(f"shader view: ambient bar {best} px tall, {text_far} light pixels between 45% and 60% of the view")
     check(best >= 0.02 * 1080, f"the shader view's lines are {best} px tall (under 2% of the 1080-px window)")
     check(text_far > 500, f"the shader view's code does not reach across 60% of the view ({text_far} pixels)")
+elif scenario == "animcap":
+    # A playing animation draws at most one frame per display refresh (Xvfb reports none or 60 Hz: 60),
+    # not as fast as llvmpipe can: frames counted by -v over the session's length, plus the CPU it took.
+    import re
+    proc, display = start_viewer([shadelab, "--size", "320x180", "--hide-panel", "--animate", "light-orbit"], out)
+    start = time.monotonic()
+    fields = lambda: open(f"/proc/{proc.pid}/stat").read().rsplit(")", 1)[1].split()
+    cpu = lambda: (int(fields()[11]) + int(fields()[12])) / os.sysconf("SC_CLK_TCK")
+    before, t0 = cpu(), time.monotonic()
+    time.sleep(4.0)
+    share = (cpu() - before) / (time.monotonic() - t0)
+    err = quit_viewer(proc, display)
+    elapsed = time.monotonic() - start
+    frames = int(re.search(r"(\d+) frames, median", err).group(1)) if re.search(r"(\d+) frames, median", err) else 0
+    print(f"animation: {frames} frames in {elapsed:.1f} s ({frames / elapsed:.0f} per s), {100 * share:.0f}% of a core")
+    check(0 < frames <= 61 * elapsed + 5, f"{frames} frames in {elapsed:.1f} s: more than 60 a second")
 elif scenario == "lightdrag":
     # A point light on the viewing axis, between the eye (0, 1.5, 4.8) and the target: its marker is
     # at the view's centre, (400, 300) in the view, (400, 324) on the screen under the status strip.
