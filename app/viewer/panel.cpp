@@ -707,7 +707,10 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
     char timing[64] = "idle";
     const double ms = status.frameMs;
     if (!status.idle) {  // no frame in the last second yet: the first one after a sleep
-        if (ms > 0.0) std::snprintf(timing, sizeof timing, "%.1f ms (%.0f FPS)", ms, 1000.0 / ms);
+        if (ms > 0.0 && status.movingScale < 1.0f)
+            std::snprintf(timing, sizeof timing, "%.1f ms (%.0f FPS, moving at %.0f%%)", ms, 1000.0 / ms,
+                          100.0 * double(status.movingScale));
+        else if (ms > 0.0) std::snprintf(timing, sizeof timing, "%.1f ms (%.0f FPS)", ms, 1000.0 / ms);
         else std::snprintf(timing, sizeof timing, "\u2026 ms");
     }
     char text[512];

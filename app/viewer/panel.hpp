@@ -69,6 +69,7 @@ struct PanelStatus {
     bool scrollToPreset = false;
     double frameMs = 0.0;             // the mean own time (no waiting for input) of the last second's frames; 0: none
     bool idle = false;                // nothing more is drawn after this frame until an event (render on demand)
+    float movingScale = 1.0f;         // a moving frame drawn smaller (software GL): its share of the view per axis
     float uiScale = 1.0f;             // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
     int msaa = 1;                     // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;

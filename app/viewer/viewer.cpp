@@ -69,6 +69,10 @@ constexpr float kOrbitRadPerUnit = 0.008f;
 // kPassBudgetMs and halved while it takes under a quarter of that (llvmpipe at 1280x720: an 8x8 light
 // with shadows settles at 8, one sample a frame).
 constexpr double kPassBudgetMs = 90.0;
+// Moving frames on a software rasterizer (Viewer::drawView): their own time aimed at, for 30 FPS while a
+// lecturer drags, and the smallest share of the view's size per axis they may be drawn at.
+constexpr double kMovingBudgetMs = 30.0;
+constexpr float kMinMovingScale = 0.35f;
 int adaptStride(int stride, int samples, double lastPassMs) {
     if (stride <= 0) {
         stride = 1;
@@ -214,6 +218,7 @@ bool Viewer::idle() const {
     if (framesToDraw_ > 0 || window_.eventCount() != eventsSeen_) return false;
     if (playing_ || recording_) return false;  // an animation keeps drawing; a paused one does not
     if (msaaSamples_ > 1 && !antiAliased_) return false;  // one more frame: the still view anti-aliased
+    if (reducedThisFrame_) return false;                  // one more: the still view at full size
     if (progressiveFrom_ && !progressiveComplete_) return false;  // sampling goes on
     const ImGuiIO& io = ImGui::GetIO();
     for (bool down : io.MouseDown)
@@ -410,9 +415,42 @@ Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::v
     for (bool down : ImGui::GetIO().MouseDown) mouseDown = mouseDown || down;
     antiAliasThisFrame_ =
         msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown && !playing_) || captureView || last);
+    // A moving frame on a software rasterizer: smaller while the last moving frames took longer than
+    // kMovingBudgetMs, larger again while they took under half of it (never for files or a scripted run).
+    const bool moving = softwareGl_ && options_.frames == 0 && !captureView && !last && (mouseDown || playing_);
+    if (moving && movingLastFrame_) {
+        if (frameMs_ > kMovingBudgetMs)
+            movingScale_ = std::max(kMinMovingScale, movingScale_ * float(std::sqrt(kMovingBudgetMs / frameMs_)) * 0.95f);
+        else if (frameMs_ < 0.5 * kMovingBudgetMs)
+            movingScale_ = std::min(1.0f, movingScale_ * 1.1f);
+    }
+    movingLastFrame_ = moving;
+    reducedThisFrame_ = moving && movingScale_ < 0.98f;
+    status_.movingScale = reducedThisFrame_ ? movingScale_ : 1.0f;
     const Image view = renderView(l, captureView, last, arrows);
-    antiAliased_ = antiAliasThisFrame_;
+    antiAliased_ = antiAliasThisFrame_ && !reducedThisFrame_;
     return view;
+}
+
+RenderTarget Viewer::beginReduced(int width, int height) {
+    if (!reduced_.framebuffer || reduced_.width != width || reduced_.height != height) {
+        GLuint ids[3] = {};
+        glGenFramebuffers(1, &ids[0]);
+        glGenRenderbuffers(2, &ids[1]);
+        reduced_ = ReducedTarget{gl::Framebuffer(ids[0]), gl::Renderbuffer(ids[1]), gl::Renderbuffer(ids[2]), width, height};
+        glBindRenderbuffer(GL_RENDERBUFFER, ids[1]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+        glBindRenderbuffer(GL_RENDERBUFFER, ids[2]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, ids[0]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ids[1]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ids[2]);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            reduced_ = ReducedTarget{};
+            throw std::runtime_error("the reduced moving-frame framebuffer is not complete on this GL");
+        }
+    }
+    return RenderTarget{reduced_.framebuffer.get(), width, height};
 }
 
 // The frame's own time (polling to swap, no waiting), for the status strip and -v's median.
@@ -871,6 +909,20 @@ Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const st
     }
     const RenderTarget view{0, l.viewWidth, l.viewHeight};
     try {
+        if (reducedThisFrame_) {  // a moving frame, smaller, magnified into the view (no anti-aliasing)
+            const RenderTarget small = beginReduced(std::max(int(std::lround(float(l.viewWidth) * movingScale_)), 1),
+                                                    std::max(int(std::lround(float(l.viewHeight) * movingScale_)), 1));
+            renderScene(small, false);
+            OverlayOptions overlays = settings_.overlays;
+            overlays.lineWidth = std::max(2.0f * imgui_.scale() * movingScale_, 1.0f);
+            overlays_->render(animatedScene_ ? *animatedScene_ : document_.scene(), small, overlays, arrows);
+            glDisable(GL_SCISSOR_TEST);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, small.framebuffer);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            glBlitFramebuffer(0, 0, small.width, small.height, 0, 0, view.width, view.height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            return {};
+        }
         const RenderTarget target = msaa_.begin(view, antiAliasThisFrame_ ? msaaSamples_ : 1);
         renderScene(target, capture || last);
         // Lines 2 pixels wide at scale 1, thicker with the content and UI scale.

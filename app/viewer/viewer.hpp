@@ -11,6 +11,7 @@
 #include "core/scene/scene.hpp"
 #include "core/ui/controls.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "render/gl_handles.hpp"
 #include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
 #include "render/renderer.hpp"
@@ -176,6 +177,20 @@ private:
     // (there only a still view is drawn anti-aliased: 4x costs several times a frame on llvmpipe), and
     // whether the last frame was.
     MultisampleTarget msaa_;
+    // Moving frames on a software rasterizer (issue 31, item 12): while the view is dragged, a slider
+    // held or an animation plays, the scene is drawn into a framebuffer `movingScale_` of the view's
+    // size per axis and magnified into it; the scale follows the moving frames' time (aiming at 30
+    // FPS); a still view is drawn at full size (and anti-aliased) again.
+    struct ReducedTarget {
+        gl::Framebuffer framebuffer;
+        gl::Renderbuffer color, depth;
+        int width = 0, height = 0;
+    };
+    ReducedTarget reduced_;
+    float movingScale_ = 1.0f;
+    bool movingLastFrame_ = false;
+    bool reducedThisFrame_ = false;
+    RenderTarget beginReduced(int width, int height);
     int msaaSamples_ = 1;
     bool softwareGl_ = false;
     bool antiAliased_ = false;
