@@ -7,7 +7,7 @@ after F5 a second time.
 
 usage: shader_reload.py SHADELAB SHADER_SOURCE_DIR OUTDIR     (inside an X server: see xvfb_run.sh)
 """
-import os, shutil, struct, sys, zlib
+import os, shutil, struct, sys, time, zlib
 
 from xinput import quit_viewer, screenshot, start_viewer
 
@@ -100,6 +100,7 @@ for name, keys in (("compare", ["F5"]), ("compare-F5-twice", ["F5", "F5"]), ("si
         f.write("this is not GLSL;\n")
     for key in keys:
         display.key(key)
+    time.sleep(2.0)  # the frames after F5: the error's tab selected, then its line scrolled to (a frame each)
     quit_viewer(proc, display)
     open(phong, "w").write(good)
     rows = red_rows(window, 10, 370) if os.path.exists(window) else 0
