@@ -347,16 +347,19 @@ FormulaOverlay layoutFormulaOverlay(const FormulaInput& in, float viewWidth, flo
     o.formula = layoutFormulaToFit(in, kFormulaSize * fontSize, viewWidth - 2.0f * margin, metrics);
     o.x = std::round(std::max(0.5f * (viewWidth - o.formula.width), 0.0f));
     o.y = std::round(viewHeight - margin - o.formula.height);
+    // One size for every pane's line: where a pane is narrower than its line, all get smaller (down to
+    // 60%; a line still too wide is cut), so no pane's note reads smaller than its neighbours'.
+    float noteSize = 1.1f * fontSize;
+    for (const FormulaPane& p : panes) {
+        const float width = metrics.width(evaluatedWhere(p.mode, p.difference), 1.1f * fontSize);
+        if (width > p.width * 0.95f)
+            noteSize = std::min(noteSize, 1.1f * fontSize * std::max(p.width * 0.95f / std::max(width, 1.0f), 0.6f));
+    }
     for (const FormulaPane& p : panes) {
         FormulaNote n;
         n.text = evaluatedWhere(p.mode, p.difference);
-        n.size = 1.1f * fontSize;
+        n.size = noteSize;
         n.width = metrics.width(n.text, n.size);
-        // A pane narrower than its line gets a smaller one (down to 60%), then a cut one.
-        if (n.width > p.width * 0.95f) {
-            n.size *= std::max(p.width * 0.95f / std::max(n.width, 1.0f), 0.6f);
-            n.width = metrics.width(n.text, n.size);
-        }
         n.pad = 0.3f * n.size;
         n.x = std::round(p.x + std::max(0.5f * (p.width - n.width), n.pad));
         n.y = std::round(std::min(o.y, p.y + p.height) - margin - n.size - n.pad);
