@@ -334,7 +334,7 @@ const OptionSpec kOptions[] = {
     // Animations and videos (core/scene/animation.hpp, video/video_encoder.hpp; checked in options.cpp).
     {"--animate", "", "SPEC", G::General, kNoBounds, nullptr, "",
      "with `--output FILE.gif|.mp4|.webm`: render an animation to a video; without, the viewer plays it (Space "
-     "pauses). Repeatable (at most {max-animations}, "
+     "pauses; with `--playlist` on every preset, from its start at each slide, capped at the display's refresh). Repeatable (at most {max-animations}, "
      "all at once). SPEC: `light-orbit[:SECONDS]` (the first light circles the camera's target at its height), "
      "`camera-orbit[:SECONDS]` (a turntable about the target and the up axis), or a ramp `PARAM=A..B[:log][:SECONDS]` "
      "of any `--sweep` parameter from A to B (`:log`: equal ratios, e.g. `ke=1..1000:log`; names switch half way). "
@@ -467,8 +467,8 @@ const OptionSpec kOptions[] = {
      "start with light N selected in the panel (an area light shows its samples)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.selectLight = intIn(self, v); }},
     {"--ui-scale", "", "S", G::Viewer, bounds(kUiScaleRange), nullptr, "",
-     "panel, captions, pane labels, HUD and probe labels S times larger ({range}, on top of the monitor's content "
-     "scale); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer",
+     "panel and HUD S times larger ({range}, on top of the monitor's content scale; the text over the view, "
+     "captions and labels, is at least 2.4% of the window's height whatever S is); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.uiScale = floatIn(self, v); }},
     {"--fullscreen", "", "", G::Viewer, kNoBounds, nullptr, "", "cover the whole monitor (F11 toggles)",
      setTrue<&Options::fullscreen>},

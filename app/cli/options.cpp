@@ -32,9 +32,10 @@ std::string groupNames(OptionGroup group) {
     return list;
 }
 
-// The first option given that asks for a run other than one image (--reference and --animate refuse them).
-const char* otherRun(const Options& o) {
-    return o.playlist            ? "--playlist"
+// The first option given that asks for a run other than one image (--reference and --animate refuse them;
+// --animate plays on a playlist's presets in the viewer: `playlist` false leaves it out).
+const char* otherRun(const Options& o, bool playlist = true) {
+    return o.playlist && playlist ? "--playlist"
            : !o.sweeps.empty()   ? "--sweep"
            : o.probe             ? "--probe"
            : o.benchmarkFrames   ? "--benchmark"
@@ -85,7 +86,11 @@ void checkAnimation(const Options& o) {
         if (flag) throw InputError(std::string(flag) + ": sets up the --animate video: give --animate SPEC and --output FILE.gif|.mp4|.webm");
         return;
     }
-    const char* other = otherRun(o) ? otherRun(o)
+    // With --playlist the viewer plays the animation on every preset; a video is of one scene.
+    if (o.playlist && o.output)
+        throw InputError("--animate: with --playlist the viewer plays it on every preset; a video (--output) is of one "
+                         "scene: give that preset's file instead of --playlist");
+    const char* other = otherRun(o, false) ? otherRun(o, false)
                         : o.plot        ? "--plot"
                         : o.reference   ? "--reference"
                         : o.captions    ? "--captions"

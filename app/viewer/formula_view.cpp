@@ -17,8 +17,9 @@ ImU32 imColor(Rgba8 c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 }  // namespace
 
 float drawFormulaOverView(const Scene& scene, const Material& material, const ProbeResult* probe, const UiRect& view,
-                          float framebufferScale, ImFont* font) {
+                          float framebufferScale, ImFont* font, float textSize) {
     if (!font) font = ImGui::GetFont();
+    if (textSize <= 0.0f) textSize = ImGui::GetFontSize();
     const TextMetrics metrics{[font](const std::string& s, float size) {
                                   return font->CalcTextSizeA(size, FLT_MAX, 0.0f, s.c_str()).x;
                               },
@@ -26,11 +27,12 @@ float drawFormulaOverView(const Scene& scene, const Material& material, const Pr
     const bool hit = probe && !probe->miss;
     FormulaInput in = formulaInput(scene, hit ? probe->material : material);
     if (hit) in.probed = probedTerms(*probe), in.probedAt = probedPlace(*probe);
+    in.valueSize = 1.0f;
     std::vector<FormulaPane> panes;
     for (const Pane& p : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff))
         panes.push_back({float(p.x) / framebufferScale, float(p.y) / framebufferScale, float(p.width) / framebufferScale,
                          float(p.height) / framebufferScale, p.mode, p.difference});
-    const FormulaOverlay o = layoutFormulaOverlay(in, view.width, view.height, panes, ImGui::GetFontSize(), metrics);
+    const FormulaOverlay o = layoutFormulaOverlay(in, view.width, view.height, panes, textSize, metrics);
 
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const ImU32 backing = IM_COL32(0, 0, 0, kFormulaBackingAlpha);

@@ -14,7 +14,10 @@ namespace shadelab {
 // `view`: the 3D view in ImGui units; `framebufferScale` converts the panes' pixels to them. Returns
 // the overlay's top (ImGui units), so the status message can sit above it. `font`: the panel's font
 // rasterised at the formula's size (ImGuiLayer::formulaFont); null: the current font, magnified.
+// `textSize`: the text size the layout is for (its main line kFormulaSize times that; 0: the current
+// font's). The values under the symbols are drawn as large as the symbols (read from the back of a
+// hall; the PNG keeps them smaller).
 float drawFormulaOverView(const Scene& scene, const Material& material, const ProbeResult* probe, const UiRect& view,
-                          float framebufferScale, ImFont* font = nullptr);
+                          float framebufferScale, ImFont* font = nullptr, float textSize = 0.0f);
 
 }  // namespace shadelab

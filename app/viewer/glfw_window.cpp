@@ -113,6 +113,13 @@ void GlfwWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeo
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
 void GlfwWindow::setSwapInterval(int interval) { glfwSwapInterval(interval); }
 
+int GlfwWindow::refreshRate() const {
+    GLFWmonitor* monitor = glfwGetWindowMonitor(window_);
+    if (!monitor) monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    return mode ? mode->refreshRate : 0;
+}
+
 bool GlfwWindow::fullscreen() const { return glfwGetWindowMonitor(window_) != nullptr; }
 
 WindowPlacement GlfwWindow::placement() const {

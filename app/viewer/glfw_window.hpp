@@ -45,6 +45,9 @@ public:
     void swapBuffers();
     // 0: as fast as possible (scripted runs), 1: follow the display's refresh.
     void setSwapInterval(int interval);
+    // The refresh rate of the monitor the window is on (the primary one when windowed), in Hz; 0 when
+    // unknown.
+    int refreshRate() const;
 
     // F11: the whole primary monitor, and back to where the window was.
     void setFullscreen(bool on);

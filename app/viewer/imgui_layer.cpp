@@ -1,7 +1,5 @@
 #include "viewer/imgui_layer.hpp"
 
-#include "core/figures/formula.hpp"
-
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -9,6 +7,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <cstdio>
@@ -79,13 +78,16 @@ void ImGuiLayer::buildFonts() {
     // Checked first: Debian's Dear ImGui is built with asserts, and a missing file aborts in it.
     trueType_ = std::filesystem::is_regular_file(kFontPath) &&
                 io.Fonts->AddFontFromFileTTF(kFontPath, pixels, &config, kGlyphRanges) != nullptr;
-    monoFont_ = formulaFont_ = nullptr;
-    if (trueType_ && std::filesystem::is_regular_file(kMonoFontPath))
-        monoFont_ = io.Fonts->AddFontFromFileTTF(kMonoFontPath, std::round(0.9f * pixels), &config, kGlyphRanges);
-    // The formula's main line is drawn at kFormulaSize times the text: rasterised at that size, so it is
-    // crisp on a projector rather than a magnified bitmap.
-    if (trueType_)
-        formulaFont_ = io.Fonts->AddFontFromFileTTF(kFontPath, std::round(kFormulaSize * pixels), &config, kFormulaGlyphRanges);
+    monoFont_ = formulaFont_ = viewFont_ = viewMonoFont_ = nullptr;
+    const bool mono = trueType_ && std::filesystem::is_regular_file(kMonoFontPath);
+    if (mono) monoFont_ = io.Fonts->AddFontFromFileTTF(kMonoFontPath, std::round(0.9f * pixels), &config, kGlyphRanges);
+    // The view's text and the formula's main line: rasterised at their sizes, so they are crisp on a
+    // projector rather than a magnified bitmap.
+    if (trueType_) {
+        viewFont_ = io.Fonts->AddFontFromFileTTF(kFontPath, viewText_, &config, kGlyphRanges);
+        formulaFont_ = io.Fonts->AddFontFromFileTTF(kFontPath, formulaMain_, &config, kFormulaGlyphRanges);
+    }
+    if (mono) viewMonoFont_ = io.Fonts->AddFontFromFileTTF(kMonoFontPath, viewText_, &config, kGlyphRanges);
     if (!trueType_) {
         std::fprintf(stderr, "shadelab: %s not found (Debian: fonts-dejavu-core): using ImGui's bitmap font\n", kFontPath);
         ImFontConfig fallback;
@@ -100,7 +102,20 @@ void ImGuiLayer::buildFonts() {
     // panel's pixels do not depend on what is under it, so it can be cached (see render).
     style.Colors[ImGuiCol_WindowBg].w = 1.0f;
     style.WindowBorderSize = 0.0f;
+    // A slider's handle half transparent and narrow, so the digits of the value under it stay readable.
+    style.Colors[ImGuiCol_SliderGrab].w = 0.55f;
+    style.Colors[ImGuiCol_SliderGrabActive].w = 0.7f;
+    style.GrabMinSize = 6.0f;
     style.ScaleAllSizes(scale_);
+}
+
+void ImGuiLayer::setViewTextSize(float text, float formulaMain) {
+    text = std::max(std::round(text), 1.0f), formulaMain = std::max(std::round(formulaMain), 1.0f);
+    if (text == viewText_ && formulaMain == formulaMain_) return;
+    viewText_ = text, formulaMain_ = formulaMain;
+    buildFonts();
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
 }
 
 void ImGuiLayer::setScale(float scale) {

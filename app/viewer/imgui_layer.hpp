@@ -29,9 +29,18 @@ public:
     float scale() const { return scale_; }
     // Whether the panel's font is DejaVu Sans (false: it was not found and ImGui's bitmap font is used).
     bool trueTypeFont() const { return trueType_; }
-    // DejaVu Sans Mono at about the text's size (the Shader section's code), and DejaVu Sans at the
-    // formula overlay's size; null where the font files are missing.
+    // DejaVu Sans Mono at about the text's size (the Shader section's code); null where the font
+    // files are missing.
     ImFont* monoFont() const { return monoFont_; }
+    // The text over the 3D view (captions, labels, the formula, the readout) has its own size, from
+    // the window's height rather than the panel's scale: `text` is its size and `formulaMain` the
+    // formula's main line (ImGui units). The fonts are rasterised again when a size changes by a
+    // whole pixel (a resize). Between frames only.
+    void setViewTextSize(float text, float formulaMain);
+    // DejaVu Sans at the view text's size, its monospaced cut at the same size (the shader view over
+    // the picture), and DejaVu Sans at the formula's main line; null where the font files are missing.
+    ImFont* viewFont() const { return viewFont_; }
+    ImFont* viewMonoFont() const { return viewMonoFont_; }
     ImFont* formulaFont() const { return formulaFont_; }
 
     // Dear ImGui 1.86 reads key state once a frame: a key pressed and released within one frame (a
@@ -68,6 +77,9 @@ private:
     bool trueType_ = false;
     ImFont* monoFont_ = nullptr;
     ImFont* formulaFont_ = nullptr;
+    ImFont* viewFont_ = nullptr;
+    ImFont* viewMonoFont_ = nullptr;
+    float viewText_ = 16.0f, formulaMain_ = 24.0f;  // whole pixels
     std::vector<int> held_;
 };
 

@@ -1,5 +1,6 @@
 #include "viewer/panel.hpp"
 
+#include "core/figures/formula.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/ui/controls.hpp"
 #include "core/ui/panel_sections.hpp"
@@ -36,10 +37,17 @@ bool colorEdit(const char* label, glm::vec3& color) {
     return true;
 }
 
-bool coefficient(const char* label, float& value, float sliderMax) {
-    if (!ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f")) return false;
-    value = std::clamp(value, kCoefficientRange.lo, kCoefficientRange.hi);
-    return true;
+// While the widget just drawn is dragged (or typed into), its value for the large readout over the
+// view ("k_e = 37.2", issue 31): the panel's numbers are too small for a hall.
+void readoutWhileActive(std::string& readout, const char* name, float value) {
+    if (ImGui::IsItemActive()) readout = std::string(name) + " = " + formulaNumber(value);
+}
+
+bool coefficient(const char* label, float& value, float sliderMax, std::string& readout, const char* name) {
+    const bool changed = ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f");
+    if (changed) value = std::clamp(value, kCoefficientRange.lo, kCoefficientRange.hi);
+    readoutWhileActive(readout, name, value);
+    return changed;
 }
 
 template <typename E>
@@ -149,15 +157,16 @@ void sectionShading(Scene& scene) {
 }
 
 // `reflection`: anisotropy is Blinn-Phong's lobe; under Phong its controls are greyed out (and not applied).
-void sectionMaterial(Material& m, ReflectionModel reflection) {
+void sectionMaterial(Material& m, ReflectionModel reflection, std::string& readout) {
     colorEdit("colour C", m.color);
     colorEdit("specular S", m.specularColor);
-    coefficient("k_a ambient", m.ka, 1.0f);
-    coefficient("k_d diffuse", m.kd, 1.0f);
-    coefficient("k_s specular", m.ks, 1.0f);
+    coefficient("k_a ambient", m.ka, 1.0f, readout, "k_a");
+    coefficient("k_d diffuse", m.kd, 1.0f, readout, "k_d");
+    coefficient("k_s specular", m.ks, 1.0f, readout, "k_s");
     // The exponent is what the lecture sweeps: a logarithmic slider gives 1..10 as much travel as 100..1000.
     if (ImGui::SliderFloat("k_e exponent", &m.ke, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.ke = std::clamp(m.ke, kExponentRange.lo, kExponentRange.hi);
+    readoutWhileActive(readout, "k_e", m.ke);
     // Anisotropic reflection (brushed metal): Ashikhmin and Shirley's k_t along the tangent, k_b along
     // the bitangent, in place of k_e; logarithmic like k_e. Switching it on starts both at k_e.
     ImGui::BeginDisabled(reflection != ReflectionModel::BlinnPhong);
@@ -167,8 +176,10 @@ void sectionMaterial(Material& m, ReflectionModel reflection) {
     ImGui::BeginDisabled(!m.anisotropic);
     if (ImGui::SliderFloat("k_t along T", &m.anisotropy.x, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.anisotropy.x = std::clamp(m.anisotropy.x, kExponentRange.lo, kExponentRange.hi);
+    readoutWhileActive(readout, "k_t", m.anisotropy.x);
     if (ImGui::SliderFloat("k_b along B", &m.anisotropy.y, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.anisotropy.y = std::clamp(m.anisotropy.y, kExponentRange.lo, kExponentRange.hi);
+    readoutWhileActive(readout, "k_b", m.anisotropy.y);
     ImGui::EndDisabled();
     ImGui::EndDisabled();
 }
@@ -290,7 +301,7 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
     }
 }
 
-void sectionLights(Scene& scene, int& selected) {
+void sectionLights(Scene& scene, int& selected, std::string& readout) {
     colorEdit("ambient A", scene.ambient);
     ImGui::TextDisabled("click a light's name to select it (again: none)");
     int remove = -1;
@@ -330,6 +341,7 @@ void sectionLights(Scene& scene, int& selected) {
             }
             colorEdit("colour", l.color);
             ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+            readoutWhileActive(readout, "intensity", l.intensity);
             if (l.type != LightType::Directional) {
                 combo("attenuation", l.attenuation, kAttenuationNames);
                 if (l.attenuation == Attenuation::InverseSquare) {
@@ -393,6 +405,7 @@ void sectionOverlays(ViewSettings& s) {
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);
     ImGui::Checkbox("frame time also when Tab hides the panel", &s.readoutWhenHidden);
+    ImGui::Checkbox("view text for a hall (sized from the window's height)", &s.presentationText);
 }
 
 void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
@@ -545,6 +558,7 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
         sectionPlaylist(settings, status, requests);
     // The probe's terms come first: a click on the view is a question the panel answers at once.
+    if (probe && settings.scrollToProbe) ImGui::SetScrollHereY(0.0f), settings.scrollToProbe = false;
     if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
         requests.clearProbe |= probeSection(scene, *probe);
     // A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
@@ -558,26 +572,27 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         return open;
     };
     settings.openSections.clear();
+    settings.readout.clear();
     if (section("Shading", kPanelSections[0], true)) sectionShading(scene);
     settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
     SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
     if (object && section("Material", kPanelSections[1], true)) {
         if (scene.objects.size() > 1)
             ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
-        sectionMaterial(object->material, scene.reflection);
+        sectionMaterial(object->material, scene.reflection, settings.readout);
     }
     if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
         sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight);
     // S opens or closes it, and brings it into view.
     if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
-    if (section("Shader: the GLSL of the pane's mode (S)", kPanelSections[3], false)) {
+    if (section("Shader: the GLSL of the pane's mode (S: large over the view)", kPanelSections[3], false)) {
         if (settings.openShader) ImGui::SetScrollHereY(0.0f);
         sectionShader(scene, settings, status, probe);
     }
     settings.openShader.reset();
     if (object && section("Mesh", kPanelSections[4], true))
         sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
-    if (section("Lights", kPanelSections[5], true)) sectionLights(scene, settings.selectedLight);
+    if (section("Lights", kPanelSections[5], true)) sectionLights(scene, settings.selectedLight, settings.readout);
     if (section("Shadows", kPanelSections[6], true)) sectionShadows(scene.shadows);
     if (section("Overlays", kPanelSections[7], true)) {
         sectionOverlays(settings);
@@ -634,10 +649,10 @@ void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebuffe
     }
 }
 
-float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale) {
+float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale, float fontSize) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     float bottom = view.y;
-    const float fontSize = ImGui::GetFontSize() * 1.4f;  // read from the back of a lecture hall
+    if (fontSize <= 0.0f) fontSize = ImGui::GetFontSize() * 1.4f;  // read from the back of a lecture hall
     const float pad = fontSize * 0.3f;
     const std::string diffLabel = "|" + shadingName(scene.diff.a) + " \u2212 " + shadingName(scene.diff.b) + "| \u00d7 " +
                                   std::to_string(int(std::lround(scene.diff.factor)));
@@ -669,17 +684,20 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
     return bottom;
 }
 
-CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight, float maxZoom) {
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight, float maxZoom,
+                            float viewText) {
     CaptionLayout l;
     if (scene.title.empty() && scene.caption.empty()) return l;
     ImFont* font = ImGui::GetFont();
     // Sizes follow the view's width (a 1000-unit view gets 1.6 times the panel's font for the title,
-    // 1.25 for the caption); smaller in steps while the band would take more than `maxHeight`.
-    float zoom = std::min(std::clamp(width / 1000.0f, 0.7f, 1.25f), maxZoom);
+    // 1.25 for the caption), or the view text's size where that is larger (the caption 1.25 times
+    // it: 3% of the window's height); smaller in steps while the band would take more than `maxHeight`.
+    const float base = std::max(ImGui::GetFontSize() * std::clamp(width / 1000.0f, 0.7f, 1.25f), viewText);
+    float zoom = std::min(1.0f, maxZoom);
     for (int step = 0; step < 8; ++step, zoom *= 0.9f) {
         l.zoom = zoom;
-        l.titleSize = ImGui::GetFontSize() * 1.6f * zoom;
-        l.captionSize = ImGui::GetFontSize() * 1.25f * zoom;
+        l.titleSize = base * 1.6f * zoom;
+        l.captionSize = base * 1.25f * zoom;
         l.pad = l.captionSize * 0.45f;
         const float counterWidth =
             counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;
@@ -722,10 +740,18 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
     const ImVec2 lo(strip.x, strip.y), hi(strip.x + strip.width, strip.y + strip.height);
     draw->PushClipRect(lo, hi, true);
     draw->AddRectFilled(lo, hi, IM_COL32(16, 16, 20, 255));
-    char text[512];
+    char timing[64] = "idle";
     const double ms = status.frameMs;
-    std::snprintf(text, sizeof text, "%.1f ms (%.0f FPS)  \u00b7  %zu triangles  \u00b7  %s%s%s%s%s", ms,
-                  ms > 0.0 ? 1000.0 / ms : 0.0, status.frameTriangles, status.glRenderer.c_str(),
+    if (!status.idle) {  // no frame in the last second yet: the first one after a sleep
+        if (ms > 0.0 && status.movingScale < 1.0f)
+            std::snprintf(timing, sizeof timing, "%.1f ms (%.0f FPS, moving at %.0f%%)", ms, 1000.0 / ms,
+                          100.0 * double(status.movingScale));
+        else if (ms > 0.0) std::snprintf(timing, sizeof timing, "%.1f ms (%.0f FPS)", ms, 1000.0 / ms);
+        else std::snprintf(timing, sizeof timing, "\u2026 ms");
+    }
+    char text[512];
+    std::snprintf(text, sizeof text, "%s  \u00b7  %zu triangles  \u00b7  %s%s%s%s%s", timing, status.frameTriangles,
+                  status.glRenderer.c_str(),
                   status.progress.empty() ? "" : "  \u00b7  ", status.progress.c_str(),
                   status.animation.empty() ? "" : status.playing ? "  \u00b7  playing " : "  \u00b7  paused at ",
                   status.animation.c_str());
@@ -800,10 +826,69 @@ struct LightLabelStyle {
     ImDrawList* draw;
     float font, thick, ring;  // text size, line width, marker radius
 };
+// A model's outline in the pane, for the labels to keep off: the disc its bounding sphere covers.
+struct ModelDisc {
+    ImVec2 centre;
+    float radius;
+};
 struct LightLabelArea {
     ImVec2 lo, hi;
     ImVec2 centre;
+    std::vector<ModelDisc> models;
 };
+
+bool boxOnModel(const LightLabelArea& a, ImVec2 lo, ImVec2 hi) {
+    for (const ModelDisc& m : a.models) {
+        const float dx = std::clamp(m.centre.x, lo.x, hi.x) - m.centre.x, dy = std::clamp(m.centre.y, lo.y, hi.y) - m.centre.y;
+        if (dx * dx + dy * dy < m.radius * m.radius) return true;
+    }
+    return false;
+}
+
+// A marker's label where it covers no model (issue 31: "0 point" over all three spheres): beside the
+// marker at `at` (right, left, above, below, `gap` away), else moved out along the line from the
+// model's centre through the marker until it clears every model, tied to the marker by a thin line.
+// Where nothing is clear (a model filling the pane) it stays beside the marker.
+UiRect placeLabel(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, float gap, const std::string& label,
+                  ImU32 colour) {
+    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str());
+    const float pad = s.font * 0.3f;
+    // The text's top-left corner kept inside the area, as labelBox does.
+    const auto inside = [&](ImVec2 p) {
+        return ImVec2(std::max(std::min(p.x, a.hi.x - size.x - pad), a.lo.x + pad),
+                      std::max(std::min(p.y, a.hi.y - size.y - pad), a.lo.y + pad));
+    };
+    const auto clear = [&](ImVec2 p) {
+        return !boxOnModel(a, ImVec2(p.x - pad, p.y - pad), ImVec2(p.x + size.x + pad, p.y + size.y + pad));
+    };
+    const ImVec2 beside[] = {ImVec2(at.x + gap, at.y - size.y * 0.5f), ImVec2(at.x - gap - size.x, at.y - size.y * 0.5f),
+                             ImVec2(at.x - size.x * 0.5f, at.y - gap - size.y), ImVec2(at.x - size.x * 0.5f, at.y + gap)};
+    for (const ImVec2& p : beside)
+        if (clear(inside(p))) return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
+    // Out from the nearest model's centre (up when the marker is at it), a third of the font a step.
+    const ModelDisc* nearest = nullptr;
+    float best = 1e30f;
+    for (const ModelDisc& m : a.models) {
+        const float d = std::hypot(at.x - m.centre.x, at.y - m.centre.y) - m.radius;
+        if (d < best) best = d, nearest = &m;
+    }
+    if (nearest) {
+        ImVec2 u(at.x - nearest->centre.x, at.y - nearest->centre.y);
+        const float len = std::hypot(u.x, u.y);
+        u = len > 1e-3f ? ImVec2(u.x / len, u.y / len) : ImVec2(0.0f, -1.0f);
+        const float reach = std::hypot(a.hi.x - a.lo.x, a.hi.y - a.lo.y);
+        for (float t = gap; t < reach; t += s.font * 0.33f) {
+            const ImVec2 c(at.x + u.x * t, at.y + u.y * t);  // the box's centre, then its nearest point to the marker
+            const ImVec2 p = inside(ImVec2(c.x - size.x * 0.5f + u.x * size.x * 0.5f, c.y - size.y * 0.5f + u.y * size.y * 0.5f));
+            if (!clear(p)) continue;
+            const ImVec2 near(std::clamp(at.x, p.x - pad, p.x + size.x + pad), std::clamp(at.y, p.y - pad, p.y + size.y + pad));
+            const float dx = near.x - at.x, dy = near.y - at.y, d = std::hypot(dx, dy);
+            if (d > s.ring) s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour, 1.0f + s.thick * 0.4f);
+            return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
+        }
+    }
+    return labelBox(s.draw, s.font, beside[0], label, colour, a.lo, a.hi);
+}
 
 // A directional light: an arrow from `from` along the light's travel to `to`; its tail is the handle
 // that drags the direction, and the label sits beside it.
@@ -816,15 +901,15 @@ UiRect drawDirectionArrow(const LightLabelStyle& s, const LightLabelArea& a, ImV
     const float head = s.font * 0.7f;
     s.draw->AddTriangleFilled(to, ImVec2(to.x - u.x * head + n.x * head * 0.5f, to.y - u.y * head + n.y * head * 0.5f),
                               ImVec2(to.x - u.x * head - n.x * head * 0.5f, to.y - u.y * head - n.y * head * 0.5f), colour);
-    return labelBox(s.draw, s.font, ImVec2(from.x + s.ring * 0.5f, from.y - s.font * 1.4f), label, colour, a.lo, a.hi);
+    return placeLabel(s, a, from, s.ring, label, colour);
 }
 
-// A light in view: a ring and a dot at it, the label to its right.
+// A light in view: a ring and a dot at it, the label beside it off the models (placeLabel).
 UiRect drawLightMarker(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, const std::string& label,
                        ImU32 colour) {
     s.draw->AddCircle(at, s.ring, colour, 24, s.thick);
     s.draw->AddCircleFilled(at, s.thick, colour);
-    return labelBox(s.draw, s.font, ImVec2(at.x + s.ring * 1.4f, at.y - s.font * 0.5f), label, colour, a.lo, a.hi);
+    return placeLabel(s, a, at, s.ring * 1.4f, label, colour);
 }
 
 // A light outside the pane (or behind the eye, `behind`): an arrow at the border pointing toward `at`,
@@ -853,13 +938,18 @@ UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
         pos.x = u.x > 0.0f ? tip.x + head * 0.6f : tip.x - head * 0.6f - size.x;
         pos.y = u.y > 0.0f ? tip.y - head * 1.2f - size.y : tip.y + head * 1.2f;
     }
-    return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
+    const float pad = s.font * 0.3f;
+    pos.x = std::max(std::min(pos.x, a.hi.x - size.x - pad), a.lo.x + pad);
+    pos.y = std::max(std::min(pos.y, a.hi.y - size.y - pad), a.lo.y + pad);
+    if (!boxOnModel(a, ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad)))
+        return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
+    return placeLabel(s, a, tip, head * 1.2f, label, colour);  // a model reaches the border there
 }
 
 }  // namespace
 
 std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
-                                    float top) {
+                                    float top, const std::vector<BoundingSphere>& models) {
     std::vector<UiRect> boxes;
     if (scene.lights.empty()) return boxes;
     const float font = ImGui::GetFontSize();
@@ -871,9 +961,23 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
         // Labels and border arrows stay below the pane labels (`top`).
         const float y0 = std::min(std::max(paneTop, top), y1);
         style.draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
-        const LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f)};
+        LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f), {}};
         // projectToImage gives image pixels of the whole view (the pane's offset included).
         auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
+        // Each model's disc: its bounding sphere's centre and the farthest of four points on its rim
+        // across the view (a sphere off the axis projects a little wider than its centre's distance says).
+        const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+        const glm::vec3 right = glm::normalize(glm::cross(forward, scene.camera.up)), up = glm::cross(right, forward);
+        for (const BoundingSphere& m : models) {
+            const glm::vec3 c = projectToImage(scene.camera, pane, m.center);
+            if (!(c.z > 0.0f) || m.radius <= 0.0f) continue;
+            float radius = 0.0f;
+            for (const glm::vec3& rim : {right, -right, up, -up}) {
+                const glm::vec3 p = projectToImage(scene.camera, pane, m.center + rim * m.radius);
+                if (p.z > 0.0f) radius = std::max(radius, glm::length(glm::vec2(p) - glm::vec2(c)));
+            }
+            area.models.push_back({toUi(c), radius * 1.05f / framebufferScale});
+        }
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& l = scene.lights[i];
             const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);

@@ -28,6 +28,10 @@ struct ViewSettings {
     bool lightLabels = true;       // L: each light's marker, number and kind drawn over the view
     bool showFormula = false;      // E, --formula: the lecture's formula over the view (viewer/formula_view.hpp)
     bool readoutWhenHidden = true; // Tab keeps the frame-time strip (a switch in the Overlays section)
+    // The text over the view (caption, labels, formula, messages) sized from the window's height for
+    // a lecture hall, whatever the panel's UI scale (a switch in the Overlays section); off: the panel's.
+    bool presentationText = true;
+    std::string readout;           // this frame's live value ("k_e = 37.2") of a slider being dragged
     std::string scenePath;         // the Save / Load field
     int selectedObject = 0;        // whose material, mesh and transform the panel shows
     PlotSettings plots;            // the Plots section's incidence angle and side of the surface
@@ -38,11 +42,15 @@ struct ViewSettings {
     // arrows show only this light's I, R and H.
     int selectedLight = -1;
     // The Shader section (viewer/shader_view.hpp): the pane whose mode it lists (-1: the probed one or
-    // the first), the shader error it last scrolled to, and S's request to open or close it.
+    // the first), and S's request to open or close it. After a failed reload (focusShaderError): the
+    // file the error is in when no pane's mode runs it (shown as one more tab), and the error's file
+    // and line, selected and scrolled to once shown.
     int shaderPane = -1;
-    std::string shaderErrorSeen;
-    std::optional<std::pair<std::string, int>> shaderScrollTo;  // a new error's file and line, until shown
+    std::string shaderErrorFile;
+    std::optional<std::pair<std::string, int>> shaderScrollTo;
     std::optional<bool> openShader;
+    bool shaderOverView = false;  // S: the Shader view large over the 3D view (drawShaderOverView)
+    bool scrollToProbe = false;   // a new probe: the panel scrolls to its Probe section once
 };
 
 // What the panel shows besides the scene.
@@ -59,7 +67,9 @@ struct PanelStatus {
     std::vector<std::string> presetTitles;
     int currentPreset = 0;
     bool scrollToPreset = false;
-    double frameMs = 0.0;             // the last frame's own time, without waiting for input
+    double frameMs = 0.0;             // the mean own time (no waiting for input) of the last second's frames; 0: none
+    bool idle = false;                // nothing more is drawn after this frame until an event (render on demand)
+    float movingScale = 1.0f;         // a moving frame drawn smaller (software GL): its share of the view per axis
     float uiScale = 1.0f;             // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
     int msaa = 1;                     // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;
@@ -69,6 +79,7 @@ struct PanelStatus {
     std::map<std::string, std::string> shaderSources;
     std::string shaderError;
     std::string animation;            // --animate: "1.25 s of 4.00 s"; empty without animations
+    std::string readout;              // the large readout over the view this frame ("k_e = 37.2")
     bool playing = false;
     bool recording = false;           // Ctrl+R: the view is being recorded
     std::string lastRecording;        // path of the last saved recording
@@ -103,7 +114,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
 // model ("Phong shading · Blinn-Phong lobe"), two lines where the pane is narrow. `view` is the 3D view;
 // `framebufferScale` converts the renderer's pixel panes to ImGui units.
 // Returns the bottom of the lowest label (ImGui units; view.y when there are none).
-float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale);
+// `fontSize`: the labels' text size (0: 1.4 times the current font's).
+float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferScale, float fontSize = 0.0f);
 // A thin line between side by side panes (compare, diff) over the view, so the class sees where one
 // pane ends; 2 px at content scale 1. Not part of the 3D view's pixels (F12, --output).
 void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebufferScale);
@@ -112,15 +124,18 @@ void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebuffe
 // text sizes and height (0: no title or caption).
 struct CaptionLayout {
     float titleSize = 0, captionSize = 0, pad = 0, height = 0;
-    float zoom = 0;  // the text size, as a share of the one for a 1000-unit view
+    float zoom = 0;  // the text size, as a share of the largest (1: not made smaller to fit)
 };
-// `maxZoom` caps the text size (a playlist's captions share the smallest one).
+// `maxZoom` caps the text size (a playlist's captions share the smallest one). `viewText`: the view
+// text's size (ImGui units; the caption is 1.25 times it, the title 1.6 times), where that is larger
+// than the size the view's width gives the panel's font.
 CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight,
-                            float maxZoom = 1e9f);
+                            float maxZoom = 1e9f, float viewText = 0.0f);
 // Draws it into `band` (above the 3D view), with `counter` ("3 / 20") at the right.
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 
-// The status strip above the view: frame time, FPS, triangles, GL renderer, progressive passes.
+// The status strip above the view: frame time (the mean of the last second's frames) and the FPS it
+// allows, or "idle" while nothing is drawn; triangles, GL renderer, progressive passes.
 void drawStatusStrip(const PanelStatus& status, const UiRect& strip);
 
 // The last message over the bottom of the 3D view (where the lecturer looks), red for an error.
@@ -132,9 +147,11 @@ void drawHelpOverlay(const UiRect& view);
 // Each light's marker over the view: a ring with its number and kind, an arrow along a directional
 // light's travel, or an arrow at the pane's border toward a light outside it. Lines thicken with the
 // UI scale. `selected`: the panel's selected light, drawn highlighted. Labels and border arrows stay
-// below `top` (the pane labels' bottom). Returns the labels' boxes, for the probe's labels to avoid.
+// below `top` (the pane labels' bottom) and off the `models` (world-space bounding spheres of the
+// objects: a label that would cover one moves out, tied to its marker by a line). Returns the labels'
+// boxes, for the probe's labels to avoid.
 std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
-                                    float top);
+                                    float top, const std::vector<BoundingSphere>& models = {});
 
 // Where light `light`'s marker is grabbed (world space): a point or area light's position; for a
 // directional light the tail of its arrow, a third of the eye's distance up-light of the target.

@@ -230,7 +230,8 @@ bool probeSection(const Scene& scene, const ProbeResult& probe) {
     const bool clear = ImGui::Button("clear probe (Esc)");
     ImGui::SameLine();
     ImGui::TextDisabled("click the view to probe");
-    ImGui::Text("pixel %d,%d, pane %d: object %zu, triangle %zu", probe.x, probe.y, probe.pane, probe.anchor.object,
+    // Panes numbered from 1, left to right, as the Shader view's combo numbers them.
+    ImGui::Text("pixel %d,%d, pane %d: object %zu, triangle %zu", probe.x, probe.y, probe.pane + 1, probe.anchor.object,
                 probe.anchor.triangle);
     const glm::vec3& p = probe.posWorld;
     ImGui::Text("P (%.3f, %.3f, %.3f)", double(p.x), double(p.y), double(p.z));

@@ -7,8 +7,23 @@
 #include "core/scene/scene.hpp"
 #include "viewer/panel.hpp"
 
+struct ImFont;
+
 namespace shadelab {
 
 void sectionShader(const Scene& scene, ViewSettings& settings, const PanelStatus& status, const ProbeResult* probe);
+
+// S: the same view, large, over the left of the 3D view (kShaderOverViewShare of its width, its whole
+// height) for a lecture hall: `text` (the view text's font) and `mono` (DejaVu Sans Mono at that size;
+// null: the panel's), code lines wrapped at the box's width, term lines marked as in the panel.
+inline constexpr float kShaderOverViewShare = 0.6f;
+void drawShaderOverView(const Scene& scene, ViewSettings& settings, const PanelStatus& status, const ProbeResult* probe,
+                        const UiRect& view, ImFont* text, ImFont* mono);
+
+// After a failed reload (F5): points the Shader view at the first error of `log` that names a file,
+// in whatever layout: the pane whose mode runs that file is chosen (else the file is shown as one more
+// tab beside the pane's), and its tab is selected and the line scrolled to when the view is next drawn.
+// Returns whether the log names a file.
+bool focusShaderError(const Scene& scene, ViewSettings& settings, const std::string& log);
 
 }  // namespace shadelab

@@ -11,6 +11,7 @@
 #include "viewer/formula_view.hpp"
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
+#include "viewer/shader_view.hpp"
 
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -51,6 +52,11 @@ constexpr float kPanelEms = 30.0f;
 constexpr float kFontPixels = 16.0f;
 // The status strip above the view, in font heights.
 constexpr float kStripEms = 1.5f;
+// The text over the view (issue 31, item 2) with the presentation setting: this share of the window's
+// height (26 px of 1080; the caption 1.25 times it, 3% of the height; the formula's main line too,
+// its values as large as its symbols), never smaller than the panel's text.
+constexpr float kViewTextShare = 0.024f;
+constexpr float kFormulaOfViewText = 1.25f;  // the formula's main line, in view text sizes
 // How long a message stays over the view (an error longer), in seconds.
 constexpr double kMessageSeconds = 5.0, kErrorSeconds = 12.0;
 // Render on demand: frames drawn after the last event, so ImGui's hover and click states settle.
@@ -63,6 +69,10 @@ constexpr float kOrbitRadPerUnit = 0.008f;
 // kPassBudgetMs and halved while it takes under a quarter of that (llvmpipe at 1280x720: an 8x8 light
 // with shadows settles at 8, one sample a frame).
 constexpr double kPassBudgetMs = 90.0;
+// Moving frames on a software rasterizer (Viewer::drawView): their own time aimed at, for 30 FPS while a
+// lecturer drags, and the smallest share of the view's size per axis they may be drawn at.
+constexpr double kMovingBudgetMs = 30.0;
+constexpr float kMinMovingScale = 0.35f;
 int adaptStride(int stride, int samples, double lastPassMs) {
     if (stride <= 0) {
         stride = 1;
@@ -167,10 +177,28 @@ void Viewer::run() {
             if (messageShown_ && untilMessageGoes <= 0.0) break;
             window_.waitEvents(messageShown_ ? untilMessageGoes + 0.01 : 10.0);
         }
+        if (options_.frames == 0 && (playing_ || recording_)) waitForRefresh();
+        frameBegun_ = std::chrono::steady_clock::now();
         if (frame(options_.frames > 0 && n >= options_.frames)) break;
     }
     stopRecording();  // quitting while recording keeps the video
     savePrefs();
+}
+
+// A playing animation or a recording draws frame after frame: at most one a display refresh (60 Hz
+// where the monitor does not say), also where swapping buffers does not wait for the display
+// (llvmpipe on X11 and Xvfb, where it burnt 1.6 cores). Events wake the wait; they are handled by the
+// frame that follows, when it is due.
+int Viewer::frameCapHz() const {
+    const int hz = window_.refreshRate();
+    return hz >= 24 && hz <= 240 ? hz : 60;
+}
+
+void Viewer::waitForRefresh() {
+    const auto due = frameBegun_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                       std::chrono::duration<double>(1.0 / frameCapHz()));
+    for (auto now = std::chrono::steady_clock::now(); now < due; now = std::chrono::steady_clock::now())
+        window_.waitEvents(std::chrono::duration<double>(due - now).count());
 }
 
 // The layout as the session leaves it, for the next one (a person's sessions only).
@@ -190,6 +218,7 @@ bool Viewer::idle() const {
     if (framesToDraw_ > 0 || window_.eventCount() != eventsSeen_) return false;
     if (playing_ || recording_) return false;  // an animation keeps drawing; a paused one does not
     if (msaaSamples_ > 1 && !antiAliased_) return false;  // one more frame: the still view anti-aliased
+    if (reducedThisFrame_) return false;                  // one more: the still view at full size
     if (progressiveFrom_ && !progressiveComplete_) return false;  // sampling goes on
     const ImGuiIO& io = ImGui::GetIO();
     for (bool down : io.MouseDown)
@@ -208,6 +237,10 @@ bool Viewer::frame(bool last) {
     imgui_.holdTappedKeys(keys);
     const bool still = countEvents();
     imgui_.setScale(window_.contentScale() * uiScale_);  // rebuilds the font only when it changed
+    {
+        const float panelText = std::round(kFontPixels * imgui_.scale()), windowText = windowTextSize();
+        imgui_.setViewTextSize(std::max(panelText, windowText), std::max(kFormulaSize * panelText, kFormulaOfViewText * windowText));
+    }
     imgui_.newFrame();
     const FrameLayout l = layout();
     document_.setViewSize(std::max(l.viewWidth, 1), std::max(l.viewHeight, 1));
@@ -221,7 +254,10 @@ bool Viewer::frame(bool last) {
     advanceAnimation();
     const std::vector<OverlayArrow> arrows = probeOverlays(l, drawViewText(l, labelsBottom));
     const Image view = drawView(l, still, last, arrows);
-    status_.frameMs = frameMs_;
+    // The mean of the frames drawn in the last second; "idle" where this is the last frame before the
+    // viewer sleeps (a scripted run never does).
+    status_.frameMs = frameRate_.meanMs(std::chrono::steady_clock::now()).value_or(0.0);
+    status_.idle = options_.frames == 0 && idle();
     drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
     imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
     if (screenshotRequested_) saveScreenshot(view);
@@ -271,7 +307,10 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
 // follow the eye. Draws the pane labels first, since they push the framing down; returns where they end.
 float Viewer::followView(const FrameLayout& l) {
     drawPaneSeparators(document_.scene(), l.view, l.scale);
-    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale) : l.view.y;
+    ImGui::PushFont(imgui_.viewFont());
+    const float labelSize = std::max(1.4f * ImGui::GetIO().Fonts->Fonts[0]->FontSize, 1.1f * l.windowText);
+    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale, labelSize) : l.view.y;
+    ImGui::PopFont();
     const auto panes = layoutPanes(document_.scene().layout, document_.scene().shading, document_.scene().width,
                                    document_.scene().height, document_.scene().diff);
     const float paneUnits = float(std::max(panes.front().height, 1)) / l.scale;
@@ -284,9 +323,10 @@ float Viewer::followView(const FrameLayout& l) {
 // The text over the view below the pane labels: the light labels, the caption, the status message and
 // the help. Returns the light labels' boxes (the probe's labels keep off them).
 std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
+    ImGui::PushFont(imgui_.viewFont());
     const std::vector<UiRect> lightBoxes =
         settings_.lightLabels ? drawLightLabels(animatedScene_ ? *animatedScene_ : document_.scene(), l.view, l.scale,
-                                                settings_.selectedLight, labelsBottom)
+                                                settings_.selectedLight, labelsBottom, modelSpheres())
                               : std::vector<UiRect>{};
     UiRect messageArea = l.view;  // above the formula when it is shown
     if (settings_.showFormula) {  // the values drawn this frame: an animated k_e moves under its symbol
@@ -294,7 +334,9 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
         const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
         const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
         messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale,
-                                                  imgui_.formulaFont()) - l.view.y;
+                                                  imgui_.formulaFont(), imgui_.formulaFont()
+                                                                            ? imgui_.formulaFont()->FontSize / kFormulaSize
+                                                                            : 0.0f) - l.view.y;
     }
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
@@ -302,10 +344,66 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
                                                        : std::string();
         drawCaption(document_.scene(), counter, l.captionText, l.caption);
     }
+    if (settings_.shaderOverView) {  // the message beside the shader view, not over its lines
+        const float shader = std::round(messageArea.width * kShaderOverViewShare);
+        messageArea.x += shader, messageArea.width -= shader;
+    }
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, messageArea);
+    drawReadout(l, labelsBottom);
+    if (recording_) {  // a red dot and REC at the view's top right while recording, after the message fades
+        const float size = l.viewText, r = 0.4f * size;
+        const ImVec2 at(l.view.x + l.view.width - 3.5f * size, labelsBottom + 0.6f * size);
+        ImDrawList* draw = ImGui::GetForegroundDrawList();
+        draw->AddRectFilled(ImVec2(at.x - 0.5f * size, at.y - 0.3f * size), ImVec2(at.x + 3.2f * size, at.y + 1.3f * size),
+                            IM_COL32(0, 0, 0, 170), 0.3f * size);
+        draw->AddCircleFilled(ImVec2(at.x + r, at.y + 0.5f * size), r, IM_COL32(230, 30, 30, 255));
+        draw->AddText(ImGui::GetFont(), size, ImVec2(at.x + 2.6f * r, at.y), IM_COL32(255, 255, 255, 255), "REC");
+    }
+    ImGui::PopFont();
+    if (settings_.shaderOverView)
+        drawShaderOverView(animatedScene_ ? *animatedScene_ : document_.scene(), settings_, status_, probe_ ? &*probe_ : nullptr,
+                           l.view, imgui_.viewFont(), imgui_.viewMonoFont());
     if (showHelp_) drawHelpOverlay(l.view);
     return lightBoxes;
+}
+
+namespace {
+// What a playing ramp sets, as the readout says it ("k_e = 37.2"); empty for orbits and names.
+std::string rampReadout(const Scene& scene, const std::vector<Animation>& animations, int selectedObject) {
+    const auto object = std::size_t(std::max(selectedObject, 0));
+    const Material* m = object < scene.objects.size() ? &scene.objects[object].material : nullptr;
+    for (const Animation& a : animations) {
+        if (a.kind != Animation::Kind::Ramp) continue;
+        const std::string& p = a.parameter;
+        if (m && p == "ke") return "k_e = " + formulaNumber(m->ke);
+        if (m && p == "ks") return "k_s = " + formulaNumber(m->ks);
+        if (m && p == "kd") return "k_d = " + formulaNumber(m->kd);
+        if (m && p == "ka") return "k_a = " + formulaNumber(m->ka);
+        if (p == "ior") return "ior = " + formulaNumber(scene.ior);
+        if (p == "intensity" && !scene.lights.empty()) return "intensity = " + formulaNumber(scene.lights[0].intensity);
+    }
+    return "";
+}
+}  // namespace
+
+void Viewer::drawReadout(const FrameLayout& l, float labelsBottom) {
+    std::string text = settings_.readout;
+    if (text.empty() && animatedScene_ && (playing_ || options_.frames > 0))
+        text = rampReadout(*animatedScene_, options_.animations, settings_.selectedObject);
+    status_.readout = text;
+    if (text.empty() || l.view.width <= 0.0f) return;
+    // Twice the view text (52 px in a 1080-px window), on a dark box in the specular colour, at the
+    // top left below the pane labels (lights are most often up and to the right).
+    const float size = 2.0f * l.viewText, pad = 0.3f * size;
+    ImFont* font = imgui_.formulaFont() ? imgui_.formulaFont() : ImGui::GetFont();  // rasterised larger
+    const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0.0f, text.c_str());
+    const ImVec2 at(std::round(l.view.x + 2.0f * pad), std::round(labelsBottom + 2.0f * pad));
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad), ImVec2(at.x + extent.x + pad, at.y + extent.y + pad),
+                        IM_COL32(0, 0, 0, kFormulaBackingAlpha), pad);
+    const Rgba8 c = termColor(FormulaTerm::Specular);
+    draw->AddText(font, size, at, IM_COL32(c.r, c.g, c.b, 255), text.c_str());
 }
 
 // The 3D view, anti-aliased where it pays: always on a GPU; on a software rasterizer only once the
@@ -317,14 +415,49 @@ Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::v
     for (bool down : ImGui::GetIO().MouseDown) mouseDown = mouseDown || down;
     antiAliasThisFrame_ =
         msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown && !playing_) || captureView || last);
+    // A moving frame on a software rasterizer: smaller while the last moving frames took longer than
+    // kMovingBudgetMs, larger again while they took under half of it (never for files or a scripted run).
+    const bool moving = softwareGl_ && options_.frames == 0 && !captureView && !last && (mouseDown || playing_);
+    if (moving && movingLastFrame_) {
+        if (frameMs_ > kMovingBudgetMs)
+            movingScale_ = std::max(kMinMovingScale, movingScale_ * float(std::sqrt(kMovingBudgetMs / frameMs_)) * 0.95f);
+        else if (frameMs_ < 0.5 * kMovingBudgetMs)
+            movingScale_ = std::min(1.0f, movingScale_ * 1.1f);
+    }
+    movingLastFrame_ = moving;
+    reducedThisFrame_ = moving && movingScale_ < 0.98f;
+    status_.movingScale = reducedThisFrame_ ? movingScale_ : 1.0f;
     const Image view = renderView(l, captureView, last, arrows);
-    antiAliased_ = antiAliasThisFrame_;
+    antiAliased_ = antiAliasThisFrame_ && !reducedThisFrame_;
     return view;
+}
+
+RenderTarget Viewer::beginReduced(int width, int height) {
+    if (!reduced_.framebuffer || reduced_.width != width || reduced_.height != height) {
+        GLuint ids[3] = {};
+        glGenFramebuffers(1, &ids[0]);
+        glGenRenderbuffers(2, &ids[1]);
+        reduced_ = ReducedTarget{gl::Framebuffer(ids[0]), gl::Renderbuffer(ids[1]), gl::Renderbuffer(ids[2]), width, height};
+        glBindRenderbuffer(GL_RENDERBUFFER, ids[1]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+        glBindRenderbuffer(GL_RENDERBUFFER, ids[2]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, ids[0]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ids[1]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ids[2]);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            reduced_ = ReducedTarget{};
+            throw std::runtime_error("the reduced moving-frame framebuffer is not complete on this GL");
+        }
+    }
+    return RenderTarget{reduced_.framebuffer.get(), width, height};
 }
 
 // The frame's own time (polling to swap, no waiting), for the status strip and -v's median.
 void Viewer::recordFrameTime(std::chrono::steady_clock::time_point start, bool last) {
-    frameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const auto end = std::chrono::steady_clock::now();
+    frameMs_ = std::chrono::duration<double, std::milli>(end - start).count();
+    frameRate_.add(end, frameMs_);
     if (frameTimes_.size() < 100000) frameTimes_.push_back(frameMs_);
     if (last && options_.verbose && !frameTimes_.empty()) {
         // The median frame's own time: bench/README.md's panel figures.
@@ -334,8 +467,16 @@ void Viewer::recordFrameTime(std::chrono::steady_clock::time_point start, bool l
     }
 }
 
+float Viewer::windowTextSize() const {
+    int windowWidth = 0, windowHeight = 0;
+    window_.windowSize(windowWidth, windowHeight);
+    return settings_.presentationText ? std::round(kViewTextShare * float(windowHeight)) : 0.0f;
+}
+
 Viewer::FrameLayout Viewer::layout() const {
     FrameLayout l;
+    l.windowText = windowTextSize();
+    l.viewText = std::max(ImGui::GetFontSize(), l.windowText);
     window_.framebufferSize(l.framebufferWidth, l.framebufferHeight);
     int windowWidth = 0, windowHeight = 0;
     window_.windowSize(windowWidth, windowHeight);
@@ -348,7 +489,7 @@ Viewer::FrameLayout Viewer::layout() const {
     const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
     const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
     const float captionMax = std::floor((float(windowHeight) - stripUnits) / 6.0f);
-    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax)
+    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax, 1e9f, l.windowText)
                                           : CaptionLayout{};
     // With a playlist every preset's caption has the same text size, the smallest any of them needs
     // to fit, and the band is as high as the longest caption of the playlist takes at that size: the
@@ -360,17 +501,17 @@ Viewer::FrameLayout Viewer::layout() const {
         };
         float zoom = 1e9f;
         for (std::size_t i = 0; i < playlist_.size(); ++i) {
-            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax);
+            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, 1e9f, l.windowText);
             if (c.height > 0.0f) zoom = std::min(zoom, c.zoom);
         }
         float height = 0.0f;
         for (std::size_t i = 0; i < playlist_.size(); ++i)
-            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, zoom).height);
-        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, zoom);
+            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, zoom, l.windowText).height);
+        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, zoom, l.windowText);
         if (height > 0.0f) {
             if (l.captionText.height <= 0.0f) {  // an empty band with the position, as the others
                 static const Scene blank = [] { Scene s; s.title = " "; return s; }();
-                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, zoom);
+                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, zoom, l.windowText);
             }
             l.captionText.height = height;
         }
@@ -402,7 +543,7 @@ void Viewer::handleInput(const FrameLayout& l, const std::vector<KeyPress>& keys
         const glm::vec2 pixel((io.MousePos.x - l.view.x) * l.scale, (io.MousePos.y - l.view.y) * l.scale);
         for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
             if (pixel.x < float(pane.x) || pixel.x >= float(pane.x + pane.width)) continue;
-            const int light = lightAtPixel(scene, pane, pixel, ImGui::GetFontSize() * l.scale);
+            const int light = lightAtPixel(scene, pane, pixel, l.viewText * l.scale);
             if (light >= 0) lightDrag_ = LightDrag{light, pane};
         }
     }
@@ -511,7 +652,12 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
 void Viewer::runCommand(ViewerCommand command) {
     const auto scene = [this]() -> Scene& { return document_.edit(); };  // the commands that change the scene
     const auto single = [&](ShadingMode mode) { scene().shading = mode, scene().layout = Layout::Single; };
-    const auto toggle = [&](Layout layout) { scene().layout = document_.scene().layout == layout ? Layout::Single : layout; };
+    // C and D toggle: pressed again, back to the layout before (D twice from compare: compare again).
+    const auto toggle = [&](Layout layout) {
+        const Layout now = document_.scene().layout;
+        if (now != layout) layoutBeforeToggle_ = now;
+        scene().layout = now == layout ? (layoutBeforeToggle_ == layout ? Layout::Single : layoutBeforeToggle_) : layout;
+    };
     OverlayOptions& overlays = settings_.overlays;
     switch (command) {
     case ViewerCommand::None: break;
@@ -525,15 +671,9 @@ void Viewer::runCommand(ViewerCommand command) {
     case ViewerCommand::FaceNormals: overlays.faceNormals = !overlays.faceNormals; break;
     case ViewerCommand::LightMarkers: settings_.lightLabels = !settings_.lightLabels; break;
     case ViewerCommand::Formula: settings_.showFormula = !settings_.showFormula; break;
-    case ViewerCommand::ShaderSection: {
-        // The Shader section: opened (and the panel shown) or closed again.
-        const auto& open = settings_.openSections;
-        settings_.openShader = !(settings_.showPanel && std::find(open.begin(), open.end(), "shader") != open.end());
-        settings_.showPanel = true;
-        break;
-    }
-    case ViewerCommand::ResetCamera: document_.resetCamera(); break;
-    case ViewerCommand::FrameModel: document_.frameModel(); break;
+    case ViewerCommand::ShaderSection: settings_.shaderOverView = !settings_.shaderOverView; break;
+    case ViewerCommand::ResetCamera: document_.resetCamera(), cameraMoved(); break;
+    case ViewerCommand::FrameModel: document_.frameModel(), cameraMoved(); break;
     case ViewerCommand::NextPreset: case ViewerCommand::PreviousPreset: case ViewerCommand::FirstPreset:
     case ViewerCommand::LastPreset: case ViewerCommand::ResetPreset: runPlaylistCommand(command); break;
     case ViewerCommand::UiLarger: setUiScale(uiScale_ * 1.25f); break;
@@ -580,8 +720,9 @@ void Viewer::advanceAnimation() {
         playing_ = false;
         setStatus(e.what(), true);
     }
-    char text[64];
-    std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);
+    char text[96];
+    if (options_.frames > 0) std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);  // a scripted run: 1/30 s a frame
+    else std::snprintf(text, sizeof text, "%.2f s of %.2f s (at most %d frames/s)", t, loop, frameCapHz());
     status_.animation = text;
     status_.playing = playing_;
     const auto now = std::chrono::steady_clock::now();
@@ -646,8 +787,8 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
     if (r.msaa > 0) msaaSamples_ = r.msaa;
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
-    if (r.resetCamera) document_.resetCamera();
-    if (r.frameModel) document_.frameModel();
+    if (r.resetCamera) document_.resetCamera(), cameraMoved();
+    if (r.frameModel) document_.frameModel(), cameraMoved();
     if (r.modelCamera >= 0) {
         // Through the model's camera, as --camera N: no longer framed by shadelab (F or R frame again).
         document_.edit().modelCamera = r.modelCamera;
@@ -725,6 +866,9 @@ void Viewer::showingPreset(const std::string& what) {
     const Preset& p = playlist_.preset(playlist_.current());
     settings_.scenePath = p.path;
     settings_.selectedObject = 0;
+    // --animate with a playlist: every preset plays it from its start (also after one it did not fit).
+    animationSeconds_ = 0.0;
+    playing_ = !options_.animations.empty();
     if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
     if (options_.verbose) std::cerr << "shadelab: " << what << p.path << "\n";
 }
@@ -765,6 +909,20 @@ Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const st
     }
     const RenderTarget view{0, l.viewWidth, l.viewHeight};
     try {
+        if (reducedThisFrame_) {  // a moving frame, smaller, magnified into the view (no anti-aliasing)
+            const RenderTarget small = beginReduced(std::max(int(std::lround(float(l.viewWidth) * movingScale_)), 1),
+                                                    std::max(int(std::lround(float(l.viewHeight) * movingScale_)), 1));
+            renderScene(small, false);
+            OverlayOptions overlays = settings_.overlays;
+            overlays.lineWidth = std::max(2.0f * imgui_.scale() * movingScale_, 1.0f);
+            overlays_->render(animatedScene_ ? *animatedScene_ : document_.scene(), small, overlays, arrows);
+            glDisable(GL_SCISSOR_TEST);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, small.framebuffer);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            glBlitFramebuffer(0, 0, small.width, small.height, 0, 0, view.width, view.height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            return {};
+        }
         const RenderTarget target = msaa_.begin(view, antiAliasThisFrame_ ? msaaSamples_ : 1);
         renderScene(target, capture || last);
         // Lines 2 pixels wide at scale 1, thicker with the content and UI scale.
@@ -902,6 +1060,8 @@ void Viewer::reloadShaders() {
     } catch (const std::exception& e) {
         status_.shaderError = e.what();
         setStatus(std::string("shaders not reloaded, the previous ones stay:\n") + e.what(), true);
+        // The Shader view shows the error's file and line, whichever pane or layout is up (each F5).
+        if (focusShaderError(document_.scene(), settings_, status_.shaderError)) settings_.shaderOverView = true;
     }
 }
 
@@ -920,6 +1080,24 @@ const SceneRayCaster& Viewer::rayCaster() {
     return *caster_;
 }
 
+const std::vector<BoundingSphere>& Viewer::modelSpheres() {
+    const Scene& scene = document_.scene();
+    const auto& geometry = document_.geometry();
+    bool same = spheresGeometry_ == document_.geometryRevision() && spheresTransforms_.size() == scene.objects.size();
+    for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
+        same = sameTransform(spheresTransforms_[o], scene.objects[o].transform);
+    if (same) return modelSpheres_;
+    modelSpheres_.clear();
+    spheresTransforms_.clear();
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        spheresTransforms_.push_back(scene.objects[o].transform);
+        if (!geometry || o >= geometry->meshes.size() || scene.objects[o].mesh.type == MeshSpec::Type::Plane) continue;
+        modelSpheres_.push_back(worldBounds({&geometry->meshes[o]}, {worldFromObject(scene.objects[o].transform)}));
+    }
+    spheresGeometry_ = document_.geometryRevision();
+    return modelSpheres_;
+}
+
 void Viewer::setProbe(int x, int y) {
     const Scene& scene = document_.scene();
     if (!document_.geometry() || x < 0 || y < 0 || x >= scene.width || y >= scene.height) {
@@ -935,6 +1113,7 @@ void Viewer::setProbe(int x, int y) {
     }
     probeAnchor_ = r.anchor;
     probeGeometry_ = document_.geometry();
+    settings_.scrollToProbe = true;  // the panel shows its Probe section, wherever it was scrolled
     setStatus("probe at pixel " + std::to_string(x) + "," + std::to_string(y) + " (Esc clears it)", false);
 }
 
@@ -956,9 +1135,17 @@ std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std:
     std::vector<OverlayArrow> arrows;
     if (!probe_) return arrows;
     const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_, settings_.selectedLight);
+    ImGui::PushFont(imgui_.viewFont());
     drawProbeLabels(scene, labelled, l.view, l.scale, avoid);
+    ImGui::PopFont();
     for (const ProbeArrow& a : labelled) arrows.push_back(a.arrow);
     return arrows;
+}
+
+// The camera jumped (R, F): a message about the old view ("probe at pixel ...") would lie over the new
+// one (the probe's arrows run through it), so it goes; errors stay.
+void Viewer::cameraMoved() {
+    if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
 }
 
 void Viewer::setStatus(std::string message, bool isError) {

@@ -11,9 +11,11 @@
 #include "core/scene/scene.hpp"
 #include "core/ui/controls.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "render/gl_handles.hpp"
 #include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
 #include "render/renderer.hpp"
+#include "viewer/frame_rate.hpp"
 #include "viewer/glfw_window.hpp"
 #include "viewer/imgui_layer.hpp"
 #include "viewer/panel.hpp"
@@ -93,7 +95,11 @@ private:
         float scale = 1.0f;                 // framebuffer pixels per ImGui unit
         UiRect strip, caption, view, panel; // ImGui units
         CaptionLayout captionText;
+        // The text over the view (ImGui units): the window-height size (0 with the presentation
+        // setting off) and the size drawn, never below the panel's text.
+        float windowText = 0.0f, viewText = 0.0f;
     };
+    float windowTextSize() const;  // FrameLayout::windowText, before the frame's layout
 
     bool frame(bool last);
     // frame()'s steps.
@@ -101,6 +107,9 @@ private:
     PanelRequests panelEdits(const FrameLayout& layout);
     float followView(const FrameLayout& layout);
     std::vector<UiRect> drawViewText(const FrameLayout& layout, float labelsBottom);
+    // The value being changed, large over the view's top left: a slider dragged in the panel, else
+    // the number a playing --animate ramp sets (k_e while it sweeps).
+    void drawReadout(const FrameLayout& layout, float labelsBottom);
     Image drawView(const FrameLayout& layout, bool still, bool last, const std::vector<OverlayArrow>& arrows);
     void recordFrameTime(std::chrono::steady_clock::time_point start, bool last);
     // Whether the next frame can wait for an event: nothing moves, nothing is pending.
@@ -124,6 +133,8 @@ private:
     void reloadShaders();
     void readShaderSources(const ShaderLibrary& shaders);  // for the panel's Shader section
     void setStatus(std::string message, bool isError);
+    void cameraMoved();
+    Layout layoutBeforeToggle_ = Layout::Single;  // what C or D pressed again goes back to
     // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
     // the same surface point with the scene as it is then.
     void setProbe(int x, int y);
@@ -161,10 +172,25 @@ private:
     int framesToDraw_ = 2;
     double frameMs_ = 0.0;
     std::vector<double> frameTimes_;            // every frame's own time, for -v's median at the end
+    FrameRate frameRate_;                       // the status strip's mean of the last second's frames
     // Anti-aliasing: the multisampled target, its samples, whether the GL is a software rasterizer
     // (there only a still view is drawn anti-aliased: 4x costs several times a frame on llvmpipe), and
     // whether the last frame was.
     MultisampleTarget msaa_;
+    // Moving frames on a software rasterizer (issue 31, item 12): while the view is dragged, a slider
+    // held or an animation plays, the scene is drawn into a framebuffer `movingScale_` of the view's
+    // size per axis and magnified into it; the scale follows the moving frames' time (aiming at 30
+    // FPS); a still view is drawn at full size (and anti-aliased) again.
+    struct ReducedTarget {
+        gl::Framebuffer framebuffer;
+        gl::Renderbuffer color, depth;
+        int width = 0, height = 0;
+    };
+    ReducedTarget reduced_;
+    float movingScale_ = 1.0f;
+    bool movingLastFrame_ = false;
+    bool reducedThisFrame_ = false;
+    RenderTarget beginReduced(int width, int height);
     int msaaSamples_ = 1;
     bool softwareGl_ = false;
     bool antiAliased_ = false;
@@ -181,6 +207,10 @@ private:
     std::chrono::steady_clock::time_point animationTick_;
     std::optional<Scene> animatedScene_;
     void advanceAnimation();
+    // The frame cap while an animation plays or a recording runs (the display's refresh, else 60 Hz).
+    int frameCapHz() const;
+    void waitForRefresh();
+    std::chrono::steady_clock::time_point frameBegun_;
     // Ctrl+R / the record button: recording the view as shown to a timestamped MP4 (viewer/view_recorder.hpp).
     std::unique_ptr<ViewRecorder> recording_;
     bool recordToggled_ = false;  // start or stop at this frame's end, once the view is drawn
@@ -211,6 +241,12 @@ private:
     std::weak_ptr<const SceneGeometry> casterGeometry_;
     std::vector<Transform> casterTransforms_;
     const SceneRayCaster noTriangles_;         // what probeAnchor() gets when shadows are off (it is not used)
+    // Each object's world-space bounding sphere (a plane, a floor, left out): the light labels keep
+    // off them. Recomputed when the geometry or a transform changes.
+    const std::vector<BoundingSphere>& modelSpheres();
+    std::vector<BoundingSphere> modelSpheres_;
+    std::optional<std::uint64_t> spheresGeometry_;
+    std::vector<Transform> spheresTransforms_;
 };
 
 }  // namespace shadelab

@@ -220,6 +220,13 @@ TEST(CliOptions, PlaylistFlags) {
     EXPECT_NE(errorOf({"--playlist", "lecture", "--benchmark", "3"}).find("--benchmark: not with --playlist"),
               std::string::npos);
     EXPECT_NE(errorOf({"--playlist", "lecture", "--info"}).find("--info: not with --playlist"), std::string::npos);
+    // --animate plays on every preset in the viewer (issue 31, item 9); a video is of one preset file.
+    EXPECT_EQ(parseOptions({"--playlist", "lecture", "--animate", "ke=1..1000:log"}).animations.size(), 1u);
+    EXPECT_NE(errorOf({"--playlist", "lecture", "--animate", "light-orbit", "--output", "d/"})
+                  .find("--animate: with --playlist the viewer plays it on every preset"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"--playlist", "lecture", "--animate", "light-orbit", "--sweep", "ke=1,2"}).find("--sweep"),
+              std::string::npos);
     EXPECT_NE(errorOf({"--playlist", ""}).find("--playlist: empty folder name"), std::string::npos);
     EXPECT_NE(errorOf({"--playlist"}).find("--playlist: needs a value"), std::string::npos);
     EXPECT_NE(errorOf({"--captions"}).find("--captions: "), std::string::npos);

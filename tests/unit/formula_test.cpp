@@ -211,6 +211,13 @@ TEST(Formula, OverlaySitsAtTheBottomWithANotePerPane) {
         EXPECT_GE(n.x - n.pad, panes[i].x) << i;                       // inside its pane
         EXPECT_LE(n.x + n.width + n.pad, panes[i].x + 400.0f + 1.0f) << i;
     }
+    // Narrow panes (issue 31: at 2x the Gouraud pane's line was smaller than the others): one size for all.
+    std::vector<FormulaPane> narrowPanes;
+    for (int i = 0; i < 3; ++i) narrowPanes.push_back({float(i) * 250.0f, 0.0f, 250.0f, 700.0f, ShadingMode(i), false});
+    const FormulaOverlay small = layoutFormulaOverlay(in, 750.0f, 700.0f, narrowPanes, 16.0f, kFixed);
+    ASSERT_EQ(small.notes.size(), 3u);
+    EXPECT_LT(small.notes[1].size, 1.1f * 16.0f);  // the longest line, Gouraud's, had to shrink ...
+    for (const FormulaNote& n : small.notes) EXPECT_EQ(n.size, small.notes[1].size);  // ... and the others with it
     // A narrow view gets a smaller formula that fits.
     const FormulaOverlay narrow = layoutFormulaOverlay(in, 450.0f, 700.0f, {}, 16.0f, kFixed);
     EXPECT_LE(narrow.formula.width, 450.0f - 16.0f);

@@ -48,10 +48,21 @@ key("Escape")             # ... and Esc clears it instead of quitting
 key("F12")                # so this second screenshot is taken
 quit_viewer(proc, display)
 
+# D twice from compare goes back to compare (issue 31: it went to a single pane).
+back = os.path.join(out, "d-twice.json")
+proc2, display = start_viewer([shadelab, "--size", "400x300", "--layout", "compare", "--save-scene", back], out)
+display.move(200, 150, 0.3)
+display.key("d")
+display.key("d")
+quit_viewer(proc2, display)
+
 failures = []
 def check(ok, what):
     if not ok:
         failures.append(what)
+
+layout = json.load(open(back))["layout"] if os.path.exists(back) else None
+check(layout == "compare", f"D twice from compare: layout is {layout}")
 
 check(proc.returncode == 0, f"exit status {proc.returncode}")
 check(os.path.exists(saved), "no scene saved on quit")

@@ -13,6 +13,13 @@
   remember  window size and UI scale come back in the next session; --reset-layout forgets them
   hidpi     at a 2x content scale (Xft.dpi 192) the view keeps half the window and the panes show the
             whole model
+  labels    at 1920x1080, at UI scale 1 and 1.5: the light labels keep off the spheres in compare (the
+            window's view differs from F12's image on under 0.3% of a model's pixels: markers, not labels)
+  viewtext  at 1920x1080 with the panel at UI scale 0.8: the caption's lines are at least 3% of the window's
+            height; a playing k_e ramp shows a large live readout of k_e
+  shaderview at 1920x1080, S: the shader's lines over the view are at least 2% of the window's height
+            tall (a term line's bar) and the wrapped code reaches across the box
+  animcap   a playing --animate draws at most 60 frames a second (the display's refresh), counted by -v
   slides    at 1920x1080: the k_e series 04-08 (one caption wraps to two lines) has the very same view
             rectangle and sphere on every slide; compare panes leave a margin (at least 6% of the pane's
             width each side) and a separator line is drawn between them in the window, not in F12's image;
@@ -282,6 +289,106 @@ elif scenario == "slides":
             in_view = sum(1 for y in range(h) if any(separator(compare[2][y][x]) for x in range(x0 - 2, x0 + 2)))
             check(in_window > 0.8 * h, f"no separator at x {x0} in the window: {in_window} of {h} rows")
             check(in_view < 0.05 * h, f"a separator at x {x0} in the F12 image: {in_view} of {h} rows")
+elif scenario == "labels":
+    # The light labels keep off the models: where the window's view differs from F12's image (the
+    # overlays) on a model's pixels, only the markers' arrows and rings may be, not a label's box.
+    for name, extra in (("scale1", []), ("ui1.5", ["--ui-scale", "1.5"])):
+        window = os.path.join(out, f"labels-{name}.png")
+        proc, display = start_viewer([shadelab, "--playlist", playlist, "--screenshot", window] + extra, out)
+        display.move(300, 500, 0.5)
+        resize(1920, 1080)
+        display.move(5, 1075, 0.5)  # the cursor off the view
+        view = shot(f"labels-{name}-view")
+        quit_viewer(proc, display)
+        if not view or not os.path.exists(window):
+            continue
+        w, h, rows = view
+        win = read_png(open(window, "rb").read())
+        top = win[1] - h
+        for x0, x1 in panes(view, 3):
+            background = rows[h - 1][x0]
+            covered = sum(1 for y in range(h) for x in range(x0 + 3, x1 - 3)
+                          if max(abs(a - b) for a, b in zip(rows[y][x], background)) > 6
+                          and max(abs(a - b) for a, b in zip(rows[y][x], win[2][top + y][x])) > 40)
+            model = model_pixels(view, x0 + 3, x1 - 3) * 4
+            print(f"{name} pane {x0}..{x1}: {covered} of the model's ~{model} pixels covered by overlays")
+            check(covered < 0.003 * model, f"{name}: overlays cover {covered} of the model's ~{model} pixels in pane {x0}..{x1}")
+elif scenario == "viewtext":
+    # The view's text is sized from the window's height, not the panel's scale: at 1920x1080, with the
+    # panel at UI scale 0.8, the caption's text lines are at least as tall as 3% of the window's height
+    # makes DejaVu Sans' ascender-to-descender (0.85 of its size; 0.78 counted with anti-aliasing); and a playing k_e ramp shows a large
+    # live readout ("k_e = ...") in the specular colour at the view's top left.
+    window = os.path.join(out, "viewtext.png")
+    proc, display = start_viewer([shadelab, "--playlist", playlist, "--ui-scale", "0.8", "--screenshot", window], out)
+    display.move(300, 500, 0.5)
+    resize(1920, 1080)
+    display.move(5, 1075, 0.5)
+    quit_viewer(proc, display)
+    width, height, rows = read_png(open(window, "rb").read())
+    band = lambda p: abs(p[0] - 24) <= 2 and abs(p[1] - 24) <= 2 and abs(p[2] - 30) <= 2  # the caption band
+    band_rows = [y for y in range(height) if band(rows[y][8]) and band(rows[y][400])]
+    lines, run = [], 0
+    for y in range(band_rows[0], band_rows[-1] + 1) if band_rows else []:
+        lit = any(min(rows[y][x]) > 150 for x in range(8, 1300))
+        if lit:
+            run += 1
+        elif run:
+            lines.append(run)
+            run = 0
+    print(f"caption band rows {band_rows[0] if band_rows else None}..{band_rows[-1] if band_rows else None}, text lines {lines} px")
+    check(len(lines) >= 2 and min(lines[1:]) >= 0.78 * 0.03 * 1080,
+          f"the caption's lines are {lines[1:]} px tall, under 3% of the 1080-px window")
+    animated = os.path.join(out, "readout.png")
+    subprocess.run([shadelab, "--size", "960x540", "--animate", "ke=1..1000:log:4", "--frames", "40", "--screenshot", animated],
+                   check=True, env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(out, "config")))
+    width, height, rows = read_png(open(animated, "rb").read())
+    gold = sum(1 for y in range(height // 3) for x in range(0, 480)
+               if rows[y][x][0] > 170 and 0.65 * rows[y][x][0] < rows[y][x][1] < 0.9 * rows[y][x][0] and rows[y][x][2] < 0.5 * rows[y][x][0])
+    print(f"readout: {gold} gold pixels at the view's top left")
+    check(gold > 300, f"no live k_e readout over the view while the ramp plays ({gold} gold pixels)")
+elif scenario == "shaderview":
+    # S puts the shader over the view for the hall: at 1920x1080 the term lines' bars (ambient blue, a
+    # solid bar as high as a line) are at least 2% of the window's height tall (the view text; the
+    # panel's listing is 14 px), and the wrapped code reaches across the box (past 45% of the view).
+    window = os.path.join(out, "shaderview.png")
+    proc, display = start_viewer([shadelab, "--playlist", playlist, "--screenshot", window], out)
+    display.move(300, 500, 0.5)
+    resize(1920, 1080)
+    display.move(1700, 1000, 0.3)
+    display.key("s")
+    quit_viewer(proc, display)
+    width, height, rows = read_png(open(window, "rb").read())
+    view_width = 1440  # the panel is 30 font heights (480 px) at scale 1
+    ambient = lambda p: abs(p[0] - 110) <= 3 and abs(p[1] - 175) <= 3 and abs(p[2] - 255) <= 3
+    best = 0
+    for x in range(0, 80):
+        run = 0
+        for y in range(height):
+            run = run + 1 if ambient(rows[y][x]) else 0
+            best = max(best, run)
+    # Code and comment text (comments are grey, about 79 with anti-aliasing) over the darkened scene
+    # (at most about 35), below the pane labels.
+    text_far = sum(1 for y in range(260, height) for x in range(int(0.45 * view_width), int(0.6 * view_width))
+                   if max(rows[y][x]) > 70)
+    print(f"shader view: ambient bar {best} px tall, {text_far} light pixels between 45% and 60% of the view")
+    check(best >= 0.02 * 1080, f"the shader view's lines are {best} px tall (under 2% of the 1080-px window)")
+    check(text_far > 500, f"the shader view's code does not reach across 60% of the view ({text_far} pixels)")
+elif scenario == "animcap":
+    # A playing animation draws at most one frame per display refresh (Xvfb reports none or 60 Hz: 60),
+    # not as fast as llvmpipe can: frames counted by -v over the session's length, plus the CPU it took.
+    import re
+    proc, display = start_viewer([shadelab, "--size", "320x180", "--hide-panel", "--animate", "light-orbit"], out)
+    start = time.monotonic()
+    fields = lambda: open(f"/proc/{proc.pid}/stat").read().rsplit(")", 1)[1].split()
+    cpu = lambda: (int(fields()[11]) + int(fields()[12])) / os.sysconf("SC_CLK_TCK")
+    before, t0 = cpu(), time.monotonic()
+    time.sleep(4.0)
+    share = (cpu() - before) / (time.monotonic() - t0)
+    err = quit_viewer(proc, display)
+    elapsed = time.monotonic() - start
+    frames = int(re.search(r"(\d+) frames, median", err).group(1)) if re.search(r"(\d+) frames, median", err) else 0
+    print(f"animation: {frames} frames in {elapsed:.1f} s ({frames / elapsed:.0f} per s), {100 * share:.0f}% of a core")
+    check(0 < frames <= 61 * elapsed + 5, f"{frames} frames in {elapsed:.1f} s: more than 60 a second")
 elif scenario == "lightdrag":
     # A point light on the viewing axis, between the eye (0, 1.5, 4.8) and the target: its marker is
     # at the view's centre, (400, 300) in the view, (400, 324) on the screen under the status strip.

@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """A shader broken on purpose while the viewer runs: F5 shows the driver's error (file and line) and
 the picture stays; once the file is fixed, F5 reloads it, and an edit of phong.frag changes the picture.
+The Shader view then shows the error's file with its line marked, in whatever layout (issue 31, item 4):
+in compare, whose first pane runs flat.vert, and in a single flat pane (phong.frag as one more tab), also
+after F5 a second time.
 
 usage: shader_reload.py SHADELAB SHADER_SOURCE_DIR OUTDIR     (inside an X server: see xvfb_run.sh)
 """
-import os, shutil, sys
+import os, shutil, struct, sys, time, zlib
 
 from xinput import quit_viewer, screenshot, start_viewer
 
@@ -52,6 +55,59 @@ if "shaders not reloaded" not in err:
     failures.append("no error shown for the broken shader")
 if f"phong.frag:{broken_line}" not in err:
     failures.append(f"the error does not point at phong.frag:{broken_line}:\n{err}")
+
+
+def red_rows(path, left, right):
+    """Rows of the window screenshot whose part from `left` to `right` (the Shader view over the 3D
+    view) is mostly the listing's red error row (ImGui draws it 150,30,30 at alpha 200), not red text."""
+    data = open(path, "rb").read()
+    pos, idat = 8, b""
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"IHDR":
+            width, height = struct.unpack(">II", data[pos + 8:pos + 16])
+            channels = {2: 3, 6: 4}[data[pos + 17]]
+        elif kind == b"IDAT":
+            idat += data[pos + 8:pos + 8 + length]
+        pos += 12 + length
+    raw, stride, prev, rows = zlib.decompress(idat), width * channels, bytearray(width * channels), 0
+    for y in range(height):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b, c = prev[i], prev[i - channels] if i >= channels else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        prev = line
+        red = sum(1 for x in range(left, right) if line[x * channels] > 90 and
+                  line[x * channels] > 2.5 * max(line[x * channels + 1], line[x * channels + 2]))
+        rows += red > 0.4 * (right - left)
+    return rows
+
+
+# The Shader view after a failed F5 (the viewer opens it over the left 60% of the 640-px view): the
+# error's line marked in red.
+for name, keys in (("compare", ["F5"]), ("compare-F5-twice", ["F5", "F5"]), ("single-flat", ["1", "F5"])):
+    window = os.path.join(out, f"window-{name}.png")
+    proc, display = start_viewer([shadelab, "--shader-dir", shaders, "--size", "640x480", "--layout", "compare",
+                                  "--screenshot", window], out)
+    with open(phong, "a") as f:
+        f.write("this is not GLSL;\n")
+    for key in keys:
+        display.key(key)
+    time.sleep(2.0)  # the frames after F5: the error's tab selected, then its line scrolled to (a frame each)
+    quit_viewer(proc, display)
+    open(phong, "w").write(good)
+    rows = red_rows(window, 10, 370) if os.path.exists(window) else 0
+    if not 12 <= rows <= 120:
+        failures.append(f"{name}: the Shader view does not show phong.frag's error line ({rows} red rows over the view)")
+
 if failures:
     sys.exit("; ".join(failures))
-print("a broken shader shows its error with file and line, and the picture stays; an edited one changes it")
+print("a broken shader shows its error with file and line, and the picture stays; an edited one changes it;\n"
+      "the Shader view shows the error's line in compare and in a single flat pane")

@@ -9,8 +9,6 @@ namespace {
 
 // Scripts are 70% of their base's size, subscripts drop by 0.2 and superscripts rise by 0.38 of it.
 constexpr float kScript = 0.7f, kSubDrop = 0.2f, kSupRise = 0.38f;
-// The k values and probed terms under the symbols, relative to the main line.
-constexpr float kValueSize = 0.62f;
 // The Fresnel line, which is long, relative to the main line.
 constexpr float kFresnelSize = 0.8f;
 
@@ -133,40 +131,41 @@ std::string showNote(const TermView& show) {
 class FormulaBuilder {
 public:
     FormulaBuilder(const FormulaInput& in, float size, const TextMetrics& metrics)
-        : in_(in), size_(size), metrics_(metrics), set_(layout_.runs, metrics), pad_(0.5f * size) {
+        : in_(in), size_(size), metrics_(metrics), set_(layout_.runs, metrics), pad_(0.5f * size),
+          valueSize_(in.valueSize) {
         layout_.corner = 0.3f * size;
     }
 
     FormulaLayout build() {
         float baseline = pad_ + metrics_.ascent * size_;
         mainLine(baseline);
-        baseline = nextBaseline(baseline, size_, kValueSize * size_);
+        baseline = nextBaseline(baseline, size_, valueSize_ * size_);
         coefficientValues(baseline);
         if (in_.probed) {
-            baseline = nextBaseline(baseline, kValueSize * size_, kValueSize * size_);
+            baseline = nextBaseline(baseline, valueSize_ * size_, valueSize_ * size_);
             probedValues(baseline);
         }
-        baseline = nextBaseline(baseline, kValueSize * size_, size_) + 0.15f * size_;
+        baseline = nextBaseline(baseline, valueSize_ * size_, size_) + 0.15f * size_;
         specLine(baseline);
-        baseline = nextBaseline(baseline, size_, kValueSize * size_);
+        baseline = nextBaseline(baseline, size_, valueSize_ * size_);
         keValue(baseline);
-        float bottom = baseline + (1.0f - metrics_.ascent) * kValueSize * size_;
+        float bottom = baseline + (1.0f - metrics_.ascent) * valueSize_ * size_;
         if (in_.emissive) {
-            baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
+            baseline = nextBaseline(baseline, valueSize_ * size_, kFresnelSize * size_) + 0.1f * size_;
             const Span s = set_.set(kEmissiveLine, pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Emissive),
                                     FormulaTerm::Emissive);
             box(FormulaTerm::Emissive, s, baseline, kFresnelSize * size_);
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
         if (anisotropicLobe(in_.material, in_.env)) {
-            baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
+            baseline = nextBaseline(baseline, valueSize_ * size_, kFresnelSize * size_) + 0.1f * size_;
             const Span s = set_.set(anisotropyLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
                                     FormulaTerm::Specular);
             box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
         if (in_.env.fresnel != FresnelMode::None) {
-            baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
+            baseline = nextBaseline(baseline, valueSize_ * size_, kFresnelSize * size_) + 0.1f * size_;
             const Span s = set_.set(fresnelLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
                                     FormulaTerm::Specular);
             box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
@@ -224,7 +223,7 @@ private:
         piece("·S·spec_l", FormulaTerm::Specular, baseline);
         piece(")", FormulaTerm::None, baseline);
         const std::string note = showNote(in_.env.show);
-        if (!note.empty()) set_.set(note, x_, baseline, kValueSize * size_, kNoteColor, FormulaTerm::None, FormulaRun::Kind::Note);
+        if (!note.empty()) set_.set(note, x_, baseline, valueSize_ * size_, kNoteColor, FormulaTerm::None, FormulaRun::Kind::Note);
         for (FormulaTerm t : {FormulaTerm::Ambient, FormulaTerm::Diffuse, FormulaTerm::Specular})
             box(t, spans_[int(t)], baseline, size_);
         if (in_.emissive) box(FormulaTerm::Emissive, spans_[int(FormulaTerm::Emissive)], baseline, size_);
@@ -232,7 +231,7 @@ private:
 
     // A value centred under `under`, pushed right of the previous one on its row so none overlap.
     void valueUnder(const Span& under, const std::string& text, FormulaTerm term, float baseline, float& rowEnd) {
-        const float size = kValueSize * size_;
+        const float size = valueSize_ * size_;
         const float w = metrics_.width(text, size);
         const float x = std::max(under.centre() - 0.5f * w, rowEnd);
         set_.set(text, x, baseline, size, color(term), term, FormulaRun::Kind::Value);
@@ -251,7 +250,7 @@ private:
     void probedValues(float baseline) {
         const ShadingTerms& t = *in_.probed;
         float rowEnd = 0.0f;
-        const float size = kValueSize * size_;
+        const float size = valueSize_ * size_;
         set_.set("= " + formulaRgb(t.total), lSpan_.x0, baseline, size, kSymbolColor, FormulaTerm::None, FormulaRun::Kind::Value);
         rowEnd = lSpan_.x0 + metrics_.width("= " + formulaRgb(t.total), size) + 0.6f * size;
         if (in_.emissive) valueUnder(spans_[int(FormulaTerm::Emissive)], formulaRgb(t.emissive), FormulaTerm::Emissive, baseline, rowEnd);
@@ -289,6 +288,7 @@ private:
     float x_ = 0;
     Span spans_[5];  // by FormulaTerm
     Span kSpans_[3], keSpan_, lSpan_;
+    const float valueSize_;  // FormulaInput::valueSize
 };
 
 }  // namespace
@@ -347,16 +347,19 @@ FormulaOverlay layoutFormulaOverlay(const FormulaInput& in, float viewWidth, flo
     o.formula = layoutFormulaToFit(in, kFormulaSize * fontSize, viewWidth - 2.0f * margin, metrics);
     o.x = std::round(std::max(0.5f * (viewWidth - o.formula.width), 0.0f));
     o.y = std::round(viewHeight - margin - o.formula.height);
+    // One size for every pane's line: where a pane is narrower than its line, all get smaller (down to
+    // 60%; a line still too wide is cut), so no pane's note reads smaller than its neighbours'.
+    float noteSize = 1.1f * fontSize;
+    for (const FormulaPane& p : panes) {
+        const float width = metrics.width(evaluatedWhere(p.mode, p.difference), 1.1f * fontSize);
+        if (width > p.width * 0.95f)
+            noteSize = std::min(noteSize, 1.1f * fontSize * std::max(p.width * 0.95f / std::max(width, 1.0f), 0.6f));
+    }
     for (const FormulaPane& p : panes) {
         FormulaNote n;
         n.text = evaluatedWhere(p.mode, p.difference);
-        n.size = 1.1f * fontSize;
+        n.size = noteSize;
         n.width = metrics.width(n.text, n.size);
-        // A pane narrower than its line gets a smaller one (down to 60%), then a cut one.
-        if (n.width > p.width * 0.95f) {
-            n.size *= std::max(p.width * 0.95f / std::max(n.width, 1.0f), 0.6f);
-            n.width = metrics.width(n.text, n.size);
-        }
         n.pad = 0.3f * n.size;
         n.x = std::round(p.x + std::max(0.5f * (p.width - n.width), n.pad));
         n.y = std::round(std::min(o.y, p.y + p.height) - margin - n.size - n.pad);

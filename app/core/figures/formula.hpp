@@ -57,6 +57,8 @@ struct FormulaLayout {
     float corner = 0;             // the backing's corner radius
 };
 
+inline constexpr float kFormulaValueSize = 0.62f;
+
 // What the formula shows: the scene's reflection model and factors, the material whose k are shown,
 // and optionally the terms at a probed pixel (ProbeResult -> probedTerms, core/probe/probe.hpp).
 struct FormulaInput {
@@ -65,6 +67,9 @@ struct FormulaInput {
     bool emissive = false;    // the scene draws a glTF material that gives off light: L = E + ...
     std::optional<ShadingTerms> probed;
     std::string probedAt;  // where: "at pixel 1050,330", at the end of the probed values' row
+    // The k values, probed terms and notes under the symbols, relative to the main line: the PNG's
+    // kFormulaValueSize; the viewer shows them as large as the symbols (1) for the back of a hall.
+    float valueSize = kFormulaValueSize;
 };
 FormulaInput formulaInput(const Scene& scene, const Material& material);
 

@@ -78,7 +78,7 @@ inline constexpr Control kControls[] = {
      {typed("n", ViewerCommand::VertexNormals), typed("N", ViewerCommand::FaceNormals)}},
     {"L", "light markers", {typed("lL", ViewerCommand::LightMarkers)}},
     {"E", "the formula over the view (the term --show isolates highlighted)", {typed("eE", ViewerCommand::Formula)}},
-    {"S", "the shader's GLSL in the panel (Shader section), terms marked", {typed("sS", ViewerCommand::ShaderSection)}},
+    {"S", "the shader's GLSL, large, terms marked (F5's errors shown in it)", {typed("sS", ViewerCommand::ShaderSection)}},
     {"R   F", "reset the camera to the scene's / frame the model",
      {typed("rR", ViewerCommand::ResetCamera), typed("fF", ViewerCommand::FrameModel)}},
     {"Page Down  Page Up  (Right  Left)", "playlist: next / previous preset",
