@@ -2,6 +2,7 @@
 // 8-bit RGBA images, PNG input/output (libpng; stb on Windows) and the image comparisons: the golden tests'
 // and --reference's (cli/reference.hpp).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,8 @@ struct CompareResult {
     // difference of any channel (R, G, B or A) of any pixel, and the mean over every channel of every pixel.
     int channelMax = 0;
     double channelMean = 0.0;
+    // Pixels where any channel (R, G, B or A) differs at all (Playwright's maxDiffPixels counts so).
+    std::size_t differingPixels = 0;
     bool matches(const CompareTolerance& t) const {
         return sizeMatches && failingShare <= t.maxFailingShare && meanDifference <= t.maxMean;
     }
@@ -70,8 +73,12 @@ CompareResult compareImages(const Image& actual, const Image& expected, int pixe
 struct ReferenceTolerance {
     int maxDiff = 4;
     double meanDiff = 0.002;
+    // At most this many pixels may differ at all (--max-diff-pixels, a scene's "test": "max_diff_pixels");
+    // none: no such limit.
+    std::optional<std::uint64_t> maxDiffPixels;
     bool matches(const CompareResult& r) const {
-        return r.sizeMatches && r.channelMax <= maxDiff && r.channelMean <= meanDiff;
+        return r.sizeMatches && r.channelMax <= maxDiff && r.channelMean <= meanDiff &&
+               (!maxDiffPixels || r.differingPixels <= *maxDiffPixels);
     }
 };
 // Visualises a comparison: grey copy of `expected`, failing pixels in red, smaller differences in
