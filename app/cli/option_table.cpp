@@ -441,8 +441,8 @@ const OptionSpec kOptions[] = {
      [](Options& o, const OptionSpec& self, const std::string& v) { o.camera = intIn(self, v); }},
     {"--max-memory", "", "SIZE", G::General, kNoBounds, nullptr, "",
      "the memory budget for `--output`, `--sweep`, `--playlist` and `--benchmark` (`2G`, `512M`, at least `64M`; "
-     "default half of the machine's memory): a request estimated to need more is refused with one line saying "
-     "how much",
+     "default half of the machine's memory, or of the container's cgroup limit where smaller): a request "
+     "estimated to need more is refused with one line saying how much",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          const auto bytes = parseByteSize(v);
          if (!bytes) throw InputError(std::string(self.name) + ": \"" + quoteInput(v) + "\" is not a size (e.g. 2G, 512M)");

@@ -98,13 +98,16 @@ struct Checked {
     int shadelab = 0, cmakeOptions = 0, files = 0;
 };
 
-// A word with the CI's own variables that the sharded recipes pass to shadelab (GitHub's matrix, GitLab's
-// parallel jobs) replaced by values they take.
+// A word with the variables the recipes pass to shadelab replaced by values they take: the CI's own
+// (GitHub's matrix, GitLab's parallel jobs) and the loop of docs/ci.md's measurements.
 std::string withCiValues(std::string word) {
     for (const auto& [variable, value] : {std::pair<std::string, std::string>{"${{ matrix.shard }}", "2"},
                                           {"${{ strategy.job-total }}", "4"},
                                           {"$CI_NODE_INDEX", "2"},
-                                          {"$CI_NODE_TOTAL", "4"}})
+                                          {"$CI_NODE_TOTAL", "4"},
+                                          {"$((ke + 1))", "33"},
+                                          {"$ke", "32"},
+                                          {"$size", "320x240"}})
         for (std::size_t at = word.find(variable); at != std::string::npos; at = word.find(variable))
             word.replace(at, variable.size(), value);
     return word;
