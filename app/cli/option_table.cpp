@@ -191,6 +191,10 @@ const OptionSpec kOptions[] = {
      "with `--reference` or `--test`: the largest mean difference allowed, over every channel of every pixel, in /255 "
      "({range}, default {mean-diff})",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.meanDiff = floatIn(self, v); }},
+    {"--max-diff-pixels", "", "P", G::General, bounds(kMaxDiffPixelsRange), nullptr, "",
+     "with `--reference` or `--test`: at most P pixels may differ at all, in any channel (Playwright's "
+     "maxDiffPixels; {range}, default no limit)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.maxDiffPixels = std::uint64_t(intIn(self, v)); }},
     {"--diff-output", "", "DIFF.png", G::General, kNoBounds, nullptr, "",
      "with `--reference`: also write the difference as the diff layout's third pane draws it, per channel "
      "|image - reference| x the layout's factor (`--diff-factor`, default {diff-factor}); not written when the "
@@ -222,6 +226,30 @@ const OptionSpec kOptions[] = {
      "(missing or malformed) from this run's renders, atomically, and say which; matching references are "
      "left untouched. Exit status 0 unless a case could not be rendered",
      setTrue<&Options::update>},
+    {"--artifacts", "", "DIR", G::General, kNoBounds, nullptr, "",
+     "with `--test`: write each failing case's render (`NAME.actual.png`), difference (`NAME.diff.png`) and "
+     "reference (`NAME.reference.png`) into DIR (created if missing), for the CI to keep; the JUnit testcase "
+     "links them as `[[ATTACHMENT|DIR/NAME.diff.png]]`",
+     setPath<&Options::artifacts>},
+    {"--list", "", "", G::General, kNoBounds, nullptr, "",
+     "with `--test`: print the names of the cases it would run (after `--filter` and `--shard`), one a line, "
+     "and render nothing",
+     setTrue<&Options::list>},
+    {"--filter", "", "GLOB", G::General, kNoBounds, nullptr, "",
+     "with `--test`: only the cases whose name (the scene's path in DIR without .json) matches GLOB (`*` any "
+     "characters, `?` one); repeat for more. One that matches no case is refused",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         if (v.empty()) throw InputError(std::string(self.name) + ": empty pattern");
+         o.filters.push_back(v);
+     }},
+    {"--shard", "", "K/N", G::General, kNoBounds, nullptr, "",
+     "with `--test`: run the K-th of N disjoint parts of the cases (1 <= K <= N <= 1000), for N parallel CI jobs; "
+     "a case's part follows from its name alone, so adding a case moves no other",
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         const auto kn = pairOf(self.name, v, '/', "K/N, the K-th of N parts, e.g. 2/4");
+         const int n = parseInt(self.name, kn.second, 1, 1000);
+         o.shard = {parseInt(self.name, kn.first, 1, n), n};
+     }},
     {"--shading", "", "MODE", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "shading",
      "shading mode (single layout): {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); }},
@@ -413,8 +441,8 @@ const OptionSpec kOptions[] = {
      [](Options& o, const OptionSpec& self, const std::string& v) { o.camera = intIn(self, v); }},
     {"--max-memory", "", "SIZE", G::General, kNoBounds, nullptr, "",
      "the memory budget for `--output`, `--sweep`, `--playlist` and `--benchmark` (`2G`, `512M`, at least `64M`; "
-     "default half of the machine's memory): a request estimated to need more is refused with one line saying "
-     "how much",
+     "default half of the machine's memory, or of the container's cgroup limit where smaller): a request "
+     "estimated to need more is refused with one line saying how much",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          const auto bytes = parseByteSize(v);
          if (!bytes) throw InputError(std::string(self.name) + ": \"" + quoteInput(v) + "\" is not a size (e.g. 2G, 512M)");

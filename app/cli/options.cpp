@@ -134,8 +134,12 @@ void checkViewerAndPlot(const Options& o, const std::vector<const OptionSpec*>& 
 void checkTestSuite(const Options& o, const std::vector<const OptionSpec*>& given) {
     if (!o.testDir) {
         const char* flag = o.referencesDir ? "--references" : o.junit ? "--junit" : o.report ? "--report"
-                           : o.update      ? "--update"
-                                           : nullptr;
+                           : o.update             ? "--update"
+                           : o.artifacts          ? "--artifacts"
+                           : o.list               ? "--list"
+                           : !o.filters.empty()   ? "--filter"
+                           : o.shard              ? "--shard"
+                                                  : nullptr;
         if (flag) throw InputError(std::string(flag) + ": belongs to a folder of screenshot tests: give --test DIR");
         return;
     }
@@ -169,10 +173,12 @@ void checkReference(const Options& o) {
         const char* flag = o.referenceMissing           ? "--reference-missing"
                            : o.maxDiff && !o.testDir    ? "--max-diff"
                            : o.meanDiff && !o.testDir   ? "--mean-diff"
+                           : o.maxDiffPixels && !o.testDir ? "--max-diff-pixels"
                            : o.diffOutput               ? "--diff-output"
                                                         : nullptr;
         if (!flag) return;
-        const bool threshold = flag == std::string("--max-diff") || flag == std::string("--mean-diff");
+        const bool threshold = flag == std::string("--max-diff") || flag == std::string("--mean-diff") ||
+                               flag == std::string("--max-diff-pixels");
         throw InputError(std::string(flag) + ": sets up the comparison with a reference: give --reference REF.png" +
                          (threshold ? " (or --test DIR)" : ""));
     }

@@ -62,6 +62,11 @@ struct Options {
     std::optional<std::string> junit;          // --junit FILE.xml
     std::optional<std::string> report;         // --report FILE.html
     bool update = false;                       // --update
+    std::optional<std::string> artifacts;      // --artifacts DIR: each failing case's PNGs, for the CI to keep
+    std::vector<std::string> filters;          // --filter GLOB (repeatable): only the cases whose name matches one
+    std::optional<std::pair<int, int>> shard;  // --shard K/N: the K-th (1-based) of N parts of the cases
+    bool list = false;                         // --list: print the case names, render nothing
+    std::optional<std::uint64_t> maxDiffPixels;  // --max-diff-pixels P (with --reference or --test)
     std::optional<ShadingMode> shading;
     std::optional<Layout> layout;
     std::optional<ReflectionModel> reflection;

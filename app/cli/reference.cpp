@@ -29,7 +29,10 @@ std::string comparisonText(const CompareResult& r, const ReferenceTolerance& t) 
     char mean[32];
     std::snprintf(mean, sizeof mean, "%.3g", r.channelMean);
     return "max " + std::to_string(r.channelMax) + "/255 (limit " + std::to_string(t.maxDiff) + "), mean " + mean +
-           " (limit " + formatNumber(t.meanDiff) + ")";
+           " (limit " + formatNumber(t.meanDiff) + ")" +
+           (t.maxDiffPixels ? ", " + std::to_string(r.differingPixels) + (r.differingPixels == 1 ? " pixel differs" : " pixels differ") +
+                                  " (limit " + std::to_string(*t.maxDiffPixels) + ")"
+                            : "");
 }
 
 std::string sizeText(const Image& image) { return std::to_string(image.width) + "x" + std::to_string(image.height); }
@@ -38,6 +41,7 @@ ReferenceTolerance referenceTolerance(const Options& options) {
     ReferenceTolerance t;
     if (options.maxDiff) t.maxDiff = *options.maxDiff;
     if (options.meanDiff) t.meanDiff = *options.meanDiff;
+    t.maxDiffPixels = options.maxDiffPixels;
     return t;
 }
 

@@ -80,7 +80,7 @@ int runPlaylistImages(const RunContext& run) {
     renderScenesHeadless(scenes, run.shaders, run.backend, [&](std::size_t i, Image image) {
         const Preset& p = presets[i];
         frames[i] = finished(options, std::move(image), scenes[i], presetTitle(p));
-    }, headlessMsaa(options), kept);
+    }, headlessMsaa(options), [kept](std::size_t) { return kept; });
     createOutputFolder(*options.output, "--output");
     for (std::size_t i = 0; i < presets.size(); ++i) {
         const std::string path = (std::filesystem::path(*options.output) / (presets[i].name + ".png")).string();

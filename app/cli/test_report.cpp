@@ -25,12 +25,13 @@ std::string seconds(double s) {
     return text;
 }
 
-// "a, b, c" of the cases with `outcome`, at most `most` names then "and N more".
-std::string namesOf(const TestRun& run, CaseOutcome outcome, std::size_t most = 8) {
+// "a, b, c" of the cases `which` picks, at most `most` names then "and N more".
+template <typename Which>
+std::string namesOf(const TestRun& run, Which which, std::size_t most = 8) {
     std::string names;
     std::size_t n = 0;
     for (const TestCase& c : run.cases) {
-        if (c.outcome != outcome) continue;
+        if (!which(c)) continue;
         if (n < most) names += (n ? ", " : "") + c.name;
         ++n;
     }
@@ -43,10 +44,30 @@ std::string caseMessage(const TestCase& c) { return c.outcome == CaseOutcome::Ma
 
 }  // namespace
 
+std::string shownPath(const fs::path& path) {
+    std::error_code ec;
+    const fs::path here = fs::current_path(ec);
+    const fs::path absolute = fs::absolute(path, ec).lexically_normal();
+    if (ec) return path.string();
+    const fs::path relative = absolute.lexically_relative(here);
+    if (relative.empty() || *relative.begin() == "..") return path.lexically_normal().generic_string();
+    return relative.generic_string();
+}
+
 std::size_t countOf(const TestRun& run, CaseOutcome outcome) {
     return std::size_t(std::count_if(run.cases.begin(), run.cases.end(),
                                      [outcome](const TestCase& c) { return c.outcome == outcome; }));
 }
+
+namespace {
+
+// The cases that failed and were not rewritten by --update, of `outcome`.
+std::size_t countStill(const TestRun& run, CaseOutcome outcome) {
+    return std::size_t(std::count_if(run.cases.begin(), run.cases.end(),
+                                     [outcome](const TestCase& c) { return c.outcome == outcome && !c.updated; }));
+}
+
+}  // namespace
 
 std::string caseLine(const TestRun& run, const TestCase& c) {
     return oneLine("shadelab: --test " + run.dir + ": " + c.name + ": " + outcomeWord(c.outcome) + ": " + caseMessage(c),
@@ -54,14 +75,19 @@ std::string caseLine(const TestRun& run, const TestCase& c) {
 }
 
 std::string summaryLine(const TestRun& run) {
-    const std::size_t differs = countOf(run, CaseOutcome::Differs), errors = countOf(run, CaseOutcome::Error);
-    std::string line = "shadelab: --test " + run.dir + ": " + std::to_string(run.cases.size()) + " scene" +
-                       (run.cases.size() == 1 ? "" : "s") + ", " + std::to_string(countOf(run, CaseOutcome::Match)) +
-                       " match";
+    const std::size_t differs = countStill(run, CaseOutcome::Differs), errors = countStill(run, CaseOutcome::Error);
+    const std::size_t written = std::size_t(std::count_if(run.cases.begin(), run.cases.end(),
+                                                          [](const TestCase& c) { return c.updated; }));
+    const auto still = [](CaseOutcome o) { return [o](const TestCase& c) { return c.outcome == o && !c.updated; }; };
+    std::string line = "shadelab: --test " + run.dir + (run.shard.empty() ? "" : " (shard " + run.shard + ")") + ": " +
+                       std::to_string(run.cases.size()) + " scene" + (run.cases.size() == 1 ? "" : "s") + ", " +
+                       std::to_string(countOf(run, CaseOutcome::Match)) + " match";
+    if (written) line += ", " + std::to_string(written) + " written (" +
+                         namesOf(run, [](const TestCase& c) { return c.updated; }) + ")";
     if (differs) line += ", " + std::to_string(differs) + " differ" + (differs == 1 ? "s" : "") + " (" +
-                         namesOf(run, CaseOutcome::Differs) + ")";
+                         namesOf(run, still(CaseOutcome::Differs)) + ")";
     if (errors) line += ", " + std::to_string(errors) + " error" + (errors == 1 ? "" : "s") + " (" +
-                        namesOf(run, CaseOutcome::Error) + ")";
+                        namesOf(run, still(CaseOutcome::Error)) + ")";
     // A broken shader fails every case that uses it: its located error once, here, not once per case.
     std::set<std::string> shaderErrors;
     for (const TestCase& c : run.cases)
@@ -104,9 +130,18 @@ std::string base64(const std::string& bytes) {
 }
 
 std::string junitXml(const TestRun& run) {
-    const std::string counts = "tests=\"" + std::to_string(run.cases.size()) + "\" failures=\"" +
-                               std::to_string(countOf(run, CaseOutcome::Differs)) + "\" errors=\"" +
-                               std::to_string(countOf(run, CaseOutcome::Error)) + "\"";
+    // A run that could not start is one error case, so the CI's test view says why.
+    const bool failedToStart = !run.runError.empty();
+    const std::size_t tests = failedToStart ? 1 : run.cases.size();
+    const std::size_t errors = failedToStart ? 1 : countOf(run, CaseOutcome::Error);
+    const std::string counts = "tests=\"" + std::to_string(tests) + "\" failures=\"" +
+                               std::to_string(failedToStart ? 0 : countOf(run, CaseOutcome::Differs)) + "\" errors=\"" +
+                               std::to_string(errors) + "\"";
+    // The suite's time is the sum of its cases' (what junit-10.xsd's consumers add up); the run's wall
+    // clock is less, as references are compared on other threads while the next scene renders.
+    double sum = 0;
+    for (const TestCase& c : run.cases) sum += c.seconds;
+    const std::string time = seconds(failedToStart ? run.seconds : sum);
     // "shadelab.screens" for --test path/to/screens/: what a CI's test view groups the cases under.
     // The folder's own name, also for "screens/", "." or "..": its absolute form, without a trailing '/'.
     std::error_code ec;
@@ -114,13 +149,19 @@ std::string junitXml(const TestRun& run) {
     if (ec || dir.filename().empty()) dir = fs::path(run.dir).lexically_normal();
     if (dir.filename().empty()) dir = dir.parent_path();
     const std::string classname = "shadelab." + dir.filename().string();
+    const std::string suite = "shadelab --test " + shownPath(run.dir) + (run.shard.empty() ? "" : " --shard " + run.shard);
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadelab --test\" " << counts << " time=\""
-      << seconds(run.seconds) << "\">\n  <testsuite name=\"" << xmlEscaped("shadelab --test " + run.dir) << "\" "
-      << counts << " skipped=\"0\" time=\"" << seconds(run.seconds) << "\">\n";
-    for (const TestCase& c : run.cases) {
-        x << "    <testcase classname=\"" << xmlEscaped(classname) << "\" name=\"" << xmlEscaped(c.name)
-          << "\" file=\"" << xmlEscaped(c.scenePath) << "\" time=\"" << seconds(c.seconds) << "\"";
+      << time << "\">\n  <testsuite name=\"" << xmlEscaped(suite) << "\" " << counts << " skipped=\"0\" time=\"" << time
+      << "\">\n";
+    if (failedToStart)
+        x << "    <testcase classname=\"" << xmlEscaped(classname) << "\" name=\"OpenGL\" time=\"" << time << "\">\n"
+          << "      <error type=\"gl\" message=\"" << xmlEscaped("OpenGL cannot start: " + run.runError) << "\">"
+          << xmlEscaped("no scene of " + run.dir + " was rendered: OpenGL cannot start: " + run.runError, true)
+          << "</error>\n    </testcase>\n";
+    for (const TestCase& c : run.cases) {  // (none when the run failed to start)
+        x << "    <testcase classname=\"" << xmlEscaped(classname) << "\" name=\"" << xmlEscaped(c.name) << "\" time=\""
+          << seconds(c.seconds) << "\"";
         if (c.outcome == CaseOutcome::Match) {
             x << "/>\n";
             continue;
@@ -131,17 +172,37 @@ std::string junitXml(const TestRun& run) {
           << xmlEscaped("scene " + c.scenePath + "\nreference " + c.referencePath + "\n" + c.message +
                             (c.updated ? "\n--update: the reference was rewritten from this render" : ""),
                         true)
-          << "</" << element << ">\n    </testcase>\n";
+          << "</" << element << ">\n";
+        // GitLab shows the first attachment in the merge request: the difference, else the render.
+        std::string out = "scene " + c.scenePath + "\nreference " + c.referencePath;
+        for (const std::string* a : {&c.differenceArtifact, &c.actualArtifact, &c.referenceArtifact})
+            if (!a->empty()) out += "\n[[ATTACHMENT|" + *a + "]]";
+        x << "      <system-out>" << xmlEscaped(out, true) << "</system-out>\n    </testcase>\n";
     }
     x << "  </testsuite>\n</testsuites>\n";
     return x.str();
 }
 
+float differenceFactorFor(int channelMax) { return channelMax > 0 ? 255.0f / float(channelMax) : 1.0f; }
+
+Image differenceForReport(const Image& actual, const Image& reference, float factor, const std::vector<glm::ivec4>& masks) {
+    Image d = amplifiedDifference(actual, reference, factor);
+    // Hatched: diagonal grey stripes, 3 pixels of 8, over each masked rectangle (clipped to the image).
+    for (const glm::ivec4& m : masks)
+        for (int y = std::max(0, m.y); y < std::min(d.height, m.y + m.w); ++y)
+            for (int x = std::max(0, m.x); x < std::min(d.width, m.x + m.z); ++x)
+                if ((x + y) % 8 < 3) {
+                    std::uint8_t* p = d.pixel(x, y);
+                    p[0] = p[1] = p[2] = 128, p[3] = 255;
+                }
+    return d;
+}
 
 namespace {
 
-// Images at their own pixel size: width and height given, never stretched by the page (max-width none),
-// never smoothed (pixelated), on a grey that shows where a render is transparent.
+// Images at their own pixel size where they fit (width and height given; shrunk, never stretched, where
+// three of them are wider than the page), never smoothed (pixelated), on a grey that shows where a
+// render is transparent.
 const char* const kStyle = R"(
 body { font: 15px/1.45 system-ui, sans-serif; margin: 20px; color: #1b1b1b; background: #fff; }
 h1 { font-size: 21px; margin: 0 0 4px; }
@@ -157,7 +218,13 @@ section.case h2 { font-size: 18px; margin: 0 0 4px; }
 .images { display: flex; flex-wrap: wrap; gap: 18px; align-items: flex-start; }
 figure { margin: 0; }
 figcaption { font-size: 13px; color: #444; margin-bottom: 4px; }
-img { display: block; max-width: none; image-rendering: pixelated; background: #808080; }
+/* Side by side, each shrunk to its share of the page when they are wider than it; a click shows one
+   at its own pixel size (the row then scrolls). */
+.images { flex-wrap: nowrap; overflow-x: auto; }
+figure { flex: 0 1 auto; min-width: 0; }
+figure.full { flex: none; }
+img { display: block; max-width: 100%; height: auto; image-rendering: pixelated; background: #808080; cursor: zoom-in; }
+figure.full img { max-width: none; cursor: zoom-out; }
 table.passed { border-collapse: collapse; font-size: 13px; }
 table.passed td { padding: 1px 14px 1px 0; }
 )";
@@ -170,7 +237,7 @@ std::string dataImage(const std::string& png, const std::string& caption, const 
         for (std::size_t k = 0; k < 4; ++k) v = v << 8 | static_cast<unsigned char>(png[at + k]);
         return v;
     };
-    return "<figure><figcaption>" + xmlEscaped(caption) + "</figcaption><img alt=\"" + xmlEscaped(alt) + "\" width=\"" +
+    return "<figure onclick=\"this.classList.toggle('full')\"><figcaption>" + xmlEscaped(caption) + "</figcaption><img alt=\"" + xmlEscaped(alt) + "\" width=\"" +
            std::to_string(be32(16)) + "\" height=\"" + std::to_string(be32(20)) + "\" src=\"data:image/png;base64," +
            base64(png) + "\"></figure>";
 }
@@ -185,8 +252,12 @@ std::string failingCase(const TestCase& c) {
     h += dataImage(c.referencePng, "reference", c.name + " reference");
     h += dataImage(c.actualPng, "this render", c.name + " render");
     char factor[32];
-    std::snprintf(factor, sizeof factor, "%g", double(c.diffFactor));
-    h += dataImage(c.differencePng, std::string("|render - reference| x ") + factor, c.name + " difference");
+    std::snprintf(factor, sizeof factor, "%.4g", double(c.differenceFactor));
+    const std::string largest = c.numbers ? std::to_string(c.numbers->channelMax) + "/255" : "";
+    h += dataImage(c.differencePng,
+                   std::string("|render - reference| x ") + factor + " (the largest, " + largest + ", at full)" +
+                       (c.masks.empty() ? "" : "; hatched: masked, not compared"),
+                   c.name + " difference");
     return h + "</div></section>\n";
 }
 
@@ -194,15 +265,19 @@ std::string failingCase(const TestCase& c) {
 
 std::string htmlReport(const TestRun& run) {
     const std::size_t failing = run.cases.size() - countOf(run, CaseOutcome::Match);
-    const std::string title = "shadelab --test " + run.dir + ": " +
-                              (failing ? std::to_string(failing) + " of " + std::to_string(run.cases.size()) + " failing"
-                                       : "all " + std::to_string(run.cases.size()) + " match");
+    const std::string title = "shadelab --test " + run.dir + (run.shard.empty() ? "" : " --shard " + run.shard) + ": " +
+                              (!run.runError.empty() ? std::string("OpenGL cannot start")
+                               : failing ? std::to_string(failing) + " of " + std::to_string(run.cases.size()) + " failing"
+                                         : "all " + std::to_string(run.cases.size()) + " match");
     std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + xmlEscaped(title) +
                     "</title><style>" + kStyle + "</style></head><body>\n<h1>" + xmlEscaped(title) + "</h1>\n";
     h += "<p class=\"meta\">scenes " + xmlEscaped(run.dir) + " &middot; references " + xmlEscaped(run.referencesDir) +
          (run.shaderDir.empty() ? "" : " &middot; shaders " + xmlEscaped(run.shaderDir)) + " &middot; limits: max " +
          std::to_string(run.tolerance.maxDiff) + "/255, mean " + formatNumber(run.tolerance.meanDiff) + "/255 &middot; " +
          seconds(run.seconds) + " s</p>\n";
+    if (!run.runError.empty())
+        return h + "<p class=\"verdict bad\">" + xmlEscaped("no scene was rendered: OpenGL cannot start: " + run.runError) +
+               "</p>\n</body></html>\n";
     h += std::string("<p class=\"verdict ") + (failing ? "bad" : "ok") + "\">" +
          xmlEscaped(summaryLine(run).substr(std::string("shadelab: ").size())) + "</p>\n";
     for (const TestCase& c : run.cases)
@@ -212,7 +287,7 @@ std::string htmlReport(const TestRun& run) {
         for (const TestCase& c : run.cases)
             if (c.outcome == CaseOutcome::Match)
                 h += "<tr><td>" + xmlEscaped(c.name) + "</td><td>" +
-                     (c.numbers ? xmlEscaped(comparisonText(*c.numbers, run.tolerance)) : "") + "</td></tr>\n";
+                     (c.numbers ? xmlEscaped(comparisonText(*c.numbers, c.tolerance)) : "") + "</td></tr>\n";
         h += "</table>\n";
     }
     return h + "</body></html>\n";

@@ -123,9 +123,10 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 }
 
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
-                          const std::function<void(std::size_t, Image)>& done, int msaaSamples, std::uint64_t keptBytes,
-                          const SceneFailed& failed) {
+                          const std::function<void(std::size_t, Image)>& done, int msaaSamples,
+                          const KeptBytes& keptBytes, const SceneFailed& failed) {
     if (scenes.empty()) return;
+    const auto kept = [&keptBytes](std::size_t i) { return keptBytes ? keptBytes(i) : 0; };
     // With `failed`, a scene's input or shader error is its own (reported, the next scene drawn); without,
     // the first ends the run. An InputError or a ShaderError leaves the context as it was: programs that
     // failed are not kept (ProgramCache builds them again when asked), a model that failed is no geometry.
@@ -143,7 +144,7 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
     };
     std::vector<bool> refused(scenes.size(), false);
     for (std::size_t i = 0; i < scenes.size(); ++i)  // before any work
-        refused[i] = !each(i, [&] { checkFrameMemory(scenes[i], msaaSamples, std::nullopt, keptBytes); });
+        refused[i] = !each(i, [&] { checkFrameMemory(scenes[i], msaaSamples, std::nullopt, kept(i)); });
     const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
     Renderer renderer(context->getProcAddress(), shaders, headlessOptions());
     MultisampleTarget msaa;
@@ -159,7 +160,7 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
                 geometry.reset();  // the previous meshes go before the next are read
                 built = nullptr;
                 geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-                checkFrameMemory(s, msaaSamples, geometry->triangleCount(), keptBytes, geometry->textureBytes());
+                checkFrameMemory(s, msaaSamples, geometry->triangleCount(), kept(i), geometry->textureBytes());
                 renderer.setGeometry(geometry);
                 built = &s;
             }
@@ -224,7 +225,7 @@ Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, c
     const auto addTile = [&](std::size_t, Image tile) { tiles.push_back(std::move(tile)); };
     // The tiles are kept, then copied into the sheet: twice their pixels, 4 bytes each.
     const std::uint64_t kept = 2 * 4 * std::uint64_t(base.width) * std::uint64_t(base.height) * scenes.size();
-    renderScenesHeadless(scenes, shaders, backend, addTile, msaaSamples, kept);
+    renderScenesHeadless(scenes, shaders, backend, addTile, msaaSamples, [kept](std::size_t) { return kept; });
     return contactSheet(tiles, labels, int(columns));
 }
 

@@ -39,15 +39,16 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
 // one's; programs are kept, geometry is rebuilt only when the meshes differ from the previous scene's)
 // and hands each image to `done` with its index as soon as it is read back, so a long playlist never
 // holds more than one image. A glTF scene without a camera is framed as for --output. Every scene is
-// checked against the memory budget (core/scene/memory_budget.hpp) with `keptBytes` more for the images the
-// caller keeps, before anything is drawn and again once its models are read.
+// checked against the memory budget (core/scene/memory_budget.hpp) with `keptBytes(i)` more for the images
+// the caller keeps while scene i is drawn, before anything is drawn and again once its models are read.
 // Without `failed`, the first InputError or ShaderError ends the whole call; with it (`--test`), a scene
 // that fails (a model that cannot be read, over the budget, a shader that does not compile) is handed
 // to `failed` instead of `done` and the next scene is drawn on the same context and programs.
 using SceneFailed = std::function<void(std::size_t, const std::exception&)>;
+using KeptBytes = std::function<std::uint64_t(std::size_t)>;  // none: 0
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
                           const std::function<void(std::size_t, Image)>& done, int msaaSamples = 1,
-                          std::uint64_t keptBytes = 0, const SceneFailed& failed = nullptr);
+                          const KeptBytes& keptBytes = nullptr, const SceneFailed& failed = nullptr);
 
 // The frames of a scene that changes with time (an animation: core/scene/animation.hpp), on one context
 // with one renderer. `base` is framed once as for --output (a glTF model without a camera, its lights);

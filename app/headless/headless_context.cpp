@@ -33,17 +33,32 @@ std::unique_ptr<HeadlessContext> makeContext(HeadlessBackend backend, int width,
 
 }  // namespace
 
+namespace {
+
+// makeContext, its failures (other than the build's, an InputError) as GlUnavailable.
+std::unique_ptr<HeadlessContext> makeAvailable(HeadlessBackend backend, int width, int height) {
+    try {
+        return makeContext(backend, width, height);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::runtime_error& e) {
+        throw GlUnavailable(e.what());
+    }
+}
+
+}  // namespace
+
 std::unique_ptr<HeadlessContext> makeHeadlessContext(HeadlessBackend backend, int width, int height) {
-    if (backend != HeadlessBackend::Auto) return makeContext(backend, width, height);
-    if (!SHADELAB_HAVE_OSMESA) return makeContext(HeadlessBackend::Egl, width, height);
-    if (!SHADELAB_HAVE_EGL) return makeContext(HeadlessBackend::OsMesa, width, height);
+    if (backend != HeadlessBackend::Auto) return makeAvailable(backend, width, height);
+    if (!SHADELAB_HAVE_OSMESA) return makeAvailable(HeadlessBackend::Egl, width, height);
+    if (!SHADELAB_HAVE_EGL) return makeAvailable(HeadlessBackend::OsMesa, width, height);
     try {
         return makeContext(HeadlessBackend::OsMesa, width, height);
     } catch (const std::exception& osmesa) {
         try {
             return makeContext(HeadlessBackend::Egl, width, height);
         } catch (const std::exception& egl) {
-            throw std::runtime_error(std::string("no headless OpenGL: ") + osmesa.what() + "; " + egl.what());
+            throw GlUnavailable(std::string("no headless OpenGL: ") + osmesa.what() + "; " + egl.what());
         }
     }
 }

@@ -5,11 +5,19 @@
 #include "render/renderer.hpp"
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace shadelab {
 
 enum class HeadlessBackend { Auto, OsMesa, Egl };
+
+// No OpenGL context could be made: the libraries are missing or broken, or the driver refused. What
+// failed, per backend tried. (`--test` tells it apart from a failing case: exit status 2.)
+class GlUnavailable : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
 
 class HeadlessContext {
 public:
@@ -21,7 +29,7 @@ public:
     virtual const char* backendName() const = 0;
 };
 
-// Auto tries OSMesa, then EGL (of those this build has). Throws std::runtime_error saying what is missing
+// Auto tries OSMesa, then EGL (of those this build has). Throws GlUnavailable saying what is missing
 // for each; asking for a backend the build has not got (CMake options SHADELAB_OSMESA, SHADELAB_EGL) is an
 // InputError.
 std::unique_ptr<HeadlessContext> makeHeadlessContext(HeadlessBackend backend, int width, int height);

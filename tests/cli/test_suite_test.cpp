@@ -10,9 +10,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
 #include <regex>
 #include <string>
 #include <thread>
@@ -23,6 +27,7 @@ namespace fs = std::filesystem;
 
 using test::Cli;
 using test::RunResult;
+using test::runShadelab;
 using test::slurp;
 
 namespace {
@@ -39,6 +44,10 @@ std::size_t occurrences(const std::string& text, const std::string& part) {
 
 class TestSuite : public Cli {
 protected:
+    // `name` in this test's folder as the reports give it: relative to the folder shadelab runs in.
+    std::string shown(const std::string& name) const {
+        return (dir_ / name).lexically_relative(fs::current_path()).generic_string();
+    }
     // DIR/NAME.json and, in `refs` (DIR itself when empty), NAME.png for each golden scene.
     std::string makeFolder(const std::string& dir, const std::string& refs = "") const {
         fs::create_directories(dir_ / dir);
@@ -133,8 +142,16 @@ TEST_F(TestSuite, ReportShowsTheFailingImagesInABrowser) {
     const std::string dir = makeFolder("cases");
     raiseKe("cases", "phong_uvsphere");
     ASSERT_EQ(run({"--test", dir, "--report", path("report.html")}).exitCode, 1);
+    // The page's difference is scaled so the largest is at full brightness: x 255/max.
+    const RunResult one = run({path("cases/phong_uvsphere.json"), "--output", path("actual.png"), "--reference",
+                               path("cases/phong_uvsphere.png")});
+    ASSERT_EQ(one.exitCode, 1) << one.out << one.err;
+    std::smatch largest;
+    ASSERT_TRUE(std::regex_search(one.out, largest, std::regex("max (\\d+)/255"))) << one.out;
+    char factor[32];
+    std::snprintf(factor, sizeof factor, "%.9g", double(255.0f / float(std::stoi(largest[1]))));
     ASSERT_EQ(run({path("cases/phong_uvsphere.json"), "--output", path("actual.png"), "--reference",
-                   path("cases/phong_uvsphere.png"), "--diff-output", path("diff.png")})
+                   path("cases/phong_uvsphere.png"), "--diff-output", path("diff.png"), "--diff-factor", factor})
                   .exitCode,
               1);
     const std::string command = "cd " + dir_.string() +
@@ -162,13 +179,13 @@ TEST_F(TestSuite, BrokenCasesFailAndTheRunGoesOn) {
     const RunResult r = run({"--test", dir, "--references", path("refs"), "--junit", path("junit.xml")});
     EXPECT_EQ(r.exitCode, 1) << r.err;
     const std::string prefix = "shadelab: --test " + dir + ": ";
-    EXPECT_NE(r.out.find(prefix + "broken: error: " + path("cases/broken.json") + ": malformed JSON"), std::string::npos)
+    EXPECT_NE(r.out.find(prefix + "broken: error: " + shown("cases/broken.json") + ": malformed JSON"), std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find(prefix + "flat_uvsphere: error: the reference: " + path("refs/flat_uvsphere.png") +
+    EXPECT_NE(r.out.find(prefix + "flat_uvsphere: error: the reference: " + shown("refs/flat_uvsphere.png") +
                          ": cannot read PNG"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find(prefix + "gouraud_uvsphere: error: the reference " + path("refs/gouraud_uvsphere.png") +
+    EXPECT_NE(r.out.find(prefix + "gouraud_uvsphere: error: the reference " + shown("refs/gouraud_uvsphere.png") +
                          " does not exist (--update writes it from this render)\n"),
               std::string::npos)
         << r.out;
@@ -227,11 +244,14 @@ TEST_F(TestSuite, UpdateRewritesExactlyTheFailingReferences) {
     EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
     const std::string prefix = "shadelab: --test " + dir + ": ";
     for (const char* name : {"gouraud_uvsphere", "phong_uvsphere"})
-        EXPECT_NE(r.out.find(prefix + name + ": --update: wrote " + path(std::string("refs/") + name + ".png") +
+        EXPECT_NE(r.out.find(prefix + name + ": --update: wrote " + shown(std::string("refs/") + name + ".png") +
                              " from this render\n"),
                   std::string::npos)
             << r.out;
     EXPECT_EQ(occurrences(r.out, "--update: wrote"), 2u) << r.out;
+    // Issue 32: the summary says what was written, not "errors", with exit status 0.
+    EXPECT_NE(r.out.find(prefix + "3 scenes, 1 match, 2 written (gouraud_uvsphere, phong_uvsphere)\n"), std::string::npos)
+        << r.out;
     EXPECT_EQ(slurp(kept), keptBytes);
     EXPECT_EQ(fs::last_write_time(kept), keptTime);
     // Three references and nothing else (no temporary file left behind).
@@ -241,4 +261,283 @@ TEST_F(TestSuite, UpdateRewritesExactlyTheFailingReferences) {
     EXPECT_EQ(again.out, prefix + "3 scenes, 3 match\n");
     // The rewritten phong reference is the changed scene, not the golden image any more.
     EXPECT_NE(slurp(path("refs/phong_uvsphere.png")), slurp(kSource / "tests/golden/phong_uvsphere.png"));
+}
+
+// ---- Issue 32: what a CI maintainer hit on a first try, and sharding, artifacts, per-scene settings.
+
+namespace {
+
+// xmllint --schema against the constraints of Jenkins xunit's junit-10.xsd (tests/cli/junit-xunit.xsd):
+// "" when `xml` is valid, else what xmllint said.
+std::string schemaErrors(const std::string& xmlPath, const std::string& logPath) {
+    const std::string command = "xmllint --noout --schema '" + (kSource / "tests/cli/junit-xunit.xsd").string() + "' '" +
+                                xmlPath + "' >'" + logPath + "' 2>&1";
+    return std::system(command.c_str()) == 0 ? "" : slurp(logPath) + "";
+}
+
+bool haveXmllint() { return std::system("command -v xmllint >/dev/null 2>&1") == 0; }
+
+// The JUnit testcases' names, in order.
+std::vector<std::string> junitCases(const std::string& xml) {
+    std::vector<std::string> names;
+    const std::regex testcase("<testcase [^>]*name=\"([^\"]*)\"");
+    for (auto it = std::sregex_iterator(xml.begin(), xml.end(), testcase); it != std::sregex_iterator(); ++it)
+        names.push_back((*it)[1]);
+    return names;
+}
+
+// A shared library of this process that is no GL library (zlib or libpng: the PNG code's), for a folder
+// that holds it under GL's names; empty where /proc/self/maps does not tell.
+std::string someOtherLibrary() {
+    std::ifstream maps("/proc/self/maps");
+    for (std::string line; std::getline(maps, line);) {
+        const std::size_t at = line.find('/');
+        if (at == std::string::npos) continue;
+        const std::string file = line.substr(at);
+        const std::string name = fs::path(file).filename().string();
+        if (name.rfind("libz.so", 0) == 0 || name.rfind("libpng", 0) == 0) return file;
+    }
+    return "";
+}
+
+}  // namespace
+
+// Defect 1: OpenGL cannot start (its libraries broken: libOSMesa.so.8 and libEGL.so.1 found first are a
+// library of another kind, so the real dlopen and symbol lookup fail): exit status 2 (the run cannot
+// start, not "pixels differ"), one line on stderr, and the --junit file written with one error saying
+// why, valid against the schema.
+TEST_F(TestSuite, OpenGlThatCannotStartIsStatusTwoWithJunit) {
+    const std::string library = someOtherLibrary();
+    if (library.empty()) GTEST_SKIP() << "no shared library found in /proc/self/maps";
+    fs::create_directories(path("brokengl"));
+    for (const char* name : {"libOSMesa.so.8", "libEGL.so.1"}) fs::copy_file(library, path("brokengl") + "/" + name);
+    const std::string dir = makeFolder("cases");
+    const RunResult r = run({"--test", dir, "--junit", path("junit.xml"), "--report", path("report.html")},
+                            {"LD_LIBRARY_PATH=" + path("brokengl")});
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_EQ(occurrences(r.err, "\n"), 1u) << r.err;
+    EXPECT_EQ(r.err.rfind("shadelab: --test " + dir + ": OpenGL cannot start: ", 0), 0u) << r.err;
+    const std::string xml = slurp(path("junit.xml"));
+    EXPECT_NE(xml.find("tests=\"1\" failures=\"0\" errors=\"1\""), std::string::npos) << xml;
+    EXPECT_NE(xml.find("<error type=\"gl\" message=\"OpenGL cannot start: "), std::string::npos) << xml;
+    EXPECT_NE(slurp(path("report.html")).find("OpenGL cannot start"), std::string::npos);
+    if (haveXmllint()) {
+        EXPECT_EQ(schemaErrors(path("junit.xml"), path("xmllint.log")), "");
+    }
+}
+
+// Defect 2: one scene over the memory budget errors alone; the others render and match.
+TEST_F(TestSuite, OneSceneOverTheBudgetErrorsAlone) {
+    const std::string dir = makeFolder("cases");
+    std::ofstream(path("cases/huge.json")) << R"({"size": [8192, 8192]})";
+    const RunResult r = run({"--test", dir, "--max-memory", "600M"});
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    const std::string prefix = "shadelab: --test " + dir + ": ";
+    EXPECT_NE(r.out.find(prefix + "huge: error: " + shown("cases/huge.json") + ": a 8192x8192 frame"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find(prefix + "4 scenes, 3 match, 1 error (huge)\n"), std::string::npos) << r.out;
+}
+
+// Defect 3: the JUnit validates against Jenkins xunit's schema (no testcase@file), for matching, failing
+// and broken cases and --update; GitLab's parts (classname, name, time, failure, system-out) are there.
+TEST_F(TestSuite, JunitIsValidAgainstTheXunitSchema) {
+    if (!haveXmllint()) GTEST_SKIP() << "xmllint is not installed (Debian package libxml2-utils)";
+    const std::string dir = makeFolder("cases", "refs");
+    raiseKe("cases", "phong_uvsphere");
+    fs::remove(path("refs/gouraud_uvsphere.png"));
+    std::ofstream(path("cases/broken.json")) << "{\"mesh\": <&>";
+    ASSERT_EQ(run({"--test", dir, "--references", path("refs"), "--junit", path("junit.xml"), "--artifacts",
+                   path("artifacts")})
+                  .exitCode,
+              1);
+    const std::string xml = slurp(path("junit.xml"));
+    EXPECT_EQ(xml.find(" file="), std::string::npos) << xml;
+    EXPECT_NE(xml.find("<system-out>"), std::string::npos) << xml;
+    EXPECT_EQ(schemaErrors(path("junit.xml"), path("xmllint.log")), "") << xml;
+    ASSERT_EQ(run({"--test", dir, "--references", path("refs"), "--junit", path("update.xml"), "--update"}).exitCode, 1);
+    EXPECT_EQ(schemaErrors(path("update.xml"), path("xmllint.log")), "");
+    // The schema does refuse what it should: the old testcase@file.
+    std::string old = xml;
+    old.insert(old.find("<testcase ") + 10, "file=\"cases/flat_uvsphere.json\" ");
+    std::ofstream(path("old.xml")) << old;
+    EXPECT_NE(schemaErrors(path("old.xml"), path("xmllint.log")), "");
+}
+
+// Defect 5: a failure of the mean alone (a 1/255 change) has a visible difference image: scaled so the
+// largest difference is at full brightness, and the page says by how much.
+TEST_F(TestSuite, DifferenceIsScaledToBeVisible) {
+    const std::string dir = makeFolder("cases");
+    raiseKe("cases", "phong_uvsphere");
+    const RunResult r = run({"--test", dir, "--report", path("report.html"), "--artifacts", path("art")});
+    ASSERT_EQ(r.exitCode, 1) << r.out << r.err;
+    std::smatch largest;
+    ASSERT_TRUE(std::regex_search(r.out, largest, std::regex("max (\\d+)/255"))) << r.out;
+    const Image diff = readPng(path("art/phong_uvsphere.diff.png"));
+    int brightest = 0;
+    for (std::size_t i = 0; i < diff.rgba.size(); i += 4)
+        brightest = std::max({brightest, int(diff.rgba[i]), int(diff.rgba[i + 1]), int(diff.rgba[i + 2])});
+    EXPECT_EQ(brightest, 255);  // x4 of 1 or 2 /255 was black to the eye
+    char caption[64];
+    std::snprintf(caption, sizeof caption, "x %.4g (the largest, %s/255, at full)",
+                  double(255.0f / float(std::stoi(largest[1]))), largest[1].str().c_str());
+    EXPECT_NE(slurp(path("report.html")).find(caption), std::string::npos) << caption;
+}
+
+// Defect 7: --references NEWDIR --update makes the folder; report paths are relative to where shadelab
+// ran; the suite's time is the sum of its cases'; scenes in subfolders are cases named by their path,
+// and a reference with no scene is warned about.
+TEST_F(TestSuite, SubfoldersNewReferencesRelativePathsAndTimes) {
+    makeFolder("cases");
+    fs::create_directories(path("cases/more"));
+    fs::rename(path("cases/gouraud_uvsphere.json"), path("cases/more/gouraud_uvsphere.json"));
+    fs::copy_file(path("cases/gouraud_uvsphere.png"), path("cases/orphan.png"));
+    const RunResult made =
+        runShadelab({"--test", path("cases"), "--references", path("new/refs"), "--update"}, dir_, dir_);
+    EXPECT_EQ(made.exitCode, 0) << made.out << made.err;
+    EXPECT_TRUE(fs::exists(path("new/refs/more/gouraud_uvsphere.png")));
+    EXPECT_TRUE(fs::exists(path("new/refs/flat_uvsphere.png")));
+    // Run from the test's folder with the absolute folder name: the reports say cases/..., refs/...
+    const RunResult r = runShadelab({"--test", path("cases"), "--junit", path("junit.xml")}, dir_, dir_);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;  // more/gouraud_uvsphere has no reference beside it
+    EXPECT_NE(r.out.find(": more/gouraud_uvsphere: error: the reference cases/more/gouraud_uvsphere.png does not exist"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.err.find("shadelab: warning: --test " + path("cases") + ": 2 references have no scene in " +
+                         path("cases") + ": gouraud_uvsphere.png, orphan.png"),
+              std::string::npos)
+        << r.err;
+    const std::string xml = slurp(path("junit.xml"));
+    EXPECT_EQ(junitCases(xml), (std::vector<std::string>{"flat_uvsphere", "more/gouraud_uvsphere", "phong_uvsphere"}));
+    EXPECT_NE(xml.find("scene cases/more/gouraud_uvsphere.json\nreference cases/more/gouraud_uvsphere.png"),
+              std::string::npos)
+        << xml;
+    EXPECT_EQ(xml.find(dir_.string()), std::string::npos) << xml;
+    double sum = 0, suite = -1;
+    const std::regex caseTime("<testcase [^>]* time=\"([0-9.]+)\""), suiteTime("<testsuite [^>]* time=\"([0-9.]+)\"");
+    for (auto it = std::sregex_iterator(xml.begin(), xml.end(), caseTime); it != std::sregex_iterator(); ++it)
+        sum += std::stod((*it)[1]);
+    std::smatch m;
+    if (std::regex_search(xml, m, suiteTime)) suite = std::stod(m[1]);
+    EXPECT_NEAR(suite, sum, 0.0025) << xml;  // each printed to the millisecond
+}
+
+// --artifacts: a failing case's render, difference and reference (the file itself) in DIR, linked from
+// its testcase as GitLab's [[ATTACHMENT|...]] in system-out; a matching case writes nothing there.
+TEST_F(TestSuite, ArtifactsOfTheFailingCases) {
+    makeFolder("cases");
+    raiseKe("cases", "phong_uvsphere");
+    const RunResult r = runShadelab({"--test", "cases", "--artifacts", "art", "--junit", "junit.xml"}, dir_, dir_);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(path("art"))) files.push_back(e.path().filename().string());
+    std::sort(files.begin(), files.end());
+    EXPECT_EQ(files, (std::vector<std::string>{"phong_uvsphere.actual.png", "phong_uvsphere.diff.png",
+                                               "phong_uvsphere.reference.png"}));
+    EXPECT_EQ(slurp(path("art/phong_uvsphere.reference.png")), slurp(path("cases/phong_uvsphere.png")));
+    const Image actual = readPng(path("art/phong_uvsphere.actual.png"));
+    EXPECT_EQ(actual.width, 128);
+    const std::string xml = slurp(path("junit.xml"));
+    EXPECT_NE(xml.find("[[ATTACHMENT|art/phong_uvsphere.diff.png]]\n[[ATTACHMENT|art/phong_uvsphere.actual.png]]\n"
+                       "[[ATTACHMENT|art/phong_uvsphere.reference.png]]</system-out>"),
+              std::string::npos)
+        << xml;
+}
+
+// --list, --filter and --shard: shards 1..N of a folder take every case exactly once (by name: the
+// other cases do not move when one is added), each with its own JUnit, and pass.
+TEST_F(TestSuite, ShardsRunEveryCaseOnce) {
+    const std::string dir = makeFolder("cases");
+    for (const char* extra : {"phong_reflection", "diff_icosphere"}) {
+        fs::copy_file(kSource / "tests/scenes" / (std::string(extra) + ".json"), path("cases/") + extra + ".json");
+        fs::copy_file(kSource / "tests/golden" / (std::string(extra) + ".png"), path("cases/") + extra + ".png");
+    }
+    const RunResult all = run({"--test", dir, "--list"});
+    ASSERT_EQ(all.exitCode, 0) << all.err;
+    EXPECT_EQ(all.out, "diff_icosphere\nflat_uvsphere\ngouraud_uvsphere\nphong_reflection\nphong_uvsphere\n");
+    EXPECT_EQ(run({"--test", dir, "--list", "--filter", "phong_*", "--filter", "?iff*"}).out,
+              "diff_icosphere\nphong_reflection\nphong_uvsphere\n");
+    std::multiset<std::string> listed, ran;
+    std::map<std::string, int> shardOf;
+    for (int k = 1; k <= 3; ++k) {
+        const std::string shard = std::to_string(k) + "/3";
+        const RunResult list = run({"--test", dir, "--list", "--shard", shard});
+        std::istringstream names(list.out);
+        for (std::string n; std::getline(names, n);) listed.insert(n), shardOf[n] = k;
+        const std::string junit = path("shard" + std::to_string(k) + ".xml");
+        const RunResult r = run({"--test", dir, "--shard", shard, "--junit", junit});
+        EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+        EXPECT_NE(r.out.find("(shard " + shard + ")"), std::string::npos) << r.out;
+        for (const std::string& n : junitCases(slurp(junit))) ran.insert(n);
+        if (haveXmllint()) {
+            EXPECT_EQ(schemaErrors(junit, path("xmllint.log")), "");
+        }
+    }
+    const std::multiset<std::string> expected = {"diff_icosphere", "flat_uvsphere", "gouraud_uvsphere",
+                                                 "phong_reflection", "phong_uvsphere"};
+    EXPECT_EQ(listed, expected);
+    EXPECT_EQ(ran, expected);
+    // A new case moves no other.
+    fs::copy_file(path("cases/flat_uvsphere.json"), path("cases/aaa_new.json"));
+    for (int k = 1; k <= 3; ++k) {
+        std::istringstream names(run({"--test", dir, "--list", "--shard", std::to_string(k) + "/3"}).out);
+        for (std::string n; std::getline(names, n);) {
+            if (n != "aaa_new") {
+                EXPECT_EQ(shardOf[n], k) << n;
+            }
+        }
+    }
+}
+
+// A scene's own "test" settings: thresholds over the command line's, masks left out of the comparison
+// (hatched in the difference), max_diff_pixels; unknown keys refused (a case error here; exit 2 alone,
+// tests/bad-inputs/cases.txt).
+TEST_F(TestSuite, PerSceneThresholdsAndMasks) {
+    const std::string dir = makeFolder("cases");
+    raiseKe("cases", "phong_uvsphere");
+    // (`with` in place of `was` in `text`)
+    const auto replaced = [](std::string text, const std::string& was, const std::string& with) {
+        return text.replace(text.find(was), was.size(), with);
+    };
+    const auto withTest = [this](const std::string& name, const std::string& test) {
+        const fs::path scene = dir_ / "cases" / (name + ".json");
+        std::string text = slurp(scene);
+        text.insert(text.find('{') + 1, "\n  \"test\": " + test + ",");
+        std::ofstream(scene) << text;
+    };
+    // Looser limits for the changed scene: it matches; the others keep the defaults.
+    withTest("phong_uvsphere", R"({"max_diff": 8, "mean_diff": 1})");
+    RunResult r = run({"--test", dir});
+    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+    // A pixel count: the changed highlight is more pixels than allowed.
+    std::string phong = replaced(slurp(path("cases/phong_uvsphere.json")), R"({"max_diff": 8, "mean_diff": 1})",
+                                 R"({"mean_diff": 255, "max_diff_pixels": 10})");
+    std::ofstream(path("cases/phong_uvsphere.json")) << phong;
+    r = run({"--test", dir});
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(phong_uvsphere: differs: max \d+/255 \(limit 4\), mean [0-9.e+-]+ \(limit 255\), \d+ pixels differ \(limit 10\))")))
+        << r.out;
+    // The whole image masked, as two halves: nothing is compared, it matches.
+    phong = replaced(phong, R"({"mean_diff": 255, "max_diff_pixels": 10})", R"({"masks": [[0, 0, 64, 128], [64, 0, 64, 128]]})");
+    std::ofstream(path("cases/phong_uvsphere.json")) << phong;
+    r = run({"--test", dir});
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    // A strip of background masked: it still differs, and its difference is hatched over the strip.
+    phong = replaced(phong, "[[0, 0, 64, 128], [64, 0, 64, 128]]", "[[0, 0, 16, 128]]");
+    std::ofstream(path("cases/phong_uvsphere.json")) << phong;
+    r = run({"--test", dir, "--artifacts", path("art")});
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    const Image diff = readPng(path("art/phong_uvsphere.diff.png"));
+    ASSERT_EQ(diff.width, 128);
+    int hatched = 0;
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 16; ++x) hatched += diff.pixel(x, y)[0] == 128 && diff.pixel(x, y)[1] == 128;
+    EXPECT_EQ(hatched, 6 * 128);  // 3 pixels of every 8 along each row
+    // An unknown key: that case is an error, the others run.
+    std::ofstream(path("cases/gouraud_uvsphere.json")) << "{\"test\": {\"max_pixels\": 3}}";
+    r = run({"--test", dir});
+    EXPECT_NE(r.out.find("gouraud_uvsphere: error: " + shown("cases/gouraud_uvsphere.json") +
+                         ": test.max_pixels: unknown field"),
+              std::string::npos)
+        << r.out;
 }

@@ -98,10 +98,26 @@ struct Checked {
     int shadelab = 0, cmakeOptions = 0, files = 0;
 };
 
+// A word with the variables the recipes pass to shadelab replaced by values they take: the CI's own
+// (GitHub's matrix, GitLab's parallel jobs) and the loop of docs/ci.md's measurements.
+std::string withCiValues(std::string word) {
+    for (const auto& [variable, value] : {std::pair<std::string, std::string>{"${{ matrix.shard }}", "2"},
+                                          {"${{ strategy.job-total }}", "4"},
+                                          {"$CI_NODE_INDEX", "2"},
+                                          {"$CI_NODE_TOTAL", "4"},
+                                          {"$((ke + 1))", "33"},
+                                          {"$ke", "32"},
+                                          {"$size", "320x240"}})
+        for (std::size_t at = word.find(variable); at != std::string::npos; at = word.find(variable))
+            word.replace(at, variable.size(), value);
+    return word;
+}
+
 void checkCommand(const std::string& where, const std::vector<std::string>& words, Checked& checked) {
     if (words.empty()) return;
     if (words[0] == "shadelab") {
-        const std::vector<std::string> args(words.begin() + 1, words.end());
+        std::vector<std::string> args;
+        for (auto w = words.begin() + 1; w != words.end(); ++w) args.push_back(withCiValues(*w));
         try {
             parseOptions(args);
         } catch (const InputError& e) {
@@ -162,6 +178,32 @@ TEST(CiRecipes, GitLabJobRunsCommandsOfThisVersion) {
     EXPECT_EQ(c.shadelab, 1);
     EXPECT_GE(c.cmakeOptions, 2);
     EXPECT_EQ(c.files, 2);
+}
+
+// Issue 32: the same split over parallel jobs (--shard K/N from the CI's job number).
+TEST(CiRecipes, ShardedRecipesRunCommandsOfThisVersion) {
+    for (const char* recipe : {"docs/ci/github-actions-sharded.yml", "docs/ci/gitlab-ci-parallel.yml"}) {
+        const Checked c = checkRecipe(recipe);
+        EXPECT_EQ(c.shadelab, 1) << recipe;
+        EXPECT_GE(c.cmakeOptions, 2) << recipe;
+        EXPECT_EQ(c.files, 2) << recipe;
+    }
+    const std::string github = readText(kSource / "docs/ci/github-actions-sharded.yml");
+    EXPECT_NE(github.find("--shard \"${{ matrix.shard }}/${{ strategy.job-total }}\""), std::string::npos);
+    EXPECT_NE(readText(kSource / "docs/ci/gitlab-ci-parallel.yml").find("--shard \"$CI_NODE_INDEX/$CI_NODE_TOTAL\""),
+              std::string::npos);
+}
+
+// Issue 32: Mesa's shader cache is inside the project in both recipes (GitLab caches nothing else).
+TEST(CiRecipes, MesaShaderCacheIsInsideTheProject) {
+    for (const char* recipe : {"docs/ci/github-actions.yml", "docs/ci/gitlab-ci.yml", "docs/ci/github-actions-sharded.yml",
+                               "docs/ci/gitlab-ci-parallel.yml"}) {
+        const std::string text = readText(kSource / recipe);
+        EXPECT_TRUE(text.find("MESA_SHADER_CACHE_DIR=$GITHUB_WORKSPACE/.mesa-shader-cache") != std::string::npos ||
+                    text.find("MESA_SHADER_CACHE_DIR: \"$CI_PROJECT_DIR/.mesa-shader-cache\"") != std::string::npos)
+            << recipe;
+        EXPECT_NE(text.find(".mesa-shader-cache"), text.rfind(".mesa-shader-cache")) << recipe << ": set and cached";
+    }
 }
 
 TEST(CiRecipes, DockerfileBuildsWithThisVersion) {

@@ -138,10 +138,14 @@ TEST(Image, ChannelDifferences) {
     EXPECT_EQ(r.maxDifference, 5);                               // the golden metric's, RGB only, as before
     EXPECT_DOUBLE_EQ(r.meanDifference, (3.0 + 5.0) / 8.0);
 
-    const ReferenceTolerance t{5, 10.0 / 32.0};
+    const ReferenceTolerance t{5, 10.0 / 32.0, std::nullopt};
     EXPECT_TRUE(t.matches(r));
-    EXPECT_FALSE((ReferenceTolerance{4, 1.0}).matches(r));          // the max over its limit
-    EXPECT_FALSE((ReferenceTolerance{255, 9.9 / 32.0}).matches(r));  // the mean over its limit
+    EXPECT_FALSE((ReferenceTolerance{4, 1.0, std::nullopt}).matches(r));          // the max over its limit
+    EXPECT_FALSE((ReferenceTolerance{255, 9.9 / 32.0, std::nullopt}).matches(r));  // the mean over its limit
+    // Issue 32: the pixels that differ at all, in any channel (alpha too): three.
+    EXPECT_EQ(r.differingPixels, 3u);
+    EXPECT_TRUE((ReferenceTolerance{5, 1.0, 3}).matches(r));
+    EXPECT_FALSE((ReferenceTolerance{5, 1.0, 2}).matches(r));  // more pixels than allowed
     EXPECT_FALSE(t.matches(compareImages(a, Image(4, 3), 0)));      // another size never matches
     EXPECT_FALSE(compareImages(a, Image(2, 4), 0).sizeMatches);
 }

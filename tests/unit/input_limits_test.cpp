@@ -5,8 +5,12 @@
 #include "core/scene/memory_budget.hpp"
 #include "core/geometry/mesh.hpp"
 #include "core/base/message.hpp"
+#include "test_dir.hpp"
 
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
 
 using namespace shadelab;
 
@@ -102,4 +106,39 @@ TEST(MemoryBudget, EstimateCountsFramebuffersShadowMapsAndMeshes) {
     setMemoryBudget(std::nullopt);
     EXPECT_EQ(memoryBudget(), defaultMemoryBudget());
     EXPECT_GT(defaultMemoryBudget(), std::uint64_t(256) << 20);
+}
+
+// Issue 32: a container's memory limit (its cgroup's) bounds the default budget, not the host's memory.
+// Folders laid out as /sys/fs/cgroup is, and /proc/self/cgroup's lines as the kernel writes them.
+TEST(MemoryBudget, CgroupLimitIsRead) {
+    const test::TestDir dir("cgroup");
+    namespace fs = std::filesystem;
+    const auto write = [&dir](const std::string& name, const std::string& text) {
+        fs::create_directories((dir.path / name).parent_path());
+        std::ofstream(dir.path / name) << text;
+        return (dir.path / name).string();
+    };
+    const std::string root = (dir.path / "sys").string();
+    // cgroup v2: the process's own group's memory.max, or a parent's when smaller; "max" is no limit.
+    write("sys/ci/job/memory.max", "805306368\n");
+    write("sys/ci/memory.max", "max\n");
+    EXPECT_EQ(cgroupMemoryLimit(root, write("self", "0::/ci/job\n")), 805306368u);
+    write("sys/ci/memory.max", "536870912\n");
+    EXPECT_EQ(cgroupMemoryLimit(root, (dir.path / "self").string()), 536870912u);
+    // In a container's namespace the group's path is the host's; its files are at the root.
+    write("sys/memory.max", "268435456\n");
+    EXPECT_EQ(cgroupMemoryLimit(root, write("self", "0::/host/path/of/the/container\n")), 268435456u);
+    // cgroup v1: the memory controller's memory.limit_in_bytes; 2^63 less a page is no limit.
+    fs::remove_all(root);
+    write("sys/memory/docker/abc/memory.limit_in_bytes", "1073741824\n");
+    write("sys/memory/memory.limit_in_bytes", "9223372036854771712\n");
+    EXPECT_EQ(cgroupMemoryLimit(root, write("self", "12:pids:/docker/abc\n4:cpu,memory:/docker/abc\n0::/\n")),
+              1073741824u);
+    EXPECT_EQ(cgroupMemoryLimit(root, write("self", "4:memory:/elsewhere\n")), 0u);
+    // No cgroup file (not Linux): no limit.
+    EXPECT_EQ(cgroupMemoryLimit(root, (dir.path / "missing").string()), 0u);
+    // The default budget is at most half of this process's limit.
+    if (const std::uint64_t limit = cgroupMemoryLimit()) {
+        EXPECT_LE(defaultMemoryBudget(), limit / 2);
+    }
 }

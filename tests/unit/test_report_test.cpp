@@ -29,11 +29,15 @@ TestRun sampleRun() {
     match.outcome = CaseOutcome::Match;
     match.numbers = CompareResult{};
     match.numbers->sizeMatches = true;
+    match.seconds = 0.25;
     TestCase differs;
     differs.name = "b<&>\"'";
     differs.scenePath = "scenes/b.json";
     differs.referencePath = "refs/b.png";
     differs.outcome = CaseOutcome::Differs;
+    differs.seconds = 0.5;
+    differs.differenceArtifact = "art/b.diff.png";
+    differs.actualArtifact = "art/b.actual.png";
     differs.message = "max 9/255 (limit 4), mean 0.0157 (limit 0.002)";
     Image pixel(3, 2);
     differs.actualPng = differs.referencePng = differs.differencePng = encodePng(pixel);
@@ -41,9 +45,11 @@ TestRun sampleRun() {
     shader.name = "c_shader";
     shader.outcome = CaseOutcome::Error;
     shader.shaderError = true;
+    shader.seconds = 0.25;
     shader.message = "program flat, fragment stage (flat.frag, GLSL 330 core) failed to compile: flat.frag:7: error";
     TestCase again = shader;
     again.name = "d_shader";
+    again.seconds = 0.125;
     run.cases = {match, differs, shader, again};
     return run;
 }
@@ -74,8 +80,9 @@ TEST(TestReport, SummaryNamesTheFailingCasesAndEachShaderErrorOnce) {
 TEST(TestReport, JunitHasOneTestcasePerSceneAndTheNumbers) {
     const std::string xml = junitXml(sampleRun());
     EXPECT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites ", 0), 0u) << xml;
+    // The suite's time is its cases' sum (1.125 s), not the run's wall clock (1.5 s: comparing overlaps rendering).
     EXPECT_NE(xml.find("<testsuite name=\"shadelab --test tests/scenes/\" tests=\"4\" failures=\"1\" errors=\"2\" skipped=\"0\" "
-                       "time=\"1.500\">"),
+                       "time=\"1.125\">"),
               std::string::npos)
         << xml;
     EXPECT_EQ(occurrences(xml, "<testcase "), 4u);
@@ -89,7 +96,13 @@ TEST(TestReport, JunitHasOneTestcasePerSceneAndTheNumbers) {
                        "to compile: flat.frag:7: error\">"),
               std::string::npos)
         << xml;
-    EXPECT_NE(xml.find("<testcase classname=\"shadelab.scenes\" name=\"a_match\" file=\"\" time=\"0.000\"/>"),
+    // No testcase@file: Jenkins xunit's schema (junit-10.xsd) allows none.
+    EXPECT_NE(xml.find("<testcase classname=\"shadelab.scenes\" name=\"a_match\" time=\"0.250\"/>"), std::string::npos)
+        << xml;
+    EXPECT_EQ(xml.find(" file="), std::string::npos) << xml;
+    // The paths and --artifacts in system-out, the difference first (GitLab shows the first attachment).
+    EXPECT_NE(xml.find("<system-out>scene scenes/b.json\nreference refs/b.png\n[[ATTACHMENT|art/b.diff.png]]\n"
+                       "[[ATTACHMENT|art/b.actual.png]]</system-out>"),
               std::string::npos)
         << xml;
     EXPECT_EQ(xml.find("b<&"), std::string::npos);  // nothing unescaped
@@ -115,4 +128,28 @@ TEST(TestReport, HtmlShowsTheFailingCasesImagesAtTheirSize) {
     EXPECT_NE(html.find(xmlEscaped(run.cases[2].message)), std::string::npos);
     EXPECT_NE(html.find("<tr><td>a_match</td><td>max 0/255 (limit 4), mean 0 (limit 0.002)</td></tr>"), std::string::npos);
     EXPECT_EQ(html.find("b<&"), std::string::npos);
+}
+
+// OpenGL that cannot start: one error case that says why, whatever cases were found.
+TEST(TestReport, RunThatCannotStartIsOneError) {
+    TestRun run = sampleRun();
+    run.cases.clear();
+    run.runError = "no headless OpenGL: headless rendering needs libOSMesa.so.8";
+    const std::string xml = junitXml(run);
+    EXPECT_NE(xml.find("tests=\"1\" failures=\"0\" errors=\"1\""), std::string::npos) << xml;
+    EXPECT_NE(xml.find("<testcase classname=\"shadelab.scenes\" name=\"OpenGL\" time=\"1.500\">\n      <error type=\"gl\" "
+                       "message=\"OpenGL cannot start: no headless OpenGL: headless rendering needs libOSMesa.so.8\">"),
+              std::string::npos)
+        << xml;
+    EXPECT_NE(htmlReport(run).find("OpenGL cannot start: no headless OpenGL"), std::string::npos);
+}
+
+// --update: the cases it rewrote are "written", not errors or differences.
+TEST(TestReport, UpdateSummarySaysWritten) {
+    TestRun run = sampleRun();
+    run.cases[1].updated = true;
+    const std::string line = summaryLine(run);
+    EXPECT_EQ(line.rfind("shadelab: --test tests/scenes/: 4 scenes, 1 match, 1 written (b<&>\"'), 2 errors (c_shader, d_shader)", 0),
+              0u)
+        << line;
 }

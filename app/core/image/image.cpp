@@ -191,11 +191,14 @@ CompareResult compareImages(const Image& a, const Image& e, int threshold) {
             sum += d;
             r.maxDifference = std::max(r.maxDifference, d);
             if (d > threshold) ++r.failingPixels;
+            int pixelMax = 0;
             for (int c = 0; c < 4; ++c) {
                 const int dc = std::abs(int(pa[c]) - int(pe[c]));
                 channelSum += dc;
-                r.channelMax = std::max(r.channelMax, dc);
+                pixelMax = std::max(pixelMax, dc);
             }
+            r.channelMax = std::max(r.channelMax, pixelMax);
+            if (pixelMax > 0) ++r.differingPixels;
         }
     const double n = double(a.width) * double(a.height);
     r.meanDifference = n > 0 ? sum / n : 0.0;

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace shadelab {
 namespace {
@@ -33,10 +36,51 @@ bool drawsFlat(const Scene& s) {
            (s.layout == Layout::Diff && (s.diff.a == ShadingMode::Flat || s.diff.b == ShadingMode::Flat));
 }
 
+// A limit file's number ("536870912\n"); 0 for "max", v1's "no limit" (2^63 less a page) or anything
+// unreadable.
+std::uint64_t limitIn(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::string text;
+    if (!(in >> text) || text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 19)
+        return 0;
+    const std::uint64_t bytes = std::stoull(text);
+    return bytes >= (std::uint64_t(1) << 62) ? 0 : bytes;
+}
+
 }  // namespace
 
+std::uint64_t cgroupMemoryLimit(const std::string& root, const std::string& selfCgroup) {
+    namespace fs = std::filesystem;
+    // /proc/self/cgroup: "0::/PATH" (v2), "N:memory:/PATH" or "N:cpu,memory:/PATH" (v1).
+    std::ifstream lines(selfCgroup);
+    std::uint64_t smallest = 0;
+    const auto take = [&smallest](std::uint64_t bytes) {
+        if (bytes && (!smallest || bytes < smallest)) smallest = bytes;
+    };
+    for (std::string line; std::getline(lines, line);) {
+        const std::size_t first = line.find(':'), second = line.find(':', first + 1);
+        if (first == std::string::npos || second == std::string::npos) continue;
+        const std::string controllers = "," + line.substr(first + 1, second - first - 1) + ",";
+        const fs::path group = fs::path(line.substr(second + 1)).relative_path();
+        fs::path base;
+        std::string file;
+        if (line.compare(0, first, "0") == 0 && controllers == ",,") base = root, file = "memory.max";
+        else if (controllers.find(",memory,") != std::string::npos) base = fs::path(root) / "memory", file = "memory.limit_in_bytes";
+        else continue;
+        // The group and each parent up to the root (a limit set on a parent holds for its children), and
+        // the root itself: inside a container's namespace the group's path is the host's, its files at the root.
+        for (fs::path g = group;; g = g.parent_path()) {
+            take(limitIn(base / g / file));
+            if (g.empty()) break;
+        }
+    }
+    return smallest;
+}
+
 std::uint64_t defaultMemoryBudget() {
-    const std::uint64_t physical = platform::physicalMemoryBytes();
+    std::uint64_t physical = platform::physicalMemoryBytes();
+    const std::uint64_t limit = cgroupMemoryLimit();
+    if (limit && (physical == 0 || limit < physical)) physical = limit;
     if (physical == 0) return std::uint64_t(4) << 30;
     return physical / 2;
 }

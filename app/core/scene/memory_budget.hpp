@@ -26,8 +26,16 @@ struct MemoryUse {
     std::uint64_t total() const { return program + framebuffers + shadowMaps + meshes + images + textures; }
 };
 
-// Half of physical memory (sysconf), or 4 GiB where it cannot be read.
+// Half of the memory this process may use: physical memory (sysconf), or the container's limit where
+// its cgroup sets a smaller one (cgroupMemoryLimit); 4 GiB where neither can be read.
 std::uint64_t defaultMemoryBudget();
+// The memory limit of this process's cgroup (Linux; a container's `docker run --memory`, a CI job's
+// limit): cgroup v2's `memory.max` of the process's own group or, where the container's namespace
+// shows the group as the root, of `root`; cgroup v1's `memory/.../memory.limit_in_bytes` likewise.
+// 0 when there is none ("max", v1's near-2^63 "unlimited") or it cannot be read (not Linux).
+// `root` and `selfCgroup` are parameters for the tests (a folder laid out as /sys/fs/cgroup is).
+std::uint64_t cgroupMemoryLimit(const std::string& root = "/sys/fs/cgroup",
+                                const std::string& selfCgroup = "/proc/self/cgroup");
 // The budget in force: --max-memory's, else the default.
 std::uint64_t memoryBudget();
 void setMemoryBudget(std::optional<std::uint64_t> bytes);

@@ -6,7 +6,10 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -141,6 +144,19 @@ struct DiffSettings {
     float factor = 4.0f;  // 1..kDiffFactorRange.hi
 };
 
+// "test": the scene's own settings as a screenshot test (`shadelab --test`, cli/test_suite.hpp), over the
+// command line's --max-diff, --mean-diff and --max-diff-pixels (the folder's defaults). Nothing here
+// changes the picture.
+struct TestSettings {
+    std::optional<int> maxDiff;                  // "max_diff": the largest channel difference allowed, /255
+    std::optional<float> meanDiff;               // "mean_diff": the largest mean difference allowed, /255
+    std::optional<std::uint64_t> maxDiffPixels;  // "max_diff_pixels": at most this many pixels may differ
+    // "masks": [x, y, w, h] rectangles in pixels (top-left origin) left out of the comparison (a clock, a
+    // noisy corner), shown hatched in the report; parts outside the image are ignored.
+    std::vector<glm::ivec4> masks;
+    bool empty() const { return !maxDiff && !meanDiff && !maxDiffPixels && masks.empty(); }
+};
+
 struct Scene {
     std::vector<SceneObject> objects{SceneObject{}};
     ShadingMode shading = ShadingMode::Phong;
@@ -162,6 +178,7 @@ struct Scene {
     std::string title;            // lecture presets: shown by the viewer's playlist (and nothing else)
     std::string caption;          // one sentence under the title
     bool textures = true;         // "textures": glTF models' base colour textures and vertex colours (C varies)
+    TestSettings test;            // "test": thresholds and masks for `shadelab --test`
 
     // Bookkeeping, not part of the file format:
     bool cameraGiven = false;     // false: a glTF model may be auto-framed

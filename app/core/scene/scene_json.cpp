@@ -151,6 +151,7 @@ private:
     std::vector<Light> lights(const json& j, const std::string& path) const;
     TermView show(const json& j, const std::string& path, std::size_t lightCount) const;
     glm::ivec2 imageSize(const json& j, const std::string& path) const;
+    TestSettings testSettings(const json& j, const std::string& path) const;
 
     std::string file_;
     std::string baseDir_;
@@ -311,7 +312,7 @@ Scene SceneReader::read(const json& root) {
     requireObject(root, "",
                   {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
                    "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
-                   "fresnel", "ior", "show", "diff", "title", "caption", "textures"});
+                   "fresnel", "ior", "show", "diff", "title", "caption", "textures", "test"});
     readObjects(root, s);
     choice(root, "shading", "", s.shading, kShadingModeNames);
     choice(root, "layout", "", s.layout, kLayoutNames);
@@ -347,7 +348,34 @@ Scene SceneReader::read(const json& root) {
         s.width = size.x;
         s.height = size.y;
     }
+    if (root.contains("test")) s.test = testSettings(root["test"], "test");
     return s;
+}
+
+TestSettings SceneReader::testSettings(const json& j, const std::string& path) const {
+    TestSettings t;
+    requireObject(j, path, {"max_diff", "mean_diff", "max_diff_pixels", "masks"});
+    if (j.contains("max_diff")) t.maxDiff = integer(j["max_diff"], join(path, "max_diff"), kMaxDiffRange.lo, kMaxDiffRange.hi);
+    if (j.contains("mean_diff"))
+        t.meanDiff = float(number(j["mean_diff"], join(path, "mean_diff"), kMeanDiffRange.lo, kMeanDiffRange.hi));
+    if (j.contains("max_diff_pixels"))
+        t.maxDiffPixels = std::uint64_t(integer(j["max_diff_pixels"], join(path, "max_diff_pixels"),
+                                                kMaxDiffPixelsRange.lo, kMaxDiffPixelsRange.hi));
+    if (!j.contains("masks")) return t;
+    const json& masks = j["masks"];
+    const std::string p = join(path, "masks");
+    if (!masks.is_array()) fail(p, std::string("expected an array of [x, y, w, h] rectangles, got ") + typeName(masks));
+    if (masks.size() > std::size_t(kMaxTestMasks))
+        fail(p, "at most " + std::to_string(kMaxTestMasks) + " rectangles (got " + std::to_string(masks.size()) + ")");
+    for (std::size_t i = 0; i < masks.size(); ++i) {
+        const std::string m = p + "[" + std::to_string(i) + "]";
+        if (!masks[i].is_array() || masks[i].size() != 4) fail(m, "expected [x, y, w, h] in pixels (4 integers)");
+        glm::ivec4 r;
+        for (int k = 0; k < 4; ++k)
+            r[k] = integer(masks[i][std::size_t(k)], m + "[" + std::to_string(k) + "]", k < 2 ? 0 : 1, kImageSideRange.hi);
+        t.masks.push_back(r);
+    }
+    return t;
 }
 
 // "objects", or the one-object shorthand "mesh" and "material" (not both).
@@ -585,6 +613,17 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     j["diff"] = {{"a", toString(s.diff.a)}, {"b", toString(s.diff.b)}, {"factor", s.diff.factor}};
     if (!s.title.empty()) j["title"] = s.title;
     if (!s.caption.empty()) j["caption"] = s.caption;
+    if (!s.test.empty()) {
+        json t = json::object();
+        if (s.test.maxDiff) t["max_diff"] = *s.test.maxDiff;
+        if (s.test.meanDiff) t["mean_diff"] = *s.test.meanDiff;
+        if (s.test.maxDiffPixels) t["max_diff_pixels"] = *s.test.maxDiffPixels;
+        if (!s.test.masks.empty()) {
+            t["masks"] = json::array();
+            for (const glm::ivec4& r : s.test.masks) t["masks"].push_back({r.x, r.y, r.z, r.w});
+        }
+        j["test"] = t;
+    }
     return j.dump(2) + "\n";
 }
 

@@ -53,6 +53,9 @@ inline constexpr Range<float> kUiScaleRange{0.75f, 4.0f};     // on top of the m
 // --reference's thresholds, in /255 (the defaults, and what they were measured against: core/image/image.hpp).
 inline constexpr Range<int> kMaxDiffRange{0, 255};           // --max-diff: any channel of any pixel
 inline constexpr Range<float> kMeanDiffRange{0.0f, 255.0f};  // --mean-diff: over every channel of every pixel
+// --max-diff-pixels, "test": "max_diff_pixels": pixels that may differ (16384 x 16384 is the largest image).
+inline constexpr Range<int> kMaxDiffPixelsRange{0, 268435456};
+inline constexpr int kMaxTestMasks = 64;  // "test": "masks": rectangles per scene
 
 // The light count's bound under the name the renderer and shaders/shared_defs.glsl (SL_MAX_LIGHTS) use.
 inline constexpr int kMaxLights = kLightCountRange.hi;
