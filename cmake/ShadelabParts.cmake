@@ -144,7 +144,10 @@ endif()
 #                  it is built where one is (SHADELAB_OSMESA or SHADELAB_EGL); numpy (python3-numpy) is
 #                  needed when it runs. Everything it links is then compiled as position-independent code.
 set(_missing_python "")
-if(_parts_here AND SHADELAB_HEADLESS)
+if(SHADELAB_SANITIZE OR SHADELAB_FUZZ)
+  # An instrumented module needs its sanitizer's runtime loaded before the interpreter's own libraries.
+  set(_missing_python "a build without sanitizers (SHADELAB_SANITIZE, SHADELAB_FUZZ)")
+elseif(_parts_here AND SHADELAB_HEADLESS)
   if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
     set(Python3_EXECUTABLE /usr/bin/python3)
   endif()

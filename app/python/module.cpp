@@ -159,14 +159,16 @@ public:
         Image image;
         {
             py::gil_scoped_release released;
+            const std::lock_guard<std::mutex> lock(busy_);  // one call at a time (from any Python thread)
             image = frame(call);
         }
         return toArray(image);
     }
 
     void close() {
-        if (!gl_) return;
         py::gil_scoped_release released;
+        const std::lock_guard<std::mutex> lock(busy_);
+        if (!gl_) return;
         gl_->call([this] { session_.reset(); });
         gl_.reset();
     }
@@ -205,6 +207,7 @@ private:
     }
 
     std::string defaultShaderDir_;
+    std::mutex busy_;
     std::unique_ptr<GlThread> gl_;
     std::unique_ptr<HeadlessSession> session_;  // made, used and released on gl_'s thread
     std::string sessionShaderDir_, sessionBackend_;
