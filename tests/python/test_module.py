@@ -222,19 +222,24 @@ def test_the_gil_is_released_while_drawing():
 
 
 def test_renderers_on_threads():
-    results = {}
+    # a renderer each, and one shared by several threads (its calls one at a time)
+    own, shared = {}, {}
+    shared_renderer = shadelab.Renderer()
 
     def work(k):
         with shadelab.Renderer() as r:
-            results[k] = r.render(size=(96, 64), ke=k)
+            own[k] = r.render(size=(96, 64), ke=k)
+        shared[k] = shared_renderer.render(size=(96, 64), ke=k)
 
-    threads = [threading.Thread(target=work, args=(k,)) for k in (4, 64)]
+    threads = [threading.Thread(target=work, args=(k,)) for k in (4, 16, 64, 256)]
     for t in threads:
         t.start()
     for t in threads:
         t.join()
-    for k in (4, 64):
-        assert np.array_equal(results[k], shadelab.render(size=(96, 64), ke=k))
+    shared_renderer.close()
+    for k in (4, 16, 64, 256):
+        expected = shadelab.render(size=(96, 64), ke=k)
+        assert np.array_equal(own[k], expected) and np.array_equal(shared[k], expected)
 
 
 @pytest.mark.skipif(not shadelab.has_video, reason="this build has no video encoding (SHADELAB_VIDEO)")
