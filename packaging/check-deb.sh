@@ -21,7 +21,7 @@ import numpy, shadelab
 assert shadelab.__file__ == "/usr/lib/python3/dist-packages/shadelab/__init__.py", shadelab.__file__
 image = shadelab.render(size=(320, 240), layout="compare")
 assert numpy.array_equal(image, shadelab.read_png("compare.png")), "shadelab.render differs from the program"
-assert shadelab.probe(160, 120, shadelab.data_path("scenes/lecture/06-exponent-32.json"))["miss"] is False
+assert shadelab.probe(160, 120, shadelab.data_path("scenes/lecture/06-exponent-32.json"), size=(320, 240))["miss"] is False
 PY
   python_module=yes
 fi
