@@ -164,7 +164,11 @@ elseif(_parts_here)
 else()
   set(_missing_python "a Linux build")
 endif()
-shadelab_part(SHADELAB_PYTHON "the Python module (pybind11, ${Python3_EXECUTABLE})"
+set(_python_for "")
+if(Python3_EXECUTABLE)
+  set(_python_for " for ${Python3_EXECUTABLE}")
+endif()
+shadelab_part(SHADELAB_PYTHON "the Python module (pybind11${_python_for})"
               "there is no `import shadelab` and its tests are not built" ${_missing_python})
 if(SHADELAB_PYTHON)
   set(CMAKE_POSITION_INDEPENDENT_CODE ON)
