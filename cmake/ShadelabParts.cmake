@@ -137,3 +137,39 @@ if(SHADELAB_VIDEO)
 else()
   message(STATUS "shadelab: video encoding: OFF; without it --animate --output FILE.gif|.mp4|.webm is refused")
 endif()
+
+# SHADELAB_PYTHON  the Python module `shadelab` (app/python, README "Python"): pybind11 (pybind11-dev) and the
+#                  headers of the interpreter it is built for (python3-dev): Debian's /usr/bin/python3 unless
+#                  -DPython3_EXECUTABLE=... names another. Renders in-process on a headless context, so
+#                  it is built where one is (SHADELAB_OSMESA or SHADELAB_EGL); numpy (python3-numpy) is
+#                  needed when it runs. Everything it links is then compiled as position-independent code.
+set(_missing_python "")
+if(SHADELAB_SANITIZE OR SHADELAB_FUZZ)
+  # An instrumented module needs its sanitizer's runtime loaded before the interpreter's own libraries.
+  set(_missing_python "a build without sanitizers (SHADELAB_SANITIZE, SHADELAB_FUZZ)")
+elseif(_parts_here AND SHADELAB_HEADLESS)
+  if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python3_EXECUTABLE /usr/bin/python3)
+  endif()
+  find_package(Python3 COMPONENTS Interpreter Development.Module QUIET)
+  if(NOT Python3_Development.Module_FOUND)
+    list(APPEND _missing_python python3-dev)
+  endif()
+  find_package(pybind11 CONFIG QUIET)
+  if(NOT pybind11_FOUND)
+    list(APPEND _missing_python pybind11-dev)
+  endif()
+elseif(_parts_here)
+  set(_missing_python "a headless context (SHADELAB_OSMESA or SHADELAB_EGL)")
+else()
+  set(_missing_python "a Linux build")
+endif()
+set(_python_for "")
+if(Python3_EXECUTABLE)
+  set(_python_for " for ${Python3_EXECUTABLE}")
+endif()
+shadelab_part(SHADELAB_PYTHON "the Python module (pybind11${_python_for})"
+              "there is no `import shadelab` and its tests are not built" ${_missing_python})
+if(SHADELAB_PYTHON)
+  set(CMAKE_POSITION_INDEPENDENT_CODE ON)
+endif()

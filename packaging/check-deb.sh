@@ -14,6 +14,17 @@ cd "$work"
 test -s compare.png && test -s gem.png && test "$(ls lecture/*.png | wc -l)" -ge 10
 test -f /usr/share/man/man1/shadelab.1.gz -o -f /usr/share/man/man1/shadelab.1
 test -f /usr/share/applications/shadelab.desktop
+# The Python module, installed for Debian's python3: a frame as the installed program writes it.
+if [ -d /usr/lib/python3/dist-packages/shadelab ]; then
+  /usr/bin/python3 - <<'PY'
+import numpy, shadelab
+assert shadelab.__file__ == "/usr/lib/python3/dist-packages/shadelab/__init__.py", shadelab.__file__
+image = shadelab.render(size=(320, 240), layout="compare")
+assert numpy.array_equal(image, shadelab.read_png("compare.png")), "shadelab.render differs from the program"
+assert shadelab.probe(160, 120, shadelab.data_path("scenes/lecture/06-exponent-32.json"), size=(320, 240))["miss"] is False
+PY
+  python_module=yes
+fi
 # The installed GLSL is what it draws with (found beside /usr/bin, nothing of the build compiled in):
 # a broken copy there must fail, naming the file.
 echo '#error the installed phong.frag is read' >> /usr/share/shadelab/shaders/phong.frag
@@ -21,4 +32,13 @@ if /usr/bin/shadelab --shading phong --size 64x64 --output broken.png 2> err.txt
   echo "the installed shadelab did not read /usr/share/shadelab/shaders" >&2; exit 1
 fi
 grep -q "phong.frag" err.txt
-echo "the installed package renders: $deb"
+if [ -n "${python_module:-}" ]; then  # the module too
+  /usr/bin/python3 -c 'import shadelab
+try:
+    shadelab.render(size=(64, 64), shading="phong")
+except shadelab.ShaderError as e:
+    assert "phong.frag" in str(e), e
+else:
+    raise SystemExit("the installed module did not read /usr/share/shadelab/shaders")'
+fi
+echo "the installed package renders${python_module:+ (the program and the Python module)}: $deb"

@@ -8,7 +8,6 @@
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/message.hpp"
-#include "core/figures/plot_image.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/memory_budget.hpp"
@@ -25,39 +24,12 @@
 
 namespace shadelab {
 
-void report(const Options& options, const Scene& drawn, const std::vector<GltfInfo>& gltfInfo, std::size_t triangles) {
-    for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
-        const GltfInfo& info = gltfInfo[i];
-        const std::string& path = drawn.objects[i].mesh.resolvedPath;
-        for (const std::string& w : info.warnings) std::cerr << oneLine("shadelab: warning: " + path + ": " + w) << "\n";
-        if (options.verbose && drawn.objects[i].mesh.type == MeshSpec::Type::Gltf) {
-            std::cerr << "shadelab: " << path << ": " << info.triangles << " triangles, " << info.generatedNormals
-                      << " generated normals";
-            if (info.textures) std::cerr << ", " << info.textures << " base colour texture(s)";
-            std::cerr << "\n";
-        }
-    }
-    if (options.verbose)
-        std::cerr << "shadelab: " << (options.input.empty() ? "built-in default scene" : options.input) << ": "
-                  << drawn.objects.size() << " object(s), " << triangles << " triangles\n";
-}
-
-std::shared_ptr<SceneGeometry> loadGeometry(const Options& options, Scene& scene) {
-    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(scene));
-    frameIfNeeded(scene, *geometry);
-    report(options, scene, geometry->gltfInfo, geometry->triangleCount());
-    return geometry;
-}
-
 namespace {
 
 // --plot: drawn on the CPU from core/shading/lighting's formulas: no GL, no context, no shaders.
 int runPlot(const Options& options, const Scene& scene) {
     const std::optional<Image> reference = readReference(options);
-    const Material material = scene.objects.empty() ? Material{} : scene.objects.front().material;
-    const Image image = renderPlotImage(scenePlot(*options.plot, scene, material, plotSettings(options)),
-                                        options.width.value_or(kPlotDefaultWidth),
-                                        options.height.value_or(kPlotDefaultHeight));
+    const Image image = plotImage(options, scene);
     const int status = writeOutputAndCompare(options, image, reference, scene.diff.factor);
     if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
     return status;

@@ -310,6 +310,12 @@ PlotSettings plotSettings(const Options& o) {
     return s;
 }
 
+Image plotImage(const Options& options, const Scene& scene) {
+    const Material material = scene.objects.empty() ? Material{} : scene.objects.front().material;
+    return renderPlotImage(scenePlot(*options.plot, scene, material, plotSettings(options)),
+                           options.width.value_or(kPlotDefaultWidth), options.height.value_or(kPlotDefaultHeight));
+}
+
 namespace {
 
 // `text` wrapped at 100 columns, its first line after `lead` (padded to the help column), the rest indented

@@ -2,6 +2,7 @@
 // The command line: `shadelab [SCENE.json | MODEL.gltf | MODEL.glb] [options]`. Parsing is GL-free so
 // it is unit-tested (and fuzzed) on its own. Options override what the scene file says.
 #include "core/figures/plot.hpp"
+#include "core/image/image.hpp"
 #include "core/scene/animation.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/sweep.hpp"
@@ -144,6 +145,10 @@ void applyOverrides(Scene& scene, const Options& options);
 
 // The plot --plot asks for, from the scene and --incidence/--from-inside (see scenePlot).
 PlotSettings plotSettings(const Options& options);
+
+// --plot's image (the options' --plot, --size, --incidence, --from-inside; the scene's first material), drawn
+// on the CPU: no GL.
+Image plotImage(const Options& options, const Scene& scene);
 
 // --help: the synopsis, every option of the table, and the viewer's keys.
 std::string usage();

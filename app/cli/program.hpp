@@ -5,16 +5,30 @@
 #include "cli/options.hpp"
 #include "core/geometry/gltf_import.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "core/image/image.hpp"
+#include "core/probe/probe.hpp"
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace shadelab {
 
+enum class HeadlessBackend;  // headless/headless_context.hpp
+
 // --output, --sweep, --probe, --benchmark and --playlist with --output: frames from a headless context
 // (run_headless.cpp; needs SHADELAB_OSMESA or SHADELAB_EGL).
 int runHeadlessMode(const Options& options);
+
+// What the headless modes share with the Python module (app/python), which renders as --output does:
+// --msaa's value for a headless frame (off unless asked for, so the golden images stay pixel-exact),
+// --backend's context, and a rendered frame finished as --output writes it (--formula's overlay, with a
+// probed pixel's terms when there is one, then --captions' strip).
+int headlessMsaa(const Options& options);
+HeadlessBackend headlessBackend(const Options& options);
+Image finishedFrame(const Options& options, Image image, const Scene& scene, const std::string& title,
+                    const ProbeResult* probe = nullptr);
 
 // The interactive viewer, for one scene or a playlist (run_viewer.cpp; needs SHADELAB_VIEWER).
 int runViewerMode(const Options& options);

@@ -12,6 +12,7 @@
 #include "core/geometry/ray_cast.hpp"
 #include "core/scene/playlist.hpp"
 #include "headless/headless.hpp"
+#include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
 #if SHADELAB_HAVE_VIDEO
 #include "core/scene/animation.hpp"
@@ -25,27 +26,17 @@
 #include <optional>
 
 namespace shadelab {
-namespace {
 
-struct Stopwatch {
-    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
-};
-
-// --msaa for --output and --benchmark: off unless asked for, so the golden images stay pixel-exact.
 int headlessMsaa(const Options& options) { return options.msaa.value_or(1); }
 
-// What a run needs beside the options: where the GLSL comes from and which headless context.
-struct RunContext {
-    const Options& options;
-    ShaderLibrary shaders;
-    HeadlessBackend backend;
-};
+HeadlessBackend headlessBackend(const Options& options) {
+    if (options.backend == "egl") return HeadlessBackend::Egl;
+    if (options.backend == "osmesa") return HeadlessBackend::OsMesa;
+    return HeadlessBackend::Auto;
+}
 
-// --formula: the formula overlay drawn into the frame (core/figures/formula_image.hpp), with a probed
-// pixel's terms and material when there is one; then --captions' strip under it.
-Image finished(const Options& options, Image image, const Scene& scene, const std::string& title,
-               const ProbeResult* probe = nullptr) {
+Image finishedFrame(const Options& options, Image image, const Scene& scene, const std::string& title,
+                    const ProbeResult* probe) {
     if (options.formula) {
         const bool hit = probe && !probe->miss;
         const Material material = hit ? probe->material : scene.objects.empty() ? Material{} : scene.objects[0].material;
@@ -59,11 +50,19 @@ Image finished(const Options& options, Image image, const Scene& scene, const st
     return options.captions ? withCaptionStrip(image, title, scene.caption) : image;
 }
 
-HeadlessBackend backendOf(const Options& options) {
-    if (options.backend == "egl") return HeadlessBackend::Egl;
-    if (options.backend == "osmesa") return HeadlessBackend::OsMesa;
-    return HeadlessBackend::Auto;
-}
+namespace {
+
+struct Stopwatch {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
+};
+
+// What a run needs beside the options: where the GLSL comes from and which headless context.
+struct RunContext {
+    const Options& options;
+    ShaderLibrary shaders;
+    HeadlessBackend backend;
+};
 
 // --playlist DIR --output OUT/: every preset loaded and rendered before any file is written (one bad
 // file, or a model that fails to load in the last preset, leaves the folder as it was; the frames wait
@@ -79,7 +78,7 @@ int runPlaylistImages(const RunContext& run) {
     for (const Scene& s : scenes) kept += 4 * std::uint64_t(s.width) * std::uint64_t(s.height);
     renderScenesHeadless(scenes, run.shaders, run.backend, [&](std::size_t i, Image image) {
         const Preset& p = presets[i];
-        frames[i] = finished(options, std::move(image), scenes[i], presetTitle(p));
+        frames[i] = finishedFrame(options, std::move(image), scenes[i], presetTitle(p));
     }, headlessMsaa(options), [kept](std::size_t) { return kept; });
     createOutputFolder(*options.output, "--output");
     for (std::size_t i = 0; i < presets.size(); ++i) {
@@ -108,7 +107,7 @@ int runProbeImage(const RunContext& run, Scene scene) {
     const auto geometry = loadGeometry(options, scene);
     const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
                                          options.probe->y);
-    writePng(*options.output, finished(options, renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options)),
+    writePng(*options.output, finishedFrame(options, renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options)),
                                        scene, scene.title, &probe));
     std::cout << probeToJson(scene, probe) << std::endl;
     return 0;
@@ -123,7 +122,7 @@ int runImage(const RunContext& run, Scene scene) {
     report(options, frame.scene, frame.gltfInfo, frame.triangles);
     const double renderedMs = clock.ms();
     const int status = writeOutputAndCompare(
-        options, finished(options, frame.image, frame.scene, frame.scene.title),
+        options, finishedFrame(options, frame.image, frame.scene, frame.scene.title),
         reference, frame.scene.diff.factor);
     if (options.verbose)
         std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
@@ -178,7 +177,7 @@ int runVideo(const RunContext& run, const Scene& scene) {
 }  // namespace
 
 int runHeadlessMode(const Options& options) {
-    const RunContext run{options, ShaderLibrary(shaderFolder(options.shaderDir)), backendOf(options)};
+    const RunContext run{options, ShaderLibrary(shaderFolder(options.shaderDir)), headlessBackend(options)};
     if (options.mode == RunMode::PlaylistImages) return runPlaylistImages(run);
     if (options.mode == RunMode::TestSuite) return runTestSuite(options, run.shaders, run.backend, headlessMsaa(options));
     Scene scene = sceneFromOptions(options);

@@ -122,6 +122,34 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     return frame;
 }
 
+HeadlessSession::HeadlessSession(const ShaderLibrary& shaders, HeadlessBackend backend, int width, int height)
+    : context_(makeHeadlessContext(backend, width, height)),
+      renderer_(std::make_unique<Renderer>(context_->getProcAddress(), shaders, headlessOptions())),
+      msaa_(std::make_unique<MultisampleTarget>()) {}
+
+HeadlessSession::~HeadlessSession() {
+    msaa_.reset();  // the GL objects before the context
+    renderer_.reset();
+}
+
+const char* HeadlessSession::backendName() const { return context_->backendName(); }
+
+Image HeadlessSession::render(Scene& s, int msaaSamples, std::uint64_t keptBytes) {
+    if (!built_ || !sameMeshes(*built_, s)) {
+        geometry_.reset();  // the previous meshes go before the next are read
+        built_.reset();
+        geometry_ = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
+        checkFrameMemory(s, msaaSamples, geometry_->triangleCount(), keptBytes, geometry_->textureBytes());
+        renderer_->setGeometry(geometry_);
+        built_ = std::make_unique<Scene>(s);
+    }
+    frameIfNeeded(s, *geometry_);
+    if (context_->target().width != s.width || context_->target().height != s.height)
+        context_->resize(s.width, s.height);
+    drawFrame(*renderer_, s, context_->target(), *msaa_, msaaSamples);
+    return readPixels(context_->target());
+}
+
 void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shaders, HeadlessBackend backend,
                           const std::function<void(std::size_t, Image)>& done, int msaaSamples,
                           const KeptBytes& keptBytes, const SceneFailed& failed) {
@@ -145,31 +173,11 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
     std::vector<bool> refused(scenes.size(), false);
     for (std::size_t i = 0; i < scenes.size(); ++i)  // before any work
         refused[i] = !each(i, [&] { checkFrameMemory(scenes[i], msaaSamples, std::nullopt, kept(i)); });
-    const auto context = makeHeadlessContext(backend, scenes[0].width, scenes[0].height);
-    Renderer renderer(context->getProcAddress(), shaders, headlessOptions());
-    MultisampleTarget msaa;
-    std::shared_ptr<SceneGeometry> geometry;
-    const Scene* built = nullptr;
+    HeadlessSession session(shaders, backend, scenes[0].width, scenes[0].height);
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         if (refused[i]) continue;
-        Scene& s = scenes[i];
-        const bool same = built && sameMeshes(*built, s);
         Image image;
-        const bool drawn = each(i, [&] {
-            if (!same) {
-                geometry.reset();  // the previous meshes go before the next are read
-                built = nullptr;
-                geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-                checkFrameMemory(s, msaaSamples, geometry->triangleCount(), kept(i), geometry->textureBytes());
-                renderer.setGeometry(geometry);
-                built = &s;
-            }
-            frameIfNeeded(s, *geometry);
-            if (context->target().width != s.width || context->target().height != s.height)
-                context->resize(s.width, s.height);
-            drawFrame(renderer, s, context->target(), msaa, msaaSamples);
-            image = readPixels(context->target());
-        });
+        const bool drawn = each(i, [&] { image = session.render(scenes[i], msaaSamples, kept(i)); });
         if (drawn) done(i, std::move(image));
     }
 }

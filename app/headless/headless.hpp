@@ -8,11 +8,15 @@
 #include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
 
 namespace shadelab {
+
+class Renderer;
+class MultisampleTarget;
 
 // `msaaSamples` here and below: with more than 1, each frame is drawn with that many samples per
 // pixel (multisample anti-aliasing, render/multisample_target.hpp) and resolved before it is read.
@@ -34,6 +38,32 @@ struct HeadlessFrame {
 };
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend,
                                   int msaaSamples = 1);
+
+// One context and renderer kept for many frames (renderScenesHeadless, --test, the Python module's
+// shadelab.Renderer): programs stay compiled, a scene's geometry is built only when its meshes differ from
+// the previous scene's, and the context is resized when the size changes. The context is current on
+// the thread that made the session: use it from that thread only.
+class HeadlessSession {
+public:
+    HeadlessSession(const ShaderLibrary& shaders, HeadlessBackend backend, int width, int height);
+    ~HeadlessSession();
+    HeadlessSession(const HeadlessSession&) = delete;
+    HeadlessSession& operator=(const HeadlessSession&) = delete;
+    // Draws `scene` (framed first when it asks to be: frameIfNeeded) and reads it back. Checks the
+    // memory budget with `keptBytes` more for the caller's images once its models are read. Throws
+    // InputError, ShaderError; after one the session can draw the next scene.
+    Image render(Scene& scene, int msaaSamples = 1, std::uint64_t keptBytes = 0);
+    // The CPU geometry of the last scene drawn (for the probe's ray cast); null before the first.
+    std::shared_ptr<const SceneGeometry> geometry() const { return geometry_; }
+    const char* backendName() const;
+
+private:
+    std::unique_ptr<HeadlessContext> context_;
+    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<MultisampleTarget> msaa_;
+    std::shared_ptr<SceneGeometry> geometry_;
+    std::unique_ptr<Scene> built_;  // whose meshes geometry_ holds
+};
 
 // Renders each scene in turn on one context (resized when a scene's size differs from the previous
 // one's; programs are kept, geometry is rebuilt only when the meshes differ from the previous scene's)

@@ -35,6 +35,9 @@ const std::map<std::string, std::vector<std::string>> kBelow = {
     // document and camera controls (viewer/scene_document.hpp, viewer/orbit.hpp; the CMake target
     // compiles only those two of the viewer's files).
     {"web", {"render", "cli", "viewer"}},
+    // The Python module (app/python): the command line's parser and the headless run modes it shares
+    // (cli/program.hpp), on a headless context.
+    {"python", {"cli", "headless"}},
 };
 
 // The executable's files (main() and the run modes, cli/program.hpp) sit in cli/ and may use every layer.
