@@ -170,6 +170,11 @@ void sectionMaterial(Material& m, ReflectionModel reflection) {
         m.anisotropy.y = std::clamp(m.anisotropy.y, kExponentRange.lo, kExponentRange.hi);
     ImGui::EndDisabled();
     ImGui::EndDisabled();
+    // Mirror and glass, added after the sum with the scene's environment (none: they reflect nothing).
+    ImGui::SliderFloat("k_r mirror", &m.mirror, kUnitRange.lo, kUnitRange.hi, "%.2f");
+    ImGui::SliderFloat("k_t transmission", &m.transmission, kUnitRange.lo, kUnitRange.hi, "%.2f");
+    m.mirror = std::clamp(m.mirror, kUnitRange.lo, kUnitRange.hi);
+    m.transmission = std::clamp(m.transmission, kUnitRange.lo, kUnitRange.hi);
 }
 
 // The lecture's plots for the current parameters (core/figures/plot.hpp): rebuilt every frame, which costs
