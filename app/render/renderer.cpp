@@ -479,12 +479,8 @@ Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, cons
     progressive_.resolveInto(scene, target, programs_.shaders());  // the image so far, depth included
     if (scene.environment.kind != EnvironmentKind::None) {
         environment_.bindTexture(scene);
-        stageUniforms(scene, panes, {}, nullptr, false);  // the panes' frame blocks: the eye
-        for (std::size_t p = 0; p < panes.size(); ++p) {
-            if (panes[p].difference) continue;
-            uniforms_->bindFrame(p);
-            environment_.drawBackground(scene, panes[p], target, programs_.shaders(), true);
-        }
+        for (const Pane& pane : panes)
+            if (!pane.difference) environment_.drawBackground(scene, pane, target, programs_.shaders(), true);
     }
     difference_.draw(panes, scene.diff.factor, target, programs_.shaders());
     checkGl("progressive render");
