@@ -10,6 +10,8 @@
 //   - spec_l's exponent may differ along the surface's tangent and bitangent: anisotropic reflection,
 //     Ashikhmin and Shirley's (lobeExponent(), SL_ANISOTROPY);
 //   - an area light is a sum of point lights, its samples (areaLights());
+//   - mirror and glass: k_r F env(R) + k_t (1 - F) env(T) added after the sum (mirrorAndGlass(),
+//     SL_ENVIRONMENT);
 //   - "show" keeps one term of the sum (termsShown()); E is the light a glTF material gives off
 //     (shaders/object_color.glsl); a textured flat or Gouraud surface splits the sum (shadeLectureTermsOfC).
 //
@@ -217,6 +219,46 @@ vec3 areaLights(Material m, vec3 P, vec3 N, vec3 V) {
     return sum;
 }
 
+// ---- Mirror and glass: the environment reflected and refracted (SL_ENVIRONMENT) ----
+
+#if SL_ENVIRONMENT
+#include "environment.glsl"
+// The lecture's "Reflection and Refraction" at this one surface (core/shading/environment.hpp,
+// environmentTerm): what a mirror (k_r) and glass (k_t) add after the sum, the environment seen along
+//
+//   R = reflect(-V, N) = 2 (N.V) N - V
+//   T = refract(-V, N, eta) = -eta V + (eta cos_i - cos_t) N,   eta = eta_i / eta_t = 1 / ior
+//
+//   k_r F env(R) + k_t (1 - F) env(T)
+//
+// Snell's law eta_i sin_i = eta_t sin_t gives cos_t; past the critical angle (ior < 1: from inside the
+// glass) there is no T, and F = 1. F is the Fresnel reflectance at cos_i = N.V in the scene's mode;
+// without Fresnel (SL_FRESNEL_NONE) both weights are 1: the lecture's "without Fresnel" picture.
+// T leaves this surface for the environment at once: one interface, as on the slide.
+vec3 mirrorAndGlass(vec3 P, vec3 N) {
+    if (SL_SHOW != SL_SHOW_ALL) return vec3(0.0);  // "show" draws one term of the sum, not this
+    vec3 V = normalize(toEye(P));
+    float cosI = max(dot(N, V), 0.0);
+    vec3 R = 2.0 * dot(N, V) * N - V;
+    float eta = 1.0 / u_modelSettings.x;
+    float sinTSq = eta * eta * (1.0 - cosI * cosI);
+    bool totalInternal = sinTSq > 1.0;
+    float F = 1.0;
+    if (SL_FRESNEL == SL_FRESNEL_SCHLICK && !totalInternal) F = fresnelSchlick(cosI);
+    if (SL_FRESNEL == SL_FRESNEL_EXACT && !totalInternal) F = fresnelExact(cosI);
+    float towardsR = SL_FRESNEL == SL_FRESNEL_NONE ? 1.0 : F;
+    float towardsT = totalInternal ? 0.0 : SL_FRESNEL == SL_FRESNEL_NONE ? 1.0 : 1.0 - F;
+    vec3 L = u_mirrorGlass.x * towardsR * environment(R);
+    if (towardsT > 0.0) {
+        vec3 T = -eta * V + (eta * cosI - sqrt(1.0 - sinTSq)) * N;
+        L += u_mirrorGlass.y * towardsT * environment(T);
+    }
+    return L;
+}
+#else
+vec3 mirrorAndGlass(vec3 P, vec3 N) { return vec3(0.0); }  // no environment, or neither k_r nor k_t
+#endif
+
 // ---- "show": one term of the sum alone ----
 
 // The material with the coefficients of the terms "show" hides set to 0 (the compiler folds them away).
@@ -241,9 +283,10 @@ vec3 shadeMaterial(Material m, vec3 P, vec3 N) {
     return E + lecture(shown, ambientLight(), P, N, V) + areaLights(shown, P, N, V);
 }
 
-// L before the clamp, with C times `texel` where C varies over the surface (shaders/object_color.glsl;
-// 1 elsewhere). Phong's fragments clamp it (progressive Phong sums these over passes and clamps the mean).
-vec3 shade(vec3 P, vec3 N, vec3 texel) { return shadeMaterial(objectMaterial(texel), P, N); }
+// L before the clamp: the sum (shadeMaterial) and mirror and glass after it, with C times `texel` where
+// C varies over the surface (shaders/object_color.glsl; 1 elsewhere). Phong's fragments clamp it
+// (progressive Phong sums these over passes and clamps the mean).
+vec3 shade(vec3 P, vec3 N, vec3 texel) { return shadeMaterial(objectMaterial(texel), P, N) + mirrorAndGlass(P, N); }
 
 // The lecture's L, clamped to [0, 1]: linear RGB (flat and Gouraud, per triangle or vertex).
 vec3 shadeLecture(vec3 P, vec3 N) { return clamp(shade(P, N, vec3(1.0)), 0.0, 1.0); }
@@ -256,4 +299,5 @@ vec3 shadeLectureTermsOfC(vec3 P, vec3 N) {  // k_a A C + sum v L_l k_d C (N.I)
     m.k_s = 0.0;
     return shadeMaterial(m, P, N);
 }
-vec3 shadeLectureSpecular(vec3 P, vec3 N) { return shadeMaterial(objectMaterial(vec3(0.0)), P, N); }  // sum v L_l k_s S spec_l
+// sum v L_l k_s S spec_l, and mirror and glass (which C does not colour)
+vec3 shadeLectureSpecular(vec3 P, vec3 N) { return shadeMaterial(objectMaterial(vec3(0.0)), P, N) + mirrorAndGlass(P, N); }

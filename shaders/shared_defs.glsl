@@ -22,6 +22,7 @@
 #define SL_TEXTURE_AREA_SHADOW_MAPS 1  // u_areaShadowMaps: area lights' layers
 #define SL_TEXTURE_BASE_COLOR 2        // u_baseColorTexture (shaders/object_color.glsl)
 #define SL_TEXTURE_EMISSIVE 3          // u_emissiveTexture (shaders/object_color.glsl)
+#define SL_TEXTURE_ENVIRONMENT 4       // u_environmentMap: an image environment (shaders/environment.glsl)
 
 #define SL_LIGHT_POINT 0
 #define SL_LIGHT_DIRECTIONAL 1
@@ -49,6 +50,29 @@
 #define SL_SHOW_LIGHT 4                        // one light's diffuse + specular: SL_SHOW_LIGHT_INDEX
 #define SL_SHOW_UNLIT 5                        // the material colour C, no lighting
 #define SL_SHOW_EMISSIVE 6                     // E, the light the surface gives off
+// Mirror and glass (SL_ENVIRONMENT; core/shading/environment.hpp): what env(d) is, and the procedural
+// environments' constants, read by shaders/environment.glsl and core/shading/environment.cpp alike.
+#define SL_ENVIRONMENT_NONE 0
+#define SL_ENVIRONMENT_ROOM 1
+#define SL_ENVIRONMENT_SKY 2
+#define SL_ENVIRONMENT_IMAGE 3
+#define SL_ROOM_EDGE 0.01                      // walls, floor and ceiling meet over this much of |d|'s components
+#define SL_ROOM_TILES 2.0                      // checker periods per room half-width (8 tiles across the floor)
+#define SL_ROOM_TILE_EDGE 0.02                 // the tiles' edges, in periods
+#define SL_ROOM_WALL_RIGHT 0.80, 0.16, 0.10    // +x: red
+#define SL_ROOM_WALL_LEFT 0.12, 0.55, 0.18     // -x: green
+#define SL_ROOM_WALL_BACK 0.15, 0.28, 0.80     // +z (behind the default camera): blue
+#define SL_ROOM_WALL_FRONT 0.85, 0.78, 0.55    // -z (ahead): warm white
+#define SL_ROOM_CEILING 0.95, 0.95, 0.92
+#define SL_ROOM_TILE_LIGHT 0.90, 0.90, 0.88
+#define SL_ROOM_TILE_DARK 0.06, 0.06, 0.07
+#define SL_SKY_ZENITH 0.18, 0.36, 0.85
+#define SL_SKY_HORIZON 0.78, 0.86, 0.95
+#define SL_SKY_GROUND 0.24, 0.21, 0.18
+#define SL_SKY_SUN_DIRECTION 0.45, 0.45, -0.77 // towards the sun (normalised where used): ahead, up and right
+#define SL_SKY_SUN 8.0, 7.6, 6.8               // the sun's disc: brighter than 1, so a mirror shows it white
+#define SL_SKY_SUN_INNER_COS 0.99966           // cos 1.5 degrees: full disc inside
+#define SL_SKY_SUN_OUTER_COS 0.99756           // cos 4 degrees: none outside
 #define SL_ALPHA_OPAQUE 0                      // glTF alphaMode (SL_ALPHA_MODE): alpha ignored
 #define SL_ALPHA_MASK 1                        // fragments below the cutoff discarded (a cut-out)
 #define SL_ALPHA_BLEND 2                       // the colour written with its alpha, blended over what is behind

@@ -54,6 +54,11 @@
 #ifndef SL_ANISOTROPY
 #define SL_ANISOTROPY 0
 #endif
+// SL_ENVIRONMENT = SL_ENVIRONMENT_ROOM, _SKY or _IMAGE: a draw of a material with k_r or k_t in a scene
+// with an environment (mirror and glass, lighting.glsl). Only such draws get it.
+#ifndef SL_ENVIRONMENT
+#define SL_ENVIRONMENT SL_ENVIRONMENT_NONE
+#endif
 #ifndef SL_DOUBLE_SIDED
 #define SL_DOUBLE_SIDED 0
 #endif

@@ -45,4 +45,5 @@ layout(std140) uniform ObjectBlock {
     vec4 u_emissive;                         // rgb: E's factor (emissiveFactor x emissive strength)
     vec4 u_alphaCutoff;                      // x: MASK's cutoff
     vec4 u_anisotropy;                       // x: k_t, y: k_b (SL_ANISOTROPY: lighting.glsl, lobeExponent)
+    vec4 u_mirrorGlass;                      // x: k_r, y: k_t (SL_ENVIRONMENT: lighting.glsl, mirrorAndGlass)
 };

@@ -171,6 +171,12 @@ const OptionSpec kOptions[] = {
      "symbols; with `--probe`, each term's value at that pixel; over each pane, where its mode evaluates the "
      "formula. The viewer starts with it on (key E); with `--output` it is drawn into the PNG",
      setTrue<&Options::formula>},
+    // Issue 30, the intersection diagram.
+    {"--intersection", "", "", G::General, kNoBounds, nullptr, "",
+     "with `--probe` and `--output`: the lecture's \"At the Intersection\" drawn at the probed point into the PNG: "
+     "arrows I, N, R and T (Snell's law at the surface, `--ior`), theta_i, theta_t, eta_i, eta_t and the Fresnel "
+     "split R_par, R_perp, R and 1 - R. In the viewer: key I after a click",
+     setTrue<&Options::intersection>},
     {"--reference", "", "REF.png", G::General, kNoBounds, nullptr, "",
      "with `--output` (one frame, or a `--plot`): after writing the image, compare it with REF.png and print one "
      "line on stdout with the largest and the mean channel difference against `--max-diff` and `--mean-diff`, "
@@ -290,7 +296,9 @@ const OptionSpec kOptions[] = {
          o.outputEncoding = choice(self.name, v, kOutputEncodingNames);
      }},
     {"--ior", "", "X", G::General, bounds(kIorRange), nullptr, "ior",
-     "index of refraction eta2/eta1 from air for `--fresnel` ({range}, default 1.5)",
+     "relative index of refraction eta2/eta1 for `--fresnel` and for glass's refraction ({range}, default 1.5): "
+     "from air into the material; below 1 the light comes from inside it (total internal reflection past the "
+     "critical angle)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.ior = floatIn(self, v); }},
     {"--show", "", "TERM", G::General, kNoBounds, [] { return namesList(kShowTermNames, " | "); },
      "show", "draw one addend of the formula alone: {names}",
@@ -307,6 +315,16 @@ const OptionSpec kOptions[] = {
          const auto kb = pairOf(self.name, v, ',', "KT,KB, two exponents, e.g. 8,256");
          o.anisotropy = glm::vec2(floatIn(self, kb.first), floatIn(self, kb.second));
      }},
+    materialOption<&Options::mirror>("--mirror", "objects[].material.mirror", kUnitRange,
+                                     "k_r ({range}) of every object: the mirror term k_r F env(R) added after the "
+                                     "lecture's sum (needs `--environment`; F by `--fresnel`, 1 with none)"),
+    materialOption<&Options::transmission>("--transmission", "objects[].material.transmission", kUnitRange,
+                                           "k_t ({range}) of every object: glass, k_t (1 - F) env(T) with T refracted "
+                                           "by Snell's law at the surface (`--ior`; needs `--environment`)"),
+    {"--environment", "", "ENV", G::General, kNoBounds, [] { return namesList(kEnvironmentNames, " | "); }, "environment",
+     "what mirrors and glass reflect and refract, drawn as the background: {names} (room: coloured walls and a "
+     "checker floor; sky: a gradient with a sun), or an equirectangular FILE.png or FILE.hdr (see *What is drawn*)",
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.environment = parseEnvironment(v, "", self.name); }},
     colorOption<&Options::color>("--color", "objects[].material.color",
                                  "C, the diffuse and ambient colour of every object, linear RGB ({range} each); "
                                  "replaces a glTF model's base colours"),

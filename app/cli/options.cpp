@@ -60,6 +60,8 @@ void checkOutputs(const Options& o) {
     if (o.formula && (!o.sweeps.empty() || o.benchmarkFrames || o.plot || o.info))
         throw InputError(std::string("--formula: draws over a frame (the viewer's or --output's); not with ") +
                          (!o.sweeps.empty() ? "--sweep" : o.benchmarkFrames ? "--benchmark" : o.plot ? "--plot" : "--info"));
+    if (o.intersection && !o.probe)
+        throw InputError("--intersection: draws the diagram at a probed point: give --probe X,Y");
     if (o.output && !o.playlist && !hasExtension(*o.output, ".png") && !isVideoPath(*o.output))
         throw InputError("--output: " + *o.output + ": only .png output is supported (and .gif, .mp4, .webm with --animate)");
     if (o.screenshot && !hasExtension(*o.screenshot, ".png"))
@@ -269,6 +271,8 @@ void applyOverrides(Scene& s, const Options& o) {
         if (o.color) obj.material.color = *o.color, obj.material.colorSet = true;
         if (o.specularColor) obj.material.specularColor = *o.specularColor;
         if (o.anisotropy) obj.material.anisotropic = true, obj.material.anisotropy = *o.anisotropy;
+        if (o.mirror) obj.material.mirror = *o.mirror;
+        if (o.transmission) obj.material.transmission = *o.transmission;
         checkCoefficients(obj.material, "--");
     }
     checkAnisotropy(s, o.anisotropy ? "--" : o.reflection ? "--reflection: " : "");
@@ -287,6 +291,7 @@ void applyOverrides(Scene& s, const Options& o) {
         s.outputEncodingGiven = true;
     }
     if (o.ior) s.ior = *o.ior;
+    if (o.environment) s.environment = *o.environment;
     if (o.noTextures) s.textures = false;
     if (o.diffA) s.diff.a = *o.diffA, s.diff.b = *o.diffB;
     if (o.diffFactor) s.diff.factor = *o.diffFactor;

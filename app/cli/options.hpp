@@ -47,6 +47,7 @@ struct Options {
     std::optional<std::string> playlist;    // --playlist DIR: the lecture presets in DIR (core/scene/playlist.hpp)
     bool captions = false;                  // --captions: --output PNGs get a strip with the title and caption
     bool formula = false;                   // --formula: the lecture's formula over the view (viewer: key E)
+    bool intersection = false;              // --intersection: with --probe, the intersection diagram (viewer: key I)
     // --reference REF.png: the --output image compared with REF.png (cli/reference.hpp); the thresholds,
     // what a missing reference does and where the amplified difference goes. Unset: the defaults
     // (core/image/image.hpp, ReferenceTolerance); each is refused without --reference.
@@ -80,11 +81,13 @@ struct Options {
     std::optional<SpecularNormalization> specularNormalization;  // --specular-normalization none|energy
     std::optional<FresnelMode> fresnel;     // --fresnel none|schlick|exact
     std::optional<OutputEncoding> outputEncoding;  // --output-encoding linear|srgb
-    std::optional<float> ior;               // --ior X (1..10)
+    std::optional<float> ior;               // --ior X (0.2..10)
     // --color, --specular-color R,G,B: C and S of every object; --ambient, --background R,G,B: the
     // scene's A and background (linear RGB, 0..1).
     std::optional<glm::vec3> color, specularColor, ambient, background;
     std::optional<glm::vec2> anisotropy;  // --anisotropy KT,KB: every object's k_t, k_b
+    std::optional<float> mirror, transmission;  // --mirror K, --transmission K: every object's k_r, k_t
+    std::optional<EnvironmentSpec> environment;  // --environment room|sky|none|FILE (the image read when parsed)
     std::optional<TermView> show;           // --show all|ambient|diffuse|specular|light:N|unlit
     std::optional<ShadingMode> diffA, diffB;  // --diff A,B: the two modes of layout diff
     std::optional<float> diffFactor;        // --diff-factor X (1..1000)

@@ -9,6 +9,7 @@
 #include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/probe/probe.hpp"
+#include "core/figures/intersection_image.hpp"
 #include "core/geometry/ray_cast.hpp"
 #include "core/scene/playlist.hpp"
 #include "headless/headless.hpp"
@@ -18,6 +19,8 @@
 #include "core/scene/animation.hpp"
 #include "video/video_encoder.hpp"
 #endif
+
+#include <glm/geometric.hpp>
 
 #include <chrono>
 #include <filesystem>
@@ -100,6 +103,24 @@ int runSweepSheet(const RunContext& run, const Scene& scene) {
     return 0;
 }
 
+// --intersection: where the diagram stands, the probed point with the normal its mode has there
+// (phong: the interpolated normal; flat: the face's; gouraud: the corners' weighted like the colours).
+std::optional<IntersectionPoint> intersectionPoint(const Scene& scene, const ProbeResult& probe) {
+    if (probe.miss || probe.modes.empty() || probe.modes[0].evaluations.empty()) return std::nullopt;
+    const std::vector<ProbeEvaluation>& e = probe.modes[0].evaluations;
+    glm::vec3 n = e[0].nrmWorld;
+    if (e.size() == 3)
+        n = glm::normalize(probe.anchor.barycentric.x * e[0].nrmWorld + probe.anchor.barycentric.y * e[1].nrmWorld +
+                           probe.anchor.barycentric.z * e[2].nrmWorld);
+    const Pane& pane = probe.paneRect;
+    IntersectionPoint at;
+    at.posWorld = probe.posWorld;
+    at.nrmWorld = n;
+    at.clipFromWorld = clipFromView(scene.camera, float(pane.width) / float(std::max(pane.height, 1))) * viewFromWorld(scene.camera);
+    at.paneX = float(pane.x), at.paneY = float(pane.y), at.paneWidth = float(pane.width), at.paneHeight = float(pane.height);
+    return at;
+}
+
 // The probe needs the CPU geometry after the render, so this path builds it itself rather than
 // through renderSceneHeadless (which lets go of it once uploaded).
 int runProbeImage(const RunContext& run, Scene scene) {
@@ -107,8 +128,12 @@ int runProbeImage(const RunContext& run, Scene scene) {
     const auto geometry = loadGeometry(options, scene);
     const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
                                          options.probe->y);
-    writePng(*options.output, finishedFrame(options, renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options)),
-                                       scene, scene.title, &probe));
+    Image frame = renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options));
+    if (options.intersection) {
+        if (const std::optional<IntersectionPoint> at = intersectionPoint(scene, probe)) drawIntersectionDiagram(frame, scene, *at);
+        else std::cerr << "shadelab: --intersection: pixel " << probe.x << "," << probe.y << " shows no surface; no diagram\n";
+    }
+    writePng(*options.output, finishedFrame(options, std::move(frame), scene, scene.title, &probe));
     std::cout << probeToJson(scene, probe) << std::endl;
     return 0;
 }

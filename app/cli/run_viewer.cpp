@@ -30,6 +30,7 @@ ViewerOptions viewerOptions(const Options& options, const std::string& shaderDir
     viewer.fullscreen = options.fullscreen;
     viewer.noLabels = options.noLabels;
     viewer.formula = options.formula;
+    viewer.intersection = options.intersection;
     viewer.resetLayout = options.resetLayout;
     viewer.msaa = options.msaa.value_or(-1);
     viewer.animations = options.animations;

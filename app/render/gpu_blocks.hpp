@@ -57,6 +57,7 @@ struct ObjectBlock {
     float emissive[4];                       // E's factor
     float alphaCutoff[4];                    // MASK's cutoff
     float anisotropy[4];                     // k_t, k_b (SL_ANISOTROPY)
+    float mirrorGlass[4];                    // k_r, k_t (SL_ENVIRONMENT)
 };
 static_assert(offsetof(ObjectBlock, normalWorldFromObject) == 64, "std140 offset");
 static_assert(offsetof(ObjectBlock, color) == 128, "std140 offset");
@@ -65,6 +66,7 @@ static_assert(offsetof(ObjectBlock, coefficients) == 160, "std140 offset");
 static_assert(offsetof(ObjectBlock, emissive) == 176, "std140 offset");
 static_assert(offsetof(ObjectBlock, alphaCutoff) == 192, "std140 offset");
 static_assert(offsetof(ObjectBlock, anisotropy) == 208, "std140 offset");
-static_assert(sizeof(ObjectBlock) == 224, "std140 size");
+static_assert(offsetof(ObjectBlock, mirrorGlass) == 224, "std140 offset");
+static_assert(sizeof(ObjectBlock) == 240, "std140 size");
 
 }  // namespace shadelab::gpu

@@ -101,9 +101,11 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.emissive && variant.emissiveTexture && variant.textured) defines.push_back("SL_EMISSIVE_TEXTURE 1");
     if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");
     if (variant.anisotropic) defines.push_back("SL_ANISOTROPY 1");
+    if (variant.environment != SL_ENVIRONMENT_NONE) defines.push_back("SL_ENVIRONMENT " + std::to_string(variant.environment));
     // flat.vert + flat.frag, …; the speed variants are programs of their own (shaders/flat_packed.vert,
     // shaders/phong_interpolated.vert and .frag).
-    const bool interpolated = variant.interpolatedInputs && mode == ShadingMode::Phong && !variant.anisotropic;
+    const bool interpolated = variant.interpolatedInputs && mode == ShadingMode::Phong && !variant.anisotropic &&
+                              variant.environment == SL_ENVIRONMENT_NONE;
     const std::string name = interpolated ? std::string("phong_interpolated") : toString(mode);
     const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ && !variant.anisotropic ? "flat_packed" : name;
     std::string key = vertex;

@@ -26,6 +26,8 @@ public:
         bool emissive = false, emissiveTexture = false;
         // SL_ANISOTROPY: an anisotropic material, its vertices with tangents (flat: flat.vert, never packed).
         bool anisotropic = false;
+        // SL_ENVIRONMENT: mirror and glass (k_r or k_t) in a scene with an environment: SL_ENVIRONMENT_*.
+        int environment = SL_ENVIRONMENT_NONE;
     };
     // `packedFlatVertices`: flat shading's vertex stage is flat_packed.vert (RendererOptions).
     ProgramCache(ShaderLibrary shaders, bool packedFlatVertices);

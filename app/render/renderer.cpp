@@ -3,6 +3,7 @@
 #include "core/base/error.hpp"
 
 #include "core/geometry/camera.hpp"
+#include "core/shading/environment.hpp"
 #include "core/shading/lighting.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
@@ -33,7 +34,7 @@ void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
 unsigned variantKey(const ProgramCache::Variant& v) {
     return unsigned(v.accumulate) | unsigned(v.interpolatedInputs) << 1 | unsigned(v.textured) << 2 |
            unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 | unsigned(v.emissiveTexture) << 7 |
-           unsigned(v.doubleSided) << 8 | unsigned(v.anisotropic) << 9;
+           unsigned(v.doubleSided) << 8 | unsigned(v.anisotropic) << 9 | unsigned(v.environment) << 10;
 }
 
 void bindTexture(int unit, GLuint texture) {
@@ -46,6 +47,14 @@ void bindTexture(int unit, GLuint texture) {
 // material asks for it and the lobe is Blinn-Phong's (core/shading/lighting.hpp, anisotropicLobe).
 bool anisotropicObject(const Scene& s, std::size_t object) {
     return object < s.objects.size() && s.objects[object].material.anisotropic && s.reflection == ReflectionModel::BlinnPhong;
+}
+
+// SL_ENVIRONMENT_* for an object's draws: mirror and glass (k_r or k_t) in a scene with an environment
+// (core/shading/environment.hpp, mirrorOrGlass); SL_ENVIRONMENT_NONE for every other draw.
+int environmentObject(const Scene& s, std::size_t object) {
+    return object < s.objects.size() && mirrorOrGlass(s.objects[object].material, s.environment)
+               ? environmentDefine(s.environment.kind)
+               : SL_ENVIRONMENT_NONE;
 }
 
 gpu::FrameBlock frameBlock(const Scene& s, float aspect) {
@@ -106,6 +115,8 @@ gpu::ObjectBlock objectBlock(const SceneObject& o, const glm::vec3& color, float
     b.coefficients[3] = o.material.ke;
     b.anisotropy[0] = o.material.anisotropy.x;
     b.anisotropy[1] = o.material.anisotropy.y;
+    b.mirrorGlass[0] = o.material.mirror;
+    b.mirrorGlass[1] = o.material.transmission;
     return b;
 }
 
@@ -161,12 +172,14 @@ void Renderer::preparePrograms(const Scene& scene) {
             if (scene.lights.size() <= SL_MAX_INTERPOLATED_LIGHTS && mayInterpolate())
                 programs_.get(ShadingMode::Phong, scene, {false, true, t, false, d});
         }
-    bool anisotropic = false;
-    for (std::size_t o = 0; o < meshes_.objects(); ++o) anisotropic = anisotropic || anisotropicObject(scene, o);
-    if (!anisotropic) return;
-    ProgramCache::Variant v;
-    v.anisotropic = true;
-    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) programs_.get(mode, scene, v);
+    // The variants of anisotropic and of mirror-and-glass objects (each object's combination).
+    for (std::size_t o = 0; o < meshes_.objects(); ++o) {
+        ProgramCache::Variant v;
+        v.anisotropic = anisotropicObject(scene, o);
+        v.environment = environmentObject(scene, o);
+        if (!v.anisotropic && v.environment == SL_ENVIRONMENT_NONE) continue;
+        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) programs_.get(mode, scene, v);
+    }
 }
 
 void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
@@ -358,14 +371,20 @@ void Renderer::beginPanes(const Scene& scene, const RenderTarget& target, bool a
 // Pane p's draws with its shading mode's programs.
 void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, const RenderTarget& target,
                         const std::vector<Draw>& draws, bool accumulate) {
-    glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
     uniforms_->bindFrame(p);
+    // The environment behind the surfaces (a progressive pass sums surfaces only: renderProgressive
+    // draws it after the resolve, where no surface is).
+    if (!accumulate) environment_.drawBackground(scene, pane, target, programs_.shaders(), false);
+    glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
     // Per object: does this pane's Phong program take interpolated inputs (see interpolatesInputs)?
     // Only the variants some draw uses are built (each is an LLVM compile on first use).
     const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
     std::vector<char> inputs(objects, 0);
     // Anisotropic objects take the tangent from their own vertex arrays, which the speed variant does not read.
-    for (std::size_t o = 0; o < objects; ++o) inputs[o] = interpolatesInputs(o, pane, scene) && !anisotropicObject(scene, o);
+    // So do mirror-and-glass objects (their programs have the variant's inputs only for the lecture's sum).
+    for (std::size_t o = 0; o < objects; ++o)
+        inputs[o] = interpolatesInputs(o, pane, scene) && !anisotropicObject(scene, o) &&
+                    environmentObject(scene, o) == SL_ENVIRONMENT_NONE;
     std::map<unsigned, GLuint> programs;  // by variantKey()
     GLuint current = 0;
     bool blending = false;
@@ -381,6 +400,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
         v.emissive = draw.emissive != glm::vec3(0.0f);
         v.emissiveTexture = draw.emissiveTexture >= 0;
         v.anisotropic = anisotropicObject(scene, draw.object);
+        v.environment = environmentObject(scene, draw.object);
         GLuint& variant = programs[variantKey(v)];
         if (!variant) variant = programs_.get(pane.mode, scene, v);
         if (variant != current) glUseProgram(current = variant);
@@ -433,6 +453,7 @@ void Renderer::drawPanes(const Scene& scene, const std::vector<Pane>& panes, con
     stageUniforms(scene, panes, draws, pass, shadows);
     beginPanes(scene, target, pass != nullptr, add);
     if (shadows) shadowMaps_.bindTextures();
+    environment_.bindTexture(scene);
     for (std::size_t p = 0; p < panes.size(); ++p)
         if (!panes[p].difference) drawPane(scene, panes[p], p, target, draws, pass != nullptr);  // difference: below
     glBindVertexArray(0);
@@ -456,6 +477,11 @@ Renderer::ProgressiveStatus Renderer::renderProgressive(const Scene& scene, cons
         progressive_.passDrawn();
     }
     progressive_.resolveInto(scene, target, programs_.shaders());  // the image so far, depth included
+    if (scene.environment.kind != EnvironmentKind::None) {
+        environment_.bindTexture(scene);
+        for (const Pane& pane : panes)
+            if (!pane.difference) environment_.drawBackground(scene, pane, target, programs_.shaders(), true);
+    }
     difference_.draw(panes, scene.diff.factor, target, programs_.shaders());
     checkGl("progressive render");
     return progressive_.status();

@@ -9,6 +9,7 @@
 #include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "render/difference_pass.hpp"
+#include "render/environment_pass.hpp"
 #include "render/gl_handles.hpp"
 #include "render/mesh_cache.hpp"
 #include "render/program_cache.hpp"
@@ -119,6 +120,7 @@ private:
     ShadowMaps shadowMaps_;
     std::unique_ptr<UniformStager> uniforms_;  // made once the GL is loaded
     DifferencePass difference_;                 // layout diff's third pane, after the others
+    EnvironmentPass environment_;               // the environment's texture and background
     ProgressivePass progressive_;               // renderProgressive()'s sum and its resolve
 };
 

@@ -182,6 +182,11 @@ void sectionMaterial(Material& m, ReflectionModel reflection, std::string& reado
     readoutWhileActive(readout, "k_b", m.anisotropy.y);
     ImGui::EndDisabled();
     ImGui::EndDisabled();
+    // Mirror and glass, added after the sum with the scene's environment (none: they reflect nothing).
+    ImGui::SliderFloat("k_r mirror", &m.mirror, kUnitRange.lo, kUnitRange.hi, "%.2f");
+    ImGui::SliderFloat("k_t transmission", &m.transmission, kUnitRange.lo, kUnitRange.hi, "%.2f");
+    m.mirror = std::clamp(m.mirror, kUnitRange.lo, kUnitRange.hi);
+    m.transmission = std::clamp(m.transmission, kUnitRange.lo, kUnitRange.hi);
 }
 
 // With a probed pixel, the 3-D lobe is that point's: its N, its I toward the selected light (or the first

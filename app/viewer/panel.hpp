@@ -26,6 +26,7 @@ struct ViewSettings {
     bool showHud = true;           // frame time, FPS, triangles, GL renderer
     bool showCaption = true;       // a scene's title and caption in a band above the 3D view
     bool lightLabels = true;       // L: each light's marker, number and kind drawn over the view
+    bool showIntersection = false; // I, --intersection: the intersection diagram at the probe (viewer/probe_arrows.hpp)
     bool showFormula = false;      // E, --formula: the lecture's formula over the view (viewer/formula_view.hpp)
     bool readoutWhenHidden = true; // Tab keeps the frame-time strip (a switch in the Overlays section)
     // The text over the view (caption, labels, formula, messages) sized from the window's height for

@@ -20,6 +20,10 @@ struct ProbeArrow {
 // N and V, and for each light (only `selectedLight` when it names one) I, R(I) and H, as unit vectors
 // drawn at a length that looks the same wherever the point is; plus a cross at the probed point. All
 // in the probed pane only: the other panes of a compare layout evaluate the formula elsewhere.
-std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight);
+// With `intersection` (the viewer's key I) instead the lecture's "At the Intersection" at the probed
+// point: I arriving from the eye, N, the mirror direction R and the refracted T (Snell's law at the
+// surface, core/shading/environment.hpp), labelled with theta_i, theta_t, eta_i, eta_t and the exact
+// Fresnel split R_par, R_perp, R and 1 - R (as core/figures/intersection_image.hpp draws it headless).
+std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight, bool intersection);
 
 }  // namespace shadelab

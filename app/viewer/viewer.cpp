@@ -147,6 +147,7 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     if (!settings_.startSections && prefs_.openSections) settings_.startSections = prefs_.openSections;
     if (options_.noLabels) settings_.paneLabels = settings_.lightLabels = false;
     settings_.showFormula = options_.formula;
+    settings_.showIntersection = options_.intersection;
     readShaderSources(ShaderLibrary(options_.shaderDir));
     status_.glRenderer = renderer_->glRenderer();
     msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : std::max(prefs_.msaa.value_or(4), 1);
@@ -671,6 +672,7 @@ void Viewer::runCommand(ViewerCommand command) {
     case ViewerCommand::FaceNormals: overlays.faceNormals = !overlays.faceNormals; break;
     case ViewerCommand::LightMarkers: settings_.lightLabels = !settings_.lightLabels; break;
     case ViewerCommand::Formula: settings_.showFormula = !settings_.showFormula; break;
+    case ViewerCommand::Intersection: settings_.showIntersection = !settings_.showIntersection; break;
     case ViewerCommand::ShaderSection: settings_.shaderOverView = !settings_.shaderOverView; break;
     case ViewerCommand::ResetCamera: document_.resetCamera(), cameraMoved(); break;
     case ViewerCommand::FrameModel: document_.frameModel(), cameraMoved(); break;
@@ -1134,7 +1136,7 @@ std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std:
     settings_.overlays.sampleMarkersLight = settings_.selectedLight;
     std::vector<OverlayArrow> arrows;
     if (!probe_) return arrows;
-    const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_, settings_.selectedLight);
+    const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_, settings_.selectedLight, settings_.showIntersection);
     ImGui::PushFont(imgui_.viewFont());
     drawProbeLabels(scene, labelled, l.view, l.scale, avoid);
     ImGui::PopFont();

@@ -59,6 +59,7 @@ struct ViewerOptions {
     SceneAdjust adjustPreset;
     bool noLabels = false;            // --no-labels: pane and light labels start off
     bool formula = false;             // --formula: start with the formula over the view (E)
+    bool intersection = false;        // --intersection: start with the intersection diagram at the probe (I)
     bool resetLayout = false;         // --reset-layout: forget (and overwrite) the remembered layout
     float uiScale = 0.0f;             // --ui-scale: on top of the monitor's content scale; 0: not given
     bool fullscreen = false;          // --fullscreen (F11)

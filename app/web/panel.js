@@ -662,12 +662,12 @@ var Module = (function () {
   // Which option sits in which section is the page's choice (the table has no section column).
   const SECTION_OPTIONS = {
     shading: ["layout", "shading", "diff", "diff-factor", "reflection", "specular-normalization", "fresnel", "ior", "show", "output-encoding", "msaa"],
-    material: ["ka", "kd", "ks", "ke", "anisotropy", "color", "specular-color", "no-textures"],
+    material: ["ka", "kd", "ks", "ke", "anisotropy", "mirror", "transmission", "color", "specular-color", "no-textures"],
     plots: ["incidence", "from-inside"],
     shadows: ["shadows"],
     overlays: ["formula"],
     camera: ["size"],
-    background: ["background", "ambient"],
+    background: ["environment", "background", "ambient"],
   };
   const OPEN_BY_DEFAULT = new Set(["shading", "material"]);
   const sectionBodies = {};
@@ -1092,6 +1092,7 @@ var Module = (function () {
     "play-pause": "the page plays no --animate animation",
     "quit": "close the browser tab",
     "light-markers": "the 3D light crosses (overlay \"lights\")",
+    "intersection": "not in the page: the desktop viewer and shadelab --probe X,Y --intersection draw it",
   };
   // Mouse rows (no command) the page does otherwise.
   const WEB_ROW_NOTE = { "drag a light marker": "not in the page: the Lights section sets positions" };
@@ -1207,6 +1208,7 @@ var Module = (function () {
         }
         return clearProbe();
       case "quit": return note("Q: close the browser tab to quit", 4);
+      case "intersection": return note("I: the intersection diagram is the desktop viewer's (and shadelab --probe X,Y --intersection)", 6);
     }
   }
   function showPanel(show) {

@@ -330,7 +330,7 @@ void renderFrame(bool complete = false) {
     for (Overlay o : a.options.overlays) overlays.shown(o) = true;
     std::vector<OverlayArrow> arrows;
     if (a.probe)
-        for (const ProbeArrow& p : probeArrows(scene, *a.probe, -1)) arrows.push_back(p.arrow);
+        for (const ProbeArrow& p : probeArrows(scene, *a.probe, -1, false)) arrows.push_back(p.arrow);
     if (overlays.any() || !arrows.empty()) a.overlays->render(scene, target, overlays, arrows);
     a.msaa.resolveInto(view);
     if (a.options.formula) drawFormula(scene, view);

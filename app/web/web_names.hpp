@@ -43,6 +43,7 @@ inline const char* commandName(ViewerCommand command) {
     case ViewerCommand::FaceNormals: return "face-normals";
     case ViewerCommand::LightMarkers: return "light-markers";
     case ViewerCommand::Formula: return "formula";
+    case ViewerCommand::Intersection: return "intersection";
     case ViewerCommand::ShaderSection: return "shader";
     case ViewerCommand::ResetCamera: return "reset-camera";
     case ViewerCommand::FrameModel: return "frame-model";

@@ -73,14 +73,7 @@ TEST_P(AnisotropyVersusReference, EveryModeMatchesTheCpuReference) {
             const ProbeResult p = probePixel(r.scene, *r.geometry, caster, x, y);
             if (p.miss) continue;
             const ShadingMode mode = p.modes[0].mode;
-            if (mode == ShadingMode::Flat) {
-                bool interior = true;
-                for (const auto& [dx, dy] : {std::pair{-2, 0}, std::pair{2, 0}, std::pair{0, -2}, std::pair{0, 2}}) {
-                    const ProbeResult n = probePixel(r.scene, *r.geometry, caster, x + dx, y + dy);
-                    interior = interior && !n.miss && n.pane == p.pane && n.anchor.triangle == p.anchor.triangle;
-                }
-                if (!interior) continue;
-            }
+            if (mode == ShadingMode::Flat && !flatInterior(r.scene, *r.geometry, caster, p, x, y)) continue;
             ASSERT_TRUE(p.modes[0].evaluations[0].anisotropic);
             const int d = maxChannelDifference(quantize(color(r.image, x, y)), p.output8);
             EXPECT_LE(d, 2) << toString(mode) << " pixel " << x << "," << y;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 
 namespace shadelab::test {
 
@@ -82,6 +83,15 @@ std::string saveForInspection(const std::string& name, const Image& image) {
     std::filesystem::create_directories(std::filesystem::path(path).parent_path());
     writePng(path, image);
     return path;
+}
+
+bool flatInterior(const Scene& scene, const SceneGeometry& geometry, const SceneRayCaster& caster, const ProbeResult& probe,
+                  int x, int y) {
+    for (const auto& [dx, dy] : {std::pair{-2, 0}, std::pair{2, 0}, std::pair{0, -2}, std::pair{0, 2}}) {
+        const ProbeResult n = probePixel(scene, geometry, caster, x + dx, y + dy);
+        if (n.miss || n.pane != probe.pane || n.anchor.triangle != probe.anchor.triangle) return false;
+    }
+    return true;
 }
 
 }  // namespace shadelab::test

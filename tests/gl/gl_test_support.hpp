@@ -6,6 +6,8 @@
 #include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "headless/headless_context.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/probe/probe.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -44,6 +46,12 @@ struct Ray {
 Ray pixelRay(const Scene& scene, const Pane& pane, float px, float py);
 // Where a world point lands in the image (continuous pixel coordinates, y down).
 glm::vec2 projectToImage(const Scene& scene, const Pane& pane, const glm::vec3& world);
+
+// Whether probed pixel (x, y) of a flat pane lies inside its triangle: the pixels 2 away in each
+// direction hit the same triangle in the same pane (a flat colour is exact only there: the rasteriser
+// and the probe may give an edge pixel to different triangles).
+bool flatInterior(const Scene& scene, const SceneGeometry& geometry, const SceneRayCaster& caster, const ProbeResult& probe,
+                  int x, int y);
 
 // Writes an image under the test output folder so a person can look at it; returns the path.
 std::string saveForInspection(const std::string& name, const Image& image);

@@ -73,5 +73,5 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                                            "shadow_area_8x8", "shadow_objects_compare", "shadow_spot", "gltf_lights_compare", "textured_globe_compare",
                                            "textured_toycar_compare", "vertex_colors_compare", "textured_multiuv", "textured_cube",
                                            "textured_sheencloth", "textured_suzanne", "textured_unicode", "material_panels",
-                                           "brushed_metal_compare"),
+                                           "brushed_metal_compare", "glass_room_compare", "mirror_sky"),
                          [](const auto& p) { return std::string(p.param); });

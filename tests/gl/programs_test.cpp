@@ -153,6 +153,41 @@ TEST_F(GlContext, AnisotropicVariantsCompile) {
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// Mirror and glass (SL_ENVIRONMENT) with other switches of a draw, in each mode: the room with textured,
+// instanced and double-sided draws, a progressive pass, anisotropy with an alpha mask and Phong's
+// interpolated inputs (ignored: the plain phong program), under 16 shadowed lights with exact Fresnel;
+// the sky and the image plain, with Schlick and "show". And the background program of each. (Kept to
+// about 20 compiles: each is an LLVM compile on llvmpipe.)
+TEST_F(GlContext, EnvironmentVariantsCompile) {
+    Scene many, schlick;
+    many.lights.assign(SL_MAX_LIGHTS, Light{});
+    for (std::size_t l = 0; l < many.lights.size(); ++l) many.lights[l].type = LightType(l % 4);
+    many.shadows.enabled = true;
+    many.fresnel = FresnelMode::Exact;
+    schlick.fresnel = FresnelMode::Schlick;
+    schlick.show.term = ShowTerm::Specular;
+    using Variant = ProgramCache::Variant;
+    std::vector<Variant> variants(5);
+    variants[1].textured = variants[1].instanced = variants[1].doubleSided = true;
+    variants[2].accumulate = true;
+    variants[3].anisotropic = true, variants[3].textured = true, variants[3].alphaMode = SL_ALPHA_MASK;
+    variants[4].interpolatedInputs = true;
+    ProgramCache cache{ShaderLibrary(), true};
+    auto compile = [&](const Scene& scene, Variant v, int kind) {
+        v.environment = kind;
+        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+            SCOPED_TRACE(std::string(toString(mode)) + " environment " + std::to_string(kind));
+            EXPECT_NE(cache.get(mode, scene, v), 0u);
+        }
+    };
+    for (const Variant& v : variants) compile(many, v, SL_ENVIRONMENT_ROOM);
+    for (int kind : {SL_ENVIRONMENT_SKY, SL_ENVIRONMENT_IMAGE}) compile(schlick, Variant{}, kind);
+    for (const char* kind : {"SL_ENVIRONMENT 1", "SL_ENVIRONMENT 2", "SL_ENVIRONMENT 3"})
+        for (const char* encoding : {"SL_ENCODING SL_ENCODING_LINEAR", "SL_ENCODING SL_ENCODING_SRGB"})
+            EXPECT_NE(buildProgram("background", ShaderLibrary(), {kind, encoding}, kFullscreenVertex).get(), 0u) << kind;
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 // Scenes that use none of issue 6's switches get exactly the defines (so the programs) they had before.
 TEST(ProgramDefines, DefaultScenesAreNotSpecialisedForTheLectureSwitches) {
     Scene scene;

@@ -61,7 +61,7 @@ TEST(CliOptions, LectureFlags) {
     EXPECT_NE(errorOf({"--diff", "flat"}).find("--diff: expected two shading modes"), std::string::npos);
     EXPECT_NE(errorOf({"--diff", "flat,toon"}).find("--diff: unknown value \"toon\""), std::string::npos);
     EXPECT_NE(errorOf({"--diff-factor", "0"}).find("--diff-factor: must be between 1 and 1000"), std::string::npos);
-    EXPECT_NE(errorOf({"--ior", "0.9"}).find("--ior: must be between 1 and 10"), std::string::npos);
+    EXPECT_NE(errorOf({"--ior", "0.1"}).find("--ior: must be between 0.2 and 10"), std::string::npos);
     EXPECT_NE(errorOf({"--fresnel", "fast"}).find("--fresnel: unknown value"), std::string::npos);
     EXPECT_NE(errorOf({"--specular-normalization", "yes"}).find("--specular-normalization: unknown value"),
               std::string::npos);
@@ -373,7 +373,7 @@ TEST(CliOptions, TableRangesInMessagesAndHelp) {
               std::string::npos);
     EXPECT_NE(errorOf({"-o", "x.png", "--frames", "3"}).find("--output: --frames, --screenshot"), std::string::npos);
     const std::string help = usage();
-    EXPECT_NE(help.find("--ior X                 index of refraction eta2/eta1 from air for --fresnel (1..10"),
+    EXPECT_NE(help.find("refraction (0.2..10, default 1.5)"),
               std::string::npos)
         << help;
     EXPECT_NE(help.find("--ui-scale S"), std::string::npos);

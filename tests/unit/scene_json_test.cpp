@@ -137,7 +137,7 @@ TEST(SceneJson, ErrorsNameTheFileAndTheField) {
     expectError(R"({"diff": {"c": 1}})", {"diff.c", "unknown field"});
     expectError(R"({"specular_normalization": "physical"})", {"specular_normalization", "\"energy\""});
     expectError(R"({"fresnel": true})", {"fresnel", "got a boolean"});
-    expectError(R"({"ior": 0.5})", {"ior", ">= 1"});
+    expectError(R"({"ior": 0.1})", {"ior", ">= 0.2"});
     expectError(R"({"ior": 11})", {"ior", "<= 10"});
     expectError(R"({"show": "glossy"})", {"show", "unknown value \"glossy\""});
     expectError(R"({"show": "light:x"})", {"show", "not a light index"});

@@ -1,5 +1,7 @@
 #include "core/figures/formula.hpp"
 
+#include "core/shading/environment.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -117,6 +119,16 @@ std::string anisotropyLine(const FormulaInput& in) {
            " along T,  k_b = " + formulaNumber(in.material.anisotropy.y) + " along B";
 }
 
+// Mirror and glass after the sum (core/shading/environment.hpp), with the material's k_r and k_t. No
+// Greek: the viewer's formula font has only the characters the overlay needs (viewer/imgui_layer.cpp).
+std::string mirrorGlassLine(const FormulaInput& in) {
+    const bool f = in.env.fresnel != FresnelMode::None;
+    return std::string("+ k_r") + (f ? " F" : "") + " env(R) + k_t" + (f ? " (1 − F)" : "") +
+           " env(T),   R = 2(N·V)N − V,   T by Snell's law (ior " + formulaNumber(in.env.ior) + "),   k_r = " +
+           formulaNumber(in.material.mirror) +
+           ",  k_t = " + formulaNumber(in.material.transmission);
+}
+
 // E's own line: what a glTF material's emission is made of.
 constexpr const char* kEmissiveLine = "E = emissiveFactor · emissiveTexture(uv) · emissiveStrength   (glTF: the light the surface gives off)";
 
@@ -155,6 +167,13 @@ public:
             const Span s = set_.set(kEmissiveLine, pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Emissive),
                                     FormulaTerm::Emissive);
             box(FormulaTerm::Emissive, s, baseline, kFresnelSize * size_);
+            bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
+        }
+        if (mirrorOrGlass(in_.material, in_.env.environment)) {
+            baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
+            const Span s = set_.set(mirrorGlassLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
+                                    FormulaTerm::Specular);
+            box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
         if (anisotropicLobe(in_.material, in_.env)) {

@@ -1,5 +1,7 @@
 #include "core/probe/probe.hpp"
 
+#include "core/shading/environment.hpp"
+
 #include "core/base/error.hpp"
 #include "core/geometry/mesh.hpp"
 
@@ -43,7 +45,7 @@ struct TriangleContext {
 // Of what `show` selects, the part the texel does not multiply: the specular.
 glm::vec3 shownSpecular(const ShadingTerms& t, const TermView& show) {
     switch (show.term) {
-    case ShowTerm::All:
+    case ShowTerm::All: return t.specular + t.environment;  // mirror and glass: C does not colour them either
     case ShowTerm::Specular: return t.specular;
     case ShowTerm::Light:
         return show.light >= 0 && std::size_t(show.light) < t.lights.size() ? t.lights[std::size_t(show.light)].specular
@@ -84,6 +86,8 @@ ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, con
         };
     }
     e.terms = shadeTerms(material, c.env, posWorld, nrmWorld, visibility, &e.frame);
+    e.mirrorGlass = mirrorOrGlass(material, c.env.environment);
+    if (e.mirrorGlass) e.environment = environmentTerm(material, c.env, nrmWorld, e.viewWorld);
     for (std::size_t l = 0; l < lightCount; ++l) {
         const Light& light = c.env.lights[l];
         ProbeLight& out = e.lights[l];
@@ -332,6 +336,7 @@ std::optional<ShadingTerms> probedTerms(const ProbeResult& result) {
             const ShadingTerms& e = m.evaluations[k].terms;
             const float w = result.anchor.barycentric[int(k)];
             t.ambient += w * e.ambient, t.diffuse += w * e.diffuse, t.specular += w * e.specular, t.shown += w * e.shown;
+            t.environment += w * e.environment;
         }
     }
     t.total = m.color;

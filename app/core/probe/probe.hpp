@@ -14,6 +14,7 @@
 // shadow maps, which agree with it except within a few shadow-map texels of a shadow's edge.
 #include "core/geometry/camera.hpp"
 #include "core/geometry/mesh.hpp"
+#include "core/shading/environment.hpp"
 #include "core/shading/lighting.hpp"
 #include "core/geometry/ray_cast.hpp"
 #include "core/scene/scene.hpp"
@@ -61,6 +62,10 @@ struct ProbeEvaluation {
     bool anisotropic = false;
     TangentFrame frame;
     ShadingTerms terms;           // ambient, diffuse, specular, shown (before clamping), total (clamped)
+    // Mirror and glass (a material with k_r or k_t in a scene with an environment): R, T, the angles,
+    // the indices, F and the two terms (core/shading/environment.hpp).
+    bool mirrorGlass = false;
+    EnvironmentTerm environment;
     std::vector<ProbeLight> lights;  // in the order of Scene::lights
 };
 

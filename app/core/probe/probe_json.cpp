@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -32,6 +34,23 @@ const char* siteName(ProbeEvaluation::Site s) {
     case ProbeEvaluation::Site::Vertex: return "vertex";
     }
     return "point";
+}
+
+// Mirror and glass at the point: R, T (null past the critical angle), the angles, the indices, F (null
+// without Fresnel: both weights 1) and the two terms k_r F env(R), k_t (1 - F) env(T).
+json environmentJson(const EnvironmentTerm& t) {
+    const double toDeg = 180.0 / 3.14159265358979323846;
+    json j;
+    j["R"] = vec(t.reflectedDirection);
+    j["T"] = t.totalInternal ? json(nullptr) : vec(t.transmittedDirection);
+    j["theta_i_deg"] = number(float(std::acos(double(t.cosThetaI)) * toDeg));
+    j["theta_t_deg"] = t.totalInternal ? json(nullptr) : json(number(float(std::acos(double(t.cosThetaT)) * toDeg)));
+    j["eta_i"] = number(t.eta.etaI);
+    j["eta_t"] = number(t.eta.etaT);
+    j["F"] = t.weighted || t.totalInternal ? json(number(t.fresnel)) : json(nullptr);
+    j["reflected"] = vec(t.reflected);
+    j["transmitted"] = vec(t.transmitted);
+    return j;
 }
 
 json evaluationJson(const Scene& scene, const ProbeEvaluation& e) {
@@ -70,6 +89,7 @@ json evaluationJson(const Scene& scene, const ProbeEvaluation& e) {
     j["ambient"] = vec(e.terms.ambient);
     j["diffuse"] = vec(e.terms.diffuse);
     j["specular"] = vec(e.terms.specular);
+    if (e.mirrorGlass) j["environment"] = environmentJson(e.environment);
     j["sum"] = vec(e.terms.shown);
     j["total"] = vec(e.terms.total);
     return j;
@@ -159,6 +179,8 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
     const Material& m = r.material;
     j["material"] = {{"C", vec(m.color)}, {"S", vec(m.specularColor)}, {"ka", number(m.ka)},
                      {"kd", number(m.kd)}, {"ks", number(m.ks)},         {"ke", number(m.ke)}};
+    if (m.mirror > 0.0f) j["material"]["mirror"] = number(m.mirror);
+    if (m.transmission > 0.0f) j["material"]["transmission"] = number(m.transmission);
     if (m.anisotropic) j["material"]["anisotropy"] = json::array({number(m.anisotropy.x), number(m.anisotropy.y)});
     if (r.textured) {
         // C = base colour x texel: flat and Gouraud evaluate their terms with the base colour and

@@ -35,6 +35,7 @@ bool ShadowSettings::operator==(const ShadowSettings& o) const {
 const char* toString(OutputEncoding e) { return nameOf(kOutputEncodingNames, e); }
 const char* toString(SpecularNormalization n) { return nameOf(kSpecularNormalizationNames, n); }
 const char* toString(FresnelMode f) { return nameOf(kFresnelModeNames, f); }
+const char* toString(EnvironmentKind k) { return k == EnvironmentKind::Image ? "image" : nameOf(kEnvironmentNames, k); }
 std::string toString(const TermView& t) {
     return t.term == ShowTerm::Light ? "light:" + std::to_string(t.light) : nameOf(kShowTermNames, t.term);
 }

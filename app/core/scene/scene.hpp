@@ -2,6 +2,7 @@
 // The scene model: the one description of what is drawn. The JSON scene file (scene_json.hpp), the
 // command line and the viewer's panel all edit this plain struct; the renderer only reads it.
 // Defaults here are the documented defaults of the scene-file format (README, "Scene file").
+#include "core/image/environment_image.hpp"
 #include "core/scene/scene_limits.hpp"
 
 #include <glm/vec2.hpp>
@@ -9,6 +10,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +26,9 @@ enum class Attenuation { None, InverseSquare };
 // Beyond the heuristic model (lighting.hpp has the exact formulas):
 enum class SpecularNormalization { None, Energy };  // "energy": lobes normalised to constant reflected energy
 enum class FresnelMode { None, Schlick, Exact };    // specular weighted by the Fresnel reflectance at V.H
+// What mirrors and glass reflect and transmit, drawn as the background: none, two procedural ones
+// (core/shading/environment.hpp), or an equirectangular image.
+enum class EnvironmentKind { None, Room, Sky, Image };
 // Term isolation: which addend(s) of the formula are drawn ("show"); Emissive: a glTF material's E.
 enum class ShowTerm { All, Ambient, Diffuse, Specular, Light, Unlit, Emissive };
 
@@ -47,6 +52,11 @@ struct Material {
     // anisotropicExponent). Off unless the scene or --anisotropy gives it; Blinn-Phong's lobe only.
     bool anisotropic = false;
     glm::vec2 anisotropy{32.0f};   // k_t, k_b (each in kExponentRange)
+    // Mirror and glass ("mirror", "transmission"): added after the lecture's sum,
+    //   k_r F env(R) + k_t (1 - F) env(T)     (core/shading/environment.hpp, environmentTerm)
+    // with F the Fresnel reflectance of the scene's "fresnel" mode (1 for both weights under "none").
+    float mirror = 0.0f;           // k_r (kUnitRange)
+    float transmission = 0.0f;     // k_t (kUnitRange)
 };
 
 struct MeshSpec {
@@ -118,6 +128,17 @@ struct ShadowSettings {
     bool operator!=(const ShadowSettings& o) const { return !(*this == o); }
 };
 
+// "environment": "room" | "sky" | a .png or .hdr file (relative to the scene file).
+struct EnvironmentSpec {
+    EnvironmentKind kind = EnvironmentKind::None;
+    std::string path;          // Image: as written in the scene or on the command line
+    std::string resolvedPath;  // Image: the path that was read
+    std::shared_ptr<const EnvironmentImage> image;  // Image: its texels (read when the scene is read)
+
+    bool operator==(const EnvironmentSpec& o) const { return kind == o.kind && resolvedPath == o.resolvedPath; }
+    bool operator!=(const EnvironmentSpec& o) const { return !(*this == o); }
+};
+
 struct Camera {
     glm::vec3 eye{0.0f, 1.5f, 4.8f};
     glm::vec3 target{0.0f};
@@ -173,6 +194,7 @@ struct Scene {
     SpecularNormalization specularNormalization = SpecularNormalization::None;
     FresnelMode fresnel = FresnelMode::None;
     float ior = 1.5f;             // eta2 / eta1 at every surface (eta1 = 1: air); used when fresnel != none
+    EnvironmentSpec environment;  // "environment": what k_r and k_t see, and the background when set
     TermView show;                // "show": "all" | "ambient" | "diffuse" | "specular" | "light:N" | "unlit"
     DiffSettings diff;            // layout "diff"
     std::string title;            // lecture presets: shown by the viewer's playlist (and nothing else)
@@ -200,6 +222,7 @@ const char* toString(LightType t);
 const char* toString(OutputEncoding e);
 const char* toString(SpecularNormalization n);
 const char* toString(FresnelMode f);
+const char* toString(EnvironmentKind k);  // "none", "room", "sky", "image"
 std::string toString(const TermView& t);  // "all", ..., "light:2"
 
 }  // namespace shadelab

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
+#include <memory>
 #include <sstream>
 
 namespace shadelab {
@@ -205,7 +206,7 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
 
 Material SceneReader::material(const json& j, const std::string& path) const {
     Material m;
-    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke", "anisotropy"});
+    requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke", "anisotropy", "mirror", "transmission"});
     vec3(j, "color", path, m.color, 0.0, 1.0);
     m.colorSet = j.contains("color");
     vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
@@ -215,6 +216,8 @@ Material SceneReader::material(const json& j, const std::string& path) const {
     number(j, "ke", path, m.ke, kExponentRange.lo, kExponentRange.hi);
     m.anisotropic = j.contains("anisotropy");
     vec2(j, "anisotropy", path, m.anisotropy, kExponentRange.lo, kExponentRange.hi);
+    number(j, "mirror", path, m.mirror, kUnitRange.lo, kUnitRange.hi);
+    number(j, "transmission", path, m.transmission, kUnitRange.lo, kUnitRange.hi);
     return m;
 }
 
@@ -312,7 +315,7 @@ Scene SceneReader::read(const json& root) {
     requireObject(root, "",
                   {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
                    "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
-                   "fresnel", "ior", "show", "diff", "title", "caption", "textures", "test"});
+                   "fresnel", "ior", "show", "diff", "title", "caption", "textures", "test", "environment"});
     readObjects(root, s);
     choice(root, "shading", "", s.shading, kShadingModeNames);
     choice(root, "layout", "", s.layout, kLayoutNames);
@@ -320,6 +323,10 @@ Scene SceneReader::read(const json& root) {
     choice(root, "specular_normalization", "", s.specularNormalization, kSpecularNormalizationNames);
     choice(root, "fresnel", "", s.fresnel, kFresnelModeNames);
     number(root, "ior", "", s.ior, kIorRange.lo, kIorRange.hi);
+    if (root.contains("environment")) {
+        if (!root["environment"].is_string()) fail("environment", std::string("expected a string, got ") + typeName(root["environment"]));
+        s.environment = parseEnvironment(root["environment"].get<std::string>(), baseDir_, file_ + ": environment");
+    }
     text(root, "title", s.title);
     text(root, "caption", s.caption);
     choice(root, "reflection", "", s.reflection, kReflectionModelNames);
@@ -449,6 +456,14 @@ glm::ivec2 SceneReader::imageSize(const json& j, const std::string& path) const 
 
 json vecJson(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 
+// A file the scene names, written relative to the directory the scene is saved in (as given where that fails).
+std::string relativeTo(const std::string& resolvedPath, const std::string& saveDir) {
+    std::error_code ec;
+    fs::path abs = fs::absolute(resolvedPath, ec);
+    fs::path rel = ec ? fs::path() : abs.lexically_relative(fs::absolute(saveDir.empty() ? "." : saveDir, ec));
+    return (ec || rel.empty()) ? resolvedPath : rel.generic_string();
+}
+
 nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
     nlohmann::ordered_json j;
     j["type"] = toString(m.type);
@@ -473,13 +488,7 @@ nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
         j["size"] = m.size;
         j["subdivisions"] = m.planeSubdivisions;
         break;
-    case MeshSpec::Type::Gltf: {
-        std::error_code ec;
-        fs::path abs = fs::absolute(m.resolvedPath, ec);
-        fs::path rel = ec ? fs::path() : abs.lexically_relative(fs::absolute(saveDir.empty() ? "." : saveDir, ec));
-        j["path"] = (ec || rel.empty()) ? m.resolvedPath : rel.generic_string();
-        break;
-    }
+    case MeshSpec::Type::Gltf: j["path"] = relativeTo(m.resolvedPath, saveDir); break;
     }
     return j;
 }
@@ -495,6 +504,8 @@ nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh, Ref
     j["ks"] = m.ks;
     j["ke"] = m.ke;
     if (m.anisotropic && reflection == ReflectionModel::BlinnPhong) j["anisotropy"] = {m.anisotropy.x, m.anisotropy.y};
+    if (m.mirror > 0.0f) j["mirror"] = m.mirror;
+    if (m.transmission > 0.0f) j["transmission"] = m.transmission;
     return j;
 }
 
@@ -609,6 +620,8 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     j["specular_normalization"] = toString(s.specularNormalization);
     j["fresnel"] = toString(s.fresnel);
     j["ior"] = s.ior;
+    if (s.environment.kind == EnvironmentKind::Image) j["environment"] = relativeTo(s.environment.resolvedPath, saveDir);
+    else if (s.environment.kind != EnvironmentKind::None) j["environment"] = toString(s.environment.kind);
     j["show"] = toString(s.show);
     j["diff"] = {{"a", toString(s.diff.a)}, {"b", toString(s.diff.b)}, {"factor", s.diff.factor}};
     if (!s.title.empty()) j["title"] = s.title;
@@ -877,6 +890,27 @@ void checkCoefficients(const Material& m, const std::string& where) {
     check("kd", m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
     check("ks", m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
     check("ke", m.ke, kExponentRange.lo, kExponentRange.hi);
+    check("mirror", m.mirror, kUnitRange.lo, kUnitRange.hi);
+    check("transmission", m.transmission, kUnitRange.lo, kUnitRange.hi);
+}
+
+EnvironmentSpec parseEnvironment(const std::string& text, const std::string& baseDir, const std::string& where) {
+    EnvironmentSpec e;
+    if (const std::optional<EnvironmentKind> kind = valueNamed(kEnvironmentNames, text)) {
+        e.kind = *kind;
+        return e;
+    }
+    if (text.empty()) throw InputError(where + ": expected room, sky, none or a .png or .hdr file");
+    e.kind = EnvironmentKind::Image;
+    e.path = text;
+    const fs::path p(text);
+    e.resolvedPath = (p.is_absolute() || baseDir.empty() ? p : fs::path(baseDir) / p).lexically_normal().string();
+    try {
+        e.image = std::make_shared<const EnvironmentImage>(readEnvironmentImage(e.resolvedPath));
+    } catch (const InputError& error) {
+        throw InputError(where + ": " + error.what());
+    }
+    return e;
 }
 
 void checkAnisotropy(const Scene& s, const std::string& where) {

@@ -44,6 +44,9 @@ Light parseLightShorthand(const std::string& text, const std::string& optionName
 TermView parseTermView(const std::string& text, const std::string& where);
 
 void checkCoefficients(const Material& m, const std::string& where);
+// "environment" and --environment: "room", "sky", "none", or an image file (relative to baseDir),
+// read here. InputError "WHERE: ..." naming what is wrong.
+EnvironmentSpec parseEnvironment(const std::string& text, const std::string& baseDir, const std::string& where);
 // InputError "WHEREanisotropy: ..." when an object's material is anisotropic under reflection phong
 // (Ashikhmin and Shirley's lobe is Blinn-Phong's, about H).
 void checkAnisotropy(const Scene& scene, const std::string& where);

@@ -30,7 +30,10 @@ inline constexpr Range<float> kSpotConeDegRange{0.0f, 90.0f};    // a spot light
 inline constexpr Range<int> kShadowMapSizeRange{64, 4096};       // shadow-map sides, pixels
 inline constexpr Range<int> kPcfRadiusRange{0, 2};               // percentage-closer filtering: (2r+1)^2 lookups
 inline constexpr Range<float> kColorRange{0.0f, 1.0f};           // each channel of C, S, A and the background (linear RGB)
-inline constexpr Range<float> kIorRange{1.0f, 10.0f};            // relative index of refraction eta2 / eta1
+// Relative index of refraction eta2 / eta1; below 1 the light arrives from the denser side ("from
+// inside" the glass: total internal reflection past the critical angle).
+inline constexpr Range<float> kIorRange{0.2f, 10.0f};
+inline constexpr Range<float> kUnitRange{0.0f, 1.0f};            // mirror and transmission weights k_r, k_t
 inline constexpr Range<float> kDiffFactorRange{1.0f, 1000.0f};   // layout "diff": |A - B| is multiplied by this
 inline constexpr Range<float> kFovYDegRange{1.0f, 179.0f};       // the camera's vertical field of view
 // Places, directions and sizes in world units, and the lights' values: the scene reader, --light and

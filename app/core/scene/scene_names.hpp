@@ -31,6 +31,9 @@ inline constexpr EnumName<SpecularNormalization> kSpecularNormalizationNames[] =
     {"none", SpecularNormalization::None}, {"energy", SpecularNormalization::Energy}};
 inline constexpr EnumName<FresnelMode> kFresnelModeNames[] = {
     {"none", FresnelMode::None}, {"schlick", FresnelMode::Schlick}, {"exact", FresnelMode::Exact}};
+// "environment": the procedural ones by name; anything else names an image file ("image" is not a value).
+inline constexpr EnumName<EnvironmentKind> kEnvironmentNames[] = {
+    {"none", EnvironmentKind::None}, {"room", EnvironmentKind::Room}, {"sky", EnvironmentKind::Sky}};
 inline constexpr EnumName<MeshSpec::Type> kMeshTypeNames[] = {
     {"uvsphere", MeshSpec::Type::UvSphere}, {"icosphere", MeshSpec::Type::IcoSphere},
     {"torus", MeshSpec::Type::Torus},       {"cube", MeshSpec::Type::Cube},

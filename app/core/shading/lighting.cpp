@@ -1,5 +1,7 @@
 #include "core/shading/lighting.hpp"
 
+#include "core/shading/environment.hpp"
+
 #include "../../../shaders/shared_defs.glsl"
 
 #include <glm/common.hpp>
@@ -36,6 +38,7 @@ LightingEnvironment lightingEnvironment(const Scene& s) {
     env.ambient = s.ambient;
     env.lights = s.lights;
     env.eyeWorld = s.camera.eye;
+    env.environment = s.environment;
     return env;
 }
 
@@ -267,9 +270,10 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
         }
     }
     for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
+    if (mirrorOrGlass(m, env.environment)) t.environment = environmentTerm(m, env, n, v).total();
     glm::vec3& shown = t.shown;
     switch (env.show.term) {
-    case ShowTerm::All: shown = t.emissive + t.ambient + t.diffuse + t.specular; break;
+    case ShowTerm::All: shown = t.emissive + t.ambient + t.diffuse + t.specular + t.environment; break;
     case ShowTerm::Emissive: shown = t.emissive; break;
     case ShowTerm::Ambient: shown = t.ambient; break;
     case ShowTerm::Diffuse: shown = t.diffuse; break;

@@ -30,6 +30,8 @@
 //   with T, B the surface's unit tangent and bitangent (TangentFrame). k_t = k_b = k_e is Blinn-Phong's
 //   lobe exactly. With "energy", their normalisation sqrt((k_t + 1)(k_b + 1)) / 8pi, read relative to
 //   k_t = k_b = 32 like the isotropic lobe: spec is multiplied by sqrt((k_t + 1)(k_b + 1)) / 33.
+// - "mirror" and "transmission" with an "environment": k_r F env(R) + k_t (1 - F) env(T) added after
+//   the sum (core/shading/environment.hpp); drawn with show = all only.
 // - "show": only one addend is drawn (ambient, diffuse, specular, one light's diffuse + specular) or
 //   the unlit colour C; the total is that addend clamped to [0, 1].
 #include "core/scene/scene.hpp"
@@ -55,6 +57,7 @@ struct LightingEnvironment {
     glm::vec3 ambient{1.0f};          // A
     std::vector<Light> lights;        // world space
     glm::vec3 eyeWorld{0.0f};
+    EnvironmentSpec environment;      // what mirrors and glass see (core/shading/environment.hpp)
 };
 
 LightingEnvironment lightingEnvironment(const Scene& scene);
@@ -71,7 +74,10 @@ struct ShadingTerms {
     glm::vec3 ambient{0.0f};
     glm::vec3 diffuse{0.0f};
     glm::vec3 specular{0.0f};
-    glm::vec3 shown{0.0f};            // what `show` selects before clamping: E + ambient + diffuse + specular with show = all
+    // Mirror and glass, after the lecture's sum: k_r F env(R) + k_t (1 - F) env(T) (environment.hpp).
+    glm::vec3 environment{0.0f};
+    glm::vec3 shown{0.0f};            // what `show` selects before clamping: E + ambient + diffuse + specular
+                                      // + environment with show = all
     glm::vec3 total{0.0f};            // clamp(shown, 0, 1)
     std::vector<LightShare> lights;   // per light, in the order of LightingEnvironment::lights
 };

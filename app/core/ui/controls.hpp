@@ -17,7 +17,7 @@ namespace shadelab {
 enum class ViewerCommand {
     None,  // an unused binding slot
     Flat, Gouraud, Phong, Compare, Difference,
-    Wireframe, VertexNormals, FaceNormals, LightMarkers, Formula, ShaderSection,
+    Wireframe, VertexNormals, FaceNormals, LightMarkers, Formula, Intersection, ShaderSection,
     ResetCamera, FrameModel,
     NextPreset, PreviousPreset, FirstPreset, LastPreset, ResetPreset,  // only while a playlist runs
     UiLarger, UiSmaller, UiAsMonitor,
@@ -78,6 +78,8 @@ inline constexpr Control kControls[] = {
      {typed("n", ViewerCommand::VertexNormals), typed("N", ViewerCommand::FaceNormals)}},
     {"L", "light markers", {typed("lL", ViewerCommand::LightMarkers)}},
     {"E", "the formula over the view (the term --show isolates highlighted)", {typed("eE", ViewerCommand::Formula)}},
+    {"I", "the intersection at the probed point: I, N, R, T, theta_i, theta_t, eta and the Fresnel split",
+     {typed("iI", ViewerCommand::Intersection)}},
     {"S", "the shader's GLSL, large, terms marked (F5's errors shown in it)", {typed("sS", ViewerCommand::ShaderSection)}},
     {"R   F", "reset the camera to the scene's / frame the model",
      {typed("rR", ViewerCommand::ResetCamera), typed("fF", ViewerCommand::FrameModel)}},
