@@ -170,7 +170,7 @@ public:
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
         if (mirrorOrGlass(in_.material, in_.env.environment)) {
-            baseline = nextBaseline(baseline, kValueSize * size_, kFresnelSize * size_) + 0.1f * size_;
+            baseline = nextBaseline(baseline, valueSize_ * size_, kFresnelSize * size_) + 0.1f * size_;
             const Span s = set_.set(mirrorGlassLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
                                     FormulaTerm::Specular);
             box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
