@@ -7,8 +7,9 @@ after F5 a second time.
 
 usage: shader_reload.py SHADELAB SHADER_SOURCE_DIR OUTDIR     (inside an X server: see xvfb_run.sh)
 """
-import os, shutil, struct, sys, time, zlib
+import os, shutil, sys, time
 
+from png_rows import read_png
 from xinput import quit_viewer, screenshot, start_viewer
 
 shadelab, shader_src, out = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -60,34 +61,9 @@ if f"phong.frag:{broken_line}" not in err:
 def red_rows(path, left, right):
     """Rows of the window screenshot whose part from `left` to `right` (the Shader view over the 3D
     view) is mostly the listing's red error row (ImGui draws it 150,30,30 at alpha 200), not red text."""
-    data = open(path, "rb").read()
-    pos, idat = 8, b""
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        if kind == b"IHDR":
-            width, height = struct.unpack(">II", data[pos + 8:pos + 16])
-            channels = {2: 3, 6: 4}[data[pos + 17]]
-        elif kind == b"IDAT":
-            idat += data[pos + 8:pos + 8 + length]
-        pos += 12 + length
-    raw, stride, prev, rows = zlib.decompress(idat), width * channels, bytearray(width * channels), 0
-    for y in range(height):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b, c = prev[i], prev[i - channels] if i >= channels else 0
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + b) & 255
-            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        prev = line
-        red = sum(1 for x in range(left, right) if line[x * channels] > 90 and
-                  line[x * channels] > 2.5 * max(line[x * channels + 1], line[x * channels + 2]))
-        rows += red > 0.4 * (right - left)
-    return rows
+    _, _, rows = read_png(open(path, "rb").read())
+    return sum(1 for row in rows
+               if sum(1 for r, g, b in row[left:right] if r > 90 and r > 2.5 * max(g, b)) > 0.4 * (right - left))
 
 
 # The Shader view after a failed F5 (the viewer opens it over the left 60% of the 640-px view): the
