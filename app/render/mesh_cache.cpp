@@ -30,59 +30,43 @@ MeshCache::MeshCache(const RendererOptions& options) : options_(options) {}
 
 void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     geometry_ = std::move(geometry);
-    gpuMeshes_.clear();
-    gpuMeshes_.resize(geometry_ ? geometry_->meshes.size() : 0);
-    orderedMeshes_.clear();
-    orderedMeshes_.resize(gpuMeshes_.size());
-    objectParts_.clear();
-    objectBoxes_.clear();
-    objectTriangles_.clear();
-    objectVariesColor_.clear();
-    objectEmissiveTexture_.clear();
-    objectPartBoxes_.clear();
-    objectImages_.clear();
-    objectTextures_.clear();
-    objectInstanceGroups_.clear();
-    objectInstances_.clear();
-    objectInstanceBuffers_.clear();
+    objects_.clear();
     if (!geometry_) return;
-    for (std::size_t o = 0; o < geometry_->meshes.size(); ++o) {
-        const Mesh& mesh = drawnMesh(o);
-        objectInstanceGroups_.emplace_back();
-        objectInstances_.emplace_back();
-        objectInstanceBuffers_.emplace_back();
-        for (std::size_t p = 0; p < mesh.parts.size(); ++p)
-            for (bool mirrored : {false, true}) {
-                InstanceGroup g;
-                g.part = p;
-                g.first = GLsizei(objectInstances_.back().size());
-                g.mirrored = mirrored;
-                for (const glm::mat4& t : mesh.parts[p].instances)
-                    if ((glm::determinant(glm::mat3(t)) < 0.0f) == mirrored) objectInstances_.back().push_back(t);
-                g.count = GLsizei(objectInstances_.back().size()) - g.first;
-                if (g.count > 0) objectInstanceGroups_.back().push_back(g);
-            }
-        objectVariesColor_.push_back(mesh.variesColor());
-        objectEmissiveTexture_.push_back(mesh.hasEmissiveTexture());
-        objectImages_.push_back(mesh.textures);
-        objectTextures_.emplace_back(mesh.textures.size());
-        objectParts_.push_back(mesh.parts);
-        if (mesh.parts.empty()) {
-            MeshPart whole;
-            whole.indexCount = std::uint32_t(mesh.indices.size());
-            objectParts_.back().push_back(whole);
+    objects_.reserve(geometry_->meshes.size());
+    for (std::size_t o = 0; o < geometry_->meshes.size(); ++o) objects_.push_back(describe(drawnMesh(o), geometry_->meshes[o]));
+}
+
+MeshCache::ObjectMesh MeshCache::describe(const Mesh& mesh, const Mesh& baked) {
+    ObjectMesh object;
+    for (std::size_t p = 0; p < mesh.parts.size(); ++p)
+        for (bool mirrored : {false, true}) {
+            InstanceGroup g;
+            g.part = p;
+            g.first = GLsizei(object.instances.size());
+            g.mirrored = mirrored;
+            for (const glm::mat4& t : mesh.parts[p].instances)
+                if ((glm::determinant(glm::mat3(t)) < 0.0f) == mirrored) object.instances.push_back(t);
+            g.count = GLsizei(object.instances.size()) - g.first;
+            if (g.count > 0) object.instanceGroups.push_back(g);
         }
-        objectPartBoxes_.emplace_back();
-        for (const MeshPart& part : objectParts_.back())  // only blended parts are sorted by theirs
-            objectPartBoxes_.back().push_back(part.alphaMode == AlphaMode::Blend ? partBounds(mesh, part) : Aabb{});
-        // Bounds and triangle counts of every instance: the baked mesh's.
-        const Mesh& baked = geometry_->meshes[o];
-        Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
-        for (const glm::vec3& p : baked.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
-        if (baked.positions.empty()) box = Aabb{};
-        objectBoxes_.push_back(box);
-        objectTriangles_.push_back(baked.triangleCount());
+    object.variesColor = mesh.variesColor();
+    object.emissiveTexture = mesh.hasEmissiveTexture();
+    object.images = mesh.textures;
+    object.textures.resize(mesh.textures.size());
+    object.parts = mesh.parts;
+    if (mesh.parts.empty()) {
+        MeshPart whole;
+        whole.indexCount = std::uint32_t(mesh.indices.size());
+        object.parts.push_back(whole);
     }
+    for (const MeshPart& part : object.parts)  // only blended parts are sorted by theirs
+        object.partBoxes.push_back(part.alphaMode == AlphaMode::Blend ? partBounds(mesh, part) : Aabb{});
+    // Bounds and triangle counts of every instance: the baked mesh's.
+    Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+    for (const glm::vec3& p : baked.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+    object.box = baked.positions.empty() ? Aabb{} : box;
+    object.triangles = baked.triangleCount();
+    return object;
 }
 
 const Mesh& MeshCache::drawnMesh(std::size_t object) const {
@@ -91,11 +75,11 @@ const Mesh& MeshCache::drawnMesh(std::size_t object) const {
 }
 
 void MeshCache::bindInstances(std::size_t object, const InstanceGroup& group) {
-    gl::Buffer& buffer = objectInstanceBuffers_[object];
+    gl::Buffer& buffer = objects_[object].instanceBuffer;
     if (!buffer) {
         buffer = gl::makeBuffer();
         glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
-        const std::vector<glm::mat4>& data = objectInstances_[object];
+        const std::vector<glm::mat4>& data = objects_[object].instances;
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::mat4)), data.data(), GL_STATIC_DRAW);
     }
     // A mat4 attribute takes four locations, a column each, advancing once per instance.
@@ -110,15 +94,15 @@ void MeshCache::bindInstances(std::size_t object, const InstanceGroup& group) {
 
 void MeshCache::uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures, const std::vector<char>& tangents) {
     for (ShadingMode mode : modes)
-        for (std::size_t o = 0; o < gpuMeshes_.size(); ++o) {
+        for (std::size_t o = 0; o < objects_.size(); ++o) {
             gpuMesh(o, mode);
             if (o < tangents.size() && tangents[o]) gpuMesh(o, mode, true);
         }
     if (textures)
-        for (std::size_t o = 0; o < objectImages_.size(); ++o)
-            for (std::size_t t = 0; t < objectImages_[o].size(); ++t) texture(o, int(t));
+        for (std::size_t o = 0; o < objects_.size(); ++o)
+            for (std::size_t t = 0; t < objects_[o].images.size(); ++t) texture(o, int(t));
     geometry_.reset();
-    orderedMeshes_.clear();
+    for (ObjectMesh& object : objects_) object.ordered = Mesh{};
 }
 
 namespace {
@@ -249,7 +233,7 @@ void uploadVertexArray(MeshCache::GpuMesh& g, InterleavedVertices&& vertices, co
 const Mesh& MeshCache::uploadSource(std::size_t object) {
     const Mesh& drawn = drawnMesh(object);
     if (options_.meshOrder != RendererOptions::MeshOrder::VertexCache) return drawn;
-    Mesh& ordered = orderedMeshes_[object];
+    Mesh& ordered = objects_[object].ordered;
     if (ordered.indices.empty()) ordered = orderedForVertexCache(drawn);
     return ordered;
 }
@@ -261,7 +245,8 @@ const Mesh& MeshCache::uploadSource(std::size_t object) {
 // coordinates and colour.
 const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mode, bool tangents) {
     const bool flat = mode == ShadingMode::Flat;
-    GpuMesh& g = gpuMeshes_[object][(flat ? 1 : 0) + (tangents ? 2 : 0)];
+    std::array<GpuMesh, 4>& gpu = objects_[object].gpu;
+    GpuMesh& g = gpu[(flat ? 1 : 0) + (tangents ? 2 : 0)];
     if (g.vao) return g;
     if (!geometry_) throw std::logic_error("mesh cache: a shading mode that was not uploaded before the CPU geometry was released");
     const Mesh& mesh = uploadSource(object);
@@ -275,12 +260,13 @@ const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mod
         uploadVertexArray(g, smoothVertices(mesh, tangents), mesh.indices);
     }
     checkGl("mesh upload");
-    if (gpuMeshes_[object][0].vao && gpuMeshes_[object][1].vao) orderedMeshes_[object] = Mesh{};  // both uploaded
+    if (gpu[0].vao && gpu[1].vao) objects_[object].ordered = Mesh{};  // both uploaded
     return g;
 }
 
 GLuint MeshCache::texture(std::size_t object, int slot) {
-    if (slot < 0 || std::size_t(slot) >= objectTextures_[object].size()) {
+    ObjectMesh& o = objects_[object];
+    if (slot < 0 || std::size_t(slot) >= o.textures.size()) {
         if (!whiteTexture_) {
             const unsigned char white[4] = {255, 255, 255, 255};
             GLuint id = 0;
@@ -293,9 +279,9 @@ GLuint MeshCache::texture(std::size_t object, int slot) {
         }
         return whiteTexture_.get();
     }
-    gl::Texture& t = objectTextures_[object][std::size_t(slot)];
+    gl::Texture& t = o.textures[std::size_t(slot)];
     if (t) return t.get();
-    const std::shared_ptr<const TextureImage> image = std::move(objectImages_[object][std::size_t(slot)]);
+    const std::shared_ptr<const TextureImage> image = std::move(o.images[std::size_t(slot)]);
     if (!image) throw std::logic_error("mesh cache: a texture that was released before it was uploaded");
     GLuint id = 0;
     glGenTextures(1, &id);

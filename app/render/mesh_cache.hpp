@@ -29,15 +29,15 @@ public:
     // `tangents`: per object, whether its anisotropic vertex arrays are drawn too (empty: none are).
     void uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures, const std::vector<char>& tangents = {});
 
-    std::size_t objects() const { return objectParts_.size(); }
-    const std::vector<MeshPart>& parts(std::size_t object) const { return objectParts_[object]; }
-    const Aabb& box(std::size_t object) const { return objectBoxes_[object]; }  // object space, every instance
-    std::size_t triangles(std::size_t object) const { return objectTriangles_[object]; }
-    bool variesColor(std::size_t object) const { return objectVariesColor_[object] != 0; }  // texture coordinates and colours
-    bool hasEmissiveTexture(std::size_t object) const { return objectEmissiveTexture_[object] != 0; }  // and emissive coordinates
+    std::size_t objects() const { return objects_.size(); }
+    const std::vector<MeshPart>& parts(std::size_t object) const { return objects_[object].parts; }
+    const Aabb& box(std::size_t object) const { return objects_[object].box; }  // object space, every instance
+    std::size_t triangles(std::size_t object) const { return objects_[object].triangles; }
+    bool variesColor(std::size_t object) const { return objects_[object].variesColor; }  // texture coordinates and colours
+    bool hasEmissiveTexture(std::size_t object) const { return objects_[object].emissiveTexture; }  // and emissive coordinates
     // A blended part's bounds in object space (of the vertices it draws once; an instanced part's before
     // its instances), for the back-to-front order; empty for other parts.
-    const Aabb& partBox(std::size_t object, std::size_t part) const { return objectPartBoxes_[object][part]; }
+    const Aabb& partBox(std::size_t object, std::size_t part) const { return objects_[object].partBoxes[part]; }
 
     struct GpuMesh {
         gl::VertexArray vao;
@@ -57,8 +57,8 @@ public:
         GLsizei first = 0, count = 0;
         bool mirrored = false;
     };
-    const std::vector<InstanceGroup>& instanceGroups(std::size_t object) const { return objectInstanceGroups_[object]; }
-    const glm::mat4& instance(std::size_t object, std::size_t i) const { return objectInstances_[object][i]; }
+    const std::vector<InstanceGroup>& instanceGroups(std::size_t object) const { return objects_[object].instanceGroups; }
+    const glm::mat4& instance(std::size_t object, std::size_t i) const { return objects_[object].instances[i]; }
     // Points the bound vertex array's SL_ATTRIB_INSTANCE attributes at the group's transforms.
     void bindInstances(std::size_t object, const InstanceGroup& group);
 
@@ -70,25 +70,31 @@ private:
     // The mesh an object's draws upload: its instanced form (Mesh::instanced) when it has one.
     const Mesh& drawnMesh(std::size_t object) const;
     // What gpuMesh() uploads: drawnMesh(), in vertex-cache order when RendererOptions::meshOrder asks
-    // (kept in orderedMeshes_ until both of the object's uploads are done).
+    // (kept in ObjectMesh::ordered until both of the object's uploads are done).
     const Mesh& uploadSource(std::size_t object);
+
+    // Everything the cache keeps of one object.
+    struct ObjectMesh {
+        std::vector<MeshPart> parts;          // its parts (one for a plain mesh)
+        std::array<GpuMesh, 4> gpu;           // [smooth, flat, smooth + tangents, flat + tangents]
+        Mesh ordered;                         // with VertexCache: until both its uploads are done
+        Aabb box;                             // object space, every instance (the baked mesh's)
+        std::size_t triangles = 0;            // the baked mesh's
+        bool variesColor = false, emissiveTexture = false;
+        std::vector<Aabb> partBoxes;          // per part: a blended one's bounds, else empty
+        std::vector<InstanceGroup> instanceGroups;
+        std::vector<glm::mat4> instances;     // (the shadow pass draws them one by one)
+        gl::Buffer instanceBuffer;            // mat4 each, made on the first instanced draw
+        // Its base colour images until uploaded, and the textures made of them.
+        std::vector<std::shared_ptr<const TextureImage>> images;
+        std::vector<gl::Texture> textures;
+    };
+    // One object's entry, made from the mesh its draws upload (`drawn`) and the baked one (`baked`).
+    static ObjectMesh describe(const Mesh& drawn, const Mesh& baked);
 
     const RendererOptions options_;
     std::shared_ptr<const SceneGeometry> geometry_;
-    std::vector<std::vector<MeshPart>> objectParts_;      // per object: its parts (one for a plain mesh)
-    std::vector<std::array<GpuMesh, 4>> gpuMeshes_;       // per object: [smooth, flat, smooth + tangents, flat + tangents]
-    std::vector<Mesh> orderedMeshes_;                     // per object, with VertexCache: until both its uploads are done
-    std::vector<Aabb> objectBoxes_;
-    std::vector<std::size_t> objectTriangles_;
-    std::vector<char> objectVariesColor_;
-    std::vector<char> objectEmissiveTexture_;
-    std::vector<std::vector<Aabb>> objectPartBoxes_;
-    std::vector<std::vector<InstanceGroup>> objectInstanceGroups_;
-    std::vector<std::vector<glm::mat4>> objectInstances_;  // (the shadow pass draws them one by one)
-    std::vector<gl::Buffer> objectInstanceBuffers_;        // mat4 each
-    // Per object: its base colour images until uploaded, and the textures made of them.
-    std::vector<std::vector<std::shared_ptr<const TextureImage>>> objectImages_;
-    std::vector<std::vector<gl::Texture>> objectTextures_;
+    std::vector<ObjectMesh> objects_;
     gl::Texture whiteTexture_;
 };
 
