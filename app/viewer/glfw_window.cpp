@@ -22,13 +22,7 @@ std::string lastGlfwError() {
 
 GlfwWindow& self(GLFWwindow* w) { return *static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w)); }
 
-}  // namespace
-
-GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string& title,
-                       const std::optional<WindowPlacement>& placement) {
-    if (!glfwInit())
-        throw InputError("no display available for the viewer (" + lastGlfwError() +
-                         "); use --output FILE.png to render headless");
+void hintContext() {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -37,21 +31,40 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
     // only where asked, so the 3D view can give the same pixels as the headless render.
     glfwWindowHint(GLFW_SAMPLES, 0);
     glfwWindowHint(GLFW_DEPTH_BITS, 24);
-    int areaX = 0, areaY = 0, areaWidth = 0, areaHeight = 0;
+}
+
+// The primary monitor's work area (empty where there is none) and content scale (at least 1).
+struct WorkArea {
+    int x = 0, y = 0, width = 0, height = 0;
     float scale = 1.0f;
+};
+WorkArea primaryWorkArea() {
+    WorkArea area;
     if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
         float scaleX = 1.0f, scaleY = 1.0f;
         glfwGetMonitorContentScale(monitor, &scaleX, &scaleY);
-        scale = std::max(1.0f, std::max(scaleX, scaleY));
-        glfwGetMonitorWorkarea(monitor, &areaX, &areaY, &areaWidth, &areaHeight);
+        area.scale = std::max(1.0f, std::max(scaleX, scaleY));
+        glfwGetMonitorWorkarea(monitor, &area.x, &area.y, &area.width, &area.height);
     }
+    return area;
+}
+
+}  // namespace
+
+GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string& title,
+                       const std::optional<WindowPlacement>& placement) {
+    if (!glfwInit())
+        throw InputError("no display available for the viewer (" + lastGlfwError() +
+                         "); use --output FILE.png to render headless");
+    hintContext();
+    const WorkArea area = primaryWorkArea();
     // The content keeps its size on the screen: at 2x, twice the pixels.
-    width = int(std::lround(float(width) * scale + sideWidth * scale));
-    height = int(std::lround(float(height) * scale));
+    width = int(std::lround(float(width) * area.scale + sideWidth * area.scale));
+    height = int(std::lround(float(height) * area.scale));
     if (placement && placement->width > 0 && placement->height > 0) width = placement->width, height = placement->height;
-    if (areaWidth > 0 && areaHeight > 0) {
-        width = std::min(width, areaWidth);
-        height = std::min(height, areaHeight);
+    if (area.width > 0 && area.height > 0) {
+        width = std::min(width, area.width);
+        height = std::min(height, area.height);
     }
     window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window_) {
@@ -59,13 +72,18 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
         glfwTerminate();
         throw std::runtime_error("could not open a window with an OpenGL 3.3 core context: " + reason);
     }
-    if (placement && areaWidth > 0) {
+    if (placement && area.width > 0) {
         // Only where the window is still on the work area (a monitor may have gone since).
-        const int x = std::clamp(placement->x, areaX, areaX + areaWidth - std::min(width, areaWidth));
-        const int y = std::clamp(placement->y, areaY, areaY + areaHeight - std::min(height, areaHeight));
+        const int x = std::clamp(placement->x, area.x, area.x + area.width - std::min(width, area.width));
+        const int y = std::clamp(placement->y, area.y, area.y + area.height - std::min(height, area.height));
         glfwSetWindowPos(window_, x, y);
     }
     glfwMakeContextCurrent(window_);
+    installCallbacks();
+    windowed_ = placement ? *placement : WindowPlacement{};
+}
+
+void GlfwWindow::installCallbacks() {
     // The callbacks find this object through the window's user pointer. Dear ImGui's GLFW backend,
     // initialised after this, installs its own key, character, mouse, wheel and focus callbacks and
     // calls these from them.
@@ -89,7 +107,6 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
     glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { ++self(w).events_; });
     glfwSetWindowContentScaleCallback(window_, [](GLFWwindow* w, float, float) { ++self(w).events_; });
     glfwSetWindowCloseCallback(window_, [](GLFWwindow* w) { ++self(w).events_; });
-    windowed_ = placement ? *placement : WindowPlacement{};
 }
 
 GlfwWindow::~GlfwWindow() {

@@ -67,6 +67,9 @@ public:
     std::vector<KeyPress> takePressedKeys();
 
 private:
+    // Input, drops, resizes and focus changes count as events (and keys and drops are kept).
+    void installCallbacks();
+
     GLFWwindow* window_ = nullptr;
     std::vector<std::string> dropped_;
     std::vector<KeyPress> pressed_;
