@@ -59,30 +59,8 @@ constexpr float kViewTextShare = 0.024f;
 constexpr float kFormulaOfViewText = 1.25f;  // the formula's main line, in view text sizes
 // How long a message stays over the view (an error longer), in seconds.
 constexpr double kMessageSeconds = 5.0, kErrorSeconds = 12.0;
-// Render on demand: frames drawn after the last event, so ImGui's hover and click states settle.
-constexpr int kFramesAfterEvent = 3;
 // Orbit speed: dragging across ~400 screen units turns the model half way round.
 constexpr float kOrbitRadPerUnit = 0.008f;
-
-// Progressive sampling's stride (every S-th area-light sample per axis in a frame): a power of two,
-// first the one that leaves about 4 samples per pass, then doubled while a pass takes longer than
-// kPassBudgetMs and halved while it takes under a quarter of that (llvmpipe at 1280x720: an 8x8 light
-// with shadows settles at 8, one sample a frame).
-constexpr double kPassBudgetMs = 90.0;
-// Moving frames on a software rasterizer (Viewer::drawView): their own time aimed at, for 30 FPS while a
-// lecturer drags, and the smallest share of the view's size per axis they may be drawn at.
-constexpr double kMovingBudgetMs = 30.0;
-constexpr float kMinMovingScale = 0.35f;
-int adaptStride(int stride, int samples, double lastPassMs) {
-    if (stride <= 0) {
-        stride = 1;
-        while (samples / (stride * stride) > 4) stride *= 2;
-        return stride;
-    }
-    if (lastPassMs > kPassBudgetMs && stride < kAreaSamplesPerSideRange.hi) return stride * 2;
-    if (lastPassMs > 0.0 && lastPassMs < kPassBudgetMs / 4 && stride > 1) return stride / 2;
-    return stride;
-}
 
 // "shadelab-20250131-142512-034.png": sortable, and distinct for two F12 presses in one second.
 std::string timestampedName() {
@@ -95,10 +73,6 @@ std::string timestampedName() {
     char suffix[16];
     std::snprintf(suffix, sizeof suffix, "-%03d.png", int(ms));
     return std::string(name) + suffix;
-}
-
-bool sameTransform(const Transform& a, const Transform& b) {
-    return a.translation == b.translation && a.rotationDeg == b.rotationDeg && a.scale == b.scale;
 }
 
 // The default framebuffer's alpha is whatever blending left there; a screenshot is opaque.
@@ -122,6 +96,24 @@ float startUiScale(const ViewerOptions& o, const ViewPrefs& prefs) {
     return o.uiScale > 0.0f ? o.uiScale : prefs.uiScale.value_or(1.0f);
 }
 
+// Samples per pixel: --msaa, else 1 for a scripted run (its view equals the headless image), else the
+// last session's (4 at first).
+int startMsaa(const ViewerOptions& o, const ViewPrefs& prefs) {
+    return o.msaa >= 0 ? std::max(o.msaa, 1) : o.frames > 0 ? 1 : std::max(prefs.msaa.value_or(4), 1);
+}
+
+bool isSoftwareGl(const std::string& glRenderer) {
+    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+        if (glRenderer.find(software) != std::string::npos) return true;
+    return false;
+}
+
+// A new recording's file: "shadelab-20250131-142512-034.mp4".
+std::string recordingName() {
+    std::string path = timestampedName();
+    return path.replace(path.size() - 4, 4, ".mp4");
+}
+
 }  // namespace
 
 Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, ViewerOptions options)
@@ -137,7 +129,11 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
       renderer_(makeRenderer(ShaderLibrary(options_.shaderDir))),
       overlays_(std::make_unique<OverlayRenderer>(ShaderLibrary(options_.shaderDir))),
       document_(std::move(scene), std::move(geometry)),
-      playlist_(std::move(options_.playlist), options_.adjustPreset) {
+      playlist_(std::move(options_.playlist), options_.adjustPreset),
+      progressive_(options_.progressiveStride),
+      animation_(std::move(options_.animations), options_.frames > 0, std::chrono::steady_clock::now()),
+      recording_(recordingName, [this](const std::string& message, bool isError) { setStatus(message, isError); }),
+      probe_(options_.probe) {
     settings_.showPanel = !options_.hidePanel;
     settings_.overlays = options_.overlays;
     settings_.plots = options_.plots;
@@ -150,19 +146,14 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     settings_.showIntersection = options_.intersection;
     readShaderSources(ShaderLibrary(options_.shaderDir));
     status_.glRenderer = renderer_->glRenderer();
-    msaaSamples_ = options_.msaa >= 0 ? std::max(options_.msaa, 1) : options_.frames > 0 ? 1 : std::max(prefs_.msaa.value_or(4), 1);
-    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
-        softwareGl_ = softwareGl_ || status_.glRenderer.find(software) != std::string::npos;
-    imgui_.setBackBufferKept(softwareGl_ && status_.glRenderer.find("SwiftShader") == std::string::npos);
-    pendingProbe_ = options_.probe;
+    quality_ = ViewQuality(startMsaa(options_, prefs_), isSoftwareGl(status_.glRenderer));
+    imgui_.setBackBufferKept(quality_.softwareGl() && status_.glRenderer.find("SwiftShader") == std::string::npos);
     settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
     status_.trueTypeFont = imgui_.trueTypeFont();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
     window_.setSwapInterval(options_.frames > 0 ? 0 : 1);
     if (options_.fullscreen || prefs_.fullscreen) window_.setFullscreen(true);
     if (playlist_.active()) settings_.scenePath = playlist_.preset(0).path;
-    playing_ = !options_.animations.empty();
-    animationTick_ = std::chrono::steady_clock::now();
     if (options_.verbose) std::cerr << "shadelab: viewer on " << status_.glRenderer << "\n";
 }
 
@@ -178,26 +169,20 @@ void Viewer::run() {
             if (messageShown_ && untilMessageGoes <= 0.0) break;
             window_.waitEvents(messageShown_ ? untilMessageGoes + 0.01 : 10.0);
         }
-        if (options_.frames == 0 && (playing_ || recording_)) waitForRefresh();
-        frameBegun_ = std::chrono::steady_clock::now();
+        if (options_.frames == 0 && (animation_.playing() || recording_.active())) waitForRefresh();
+        pacing_.frameBegins(std::chrono::steady_clock::now());
         if (frame(options_.frames > 0 && n >= options_.frames)) break;
     }
-    stopRecording();  // quitting while recording keeps the video
+    recording_.stop();  // quitting while recording keeps the video
     savePrefs();
 }
 
-// A playing animation or a recording draws frame after frame: at most one a display refresh (60 Hz
-// where the monitor does not say), also where swapping buffers does not wait for the display
-// (llvmpipe on X11 and Xvfb, where it burnt 1.6 cores). Events wake the wait; they are handled by the
-// frame that follows, when it is due.
-int Viewer::frameCapHz() const {
-    const int hz = window_.refreshRate();
-    return hz >= 24 && hz <= 240 ? hz : 60;
-}
+// A playing animation or a recording draws at most one frame a display refresh (FramePacing). Events
+// wake the wait; they are handled by the frame that follows, when it is due.
+int Viewer::frameCapHz() const { return FramePacing::capHz(window_.refreshRate()); }
 
 void Viewer::waitForRefresh() {
-    const auto due = frameBegun_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                       std::chrono::duration<double>(1.0 / frameCapHz()));
+    const auto due = pacing_.nextDue(frameCapHz());
     for (auto now = std::chrono::steady_clock::now(); now < due; now = std::chrono::steady_clock::now())
         window_.waitEvents(std::chrono::duration<double>(due - now).count());
 }
@@ -211,16 +196,15 @@ void Viewer::savePrefs() {
     // The panel's sections as last drawn; a session that never showed the panel keeps the old ones.
     p.openSections = panelDrawn_ ? std::optional(settings_.openSections) : prefs_.openSections;
     p.uiScale = uiScale_;
-    p.msaa = msaaSamples_;
+    p.msaa = quality_.msaaSamples();
     saveViewPrefs(prefsPath_, p);
 }
 
 bool Viewer::idle() const {
-    if (framesToDraw_ > 0 || window_.eventCount() != eventsSeen_) return false;
-    if (playing_ || recording_) return false;  // an animation keeps drawing; a paused one does not
-    if (msaaSamples_ > 1 && !antiAliased_) return false;  // one more frame: the still view anti-aliased
-    if (reducedThisFrame_) return false;                  // one more: the still view at full size
-    if (progressiveFrom_ && !progressiveComplete_) return false;  // sampling goes on
+    if (pacing_.pending(window_.eventCount())) return false;
+    if (animation_.playing() || recording_.active()) return false;  // an animation keeps drawing; a paused one does not
+    if (quality_.wantsStillFrame()) return false;  // one more frame: the still view anti-aliased, at full size
+    if (progressive_.refining()) return false;     // sampling goes on
     const ImGuiIO& io = ImGui::GetIO();
     for (bool down : io.MouseDown)
         if (down) return false;
@@ -236,7 +220,7 @@ bool Viewer::frame(bool last) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<KeyPress> keys = window_.takePressedKeys();
     imgui_.holdTappedKeys(keys);
-    const bool still = countEvents();
+    const bool still = pacing_.countEvents(window_.eventCount());
     imgui_.setScale(window_.contentScale() * uiScale_);  // rebuilds the font only when it changed
     {
         const float panelText = std::round(kFontPixels * imgui_.scale()), windowText = windowTextSize();
@@ -245,9 +229,9 @@ bool Viewer::frame(bool last) {
     imgui_.newFrame();
     const FrameLayout l = layout();
     document_.setViewSize(std::max(l.viewWidth, 1), std::max(l.viewHeight, 1));
-    if (pendingProbe_) setProbe(pendingProbe_->x, pendingProbe_->y), pendingProbe_.reset();
+    if (const auto pending = probe_.takePending()) setProbe(pending->x, pending->y);
     handleInput(l, keys);
-    evaluateProbe();
+    probe_.evaluate(document_.scene(), document_.geometry());
     apply(panelEdits(l));
     last = last || window_.shouldClose();
     uploadGeometryIfChanged();
@@ -262,19 +246,11 @@ bool Viewer::frame(bool last) {
     drawStatusStrip(status_, l.strip);  // after: it shows this frame's pass
     imgui_.render(settings_.showPanel ? l.panel.x : -1.0f);
     if (screenshotRequested_) saveScreenshot(view);
-    record(l, view);
+    record(view);
     if (last) writeLastFrameFiles(l, view);
     window_.swapBuffers();
     recordFrameTime(start, last);
     return last;
-}
-
-// Whether no event came since the last frame; after one, a few more frames are drawn.
-bool Viewer::countEvents() {
-    const bool still = window_.eventCount() == eventsSeen_;
-    if (!still) eventsSeen_ = window_.eventCount(), framesToDraw_ = kFramesAfterEvent;
-    framesToDraw_ = std::max(framesToDraw_ - 1, 0);
-    return still;
 }
 
 // The panel, when shown, with what it edited: the scene is marked edited, and the camera stops
@@ -284,12 +260,12 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
     for (std::size_t i = 0; i < playlist_.size(); ++i) status_.presetTitles.push_back(presetTitle(playlist_.preset(i)));
     status_.currentPreset = int(playlist_.current());
     status_.uiScale = uiScale_;
-    status_.msaa = msaaSamples_;
+    status_.msaa = quality_.msaaSamples();
     const Camera before = document_.scene().camera;
-    std::vector<Transform> transformsBefore;
-    for (const SceneObject& o : document_.scene().objects) transformsBefore.push_back(o.transform);
+    PlacedGeometry placedBefore;
+    placedBefore.remember(document_.scene(), document_.geometry());
     const PanelRequests requests = settings_.showPanel ? drawPanel(document_.sceneForWidgets(), settings_, status_,
-                                                                   l.panel, probe_ ? &*probe_ : nullptr)
+                                                                   l.panel, probe_.result())
                                                        : PanelRequests{};
     if (requests.sceneEdited) document_.markEdited();
     if (settings_.showPanel) status_.scrollToPreset = false, panelDrawn_ = true;  // the list has scrolled to it
@@ -297,10 +273,7 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
     if (before.eye != after.eye || before.target != after.target || before.fovYDeg != after.fovYDeg)
         document_.stopFollowing();  // typed into the Camera section
     // A transform edited in the Mesh section: the camera stays, so the change shows.
-    const auto& objects = document_.scene().objects;
-    bool transformed = objects.size() != transformsBefore.size();
-    for (std::size_t i = 0; !transformed && i < objects.size(); ++i) transformed = !sameTransform(objects[i].transform, transformsBefore[i]);
-    if (transformed) document_.stopFollowing();
+    if (!placedBefore.same(document_.scene(), document_.geometry())) document_.stopFollowing();
     return requests;
 }
 
@@ -326,15 +299,16 @@ float Viewer::followView(const FrameLayout& l) {
 std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
     ImGui::PushFont(imgui_.viewFont());
     const std::vector<UiRect> lightBoxes =
-        settings_.lightLabels ? drawLightLabels(animatedScene_ ? *animatedScene_ : document_.scene(), l.view, l.scale,
-                                                settings_.selectedLight, labelsBottom, modelSpheres())
+        settings_.lightLabels ? drawLightLabels(shownScene(), l.view, l.scale,
+                                                settings_.selectedLight, labelsBottom,
+                                                modelSpheres_.of(document_.scene(), document_.geometry()))
                               : std::vector<UiRect>{};
     UiRect messageArea = l.view;  // above the formula when it is shown
     if (settings_.showFormula) {  // the values drawn this frame: an animated k_e moves under its symbol
-        const Scene& scene = animatedScene_ ? *animatedScene_ : document_.scene();
+        const Scene& scene = shownScene();
         const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
         const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
-        messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale,
+        messageArea.height = drawFormulaOverView(scene, material, probe_.result(), l.view, l.scale,
                                                   imgui_.formulaFont(), imgui_.formulaFont()
                                                                             ? imgui_.formulaFont()->FontSize / kFormulaSize
                                                                             : 0.0f) - l.view.y;
@@ -352,7 +326,7 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, messageArea);
     drawReadout(l, labelsBottom);
-    if (recording_) {  // a red dot and REC at the view's top right while recording, after the message fades
+    if (recording_.active()) {  // a red dot and REC at the view's top right while recording, after the message fades
         const float size = l.viewText, r = 0.4f * size;
         const ImVec2 at(l.view.x + l.view.width - 3.5f * size, labelsBottom + 0.6f * size);
         ImDrawList* draw = ImGui::GetForegroundDrawList();
@@ -363,7 +337,7 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
     }
     ImGui::PopFont();
     if (settings_.shaderOverView)
-        drawShaderOverView(animatedScene_ ? *animatedScene_ : document_.scene(), settings_, status_, probe_ ? &*probe_ : nullptr,
+        drawShaderOverView(shownScene(), settings_, status_, probe_.result(),
                            l.view, imgui_.viewFont(), imgui_.viewMonoFont());
     if (showHelp_) drawHelpOverlay(l.view);
     return lightBoxes;
@@ -390,8 +364,8 @@ std::string rampReadout(const Scene& scene, const std::vector<Animation>& animat
 
 void Viewer::drawReadout(const FrameLayout& l, float labelsBottom) {
     std::string text = settings_.readout;
-    if (text.empty() && animatedScene_ && (playing_ || options_.frames > 0))
-        text = rampReadout(*animatedScene_, options_.animations, settings_.selectedObject);
+    if (text.empty() && animation_.scene() && (animation_.playing() || options_.frames > 0))
+        text = rampReadout(*animation_.scene(), animation_.animations(), settings_.selectedObject);
     status_.readout = text;
     if (text.empty() || l.view.width <= 0.0f) return;
     // Twice the view text (52 px in a 1080-px window), on a dark box in the specular colour, at the
@@ -407,51 +381,22 @@ void Viewer::drawReadout(const FrameLayout& l, float labelsBottom) {
     draw->AddText(font, size, at, IM_COL32(c.r, c.g, c.b, 255), text.c_str());
 }
 
-// The 3D view, anti-aliased where it pays: always on a GPU; on a software rasterizer only once the
-// view is still (and for files). Returns it as drawn when it is captured (a screenshot, a file).
+// The 3D view, anti-aliased where it pays and reduced while it moves (ViewQuality). Returns it as
+// drawn when it is captured (a screenshot, a file).
 Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::vector<OverlayArrow>& arrows) {
-    const bool captureView =
-        screenshotRequested_ || recording_ || recordToggled_ || (last && !options_.viewScreenshotPath.empty());
-    bool mouseDown = false;
-    for (bool down : ImGui::GetIO().MouseDown) mouseDown = mouseDown || down;
-    antiAliasThisFrame_ =
-        msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown && !playing_) || captureView || last);
-    // A moving frame on a software rasterizer: smaller while the last moving frames took longer than
-    // kMovingBudgetMs, larger again while they took under half of it (never for files or a scripted run).
-    const bool moving = softwareGl_ && options_.frames == 0 && !captureView && !last && (mouseDown || playing_);
-    if (moving && movingLastFrame_) {
-        if (frameMs_ > kMovingBudgetMs)
-            movingScale_ = std::max(kMinMovingScale, movingScale_ * float(std::sqrt(kMovingBudgetMs / frameMs_)) * 0.95f);
-        else if (frameMs_ < 0.5 * kMovingBudgetMs)
-            movingScale_ = std::min(1.0f, movingScale_ * 1.1f);
-    }
-    movingLastFrame_ = moving;
-    reducedThisFrame_ = moving && movingScale_ < 0.98f;
-    status_.movingScale = reducedThisFrame_ ? movingScale_ : 1.0f;
-    const Image view = renderView(l, captureView, last, arrows);
-    antiAliased_ = antiAliasThisFrame_ && !reducedThisFrame_;
+    ViewQuality::Frame frame;
+    frame.still = still;
+    for (bool down : ImGui::GetIO().MouseDown) frame.mouseDown = frame.mouseDown || down;
+    frame.playing = animation_.playing();
+    frame.capture = screenshotRequested_ || recording_.capturing() || (last && !options_.viewScreenshotPath.empty());
+    frame.last = last;
+    frame.scripted = options_.frames > 0;
+    frame.lastFrameMs = frameMs_;
+    quality_.plan(frame);
+    status_.movingScale = quality_.reducedThisFrame() ? quality_.movingScale() : 1.0f;
+    const Image view = renderView(l, frame.capture, last, arrows);
+    quality_.drawn();
     return view;
-}
-
-RenderTarget Viewer::beginReduced(int width, int height) {
-    if (!reduced_.framebuffer || reduced_.width != width || reduced_.height != height) {
-        GLuint ids[3] = {};
-        glGenFramebuffers(1, &ids[0]);
-        glGenRenderbuffers(2, &ids[1]);
-        reduced_ = ReducedTarget{gl::Framebuffer(ids[0]), gl::Renderbuffer(ids[1]), gl::Renderbuffer(ids[2]), width, height};
-        glBindRenderbuffer(GL_RENDERBUFFER, ids[1]);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-        glBindRenderbuffer(GL_RENDERBUFFER, ids[2]);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        glBindFramebuffer(GL_FRAMEBUFFER, ids[0]);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ids[1]);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ids[2]);
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            reduced_ = ReducedTarget{};
-            throw std::runtime_error("the reduced moving-frame framebuffer is not complete on this GL");
-        }
-    }
-    return RenderTarget{reduced_.framebuffer.get(), width, height};
 }
 
 // The frame's own time (polling to swap, no waiting), for the status strip and -v's median.
@@ -686,11 +631,11 @@ void Viewer::runCommand(ViewerCommand command) {
     case ViewerCommand::Help: showHelp_ = !showHelp_; break;
     case ViewerCommand::ReloadShaders: reloadShaders(); break;
     case ViewerCommand::Screenshot: screenshotRequested_ = true; break;
-    case ViewerCommand::PlayPause: playing_ = playing_ ? false : !options_.animations.empty(); break;
-    case ViewerCommand::Record: recordToggled_ = true; break;
+    case ViewerCommand::PlayPause: animation_.togglePlay(); break;
+    case ViewerCommand::Record: recording_.toggle(); break;
     case ViewerCommand::Escape:  // closes the help, else clears the probe
         if (showHelp_) showHelp_ = false;
-        else if (probeAnchor_) probeAnchor_.reset(), probe_.reset();
+        else probe_.clear();
         break;
     case ViewerCommand::Quit: window_.requestClose(); break;
     }
@@ -707,87 +652,33 @@ void Viewer::runPlaylistCommand(ViewerCommand command) {
     if (command == ViewerCommand::ResetPreset) resetPreset();
 }
 
-// --animate: the scene drawn this frame is the document's at the animation's time (looping over the
-// longest animation); then the clock moves on while playing: by the time since the last frame, or by
-// 1/30 s in a scripted run, whose frame i is then the headless video's frame i.
+// --animate (AnimationPlayback): the scene drawn this frame, and the panel's line about it.
 void Viewer::advanceAnimation() {
     status_.animation.clear();
-    if (options_.animations.empty()) return;
-    const double loop = animationsDuration(options_.animations);
-    const double t = std::fmod(animationSeconds_, loop);
-    try {
-        animatedScene_ = sceneAtTime(document_.scene(), options_.animations, t, "--animate");
-    } catch (const InputError& e) {  // e.g. the light an orbit moves was removed in the panel
-        animatedScene_.reset();
-        playing_ = false;
-        setStatus(e.what(), true);
-    }
+    if (!animation_.any()) return;
+    if (const auto error = animation_.advance(document_.scene(), std::chrono::steady_clock::now())) setStatus(*error, true);
     char text[96];
+    const double t = animation_.shownSeconds(), loop = animation_.loopSeconds();
     if (options_.frames > 0) std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);  // a scripted run: 1/30 s a frame
     else std::snprintf(text, sizeof text, "%.2f s of %.2f s (at most %d frames/s)", t, loop, frameCapHz());
     status_.animation = text;
-    status_.playing = playing_;
-    const auto now = std::chrono::steady_clock::now();
-    if (playing_) {
-        animationSeconds_ += options_.frames > 0 ? 1.0 / kDefaultVideoFps
-                                                 : std::chrono::duration<double>(now - animationTick_).count();
-        ++animationStep_;
-    }
-    animationTick_ = now;
+    status_.playing = animation_.playing();
 }
 
-// Starts or stops the recording when asked, and adds the frame while it runs. The video has the view's size
-// when it started: a resize stops (and saves) it.
-void Viewer::record(const FrameLayout& l, const Image& view) {
-    if (recording_ && (recordToggled_ || view.width != recording_->width() || view.height != recording_->height())) {
-        const bool resized = !recordToggled_;
-        recordToggled_ = false;
-        stopRecording();
-        if (resized) setStatus(status_.message + " (recording stopped: the view changed size)", false);
-        return;
-    }
-    if (recordToggled_) {
-        recordToggled_ = false;
-        if (view.width <= 0 || view.height <= 0) return setStatus("nothing to record: the view is empty", true);
-        std::string path = timestampedName();
-        path.replace(path.size() - 4, 4, ".mp4");
-        try {
-            recording_ = std::make_unique<ViewRecorder>(path, l.viewWidth, l.viewHeight, kDefaultVideoFps);
-            recordingStart_ = std::chrono::steady_clock::now();
-            setStatus("recording " + path + " (Ctrl+R stops)", false);
-        } catch (const std::exception& e) {
-            return setStatus(std::string("recording failed: ") + e.what(), true);
-        }
-    }
-    if (!recording_) return;
-    try {
-        recording_->add(view, std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
-    } catch (const std::exception& e) {
-        recording_.reset();  // removes what it wrote
-        setStatus(std::string("recording failed: ") + e.what(), true);
-    }
-    status_.recording = recording_ != nullptr;
-}
+const Scene& Viewer::shownScene() const { return animation_.scene() ? *animation_.scene() : document_.scene(); }
 
-void Viewer::stopRecording() {
-    if (!recording_) return;
-    const std::string path = recording_->path();
-    try {
-        recording_->stop();
-        status_.lastRecording = path;
-        setStatus("saved recording " + path, false);
-    } catch (const std::exception& e) {
-        setStatus(std::string("recording failed: ") + e.what(), true);
-    }
-    recording_.reset();
-    status_.recording = false;
+// The frame as shown goes to the recording (RecordingSession), started or stopped when asked.
+void Viewer::record(const Image& view) {
+    recording_.frame(view, std::chrono::steady_clock::now());
+    status_.recording = recording_.active();
+    status_.lastRecording = recording_.lastSaved();
 }
 
 void Viewer::apply(const PanelRequests& r) {
-    if (r.toggleRecording) recordToggled_ = true;
-    if (r.togglePlay) playing_ = !playing_ && !options_.animations.empty();
+    if (r.toggleRecording) recording_.toggle();
+    if (r.togglePlay) animation_.togglePlay();
     if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
-    if (r.msaa > 0) msaaSamples_ = r.msaa;
+    if (r.msaa > 0) quality_.setMsaaSamples(r.msaa);
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
     if (r.resetCamera) document_.resetCamera(), cameraMoved();
     if (r.frameModel) document_.frameModel(), cameraMoved();
@@ -810,7 +701,7 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.resetPreset) resetPreset();
     if (r.reloadShaders) reloadShaders();
     if (r.quit) window_.requestClose();
-    if (r.clearProbe) probeAnchor_.reset(), probe_.reset();
+    if (r.clearProbe) probe_.clear();
     if (r.save) {
         try {
             document_.save(settings_.scenePath);
@@ -869,8 +760,7 @@ void Viewer::showingPreset(const std::string& what) {
     settings_.scenePath = p.path;
     settings_.selectedObject = 0;
     // --animate with a playlist: every preset plays it from its start (also after one it did not fit).
-    animationSeconds_ = 0.0;
-    playing_ = !options_.animations.empty();
+    animation_.restart();
     if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
     if (options_.verbose) std::cerr << "shadelab: " << what << p.path << "\n";
 }
@@ -906,31 +796,28 @@ void Viewer::uploadGeometryIfChanged() {
 // A capture or the last frame completes a progressive image first: a file never holds a partial one.
 Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const std::vector<OverlayArrow>& arrows) {
     if (l.viewWidth <= 0 || l.viewHeight <= 0) {  // minimised, or no room for the view
-        progressiveComplete_ = true;                // nothing to refine: the viewer may sleep
+        progressive_.abandon();                     // nothing to refine: the viewer may sleep
         return {};
     }
     const RenderTarget view{0, l.viewWidth, l.viewHeight};
     try {
-        if (reducedThisFrame_) {  // a moving frame, smaller, magnified into the view (no anti-aliasing)
-            const RenderTarget small = beginReduced(std::max(int(std::lround(float(l.viewWidth) * movingScale_)), 1),
-                                                    std::max(int(std::lround(float(l.viewHeight) * movingScale_)), 1));
+        if (quality_.reducedThisFrame()) {  // a moving frame, smaller, magnified into the view (no anti-aliasing)
+            const float scale = quality_.movingScale();
+            const RenderTarget small = reduced_.begin(std::max(int(std::lround(float(l.viewWidth) * scale)), 1),
+                                                      std::max(int(std::lround(float(l.viewHeight) * scale)), 1));
             renderScene(small, false);
             OverlayOptions overlays = settings_.overlays;
-            overlays.lineWidth = std::max(2.0f * imgui_.scale() * movingScale_, 1.0f);
-            overlays_->render(animatedScene_ ? *animatedScene_ : document_.scene(), small, overlays, arrows);
-            glDisable(GL_SCISSOR_TEST);
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, small.framebuffer);
-            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-            glBlitFramebuffer(0, 0, small.width, small.height, 0, 0, view.width, view.height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            overlays.lineWidth = std::max(2.0f * imgui_.scale() * scale, 1.0f);
+            overlays_->render(shownScene(), small, overlays, arrows);
+            reduced_.magnifyInto(view);
             return {};
         }
-        const RenderTarget target = msaa_.begin(view, antiAliasThisFrame_ ? msaaSamples_ : 1);
+        const RenderTarget target = msaa_.begin(view, quality_.antiAliasThisFrame() ? quality_.msaaSamples() : 1);
         renderScene(target, capture || last);
         // Lines 2 pixels wide at scale 1, thicker with the content and UI scale.
         OverlayOptions overlays = settings_.overlays;
         overlays.lineWidth = 2.0f * imgui_.scale();
-        overlays_->render(animatedScene_ ? *animatedScene_ : document_.scene(), target, overlays, arrows);
+        overlays_->render(shownScene(), target, overlays, arrows);
         msaa_.resolveInto(view);
         if (capture) return opaque(readPixels(view));
     } catch (const std::exception& e) {
@@ -943,47 +830,44 @@ Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const st
         glScissor(0, 0, l.viewWidth, l.viewHeight);
         glClear(GL_COLOR_BUFFER_BIT);
         glDisable(GL_SCISSOR_TEST);
-        progressiveComplete_ = true;
+        progressive_.abandon();
         setStatus(e.what(), true);
     }
     return {};
 }
 
-// Scenes with sampled area lights refine over frames (Renderer::renderProgressive): a frame draws one
-// pass, so dragging a slider or the camera stays fluid, and a still view converges to the one-pass
-// image. The stride adapts at each restart to keep a pass near kPassBudgetMs on this machine.
+// Everything the 3D view's image is drawn from (view_revision.hpp): the one list, for whatever must
+// restart or redraw when the view changed.
+ViewInputs Viewer::viewInputs(const RenderTarget& target) const {
+    ViewInputs in;
+    in.scene = document_.revision();
+    in.geometry = document_.geometryRevision();
+    in.renderer = rendererGeneration_;
+    in.animation = animation_.step();
+    in.width = std::uint64_t(target.width), in.height = std::uint64_t(target.height);
+    return in;
+}
+
+// Scenes with sampled area lights refine over frames (ProgressiveSampling): a frame draws one pass, and
+// a sum restarts when the view's revision moved. `complete` (a capture, the last frame) draws every
+// remaining pass: a file never holds a partial image.
 void Viewer::renderScene(const RenderTarget& view, bool complete) {
-    const Scene& scene = animatedScene_ ? *animatedScene_ : document_.scene();
-    const auto now = std::chrono::steady_clock::now();
-    if (passDrawnLastFrame_) lastPassMs_ = std::chrono::duration<double, std::milli>(now - lastFrameStart_).count();
-    lastFrameStart_ = now;
-    passDrawnLastFrame_ = false;
+    const Scene& scene = shownScene();
+    progressive_.frameBegins(std::chrono::steady_clock::now());
     int samples = 1;
     for (const Light& light : scene.lights)
         if (light.type == LightType::Area) samples = std::max(samples, light.samples.x * light.samples.y);
     if (samples <= 1) {
-        progressiveFrom_.reset();
+        progressive_.off();
         status_.progress.clear();
         renderer_->render(scene, view);
         return;
     }
-    // Everything the image depends on; a change restarts the sum.
-    const std::array<std::uint64_t, 6> from = {document_.revision(), document_.geometryRevision(), rendererGeneration_,
-                                               std::uint64_t(view.width), std::uint64_t(view.height), animationStep_};
-    const bool restart = from != progressiveFrom_;
-    if (restart) {
-        progressiveFrom_ = from;
-        progressiveStride_ = options_.progressiveStride > 0 ? options_.progressiveStride
-                                                             : adaptStride(progressiveStride_, samples, lastPassMs_);
-    }
-    // The frame's time measures a pass only if it drew exactly one (a complete image is only redrawn).
-    passDrawnLastFrame_ = restart || !progressiveComplete_;
-    Renderer::ProgressiveStatus status = renderer_->renderProgressive(scene, view, progressiveStride_, restart);
-    if (complete && !status.complete()) {
-        while (!status.complete()) status = renderer_->renderProgressive(scene, view, progressiveStride_, false);
-        passDrawnLastFrame_ = false;
-    }
-    progressiveComplete_ = status.complete();
+    const ProgressiveSampling::Pass pass = progressive_.begin(viewRevision_.of(viewInputs(view)), samples);
+    Renderer::ProgressiveStatus status = renderer_->renderProgressive(scene, view, pass.stride, pass.restart);
+    const bool finishNow = complete && !status.complete();
+    while (!status.complete() && finishNow) status = renderer_->renderProgressive(scene, view, pass.stride, false);
+    progressive_.drawn(status.complete(), finishNow);
     status_.progress = status.passCount > 1 ? "area-light samples: pass " + std::to_string(status.passesDone) + " of " +
                                                   std::to_string(status.passCount)
                                             : "";
@@ -1067,67 +951,10 @@ void Viewer::reloadShaders() {
     }
 }
 
-const SceneRayCaster& Viewer::rayCaster() {
-    const Scene& scene = document_.scene();
-    const auto& geometry = document_.geometry();
-    bool same = caster_ && casterGeometry_.lock() == geometry && casterTransforms_.size() == scene.objects.size();
-    for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
-        same = sameTransform(casterTransforms_[o], scene.objects[o].transform);
-    if (!same) {
-        caster_ = geometry ? std::make_unique<SceneRayCaster>(scene, *geometry) : std::make_unique<SceneRayCaster>();
-        casterGeometry_ = geometry;
-        casterTransforms_.clear();
-        for (const SceneObject& o : scene.objects) casterTransforms_.push_back(o.transform);
-    }
-    return *caster_;
-}
-
-const std::vector<BoundingSphere>& Viewer::modelSpheres() {
-    const Scene& scene = document_.scene();
-    const auto& geometry = document_.geometry();
-    bool same = spheresGeometry_ == document_.geometryRevision() && spheresTransforms_.size() == scene.objects.size();
-    for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
-        same = sameTransform(spheresTransforms_[o], scene.objects[o].transform);
-    if (same) return modelSpheres_;
-    modelSpheres_.clear();
-    spheresTransforms_.clear();
-    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-        spheresTransforms_.push_back(scene.objects[o].transform);
-        if (!geometry || o >= geometry->meshes.size() || scene.objects[o].mesh.type == MeshSpec::Type::Plane) continue;
-        modelSpheres_.push_back(worldBounds({&geometry->meshes[o]}, {worldFromObject(scene.objects[o].transform)}));
-    }
-    spheresGeometry_ = document_.geometryRevision();
-    return modelSpheres_;
-}
-
 void Viewer::setProbe(int x, int y) {
-    const Scene& scene = document_.scene();
-    if (!document_.geometry() || x < 0 || y < 0 || x >= scene.width || y >= scene.height) {
-        setStatus("probe: pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
-                      std::to_string(scene.width) + "x" + std::to_string(scene.height) + " view",
-                  true);
-        return;
-    }
-    const ProbeResult r = probePixel(scene, *document_.geometry(), rayCaster(), x, y);
-    if (r.miss) {
-        setStatus("probe: no surface at pixel " + std::to_string(x) + "," + std::to_string(y) + " (background)", false);
-        return;
-    }
-    probeAnchor_ = r.anchor;
-    probeGeometry_ = document_.geometry();
-    settings_.scrollToProbe = true;  // the panel shows its Probe section, wherever it was scrolled
-    setStatus("probe at pixel " + std::to_string(x) + "," + std::to_string(y) + " (Esc clears it)", false);
-}
-
-void Viewer::evaluateProbe() {
-    probe_.reset();
-    const auto& geometry = document_.geometry();
-    if (probeAnchor_ && geometry != probeGeometry_.lock()) probeAnchor_.reset();  // its triangle was in the old meshes
-    if (!probeAnchor_ || !geometry || !validAnchor(document_.scene(), *geometry, *probeAnchor_)) return;
-    // The ray caster is only needed for occlusion: without shadows, dragging a transform must not
-    // rebuild it every frame.
-    const bool shadows = document_.scene().shadows.enabled;
-    probe_ = probeAnchor(document_.scene(), *geometry, shadows ? rayCaster() : noTriangles_, *probeAnchor_);
+    const ProbeState::Outcome outcome = probe_.set(document_.scene(), document_.geometry(), x, y);
+    if (outcome.set) settings_.scrollToProbe = true;  // the panel shows its Probe section, wherever it was scrolled
+    setStatus(outcome.message, outcome.isError);
 }
 
 std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std::vector<UiRect>& avoid) {
@@ -1135,8 +962,8 @@ std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std:
     if (settings_.selectedLight >= int(scene.lights.size())) settings_.selectedLight = -1;  // fewer lights now
     settings_.overlays.sampleMarkersLight = settings_.selectedLight;
     std::vector<OverlayArrow> arrows;
-    if (!probe_) return arrows;
-    const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_, settings_.selectedLight, settings_.showIntersection);
+    if (!probe_.result()) return arrows;
+    const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_.result(), settings_.selectedLight, settings_.showIntersection);
     ImGui::PushFont(imgui_.viewFont());
     drawProbeLabels(scene, labelled, l.view, l.scale, avoid);
     ImGui::PopFont();
@@ -1156,7 +983,7 @@ void Viewer::setStatus(std::string message, bool isError) {
     status_.isError = isError;
     // Shown over the view for a while, where the lecturer looks (and at the end of the File section);
     // a frame is drawn to show it, also when the message comes late in a frame.
-    framesToDraw_ = std::max(framesToDraw_, 1);
+    pacing_.drawAnother();
     messageUntil_ = std::chrono::steady_clock::now() +
                     std::chrono::milliseconds(int((isError ? kErrorSeconds : kMessageSeconds) * 1000.0));
 }

@@ -4,8 +4,6 @@
 // all of it; run() loops over frame(), which is the whole per-frame story:
 //   poll -> ImGui frame -> keys/mouse/drops -> panel -> apply requests -> renderer -> ImGui -> swap.
 #include "core/image/image.hpp"
-#include "core/probe/probe.hpp"
-#include "core/geometry/ray_cast.hpp"
 #include "core/scene/animation.hpp"
 #include "core/scene/playlist.hpp"
 #include "core/scene/scene.hpp"
@@ -15,14 +13,22 @@
 #include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
 #include "render/renderer.hpp"
+#include "viewer/animation_playback.hpp"
+#include "viewer/frame_pacing.hpp"
 #include "viewer/frame_rate.hpp"
 #include "viewer/glfw_window.hpp"
 #include "viewer/imgui_layer.hpp"
 #include "viewer/panel.hpp"
+#include "viewer/placed_geometry.hpp"
 #include "viewer/playlist_navigator.hpp"
+#include "viewer/probe_state.hpp"
+#include "viewer/progressive_sampling.hpp"
+#include "viewer/recording_session.hpp"
+#include "viewer/reduced_target.hpp"
 #include "viewer/scene_document.hpp"
 #include "viewer/view_prefs.hpp"
-#include "viewer/view_recorder.hpp"
+#include "viewer/view_quality.hpp"
+#include "viewer/view_revision.hpp"
 
 #include <chrono>
 #include <glm/vec2.hpp>
@@ -104,7 +110,6 @@ private:
 
     bool frame(bool last);
     // frame()'s steps.
-    bool countEvents();
     PanelRequests panelEdits(const FrameLayout& layout);
     float followView(const FrameLayout& layout);
     std::vector<UiRect> drawViewText(const FrameLayout& layout, float labelsBottom);
@@ -136,11 +141,8 @@ private:
     void setStatus(std::string message, bool isError);
     void cameraMoved();
     Layout layoutBeforeToggle_ = Layout::Single;  // what C or D pressed again goes back to
-    // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
-    // the same surface point with the scene as it is then.
+    // The pixel probe (ProbeState) set at a pixel of the 3D view, the outcome on the status line.
     void setProbe(int x, int y);
-    void evaluateProbe();
-    const SceneRayCaster& rayCaster();
     // This frame's probe arrows (their labels go on ImGui's list now; renderView draws the arrows),
     // and the selected light's sample markers switched on.
     std::vector<OverlayArrow> probeOverlays(const FrameLayout& layout, const std::vector<UiRect>& avoid);
@@ -167,62 +169,29 @@ private:
     bool panelDrawn_ = false;                   // the panel was shown at least once this session
     std::chrono::steady_clock::time_point messageUntil_;  // the status message shows over the view until then
     bool messageShown_ = false;                 // ... and the last frame drew it
-    // Render on demand: events seen so far, frames still to draw after the last one, the last
-    // frame's own time (not the wait before it).
-    unsigned long eventsSeen_ = 0;
-    int framesToDraw_ = 2;
-    double frameMs_ = 0.0;
+    bool screenshotRequested_ = false;
+    // The viewer's parts, each with its own state: when to draw (render on demand, the frame cap), how
+    // (anti-aliased, reduced while moving), the progressive sum, --animate, the recording, the probe.
+    FramePacing pacing_;
+    double frameMs_ = 0.0;                      // the last frame's own time (not the wait before it)
     std::vector<double> frameTimes_;            // every frame's own time, for -v's median at the end
     FrameRate frameRate_;                       // the status strip's mean of the last second's frames
-    // Anti-aliasing: the multisampled target, its samples, whether the GL is a software rasterizer
-    // (there only a still view is drawn anti-aliased: 4x costs several times a frame on llvmpipe), and
-    // whether the last frame was.
-    MultisampleTarget msaa_;
-    // Moving frames on a software rasterizer (issue 31, item 12): while the view is dragged, a slider
-    // held or an animation plays, the scene is drawn into a framebuffer `movingScale_` of the view's
-    // size per axis and magnified into it; the scale follows the moving frames' time (aiming at 30
-    // FPS); a still view is drawn at full size (and anti-aliased) again.
-    struct ReducedTarget {
-        gl::Framebuffer framebuffer;
-        gl::Renderbuffer color, depth;
-        int width = 0, height = 0;
-    };
-    ReducedTarget reduced_;
-    float movingScale_ = 1.0f;
-    bool movingLastFrame_ = false;
-    bool reducedThisFrame_ = false;
-    RenderTarget beginReduced(int width, int height);
-    int msaaSamples_ = 1;
-    bool softwareGl_ = false;
-    bool antiAliased_ = false;
-    bool antiAliasThisFrame_ = false;
-    bool screenshotRequested_ = false;
-    // Progressive sampling: what the sum so far was drawn from (the scene's and the geometry's
-    // revisions, the renderer, the view's size; none while the scene needs no sampling), the stride,
-    // and the last pass's time.
-    std::optional<std::array<std::uint64_t, 6>> progressiveFrom_;
-    // --animate: whether it plays, its clock, and the scene it makes of the document's for this frame.
-    bool playing_ = false;
-    double animationSeconds_ = 0.0;
-    std::uint64_t animationStep_ = 0;  // counts the frames the animation changed (restarts a progressive sum)
-    std::chrono::steady_clock::time_point animationTick_;
-    std::optional<Scene> animatedScene_;
+    ViewQuality quality_{1, false};
+    MultisampleTarget msaa_;                    // the anti-aliased frames' target
+    ReducedTarget reduced_;                     // the reduced moving frames' target
+    // "The view changed" (view_revision.hpp): viewInputs() is the one list of what the image is drawn
+    // from; a progressive sum restarts when its revision moves.
+    ViewRevision viewRevision_;
+    ViewInputs viewInputs(const RenderTarget& target) const;
+    ProgressiveSampling progressive_;
+    AnimationPlayback animation_;
     void advanceAnimation();
-    // The frame cap while an animation plays or a recording runs (the display's refresh, else 60 Hz).
+    const Scene& shownScene() const;            // the document's scene as --animate makes it this frame
+    // The frame cap while an animation plays or a recording runs (FramePacing::capHz of the display's).
     int frameCapHz() const;
     void waitForRefresh();
-    std::chrono::steady_clock::time_point frameBegun_;
-    // Ctrl+R / the record button: recording the view as shown to a timestamped MP4 (viewer/view_recorder.hpp).
-    std::unique_ptr<ViewRecorder> recording_;
-    bool recordToggled_ = false;  // start or stop at this frame's end, once the view is drawn
-    std::chrono::steady_clock::time_point recordingStart_;
-    void record(const FrameLayout& l, const Image& view);
-    void stopRecording();
-    int progressiveStride_ = 0;
-    double lastPassMs_ = 0.0;
-    bool passDrawnLastFrame_ = false;
-    bool progressiveComplete_ = false;
-    std::chrono::steady_clock::time_point lastFrameStart_;
+    RecordingSession recording_;
+    void record(const Image& view);
     // A light marker being dragged: which light, in which pane (the plane facing the camera, or with
     // Shift the view axis).
     struct LightDrag {
@@ -231,23 +200,8 @@ private:
     };
     std::optional<LightDrag> lightDrag_;
     void dragLight(const FrameLayout& layout);
-    std::optional<ProbeAnchor> probeAnchor_;
-    // The meshes probeAnchor_'s triangle is in, and those caster_ was built from. Weak: a rebuilt
-    // geometry may reuse a freed one's address, an expired pointer cannot be mistaken for it.
-    std::weak_ptr<const SceneGeometry> probeGeometry_;
-    std::optional<ProbeResult> probe_;         // this frame's evaluation of probeAnchor_
-    std::optional<glm::ivec2> pendingProbe_;   // --probe: set on the first frame, once the view has its size
-    // Rebuilt when the geometry or an object's transform changes (what it was built from is kept).
-    std::unique_ptr<SceneRayCaster> caster_;
-    std::weak_ptr<const SceneGeometry> casterGeometry_;
-    std::vector<Transform> casterTransforms_;
-    const SceneRayCaster noTriangles_;         // what probeAnchor() gets when shadows are off (it is not used)
-    // Each object's world-space bounding sphere (a plane, a floor, left out): the light labels keep
-    // off them. Recomputed when the geometry or a transform changes.
-    const std::vector<BoundingSphere>& modelSpheres();
-    std::vector<BoundingSphere> modelSpheres_;
-    std::optional<std::uint64_t> spheresGeometry_;
-    std::vector<Transform> spheresTransforms_;
+    ProbeState probe_;
+    ModelSpheres modelSpheres_;                 // the light labels keep off them
 };
 
 }  // namespace shadelab
