@@ -142,6 +142,29 @@ std::string readable(const json& j) {
     return out;
 }
 
+// The material as drawn at the point (the glTF part's C, its texel, E and coverage where it has them).
+void writeMaterial(const Scene& scene, const ProbeResult& r, json& j) {
+    const Material& m = r.material;
+    j["material"] = {{"C", vec(m.color)}, {"S", vec(m.specularColor)}, {"ka", number(m.ka)},
+                     {"kd", number(m.kd)}, {"ks", number(m.ks)},         {"ke", number(m.ke)}};
+    if (m.mirror > 0.0f) j["material"]["mirror"] = number(m.mirror);
+    if (m.transmission > 0.0f) j["material"]["transmission"] = number(m.transmission);
+    if (m.anisotropic) j["material"]["anisotropy"] = json::array({number(m.anisotropy.x), number(m.anisotropy.y)});
+    if (r.textured) {
+        // C = base colour x texel: flat and Gouraud evaluate their terms with the base colour and
+        // multiply the ambient and diffuse parts by the texel per fragment; Phong evaluates with C.
+        j["material"]["C_base"] = vec(r.baseColor);
+        j["texture"] = {{"texcoord", {number(r.texcoord.x), number(r.texcoord.y)}}, {"texel", vec(r.texel)}};
+    }
+    // What a glTF material adds: E (the emission at the point; flat and Gouraud add it per fragment
+    // where it varies) and the coverage.
+    if (m.emissive != glm::vec3(0.0f) || scene.emissiveModel) j["material"]["E"] = vec(m.emissive);
+    if (r.alphaMode != AlphaMode::Opaque) {
+        j["alpha"] = {{"mode", r.alphaMode == AlphaMode::Mask ? "mask" : "blend"}, {"alpha", number(r.alpha)}};
+        if (r.alphaMode == AlphaMode::Mask) j["alpha"]["cutoff"] = number(r.alphaCutoff);
+    }
+}
+
 }  // namespace
 
 std::string probeToJson(const Scene& scene, const ProbeResult& r) {
@@ -176,25 +199,7 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
     j["fresnel"] = toString(scene.fresnel);
     j["show"] = toString(scene.show);
     j["output_encoding"] = toString(scene.outputEncoding);
-    const Material& m = r.material;
-    j["material"] = {{"C", vec(m.color)}, {"S", vec(m.specularColor)}, {"ka", number(m.ka)},
-                     {"kd", number(m.kd)}, {"ks", number(m.ks)},         {"ke", number(m.ke)}};
-    if (m.mirror > 0.0f) j["material"]["mirror"] = number(m.mirror);
-    if (m.transmission > 0.0f) j["material"]["transmission"] = number(m.transmission);
-    if (m.anisotropic) j["material"]["anisotropy"] = json::array({number(m.anisotropy.x), number(m.anisotropy.y)});
-    if (r.textured) {
-        // C = base colour x texel: flat and Gouraud evaluate their terms with the base colour and
-        // multiply the ambient and diffuse parts by the texel per fragment; Phong evaluates with C.
-        j["material"]["C_base"] = vec(r.baseColor);
-        j["texture"] = {{"texcoord", {number(r.texcoord.x), number(r.texcoord.y)}}, {"texel", vec(r.texel)}};
-    }
-    // What a glTF material adds: E (the emission at the point; flat and Gouraud add it per fragment
-    // where it varies) and the coverage.
-    if (m.emissive != glm::vec3(0.0f) || scene.emissiveModel) j["material"]["E"] = vec(m.emissive);
-    if (r.alphaMode != AlphaMode::Opaque) {
-        j["alpha"] = {{"mode", r.alphaMode == AlphaMode::Mask ? "mask" : "blend"}, {"alpha", number(r.alpha)}};
-        if (r.alphaMode == AlphaMode::Mask) j["alpha"]["cutoff"] = number(r.alphaCutoff);
-    }
+    writeMaterial(scene, r, j);
     j["ambient_A"] = vec(scene.ambient);
     j["shadows"] = {{"enabled", scene.shadows.enabled}};
     if (scene.shadows.enabled)

@@ -556,6 +556,52 @@ Scene sceneForModel(const std::string& modelPath) {
     return s;
 }
 
+namespace {
+
+// A light's fields, those of its type only.
+nlohmann::ordered_json lightJson(const Light& l) {
+    nlohmann::ordered_json lj;
+    lj["type"] = toString(l.type);
+    if (l.type == LightType::Directional) {
+        lj["direction"] = vecJson(l.direction);
+    } else {
+        lj["position"] = vecJson(l.position);
+    }
+    if (l.type == LightType::Spot) {
+        lj["direction"] = vecJson(l.direction);
+        lj["inner_cone_deg"] = l.innerConeDeg;
+        lj["outer_cone_deg"] = l.outerConeDeg;
+    }
+    if (l.type == LightType::Area) {
+        lj["normal"] = vecJson(l.normal);
+        lj["size"] = {l.size.x, l.size.y};
+        lj["samples"] = {l.samples.x, l.samples.y};
+        lj["two_sided"] = l.twoSided;
+    }
+    lj["color"] = vecJson(l.color);
+    lj["intensity"] = l.intensity;
+    if (l.type != LightType::Directional) {
+        lj["attenuation"] = toString(l.attenuation);
+        if (l.attenuation == Attenuation::InverseSquare && l.range > 0.0f) lj["range"] = l.range;
+    }
+    return lj;
+}
+
+// "test": the thresholds and masks that were set.
+json testJson(const TestSettings& test) {
+    json t = json::object();
+    if (test.maxDiff) t["max_diff"] = *test.maxDiff;
+    if (test.meanDiff) t["mean_diff"] = *test.meanDiff;
+    if (test.maxDiffPixels) t["max_diff_pixels"] = *test.maxDiffPixels;
+    if (!test.masks.empty()) {
+        t["masks"] = json::array();
+        for (const glm::ivec4& r : test.masks) t["masks"].push_back({r.x, r.y, r.z, r.w});
+    }
+    return t;
+}
+
+}  // namespace
+
 std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     nlohmann::ordered_json j;
     const bool shorthand = !s.usesObjectList && s.objects.size() == 1 && isIdentity(s.objects[0].transform);
@@ -579,33 +625,7 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     j["reflection"] = toString(s.reflection);
     j["ambient"] = vecJson(s.ambient);
     j["lights"] = nlohmann::ordered_json::array();
-    for (const Light& l : s.lights) {
-        nlohmann::ordered_json lj;
-        lj["type"] = toString(l.type);
-        if (l.type == LightType::Directional) {
-            lj["direction"] = vecJson(l.direction);
-        } else {
-            lj["position"] = vecJson(l.position);
-        }
-        if (l.type == LightType::Spot) {
-            lj["direction"] = vecJson(l.direction);
-            lj["inner_cone_deg"] = l.innerConeDeg;
-            lj["outer_cone_deg"] = l.outerConeDeg;
-        }
-        if (l.type == LightType::Area) {
-            lj["normal"] = vecJson(l.normal);
-            lj["size"] = {l.size.x, l.size.y};
-            lj["samples"] = {l.samples.x, l.samples.y};
-            lj["two_sided"] = l.twoSided;
-        }
-        lj["color"] = vecJson(l.color);
-        lj["intensity"] = l.intensity;
-        if (l.type != LightType::Directional) {
-            lj["attenuation"] = toString(l.attenuation);
-            if (l.attenuation == Attenuation::InverseSquare && l.range > 0.0f) lj["range"] = l.range;
-        }
-        j["lights"].push_back(lj);
-    }
+    for (const Light& l : s.lights) j["lights"].push_back(lightJson(l));
     j["shadows"] = s.shadows.enabled;
     if (!s.textures) j["textures"] = false;
     j["shadow_settings"] = {{"normal_bias", s.shadows.normalBias}, {"depth_bias", s.shadows.depthBias},
@@ -626,17 +646,7 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     j["diff"] = {{"a", toString(s.diff.a)}, {"b", toString(s.diff.b)}, {"factor", s.diff.factor}};
     if (!s.title.empty()) j["title"] = s.title;
     if (!s.caption.empty()) j["caption"] = s.caption;
-    if (!s.test.empty()) {
-        json t = json::object();
-        if (s.test.maxDiff) t["max_diff"] = *s.test.maxDiff;
-        if (s.test.meanDiff) t["mean_diff"] = *s.test.meanDiff;
-        if (s.test.maxDiffPixels) t["max_diff_pixels"] = *s.test.maxDiffPixels;
-        if (!s.test.masks.empty()) {
-            t["masks"] = json::array();
-            for (const glm::ivec4& r : s.test.masks) t["masks"].push_back({r.x, r.y, r.z, r.w});
-        }
-        j["test"] = t;
-    }
+    if (!s.test.empty()) j["test"] = testJson(s.test);
     return j.dump(2) + "\n";
 }
 
