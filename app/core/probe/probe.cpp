@@ -110,63 +110,67 @@ glm::vec3 toWorld(const glm::mat4& m, const glm::vec3& p) { return glm::vec3(m *
 // A tangent to world space as the shaders take it (tangentToWorld: the transform itself), w kept.
 glm::vec4 tangentToWorld(const glm::mat4& m, const glm::vec4& t) { return glm::vec4(glm::mat3(m) * glm::vec3(t), t.w); }
 
+// Phong: phong.vert passes normalWorldFromObject * normal unnormalised; phong.frag normalises the
+// interpolated vector. The tangent goes to world space; the rasteriser interpolates all four components.
+void evaluatePhong(const TriangleContext& c, const Material& lit, ModeProbe& m) {
+    const glm::vec3& w = c.barycentric;
+    const glm::vec3 posObject = w.x * c.posObject[0] + w.y * c.posObject[1] + w.z * c.posObject[2];
+    const glm::vec3 nrm = w.x * (c.normalWorldFromObject * c.nrmObject[0]) +
+                          w.y * (c.normalWorldFromObject * c.nrmObject[1]) +
+                          w.z * (c.normalWorldFromObject * c.nrmObject[2]);
+    const glm::vec4 tan = w.x * tangentToWorld(c.worldFromObject, c.tanObject[0]) +
+                          w.y * tangentToWorld(c.worldFromObject, c.tanObject[1]) +
+                          w.z * tangentToWorld(c.worldFromObject, c.tanObject[2]);
+    m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), c.facing * glm::normalize(nrm), tan));
+    m.color = m.evaluations[0].terms.total;
+}
+
+// Gouraud: at the three vertices, interpolated. Textured: gouraud.vert's two parts, unclamped,
+// interpolated; combined in gouraud.frag.
+void evaluateGouraud(const TriangleContext& c, const Material& lit, ModeProbe& m) {
+    const glm::vec3& w = c.barycentric;
+    glm::vec3 termsOfC(0.0f), specular(0.0f);
+    for (int k = 0; k < 3; ++k) {
+        ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, c.posObject[k]),
+                                     c.facing * glm::normalize(c.normalWorldFromObject * c.nrmObject[k]),
+                                     tangentToWorld(c.worldFromObject, c.tanObject[k]));
+        e.site = ProbeEvaluation::Site::Vertex;
+        e.vertex = c.vertex[k];
+        m.color += w[k] * e.terms.total;
+        const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
+        termsOfC += w[k] * (e.terms.shown - s);
+        specular += w[k] * s;
+        m.evaluations.push_back(std::move(e));
+    }
+    if (c.baseMaterial) m.color = glm::clamp(c.texel * termsOfC + specular + shownEmission(c), 0.0f, 1.0f);
+}
+
+// Flat: as makeFlatMesh, the face normal of the corners in index order and the object-space centroid,
+// both taken to world space by flat.vert.
+void evaluateFlat(const TriangleContext& c, const Material& lit, ModeProbe& m) {
+    const glm::vec3 centroid = (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f;
+    const glm::vec3 face = faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
+    const glm::vec4 tan = faceTangent(c.tanObject[0], c.tanObject[1], c.tanObject[2], face);
+    ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid),
+                                 c.facing * glm::normalize(c.normalWorldFromObject * face), tangentToWorld(c.worldFromObject, tan));
+    e.site = ProbeEvaluation::Site::Centroid;
+    m.color = e.terms.total;
+    if (c.baseMaterial) {
+        const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
+        m.color = glm::clamp(c.texel * (e.terms.shown - s) + s + shownEmission(c), 0.0f, 1.0f);
+    }
+    m.evaluations.push_back(std::move(e));
+}
+
 ModeProbe evaluateMode(const TriangleContext& c, ShadingMode mode) {
     ModeProbe m;
     m.mode = mode;
-    const glm::vec3& w = c.barycentric;
     // Phong evaluates with the sampled C; flat and Gouraud with the base colour (see TriangleContext).
     const Material& lit = mode != ShadingMode::Phong && c.baseMaterial ? *c.baseMaterial : c.material;
     switch (mode) {
-    case ShadingMode::Phong: {
-        // phong.vert passes normalWorldFromObject * normal unnormalised; phong.frag normalises the
-        // interpolated vector.
-        const glm::vec3 posObject = w.x * c.posObject[0] + w.y * c.posObject[1] + w.z * c.posObject[2];
-        const glm::vec3 nrm = w.x * (c.normalWorldFromObject * c.nrmObject[0]) +
-                              w.y * (c.normalWorldFromObject * c.nrmObject[1]) +
-                              w.z * (c.normalWorldFromObject * c.nrmObject[2]);
-        // phong.vert passes the tangent to world space; the rasteriser interpolates all four components.
-        const glm::vec4 tan = w.x * tangentToWorld(c.worldFromObject, c.tanObject[0]) +
-                              w.y * tangentToWorld(c.worldFromObject, c.tanObject[1]) +
-                              w.z * tangentToWorld(c.worldFromObject, c.tanObject[2]);
-        m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), c.facing * glm::normalize(nrm), tan));
-        m.color = m.evaluations[0].terms.total;
-        break;
-    }
-    case ShadingMode::Gouraud: {
-        // Textured: gouraud.vert's two parts, unclamped, interpolated; combined in gouraud.frag.
-        glm::vec3 termsOfC(0.0f), specular(0.0f);
-        for (int k = 0; k < 3; ++k) {
-            ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, c.posObject[k]),
-                                         c.facing * glm::normalize(c.normalWorldFromObject * c.nrmObject[k]),
-                                         tangentToWorld(c.worldFromObject, c.tanObject[k]));
-            e.site = ProbeEvaluation::Site::Vertex;
-            e.vertex = c.vertex[k];
-            m.color += w[k] * e.terms.total;
-            const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
-            termsOfC += w[k] * (e.terms.shown - s);
-            specular += w[k] * s;
-            m.evaluations.push_back(std::move(e));
-        }
-        if (c.baseMaterial) m.color = glm::clamp(c.texel * termsOfC + specular + shownEmission(c), 0.0f, 1.0f);
-        break;
-    }
-    case ShadingMode::Flat: {
-        // As makeFlatMesh: the face normal of the corners in index order and the object-space centroid,
-        // both taken to world space by flat.vert.
-        const glm::vec3 centroid = (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f;
-        const glm::vec3 face = faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
-        const glm::vec4 tan = faceTangent(c.tanObject[0], c.tanObject[1], c.tanObject[2], face);
-        ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid),
-                                     c.facing * glm::normalize(c.normalWorldFromObject * face), tangentToWorld(c.worldFromObject, tan));
-        e.site = ProbeEvaluation::Site::Centroid;
-        m.color = e.terms.total;
-        if (c.baseMaterial) {
-            const glm::vec3 s = shownSpecular(e.terms, c.scene.show);
-            m.color = glm::clamp(c.texel * (e.terms.shown - s) + s + shownEmission(c), 0.0f, 1.0f);
-        }
-        m.evaluations.push_back(std::move(e));
-        break;
-    }
+    case ShadingMode::Phong: evaluatePhong(c, lit, m); break;
+    case ShadingMode::Gouraud: evaluateGouraud(c, lit, m); break;
+    case ShadingMode::Flat: evaluateFlat(c, lit, m); break;
     }
     m.output = m.color;
     if (c.scene.outputEncoding == OutputEncoding::Srgb)
@@ -207,6 +211,34 @@ Material drawnMaterial(const Scene& scene, const Mesh& mesh, std::size_t object,
     if (part && part->hasBaseColor) m.color = part->baseColor;
     if (part) m.emissive = part->emissive;
     return m;
+}
+
+// Where C varies, the sampled C: the base colour times the texture and the vertex colour at the point
+// (object_color.glsl), with the coordinates and colours interpolated by the barycentrics `w`; E times
+// the emissive texture there. Flat and Gouraud then evaluate with `baseMaterial` (E left out, added per
+// fragment) and multiply by the texel.
+void sampleColor(const Mesh& mesh, const MeshPart* part, const glm::vec3& w, ProbeResult& r, TriangleContext& c,
+                 Material& baseMaterial) {
+    r.textured = true;
+    r.texcoord = w.x * mesh.texcoords[c.vertex[0]] + w.y * mesh.texcoords[c.vertex[1]] + w.z * mesh.texcoords[c.vertex[2]];
+    const glm::vec4 color = w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
+    glm::vec4 texel = color;
+    if (part && part->texture >= 0 && std::size_t(part->texture) < mesh.textures.size())
+        texel *= sampleTextureRgba(*mesh.textures[std::size_t(part->texture)], r.texcoord);
+    r.texel = glm::vec3(texel);
+    r.alpha *= texel.a;
+    r.baseColor = baseMaterial.color;
+    r.material.color = baseMaterial.color * r.texel;
+    // E varies with the emissive texture: Phong's sum has it at the point, flat and Gouraud add it per fragment.
+    if (part && part->emissiveTexture >= 0 && mesh.hasEmissiveTexture() && std::size_t(part->emissiveTexture) < mesh.textures.size()) {
+        const glm::vec2 uv = w.x * mesh.emissiveTexcoords[c.vertex[0]] + w.y * mesh.emissiveTexcoords[c.vertex[1]] +
+                             w.z * mesh.emissiveTexcoords[c.vertex[2]];
+        r.material.emissive *= sampleTexture(*mesh.textures[std::size_t(part->emissiveTexture)], uv);
+    }
+    c.emission = r.material.emissive;
+    baseMaterial.emissive = glm::vec3(0.0f);
+    c.baseMaterial = &baseMaterial;
+    c.texel = r.texel;
 }
 
 }  // namespace
@@ -253,31 +285,9 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
     r.doubleSided = triangles && triangles->doubleSided;
     r.backFace = r.doubleSided && seenFromBehind(c, scene.camera.eye);
     c.facing = r.backFace ? -1.0f : 1.0f;
-    // Where C varies, the sampled C: the base colour times the texture and the vertex colour at the
-    // point (object_color.glsl), with the coordinates and colours interpolated by the barycentrics.
-    if (mesh.variesColor() && scene.textures && !scene.objects[anchor.object].material.colorSet) {
-        const glm::vec3& w = anchor.barycentric;
-        r.textured = true;
-        r.texcoord = w.x * mesh.texcoords[c.vertex[0]] + w.y * mesh.texcoords[c.vertex[1]] + w.z * mesh.texcoords[c.vertex[2]];
-        const glm::vec4 color = w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
-        glm::vec4 texel = color;
-        if (part && part->texture >= 0 && std::size_t(part->texture) < mesh.textures.size())
-            texel *= sampleTextureRgba(*mesh.textures[std::size_t(part->texture)], r.texcoord);
-        r.texel = glm::vec3(texel);
-        r.alpha *= texel.a;
-        r.baseColor = baseMaterial.color;
-        r.material.color = baseMaterial.color * r.texel;
-        // E varies with the emissive texture: Phong's sum has it at the point, flat and Gouraud add it per fragment.
-        if (part && part->emissiveTexture >= 0 && mesh.hasEmissiveTexture() && std::size_t(part->emissiveTexture) < mesh.textures.size()) {
-            const glm::vec2 uv = w.x * mesh.emissiveTexcoords[c.vertex[0]] + w.y * mesh.emissiveTexcoords[c.vertex[1]] +
-                                 w.z * mesh.emissiveTexcoords[c.vertex[2]];
-            r.material.emissive *= sampleTexture(*mesh.textures[std::size_t(part->emissiveTexture)], uv);
-        }
-        c.emission = r.material.emissive;
-        baseMaterial.emissive = glm::vec3(0.0f);
-        c.baseMaterial = &baseMaterial;
-        c.texel = r.texel;
-    }
+    // Where C varies, the sampled C (and E): flat and Gouraud evaluate with the base material.
+    if (mesh.variesColor() && scene.textures && !scene.objects[anchor.object].material.colorSet)
+        sampleColor(mesh, part, anchor.barycentric, r, c, baseMaterial);
     r.posWorld = toWorld(world, anchor.barycentric.x * c.posObject[0] + anchor.barycentric.y * c.posObject[1] +
                                     anchor.barycentric.z * c.posObject[2]);
     r.miss = false;
