@@ -67,6 +67,11 @@ std::vector<bool> doubleSidedTriangles(const Mesh& mesh) {
 }  // namespace
 
 SceneRayCaster::SceneRayCaster(const Scene& scene, const SceneGeometry& geometry) {
+    addTriangles(scene, geometry);
+    if (!triangles_.empty()) buildTree();
+}
+
+void SceneRayCaster::addTriangles(const Scene& scene, const SceneGeometry& geometry) {
     const std::size_t objects = std::min(scene.objects.size(), geometry.meshes.size());
     for (std::size_t o = 0; o < objects; ++o) {
         const Mesh& mesh = geometry.meshes[o];
@@ -82,8 +87,9 @@ SceneRayCaster::SceneRayCaster(const Scene& scene, const SceneGeometry& geometry
             triangles_.push_back({a, b - a, c - a, std::uint32_t(o), std::uint32_t(t), frontSign, bool(doubleSided[t])});
         }
     }
-    if (triangles_.empty()) return;
+}
 
+void SceneRayCaster::buildTree() {
     // Top-down build: split each node's triangles at the median centroid along the longest axis of the
     // centroids' box. Median splits keep the tree balanced (depth ~ log2(n / 4)) at any mesh density.
     const std::size_t n = triangles_.size();

@@ -62,6 +62,9 @@ private:
     };
     template <typename Visit>
     void traverse(const glm::vec3& origin, const glm::vec3& direction, float tMin, float& tMax, Visit&& visit) const;
+    // The constructor's steps: every object's triangles in world space, then the tree over them.
+    void addTriangles(const Scene& scene, const SceneGeometry& geometry);
+    void buildTree();
 
     std::vector<Triangle> triangles_;  // reordered so each leaf's triangles are contiguous
     std::vector<Node> nodes_;          // nodes_[0] is the root
