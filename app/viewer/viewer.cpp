@@ -72,7 +72,7 @@ constexpr double kPassBudgetMs = 90.0;
 // Moving frames on a software rasterizer (Viewer::drawView): their own time aimed at, for 30 FPS while a
 // lecturer drags, and the smallest share of the view's size per axis they may be drawn at.
 constexpr double kMovingBudgetMs = 30.0;
-constexpr float kMinMovingScale = 0.35f;
+constexpr float kMinMovingScale = 0.25f;
 int adaptStride(int stride, int samples, double lastPassMs) {
     if (stride <= 0) {
         stride = 1;
@@ -417,15 +417,18 @@ Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::v
     antiAliasThisFrame_ =
         msaaSamples_ > 1 && (!softwareGl_ || (still && !mouseDown && !playing_) || captureView || last);
     // A moving frame on a software rasterizer: smaller while the last moving frames took longer than
-    // kMovingBudgetMs, larger again while they took under half of it (never for files or a scripted run).
+    // kMovingBudgetMs (at most halved a frame: one slow frame, e.g. the first that compiles the moving
+    // frames' programs, does not drop it to the floor), larger again while they took under half of it
+    // (never for files or a scripted run).
     const bool moving = softwareGl_ && options_.frames == 0 && !captureView && !last && (mouseDown || playing_);
     if (moving && movingLastFrame_) {
         if (frameMs_ > kMovingBudgetMs)
-            movingScale_ = std::max(kMinMovingScale, movingScale_ * float(std::sqrt(kMovingBudgetMs / frameMs_)) * 0.95f);
+            movingScale_ = std::max(kMinMovingScale, movingScale_ * std::max(float(std::sqrt(kMovingBudgetMs / frameMs_)), 0.5f) * 0.95f);
         else if (frameMs_ < 0.5 * kMovingBudgetMs)
             movingScale_ = std::min(1.0f, movingScale_ * 1.1f);
     }
     movingLastFrame_ = moving;
+    renderer_->setMovingFrames(moving);  // and fewer shadow samples: one lookup per light (renderScene: area lights)
     reducedThisFrame_ = moving && movingScale_ < 0.98f;
     status_.movingScale = reducedThisFrame_ ? movingScale_ : 1.0f;
     const Image view = renderView(l, captureView, last, arrows);
@@ -968,19 +971,24 @@ void Viewer::renderScene(const RenderTarget& view, bool complete) {
         return;
     }
     // Everything the image depends on; a change restarts the sum.
-    const std::array<std::uint64_t, 6> from = {document_.revision(), document_.geometryRevision(), rendererGeneration_,
-                                               std::uint64_t(view.width), std::uint64_t(view.height), animationStep_};
+    // A moving frame on a software rasterizer (drawView) restarts it too, and draws one sample of each
+    // area light (the largest stride; its shadows take one lookup): the still view sums them all again.
+    const bool moving = movingLastFrame_;
+    const std::array<std::uint64_t, 7> from = {document_.revision(), document_.geometryRevision(), rendererGeneration_,
+                                               std::uint64_t(view.width), std::uint64_t(view.height), animationStep_,
+                                               std::uint64_t(moving)};
     const bool restart = from != progressiveFrom_;
-    if (restart) {
-        progressiveFrom_ = from;
+    if (restart && !moving) {
         progressiveStride_ = options_.progressiveStride > 0 ? options_.progressiveStride
                                                              : adaptStride(progressiveStride_, samples, lastPassMs_);
     }
-    // The frame's time measures a pass only if it drew exactly one (a complete image is only redrawn).
-    passDrawnLastFrame_ = restart || !progressiveComplete_;
-    Renderer::ProgressiveStatus status = renderer_->renderProgressive(scene, view, progressiveStride_, restart);
+    progressiveFrom_ = from;
+    const int stride = moving ? kAreaSamplesPerSideRange.hi : progressiveStride_;
+    // The frame's time measures a still pass only if it drew exactly one (a complete image is only redrawn).
+    passDrawnLastFrame_ = !moving && (restart || !progressiveComplete_);
+    Renderer::ProgressiveStatus status = renderer_->renderProgressive(scene, view, stride, restart);
     if (complete && !status.complete()) {
-        while (!status.complete()) status = renderer_->renderProgressive(scene, view, progressiveStride_, false);
+        while (!status.complete()) status = renderer_->renderProgressive(scene, view, stride, false);
         passDrawnLastFrame_ = false;
     }
     progressiveComplete_ = status.complete();

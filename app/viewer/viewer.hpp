@@ -198,9 +198,9 @@ private:
     bool antiAliasThisFrame_ = false;
     bool screenshotRequested_ = false;
     // Progressive sampling: what the sum so far was drawn from (the scene's and the geometry's
-    // revisions, the renderer, the view's size; none while the scene needs no sampling), the stride,
-    // and the last pass's time.
-    std::optional<std::array<std::uint64_t, 6>> progressiveFrom_;
+    // revisions, the renderer, the view's size, a moving frame or not; none while the scene needs no
+    // sampling), the stride, and the last pass's time.
+    std::optional<std::array<std::uint64_t, 7>> progressiveFrom_;
     // --animate: whether it plays, its clock, and the scene it makes of the document's for this frame.
     bool playing_ = false;
     double animationSeconds_ = 0.0;
