@@ -405,7 +405,7 @@ void sectionOverlays(ViewSettings& s) {
     ImGui::Checkbox("light labels (L)", &s.lightLabels);
     ImGui::SameLine();
     overlay(Overlay::LightMarkers);
-    ImGui::Checkbox("formula over the view (E)", &s.showFormula);
+    ImGui::Checkbox("formula above the view (E)", &s.showFormula);
     ImGui::Checkbox("pane labels", &s.paneLabels);
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);

@@ -329,16 +329,8 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
         settings_.lightLabels ? drawLightLabels(animatedScene_ ? *animatedScene_ : document_.scene(), l.view, l.scale,
                                                 settings_.selectedLight, labelsBottom, modelSpheres())
                               : std::vector<UiRect>{};
-    UiRect messageArea = l.view;  // above the formula when it is shown
-    if (settings_.showFormula) {  // the values drawn this frame: an animated k_e moves under its symbol
-        const Scene& scene = animatedScene_ ? *animatedScene_ : document_.scene();
-        const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
-        const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
-        messageArea.height = drawFormulaOverView(scene, material, probe_ ? &*probe_ : nullptr, l.view, l.scale,
-                                                  imgui_.formulaFont(), imgui_.formulaFont()
-                                                                            ? imgui_.formulaFont()->FontSize / kFormulaSize
-                                                                            : 0.0f) - l.view.y;
-    }
+    UiRect messageArea = l.view;
+    if (l.formula.height > 0.0f) formulaBand(l, l.formula.width, true);
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
                                                              std::to_string(playlist_.size())
@@ -471,6 +463,18 @@ void Viewer::recordFrameTime(std::chrono::steady_clock::time_point start, bool l
     }
 }
 
+// The values drawn this frame (an animated k_e moves under its symbol), the selected object's
+// material, the probe's where it hits.
+float Viewer::formulaBand(const FrameLayout& l, float viewWidth, bool draw) const {
+    const Scene& scene = animatedScene_ ? *animatedScene_ : document_.scene();
+    const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
+    const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
+    ImFont* font = imgui_.formulaFont();
+    const FormulaBandStyle style{l.scale, font, font ? font->FontSize / kFormulaSize : 0.0f};
+    if (draw) drawFormulaBand(scene, material, probe_ ? &*probe_ : nullptr, l.formula, style);
+    return formulaBandHeight(scene, material, probe_ ? &*probe_ : nullptr, viewWidth, style);
+}
+
 float Viewer::windowTextSize() const {
     int windowWidth = 0, windowHeight = 0;
     window_.windowSize(windowWidth, windowHeight);
@@ -521,10 +525,16 @@ Viewer::FrameLayout Viewer::layout() const {
         }
     }
     const float captionUnits = l.captionText.height;
-    const int bandPixels = std::min(int(std::lround((stripUnits + captionUnits) * l.scale)), l.framebufferHeight);
+    // E's formula in a band of its own below the caption, never over the model; at most a third of the window.
+    const float formulaUnits = settings_.showFormula
+                                   ? std::min(formulaBand(l, viewUnits, false), std::floor(float(windowHeight) / 3.0f))
+                                   : 0.0f;
+    const int bandPixels =
+        std::min(int(std::lround((stripUnits + captionUnits + formulaUnits) * l.scale)), l.framebufferHeight);
     l.viewHeight = l.framebufferHeight - bandPixels;
     l.strip = UiRect{0.0f, 0.0f, viewUnits, stripUnits};
     l.caption = UiRect{0.0f, stripUnits, viewUnits, captionUnits};
+    l.formula = UiRect{0.0f, stripUnits + captionUnits, viewUnits, formulaUnits};
     const float top = float(bandPixels) / l.scale;
     l.view = UiRect{0.0f, top, viewUnits, float(windowHeight) - top};
     l.panel = UiRect{viewUnits, 0.0f, float(panelPixels) / l.scale, float(windowHeight)};
