@@ -17,7 +17,9 @@ const int c_shadowLayer[] = int[](SL_SHADOW_LAYERS);  // light l's first layer i
 
 // Shadow-map lookups compare depths in hardware (GL_COMPARE_REF_TO_TEXTURE, bilinear: 2 x 2 texels
 // per lookup); percentage-closer filtering averages (2 SL_SHADOW_PCF + 1)^2 of them a texel apart.
-// Returns the visible fraction in [0, 1].
+// SL_SHADOW_PCF is the scene's radius ("shadow_settings": "pcf"); the viewer's moving frames on a
+// software rasterizer (dragging, an animation) are compiled with 0, one lookup, and the still view
+// with the scene's again (Renderer::setMovingFrames). Returns the visible fraction in [0, 1].
 float shadowLookup(vec2 st, float layer, float depth, float texel) {
     float sum = 0.0;
     for (int y = -SL_SHADOW_PCF; y <= SL_SHADOW_PCF; ++y)

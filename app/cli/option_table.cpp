@@ -169,7 +169,7 @@ const OptionSpec kOptions[] = {
      "the lecture's formula over the bottom of the view, for the scene's reflection model, normalisation and "
      "Fresnel: the term `--show` isolates highlighted, the others dimmed; k_a, k_d, k_s, k_e's values under their "
      "symbols; with `--probe`, each term's value at that pixel; over each pane, where its mode evaluates the "
-     "formula. The viewer starts with it on (key E); with `--output` it is drawn into the PNG",
+     "formula. The viewer starts with it on (key E), in a band above the view; with `--output` it is drawn into the PNG",
      setTrue<&Options::formula>},
     // Issue 30, the intersection diagram.
     {"--intersection", "", "", G::General, kNoBounds, nullptr, "",

@@ -102,6 +102,9 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");
     if (variant.anisotropic) defines.push_back("SL_ANISOTROPY 1");
     if (variant.environment != SL_ENVIRONMENT_NONE) defines.push_back("SL_ENVIRONMENT " + std::to_string(variant.environment));
+    if (variant.singleShadowTap)
+        for (std::string& d : defines)
+            if (d.rfind("SL_SHADOW_PCF ", 0) == 0) d = "SL_SHADOW_PCF 0";
     // flat.vert + flat.frag, …; the speed variants are programs of their own (shaders/flat_packed.vert,
     // shaders/phong_interpolated.vert and .frag).
     const bool interpolated = variant.interpolatedInputs && mode == ShadingMode::Phong && !variant.anisotropic &&

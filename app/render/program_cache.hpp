@@ -28,6 +28,9 @@ public:
         bool anisotropic = false;
         // SL_ENVIRONMENT: mirror and glass (k_r or k_t) in a scene with an environment: SL_ENVIRONMENT_*.
         int environment = SL_ENVIRONMENT_NONE;
+        // A moving frame's shadows (Renderer::setMovingFrames): one shadow-map lookup per light, SL_SHADOW_PCF
+        // compiled as 0 whatever the scene's radius (shaders/shadows.glsl, shadowLookup).
+        bool singleShadowTap = false;
     };
     // `packedFlatVertices`: flat shading's vertex stage is flat_packed.vert (RendererOptions).
     ProgramCache(ShaderLibrary shaders, bool packedFlatVertices);

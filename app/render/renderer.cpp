@@ -34,7 +34,7 @@ void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
 unsigned variantKey(const ProgramCache::Variant& v) {
     return unsigned(v.accumulate) | unsigned(v.interpolatedInputs) << 1 | unsigned(v.textured) << 2 |
            unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 | unsigned(v.emissiveTexture) << 7 |
-           unsigned(v.doubleSided) << 8 | unsigned(v.anisotropic) << 9 | unsigned(v.environment) << 10;
+           unsigned(v.doubleSided) << 8 | unsigned(v.anisotropic) << 9 | unsigned(v.environment) << 10 | unsigned(v.singleShadowTap) << 13;
 }
 
 void bindTexture(int unit, GLuint texture) {
@@ -401,6 +401,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
         v.emissiveTexture = draw.emissiveTexture >= 0;
         v.anisotropic = anisotropicObject(scene, draw.object);
         v.environment = environmentObject(scene, draw.object);
+        v.singleShadowTap = movingFrames_;
         GLuint& variant = programs[variantKey(v)];
         if (!variant) variant = programs_.get(pane.mode, scene, v);
         if (variant != current) glUseProgram(current = variant);

@@ -62,6 +62,12 @@ public:
     // interpolated-inputs variant included (render() otherwise compiles each on first use). Throws
     // ShaderError.
     void preparePrograms(const Scene& scene);
+    // Moving frames (the viewer on a software rasterizer while the view is dragged, a slider held or
+    // an animation plays; issue 31): while on, the shadows of point, spot and directional lights take
+    // one shadow-map lookup per light (SL_SHADOW_PCF compiled as 0, its own programs) instead of the
+    // scene's (2 pcf + 1)^2, about half of a frame with three shadowed point lights on llvmpipe.
+    // The shadow maps are the scene's either way; off (the default) draws the scene as it is.
+    void setMovingFrames(bool on) { movingFrames_ = on; }
 
     static constexpr float kInputsMinPixelsPerTriangle = 16.0f;  // RendererOptions::PhongInputs::Auto
     // Whether `object`'s Phong draws in `pane` take interpolated inputs (always false for flat and
@@ -122,6 +128,7 @@ private:
     DifferencePass difference_;                 // layout diff's third pane, after the others
     EnvironmentPass environment_;               // the environment's texture and background
     ProgressivePass progressive_;               // renderProgressive()'s sum and its resolve
+    bool movingFrames_ = false;                 // setMovingFrames()
 };
 
 }  // namespace shadelab

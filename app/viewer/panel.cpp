@@ -405,7 +405,7 @@ void sectionOverlays(ViewSettings& s) {
     ImGui::Checkbox("light labels (L)", &s.lightLabels);
     ImGui::SameLine();
     overlay(Overlay::LightMarkers);
-    ImGui::Checkbox("formula over the view (E)", &s.showFormula);
+    ImGui::Checkbox("formula above the view (E)", &s.showFormula);
     ImGui::Checkbox("pane labels", &s.paneLabels);
     ImGui::SameLine();
     ImGui::Checkbox("frame time", &s.showHud);
@@ -658,21 +658,31 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     float bottom = view.y;
     if (fontSize <= 0.0f) fontSize = ImGui::GetFontSize() * 1.4f;  // read from the back of a lecture hall
+    const std::string difference = "|" + shadingName(scene.diff.a) + " \u2212 " + shadingName(scene.diff.b) + "|",
+                      factor = "\u00d7 " + std::to_string(int(std::lround(scene.diff.factor)));
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
+    const auto textWidth = [](const std::string& s, float size) { return ImGui::GetFont()->CalcTextSizeA(size, 1e9f, 0.0f, s.c_str()).x; };
+    // One line where it fits the pane, else the mode above the lobe (the difference above its factor).
+    const auto labelLines = [&](const Pane& pane, float size, float width) -> std::vector<std::string> {
+        const std::string first = pane.difference ? difference : shadingName(pane.mode) + " shading";
+        const std::string second = pane.difference ? factor : lobeName(scene.reflection);
+        const std::string one = first + (pane.difference ? " " : " \u00b7 ") + second;
+        if (textWidth(one, size) + 4 * 0.3f * size <= width) return {one};
+        return {first, second};
+    };
+    // One size for every pane: where a pane is narrower than its label's longest line (compare at a 2x
+    // content scale: "Gouraud shading" in a third of the view), all get smaller, down to 60%, not cut.
+    float fit = 1.0f;
+    for (const Pane& pane : panes) {
+        const float width = float(pane.width) / framebufferScale;
+        for (const std::string& line : labelLines(pane, fontSize, width))
+            fit = std::min(fit, (width - 4 * 0.3f * fontSize) / std::max(textWidth(line, fontSize), 1.0f));
+    }
+    fontSize *= std::clamp(fit, 0.6f, 1.0f);
     const float pad = fontSize * 0.3f;
-    const std::string diffLabel = "|" + shadingName(scene.diff.a) + " \u2212 " + shadingName(scene.diff.b) + "| \u00d7 " +
-                                  std::to_string(int(std::lround(scene.diff.factor)));
-    for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
+    for (const Pane& pane : panes) {
         const float x0 = view.x + float(pane.x) / framebufferScale, width = float(pane.width) / framebufferScale;
-        // One line where it fits the pane, else the mode above the lobe.
-        std::vector<std::string> lines;
-        if (pane.difference) {
-            lines = {diffLabel};
-        } else {
-            const std::string mode = shadingName(pane.mode) + " shading", lobe = lobeName(scene.reflection);
-            const std::string one = mode + " \u00b7 " + lobe;
-            if (ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, one.c_str()).x + 4 * pad <= width) lines = {one};
-            else lines = {mode, lobe};
-        }
+        const std::vector<std::string> lines = labelLines(pane, fontSize, width);
         float y = view.y + float(pane.y) / framebufferScale + pad * 2;
         // Inside the pane, never over the next pane or the panel (a narrow pane cuts a long label).
         const ImVec2 lo(x0, view.y + float(pane.y) / framebufferScale), hi(x0 + width, view.y + view.height);

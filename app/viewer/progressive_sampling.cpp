@@ -23,15 +23,15 @@ void ProgressiveSampling::frameBegins(Clock::time_point now) {
 
 void ProgressiveSampling::off() { from_.reset(); }
 
-ProgressiveSampling::Pass ProgressiveSampling::begin(std::uint64_t viewRevision, int samples) {
+ProgressiveSampling::Pass ProgressiveSampling::begin(std::uint64_t viewRevision, int samples, bool moving) {
     const bool restart = from_ != viewRevision;
-    if (restart) {
-        from_ = viewRevision;
-        stride_ = fixedStride_ > 0 ? fixedStride_ : adaptStride(stride_, samples, lastPassMs_);
-    }
-    // The frame's time measures a pass only if it drew exactly one (a complete image is only redrawn).
-    passDrawnLastFrame_ = restart || !complete_;
-    return Pass{restart, stride_};
+    from_ = viewRevision;
+    // A moving frame (ViewQuality) draws one sample of each area light, the largest stride, and keeps the
+    // still view's stride as it was; the still view after it restarts (its revision differs) and sums them all.
+    if (restart && !moving) stride_ = fixedStride_ > 0 ? fixedStride_ : adaptStride(stride_, samples, lastPassMs_);
+    // The frame's time measures a still pass only if it drew exactly one (a complete image is only redrawn).
+    passDrawnLastFrame_ = !moving && (restart || !complete_);
+    return Pass{restart, moving ? kAreaSamplesPerSideRange.hi : stride_};
 }
 
 void ProgressiveSampling::drawn(bool complete, bool finishedAtOnce) {

@@ -30,12 +30,12 @@ public:
     // The scene needs no sampling (no area light with more than one sample): no sum is kept.
     void off();
     // This frame's pass of a scene whose largest area light has `samples` samples, drawn from the view
-    // at `viewRevision`: whether the sum restarts, and the stride.
+    // at `viewRevision`: whether the sum restarts, and the stride; `moving`: a moving frame's one sample.
     struct Pass {
         bool restart = false;
         int stride = 1;
     };
-    Pass begin(std::uint64_t viewRevision, int samples);
+    Pass begin(std::uint64_t viewRevision, int samples, bool moving = false);
     // What the frame drew: the sum is `complete` now; `finishedAtOnce` when the frame drew every
     // remaining pass (a screenshot, the last frame), so its time measures no single pass.
     void drawn(bool complete, bool finishedAtOnce);

@@ -13,7 +13,7 @@ public:
     // The moving frames' own time aimed at (30 FPS while a lecturer drags), and the smallest share of
     // the view's size per axis they may be drawn at.
     static constexpr double kMovingBudgetMs = 30.0;
-    static constexpr float kMinMovingScale = 0.35f;
+    static constexpr float kMinMovingScale = 0.25f;
 
     ViewQuality(int msaaSamples, bool softwareGl) : samples_(msaaSamples), softwareGl_(softwareGl) {}
 
@@ -37,6 +37,9 @@ public:
 
     bool antiAliasThisFrame() const { return antiAliasThisFrame_; }
     bool reducedThisFrame() const { return reducedThisFrame_; }
+    // A moving frame on a software rasterizer (reduced or not): the renderer takes fewer shadow samples
+    // (one lookup per light, one sample per area light) and a still view takes them all again.
+    bool movingThisFrame() const { return movingLastFrame_; }
     float movingScale() const { return movingScale_; }
     // The view is not yet as a still one should be: one more frame draws it anti-aliased at full size.
     bool wantsStillFrame() const { return (samples_ > 1 && !antiAliased_) || reducedThisFrame_; }

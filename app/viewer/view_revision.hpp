@@ -15,11 +15,12 @@ struct ViewInputs {
     std::uint64_t renderer = 0;   // the renderer's generation: F5 built new programs
     std::uint64_t animation = 0;  // AnimationPlayback::step(): the frames a playing animation moved the scene
     std::uint64_t width = 0, height = 0;  // the render target's pixels (a resize, a reduced moving frame)
+    std::uint64_t moving = 0;     // 1: a moving frame (ViewQuality), drawn with fewer shadow samples
 
-    auto tied() const { return std::tie(scene, geometry, renderer, animation, width, height); }
+    auto tied() const { return std::tie(scene, geometry, renderer, animation, width, height, moving); }
 };
 // A new input is a new field: it must go into tied() too, or changing it would not change the view.
-static_assert(sizeof(ViewInputs) == 6 * sizeof(std::uint64_t), "a ViewInputs field missing from tied()?");
+static_assert(sizeof(ViewInputs) == 7 * sizeof(std::uint64_t), "a ViewInputs field missing from tied()?");
 
 class ViewRevision {
 public:

@@ -303,16 +303,8 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
                                                 settings_.selectedLight, labelsBottom,
                                                 modelSpheres_.of(document_.scene(), document_.geometry()))
                               : std::vector<UiRect>{};
-    UiRect messageArea = l.view;  // above the formula when it is shown
-    if (settings_.showFormula) {  // the values drawn this frame: an animated k_e moves under its symbol
-        const Scene& scene = shownScene();
-        const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
-        const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
-        messageArea.height = drawFormulaOverView(scene, material, probe_.result(), l.view, l.scale,
-                                                  imgui_.formulaFont(), imgui_.formulaFont()
-                                                                            ? imgui_.formulaFont()->FontSize / kFormulaSize
-                                                                            : 0.0f) - l.view.y;
-    }
+    UiRect messageArea = l.view;
+    if (l.formula.height > 0.0f) formulaBand(l, l.formula.width, true);
     if (l.captionText.height > 0.0f) {
         const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
                                                              std::to_string(playlist_.size())
@@ -393,6 +385,7 @@ Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::v
     frame.scripted = options_.frames > 0;
     frame.lastFrameMs = frameMs_;
     quality_.plan(frame);
+    renderer_->setMovingFrames(quality_.movingThisFrame());  // one shadow lookup per light (renderScene: area lights)
     status_.movingScale = quality_.reducedThisFrame() ? quality_.movingScale() : 1.0f;
     const Image view = renderView(l, frame.capture, last, arrows);
     quality_.drawn();
@@ -411,6 +404,18 @@ void Viewer::recordFrameTime(std::chrono::steady_clock::time_point start, bool l
         std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
         std::cerr << "shadelab: " << frameTimes_.size() << " frames, median " << sorted[sorted.size() / 2] << " ms\n";
     }
+}
+
+// The values drawn this frame (an animated k_e moves under its symbol), the selected object's
+// material, the probe's where it hits.
+float Viewer::formulaBand(const FrameLayout& l, float viewWidth, bool draw) const {
+    const Scene& scene = shownScene();
+    const auto selected = std::size_t(std::max(settings_.selectedObject, 0));
+    const Material material = selected < scene.objects.size() ? scene.objects[selected].material : Material{};
+    ImFont* font = imgui_.formulaFont();
+    const FormulaBandStyle style{l.scale, font, font ? font->FontSize / kFormulaSize : 0.0f};
+    if (draw) drawFormulaBand(scene, material, probe_.result(), l.formula, style);
+    return formulaBandHeight(scene, material, probe_.result(), viewWidth, style);
 }
 
 float Viewer::windowTextSize() const {
@@ -463,10 +468,16 @@ Viewer::FrameLayout Viewer::layout() const {
         }
     }
     const float captionUnits = l.captionText.height;
-    const int bandPixels = std::min(int(std::lround((stripUnits + captionUnits) * l.scale)), l.framebufferHeight);
+    // E's formula in a band of its own below the caption, never over the model; at most a third of the window.
+    const float formulaUnits = settings_.showFormula
+                                   ? std::min(formulaBand(l, viewUnits, false), std::floor(float(windowHeight) / 3.0f))
+                                   : 0.0f;
+    const int bandPixels =
+        std::min(int(std::lround((stripUnits + captionUnits + formulaUnits) * l.scale)), l.framebufferHeight);
     l.viewHeight = l.framebufferHeight - bandPixels;
     l.strip = UiRect{0.0f, 0.0f, viewUnits, stripUnits};
     l.caption = UiRect{0.0f, stripUnits, viewUnits, captionUnits};
+    l.formula = UiRect{0.0f, stripUnits + captionUnits, viewUnits, formulaUnits};
     const float top = float(bandPixels) / l.scale;
     l.view = UiRect{0.0f, top, viewUnits, float(windowHeight) - top};
     l.panel = UiRect{viewUnits, 0.0f, float(panelPixels) / l.scale, float(windowHeight)};
@@ -845,6 +856,7 @@ ViewInputs Viewer::viewInputs(const RenderTarget& target) const {
     in.renderer = rendererGeneration_;
     in.animation = animation_.step();
     in.width = std::uint64_t(target.width), in.height = std::uint64_t(target.height);
+    in.moving = quality_.movingThisFrame() ? 1 : 0;
     return in;
 }
 
@@ -863,7 +875,7 @@ void Viewer::renderScene(const RenderTarget& view, bool complete) {
         renderer_->render(scene, view);
         return;
     }
-    const ProgressiveSampling::Pass pass = progressive_.begin(viewRevision_.of(viewInputs(view)), samples);
+    const ProgressiveSampling::Pass pass = progressive_.begin(viewRevision_.of(viewInputs(view)), samples, quality_.movingThisFrame());
     Renderer::ProgressiveStatus status = renderer_->renderProgressive(scene, view, pass.stride, pass.restart);
     const bool finishNow = complete && !status.complete();
     while (!status.complete() && finishNow) status = renderer_->renderProgressive(scene, view, pass.stride, false);

@@ -100,13 +100,15 @@ private:
         int framebufferWidth = 0, framebufferHeight = 0;
         int viewWidth = 0, viewHeight = 0;  // pixels; the 3D view is the bottom-left viewWidth x viewHeight
         float scale = 1.0f;                 // framebuffer pixels per ImGui unit
-        UiRect strip, caption, view, panel; // ImGui units
+        UiRect strip, caption, formula, view, panel;  // ImGui units; formula: E's band (0 high: none)
         CaptionLayout captionText;
         // The text over the view (ImGui units): the window-height size (0 with the presentation
         // setting off) and the size drawn, never below the panel's text.
         float windowText = 0.0f, viewText = 0.0f;
     };
     float windowTextSize() const;  // FrameLayout::windowText, before the frame's layout
+    // The formula's band (FrameLayout::formula) for a view `viewWidth` wide: its height, or draws it.
+    float formulaBand(const FrameLayout& layout, float viewWidth, bool draw) const;
 
     bool frame(bool last);
     // frame()'s steps.

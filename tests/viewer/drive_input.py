@@ -8,7 +8,7 @@ Exits 77 (skipped) when libX11/libXtst cannot be loaded (Debian: libx11-6, libxt
 Mouse deltas and wheel steps are summed by ImGui
 over frames, so the camera's end position does not depend on the frame rate.
 """
-import glob, json, math, os, sys
+import glob, json, math, os, sys, time
 
 from xinput import quit_viewer, start_viewer
 
@@ -54,6 +54,36 @@ proc2, display = start_viewer([shadelab, "--size", "400x300", "--layout", "compa
 display.move(200, 150, 0.3)
 display.key("d")
 display.key("d")
+
+
+def scroll_grab_top():
+    """The panel's scrollbar grab: its top row on the screen (ImGui's grey in the window's last columns)."""
+    width, height, rows = display.grab(868, 24, 12, 300)
+    ys = [y for y in range(height) if sum(1 for p in rows[y] if 70 <= p[0] <= 140 and abs(p[0] - p[2]) <= 8) >= 3]
+    return ys[0] if ys else None
+
+
+def message_pixels():
+    """White text in the band at the view's bottom, where the status message is drawn."""
+    _, _, rows = display.grab(20, 24 + 300 - 70, 360, 70)
+    return sum(1 for row in rows for p in row if min(p) > 240)
+
+
+# The probe and the panel (issue 31, item 11): a click on the view scrolls a scrolled panel to the Probe
+# section (its first: the grab back at the top); R (the camera reset) takes the "probe at pixel" message away.
+display.move(600, 200, 0.3)
+for _ in range(8):  # wheel steps over the panel (ImGui sums them over frames)
+    display.button(5, True, 0.02)
+    display.button(5, False, 0.02)
+time.sleep(0.4)
+scrolled = scroll_grab_top()
+display.move(200, 24 + 150, 0.1)  # the middle pane's sphere
+display.button(1, True)
+display.button(1, False)
+time.sleep(0.4)
+probed, message = scroll_grab_top(), message_pixels()
+display.key("r", after=0.2)
+after_reset = message_pixels()
 quit_viewer(proc2, display)
 
 failures = []
@@ -61,6 +91,11 @@ def check(ok, what):
     if not ok:
         failures.append(what)
 
+print(f"panel scrollbar grab at row {scrolled} scrolled, {probed} after the probe; message {message} white pixels, "
+      f"{after_reset} after R")
+check(scrolled is not None and probed is not None and scrolled > probed + 20 and probed < 12,
+      f"the panel did not scroll to the Probe section: its grab at row {scrolled}, then {probed}")
+check(message > 50 and after_reset < 5, f"R with a probe set: the message's {message} white pixels, {after_reset} after R")
 layout = json.load(open(back))["layout"] if os.path.exists(back) else None
 check(layout == "compare", f"D twice from compare: layout is {layout}")
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Records the playing --animate view with Ctrl+R (X input events, see xinput.py), pauses and quits, and
-checks the file: one timestamped MP4 in the working folder, no temporary left, the index ("moov") before
-the media data, and about as many frames' worth of time as the recording ran (the sample table's count
+checks the red REC marker over the view while it records, not before or after (grabbed from the X
+screen), and the file: one timestamped MP4 in the working folder, no temporary left, the index ("moov")
+before the media data, and about as many frames' worth of time as the recording ran (the sample table's count
 is read from the file's boxes; the frames themselves are decoded in tests/video).
 
 usage: drive_recording.py SHADELAB OUTDIR     (run inside an X server: see xvfb_run.sh)
@@ -17,11 +18,26 @@ os.makedirs(out, exist_ok=True)
 for f in glob.glob(os.path.join(out, "*")) + glob.glob(os.path.join(out, ".shadelab*")):
     os.remove(f)
 proc, display = start_viewer([shadelab, "--size", "320x240", "--animate", "light-orbit:2"], out)
+
+
+def red_pixels():
+    """The REC marker's red dot: pixels of (230, 30, 30) at the view's top right (the view is 400 wide, the
+    panel's least width taking the rest of the window), as the screen shows it (the window sits at the
+    origin, the status strip's 24 rows above the view). The sphere's orange has green at 0.38 of red."""
+    _, _, rows = display.grab(200, 24, 200, 120)
+    return sum(1 for row in rows for p in row if abs(p[0] - 230) <= 25 and p[1] < 50 and p[2] < 50)
+
+
+before = red_pixels()
 display.key("r", ctrl=True)   # start recording the playing view
-time.sleep(2.0)
+time.sleep(1.0)
+during = red_pixels()         # a red REC marker at the view's top right while recording (issue 31)
+time.sleep(1.0)
 display.key("space")          # pause: a recording keeps drawing (and recording) a still view
 time.sleep(0.5)
 display.key("r", ctrl=True)   # stop: the file is finished and renamed
+time.sleep(0.3)
+after = red_pixels()
 quit_viewer(proc, display)
 
 
@@ -48,6 +64,9 @@ def sample_count(data):
 
 
 failures = []
+print(f"REC marker: {before} red pixels before recording, {during} while, {after} after")
+if not (before == 0 and during > 20 and after == 0):
+    failures.append(f"REC marker: {before} red pixels before recording, {during} while, {after} after (0, >20, 0)")
 videos = glob.glob(os.path.join(out, "shadelab-*.mp4"))
 if proc.returncode != 0:
     failures.append(f"exit status {proc.returncode}")

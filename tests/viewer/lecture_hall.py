@@ -14,7 +14,8 @@
   hidpi     at a 2x content scale (Xft.dpi 192) the view keeps half the window and the panes show the
             whole model
   labels    at 1920x1080, at UI scale 1 and 1.5: the light labels keep off the spheres in compare (the
-            window's view differs from F12's image on under 0.3% of a model's pixels: markers, not labels)
+            window's view differs from F12's image on under 0.3% of a model's pixels: markers, not labels);
+            in a 1200x800 window with E's formula on the k_e sphere: the formula covers none of it
   viewtext  at 1920x1080 with the panel at UI scale 0.8: the caption's lines are at least 3% of the window's
             height; a playing k_e ramp shows a large live readout of k_e
   shaderview at 1920x1080, S: the shader's lines over the view are at least 2% of the window's height
@@ -259,12 +260,20 @@ elif scenario == "slides":
 elif scenario == "labels":
     # The light labels keep off the models: where the window's view differs from F12's image (the
     # overlays) on a model's pixels, only the markers' arrows and rings may be, not a label's box.
-    for name, extra in (("scale1", []), ("ui1.5", ["--ui-scale", "1.5"])):
+    # And E's formula in a 1200x800 window on the k_e series' sphere, which fills the view's height: in
+    # its own band above the view, it covers none of it (it covered the sphere's lower part).
+    single = os.path.join(out, "ke-only")
+    os.makedirs(single, exist_ok=True)
+    ke = sorted(f for f in os.listdir(playlist) if f.startswith("04"))[0]
+    shutil.copy(os.path.join(playlist, ke), single)
+    for name, extra, size in (("scale1", [], (1920, 1080)), ("ui1.5", ["--ui-scale", "1.5"], (1920, 1080)),
+                              ("formula-1200x800", ["--formula"], (1200, 800))):
         window = os.path.join(out, f"labels-{name}.png")
-        proc, display = start_viewer([shadelab, "--playlist", playlist, "--screenshot", window] + extra, out)
+        source = single if name.startswith("formula") else playlist
+        proc, display = start_viewer([shadelab, "--playlist", source, "--screenshot", window] + extra, out)
         display.move(300, 500, 0.5)
-        resize(1920, 1080)
-        display.move(5, 1075, 0.5)  # the cursor off the view
+        resize(*size)
+        display.move(5, size[1] - 5, 0.5)  # the cursor off the view
         view = shot(f"labels-{name}-view")
         quit_viewer(proc, display)
         if not view or not os.path.exists(window):
@@ -272,7 +281,7 @@ elif scenario == "labels":
         w, h, rows = view
         win = read_png(open(window, "rb").read())
         top = win[1] - h
-        for x0, x1 in panes(view, 3):
+        for x0, x1 in panes(view, 1 if name.startswith("formula") else 3):
             background = rows[h - 1][x0]
             covered = sum(1 for y in range(h) for x in range(x0 + 3, x1 - 3)
                           if max(abs(a - b) for a, b in zip(rows[y][x], background)) > 6

@@ -27,6 +27,19 @@ _x11.XFlush.argtypes = [ctypes.c_void_p]
 for _name in ("XTestFakeKeyEvent", "XTestFakeButtonEvent"):
     getattr(_xtst, _name).argtypes = [ctypes.c_void_p, ctypes.c_uint, ctypes.c_int, ctypes.c_ulong]
 _xtst.XTestFakeMotionEvent.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_ulong]
+_x11.XDefaultRootWindow.restype = ctypes.c_ulong
+_x11.XDefaultRootWindow.argtypes = [ctypes.c_void_p]
+_x11.XGetImage.restype = ctypes.c_void_p
+_x11.XGetImage.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_int, ctypes.c_int, ctypes.c_uint, ctypes.c_uint,
+                           ctypes.c_ulong, ctypes.c_int]
+_x11.XFree.argtypes = [ctypes.c_void_p]
+
+
+class _XImage(ctypes.Structure):  # the head of Xlib's XImage, up to bits_per_pixel
+    _fields_ = [("width", ctypes.c_int), ("height", ctypes.c_int), ("xoffset", ctypes.c_int), ("format", ctypes.c_int),
+                ("data", ctypes.POINTER(ctypes.c_ubyte)), ("byte_order", ctypes.c_int), ("bitmap_unit", ctypes.c_int),
+                ("bitmap_bit_order", ctypes.c_int), ("bitmap_pad", ctypes.c_int), ("depth", ctypes.c_int),
+                ("bytes_per_line", ctypes.c_int), ("bits_per_pixel", ctypes.c_int)]
 
 
 def start_viewer(args, cwd, config=None):
@@ -95,6 +108,22 @@ class Display:
         _xtst.XTestFakeMotionEvent(self.handle, -1, x, y, 0)
         self.flush(pause)
 
-    def button(self, b, down):
+    def grab(self, x, y, width, height):
+        """What the screen shows now in the rectangle, as read_png returns a PNG: (width, height, rows of RGB
+        tuples), read from the X server (XGetImage of the root window: the window as a person sees it,
+        whatever the viewer is doing, e.g. while it records). Xvfb's 24-bit screen: 32 bits a pixel, BGRX."""
+        _x11.XFlush(self.handle)
+        image = ctypes.cast(_x11.XGetImage(self.handle, _x11.XDefaultRootWindow(self.handle), x, y, width, height,
+                                           0xFFFFFFFF, 2), ctypes.POINTER(_XImage))  # AllPlanes, ZPixmap
+        head = image.contents
+        assert head.bits_per_pixel == 32, f"a {head.bits_per_pixel}-bit X screen (the tests expect Xvfb's 24-bit one)"
+        data = ctypes.string_at(head.data, head.bytes_per_line * height)
+        rows = [[(data[o + 2], data[o + 1], data[o]) for o in range(y * head.bytes_per_line, y * head.bytes_per_line + 4 * width, 4)]
+                for y in range(height)]
+        _x11.XFree(head.data)
+        _x11.XFree(image)
+        return width, height, rows
+
+    def button(self, b, down, pause=0.3):
         _xtst.XTestFakeButtonEvent(self.handle, b, 1 if down else 0, 0)
-        self.flush(0.3)
+        self.flush(pause)

@@ -77,7 +77,7 @@ inline constexpr Control kControls[] = {
     {"N   Shift+N", "vertex normals / face normals",
      {typed("n", ViewerCommand::VertexNormals), typed("N", ViewerCommand::FaceNormals)}},
     {"L", "light markers", {typed("lL", ViewerCommand::LightMarkers)}},
-    {"E", "the formula over the view (the term --show isolates highlighted)", {typed("eE", ViewerCommand::Formula)}},
+    {"E", "the lecture's formula (the term --show isolates highlighted)", {typed("eE", ViewerCommand::Formula)}},
     {"I", "the intersection at the probed point: I, N, R, T, theta_i, theta_t, eta and the Fresnel split",
      {typed("iI", ViewerCommand::Intersection)}},
     {"S", "the shader's GLSL, large, terms marked (F5's errors shown in it)", {typed("sS", ViewerCommand::ShaderSection)}},
