@@ -550,8 +550,8 @@ std::string optionHelp(const OptionSpec& spec) {
     if (spec.names) fill("{names}", spec.names());
     fill("{plot-size}", std::to_string(kPlotDefaultWidth) + "x" + std::to_string(kPlotDefaultHeight));
     fill("{plot-sizes}", plotSizesText());
-    fill("{max-diff}", formatNumber(ReferenceTolerance{}.maxDiff));
-    fill("{mean-diff}", formatNumber(ReferenceTolerance{}.meanDiff));
+    fill("{max-diff}", formatNumber(ImageTolerance{}.maxDiff));
+    fill("{mean-diff}", formatNumber(ImageTolerance{}.meanDiff));
     fill("{diff-factor}", formatNumber(DiffSettings{}.factor));
     fill("{max-animations}", std::to_string(kMaxAnimations));
     fill("{animation-seconds}", formatNumber(kDefaultAnimationSeconds));

@@ -50,7 +50,7 @@ struct Options {
     bool intersection = false;              // --intersection: with --probe, the intersection diagram (viewer: key I)
     // --reference REF.png: the --output image compared with REF.png (cli/reference.hpp); the thresholds,
     // what a missing reference does and where the amplified difference goes. Unset: the defaults
-    // (core/image/image.hpp, ReferenceTolerance); each is refused without --reference.
+    // (core/image/image.hpp, ImageTolerance); each is refused without --reference.
     std::optional<std::string> reference;
     std::optional<MissingReference> referenceMissing;
     std::optional<int> maxDiff;             // --max-diff D (0..255)
