@@ -804,13 +804,7 @@ void drawHelpOverlay(const UiRect& view) {
     ImGui::End();
 }
 
-glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) {
-    const Light& l = scene.lights[light];
-    if (l.type != LightType::Directional) return l.position;
-    // Where the 3D light cross is drawn (OverlayRenderer::drawLights): 0.6 of the eye's distance.
-    const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
-    return scene.camera.target - glm::normalize(l.direction) * reach;
-}
+glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) { return lightHandle(scene.lights[light], scene.camera); }
 
 int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float radiusPixels) {
     int best = -1;
@@ -990,7 +984,7 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
             if (l.type == LightType::Directional) {
                 // Toward the target (what it lights), from the handle.
                 const glm::vec3 dir = glm::normalize(l.direction);
-                const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
+                const float reach = directionalHandleDistance(scene.camera);
                 const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
                 const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.4f));
                 if (a.z > 0.0f && b.z > 0.0f) boxes.push_back(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));
