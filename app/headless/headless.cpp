@@ -246,7 +246,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
     RendererOptions manyFrames = headlessOptions();  // of one mesh, as in the viewer
     manyFrames.meshOrder = RendererOptions::MeshOrder::VertexCache;
     Renderer renderer(context->getProcAddress(), shaders, manyFrames);
-    const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
+    const std::size_t triangles = geometry->triangleCount() * scenePaneCount(scene.layout);
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
     MultisampleTarget msaa;
