@@ -57,28 +57,17 @@ E choice(const std::string& flag, const std::string& v, const EnumName<E> (&name
     throw InputError(flag + ": unknown value \"" + quoteInput(v) + "\" (expected one of " + namesList(names) + ")");
 }
 
-// An entry's name in a list of names: the name itself, or an enum's (core/scene/scene_names.hpp).
-const char* entryName(const char* name) { return name; }
-template <typename E>
-const char* entryName(const EnumName<E>& name) {
-    return name.first;
-}
-
-// A comma-separated list whose every item is one of `allowed` (names, or an enum's names).
+// A comma-separated list whose every item is one of `allowed` (an enum's names, core/scene/scene_names.hpp).
 // `what` and `expected` word the refusal: "unknown section \"x\" (expected some of a, b)".
-template <typename Allowed>
-std::vector<std::string> listOf(const std::string& flag, const std::string& v, const Allowed& allowed,
+template <typename E, std::size_t N>
+std::vector<std::string> listOf(const std::string& flag, const std::string& v, const EnumName<E> (&allowed)[N],
                                 const char* what, const char* expected) {
     std::vector<std::string> items;
     std::stringstream list(v);
     for (std::string item; std::getline(list, item, ',');) {
-        if (std::find_if(std::begin(allowed), std::end(allowed), [&](const auto& a) { return item == entryName(a); }) ==
-            std::end(allowed)) {
-            std::string names;
-            for (const auto& a : allowed) names += std::string(names.empty() ? "" : ", ") + entryName(a);
+        if (!valueNamed(allowed, item))
             throw InputError(flag + ": unknown " + what + " \"" + quoteInput(item) + "\" (expected " + expected + " " +
-                             names + ")");
-        }
+                             namesList(allowed) + ")");
         items.push_back(item);
     }
     return items;
@@ -103,12 +92,6 @@ std::pair<std::string, std::string> pairOf(const std::string& flag, const std::s
 const EnumName<int> kBackendNames[] = {{"auto", 0}, {"osmesa", 1}, {"egl", 2}};
 const EnumName<MissingReference> kMissingReferenceNames[] = {{"fail", MissingReference::Fail},
                                                              {"write", MissingReference::Write}};
-
-std::string joined(const char* const* begin, const char* const* end, const char* separator) {
-    std::string s;
-    for (const char* const* p = begin; p != end; ++p) s += std::string(s.empty() ? "" : separator) + *p;
-    return s;
-}
 
 // The apply functions of the plainest rows: a switch, a number checked later, a file or folder name.
 template <bool Options::*Field>
@@ -503,7 +486,7 @@ const OptionSpec kOptions[] = {
              o.overlays.push_back(*valueNamed(kOverlayNames, name));
      }},
     {"--panel-sections", "", "LIST", G::Viewer, kNoBounds,
-     [] { return joined(std::begin(kPanelSections), std::end(kPanelSections), ", "); }, "",
+     [] { return namesList(kPanelSections, ", "); }, "",
      "start with exactly these panel sections open, e.g. plots or shading,material ({names}); `--incidence` and "
      "`--from-inside` set the Plots section's controls",
      [](Options& o, const OptionSpec& self, const std::string& v) {
