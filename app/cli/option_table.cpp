@@ -57,28 +57,17 @@ E choice(const std::string& flag, const std::string& v, const EnumName<E> (&name
     throw InputError(flag + ": unknown value \"" + quoteInput(v) + "\" (expected one of " + namesList(names) + ")");
 }
 
-// An entry's name in a list of names: the name itself, or an enum's (core/scene/scene_names.hpp).
-const char* entryName(const char* name) { return name; }
-template <typename E>
-const char* entryName(const EnumName<E>& name) {
-    return name.first;
-}
-
-// A comma-separated list whose every item is one of `allowed` (names, or an enum's names).
+// A comma-separated list whose every item is one of `allowed` (an enum's names, core/scene/scene_names.hpp).
 // `what` and `expected` word the refusal: "unknown section \"x\" (expected some of a, b)".
-template <typename Allowed>
-std::vector<std::string> listOf(const std::string& flag, const std::string& v, const Allowed& allowed,
+template <typename E, std::size_t N>
+std::vector<std::string> listOf(const std::string& flag, const std::string& v, const EnumName<E> (&allowed)[N],
                                 const char* what, const char* expected) {
     std::vector<std::string> items;
     std::stringstream list(v);
     for (std::string item; std::getline(list, item, ',');) {
-        if (std::find_if(std::begin(allowed), std::end(allowed), [&](const auto& a) { return item == entryName(a); }) ==
-            std::end(allowed)) {
-            std::string names;
-            for (const auto& a : allowed) names += std::string(names.empty() ? "" : ", ") + entryName(a);
+        if (!valueNamed(allowed, item))
             throw InputError(flag + ": unknown " + what + " \"" + quoteInput(item) + "\" (expected " + expected + " " +
-                             names + ")");
-        }
+                             namesList(allowed) + ")");
         items.push_back(item);
     }
     return items;
@@ -103,12 +92,6 @@ std::pair<std::string, std::string> pairOf(const std::string& flag, const std::s
 const EnumName<int> kBackendNames[] = {{"auto", 0}, {"osmesa", 1}, {"egl", 2}};
 const EnumName<MissingReference> kMissingReferenceNames[] = {{"fail", MissingReference::Fail},
                                                              {"write", MissingReference::Write}};
-
-std::string joined(const char* const* begin, const char* const* end, const char* separator) {
-    std::string s;
-    for (const char* const* p = begin; p != end; ++p) s += std::string(s.empty() ? "" : separator) + *p;
-    return s;
-}
 
 // The apply functions of the plainest rows: a switch, a number checked later, a file or folder name.
 template <bool Options::*Field>
@@ -145,12 +128,28 @@ void setPath(Options& o, const OptionSpec&, const std::string& v) {
 using G = OptionGroup;
 constexpr Bounds kNoBounds{};
 
-// Each row: name, alias, argument, group, range, names, scene field, help, apply.
+// The rules many rows share (OptionSpec::rules).
+constexpr const char* kNeedsReference = "sets up the comparison with a reference: give --reference REF.png";
+constexpr const char* kNeedsReferenceOrTest =
+    "sets up the comparison with a reference: give --reference REF.png (or --test DIR)";
+const OptionRules kNeedsTest{nullptr, {}, {{{"--test"}, "belongs to a folder of screenshot tests: give --test DIR"}}};
+// --fps, --duration, --dither: the video's settings.
+const OptionRules kVideoSetting{
+    nullptr, {},
+    {{{"--animate"}, "sets up the --animate video: give --animate SPEC and --output FILE.gif|.mp4|.webm"},
+     {{"--output"}, "sets up the video: give --output FILE.gif, .mp4 or .webm"}}};
+// --incidence, --from-inside: the plots' settings, which a render (--output, --benchmark) has no use for.
+OptionRules plotSetting(const char* refusal) {
+    return {nullptr, {{"--output", nullptr, refusal, "--plot"}, {"--benchmark", nullptr, refusal, "--plot"}}};
+}
+
+// Each row: name, alias, argument, group, range, names, scene field, help, apply, rules (what it goes with).
 const OptionSpec kOptions[] = {
     {"--output", "-o", "FILE.png", G::General, kNoBounds, nullptr, "",
      "render one frame offscreen (OSMesa or EGL, no display needed) and write it atomically; with `--animate`, "
      "a video: `.gif`, `.mp4` (H.264) or `.webm` (VP9)",
-     setPath<&Options::output>},
+     setPath<&Options::output>,
+     {nullptr, {{kViewerOptions, nullptr, "--output: {viewer} are for the viewer, which --output/--benchmark do not open"}}, {}, RunMode::Image, RunMode::Image}},
     {"--playlist", "", "DIR", G::General, kNoBounds, nullptr, "",
      "the lecture presets: every `DIR/*.json` in file-name order (see *Lecture presets and the playlist*); a bare "
      "name that is no folder here (`lecture`) is the scene folder of that name beside the program; the "
@@ -159,53 +158,73 @@ const OptionSpec kOptions[] = {
      [](Options& o, const OptionSpec& self, const std::string& v) {
          if (v.empty()) throw InputError(std::string(self.name) + ": empty folder name");
          o.playlist = v;
-     }},
+     },
+     {nullptr,
+      {{"--sweep", nullptr, "--sweep: not with --playlist (sweep one preset file instead)"},
+       {"--benchmark", nullptr, "--benchmark: not with --playlist (benchmark one preset file instead)"},
+       {"--info", nullptr, "--info: not with --playlist"},
+       {"--plot", nullptr, "--plot: not with --playlist (a plot is of one scene)"},
+       {"--probe", nullptr, "--probe: not with --playlist (probe one preset file instead)"}},
+      {}, RunMode::PlaylistViewer, RunMode::PlaylistImages}},
     {"--captions", "", "", G::General, kNoBounds, nullptr, "",
      "with `--output`: a strip under the image with the scene's title (for a preset without one, its file name) "
      "and caption",
-     setTrue<&Options::captions>},
+     setTrue<&Options::captions>,
+     {nullptr,
+      {{"--sweep", nullptr, "--captions: adds a title strip to --output images (not to sweep sheets); give --output"}},
+      {{{"--output"}, "adds a title strip to --output images (not to sweep sheets); give --output"}}}},
     // Issue 18, the formula overlay.
     {"--formula", "", "", G::General, kNoBounds, nullptr, "",
      "the lecture's formula over the bottom of the view, for the scene's reflection model, normalisation and "
      "Fresnel: the term `--show` isolates highlighted, the others dimmed; k_a, k_d, k_s, k_e's values under their "
      "symbols; with `--probe`, each term's value at that pixel; over each pane, where its mode evaluates the "
      "formula. The viewer starts with it on (key E), in a band above the view; with `--output` it is drawn into the PNG",
-     setTrue<&Options::formula>},
+     setTrue<&Options::formula>,
+     {"draws over a frame (the viewer's or --output's)", {{"--sweep"}, {"--benchmark"}, {"--plot"}, {"--info"}}}},
     // Issue 30, the intersection diagram.
     {"--intersection", "", "", G::General, kNoBounds, nullptr, "",
      "with `--probe` and `--output`: the lecture's \"At the Intersection\" drawn at the probed point into the PNG: "
      "arrows I, N, R and T (Snell's law at the surface, `--ior`), theta_i, theta_t, eta_i, eta_t and the Fresnel "
      "split R_par, R_perp, R and 1 - R. In the viewer: key I after a click",
-     setTrue<&Options::intersection>},
+     setTrue<&Options::intersection>,
+     {nullptr, {}, {{{"--probe"}, "draws the diagram at a probed point: give --probe X,Y"}}}},
     {"--reference", "", "REF.png", G::General, kNoBounds, nullptr, "",
      "with `--output` (one frame, or a `--plot`): after writing the image, compare it with REF.png and print one "
      "line on stdout with the largest and the mean channel difference against `--max-diff` and `--mean-diff`, "
      "ending `matches` or `differs`; exit status 0 when they match, 1 when they differ or their sizes do, 2 when "
      "REF.png is missing or not a PNG (see *Screenshot tests in your CI*)",
-     setPath<&Options::reference>},
+     setPath<&Options::reference>,
+     {"compares one --output image (a frame or a --plot)",
+      {{"--playlist"}, {"--sweep"}, {"--probe"}, {"--benchmark"}, {"--info"}},
+      {{{"--output"}, "compares the --output image with it: give --output FILE.png"}}}},
     {"--reference-missing", "", "ACTION", G::General, kNoBounds, [] { return namesList(kMissingReferenceNames, " | "); },
      "", "what a `--reference` that does not exist does: {names}: fail (the default: one line, exit status 2, "
      "nothing written) or write it from this render (exit status 0, and says so)",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          o.referenceMissing = choice(self.name, v, kMissingReferenceNames);
-     }},
+     },
+     {nullptr, {}, {{{"--reference"}, kNeedsReference}}}},
     {"--max-diff", "", "D", G::General, bounds(kMaxDiffRange), nullptr, "",
      "with `--reference` or `--test`: the largest difference allowed in any channel (R, G, B, A) of any pixel, in /255 "
      "({range}, default {max-diff})",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.maxDiff = intIn(self, v); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.maxDiff = intIn(self, v); },
+     {nullptr, {}, {{{"--reference", "--test"}, kNeedsReferenceOrTest}}}},
     {"--mean-diff", "", "M", G::General, bounds(kMeanDiffRange), nullptr, "",
      "with `--reference` or `--test`: the largest mean difference allowed, over every channel of every pixel, in /255 "
      "({range}, default {mean-diff})",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.meanDiff = floatIn(self, v); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.meanDiff = floatIn(self, v); },
+     {nullptr, {}, {{{"--reference", "--test"}, kNeedsReferenceOrTest}}}},
     {"--max-diff-pixels", "", "P", G::General, bounds(kMaxDiffPixelsRange), nullptr, "",
      "with `--reference` or `--test`: at most P pixels may differ at all, in any channel (Playwright's "
      "maxDiffPixels; {range}, default no limit)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.maxDiffPixels = std::uint64_t(intIn(self, v)); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.maxDiffPixels = std::uint64_t(intIn(self, v)); },
+     {nullptr, {}, {{{"--reference", "--test"}, kNeedsReferenceOrTest}}}},
     {"--diff-output", "", "DIFF.png", G::General, kNoBounds, nullptr, "",
      "with `--reference`: also write the difference as the diff layout's third pane draws it, per channel "
      "|image - reference| x the layout's factor (`--diff-factor`, default {diff-factor}); not written when the "
      "sizes differ",
-     setPath<&Options::diffOutput>},
+     setPath<&Options::diffOutput>,
+     {nullptr, {}, {{{"--reference"}, kNeedsReference}}}},
     {"--test", "", "DIR", G::General, kNoBounds, nullptr, "",
      "screenshot tests of a folder, in one process: render every `DIR/*.json` (file-name order) and compare it "
      "with `DIR/NAME.png` as `--reference` does (`--max-diff`, `--mean-diff`); one line per failing case and a "
@@ -215,39 +234,52 @@ const OptionSpec kOptions[] = {
      [](Options& o, const OptionSpec& self, const std::string& v) {
          if (v.empty()) throw InputError(std::string(self.name) + ": empty folder name");
          o.testDir = v;
-     }},
+     },
+     {"compares its folder's scenes with their references",
+      {{"--output"}, {"--playlist"}, {"--reference"},
+       {"--reference-missing", "--reference-missing (--update writes missing references)"},
+       {"--diff-output", "--diff-output (--report shows the differences)"}, {"--sweep"}, {"--probe"}, {"--benchmark"},
+       {"--info"}, {"--plot"}, {"--captions"}, {"--animate"}, {kViewerOptions}},
+      {}, RunMode::TestSuite, RunMode::TestSuite}},
     {"--references", "", "DIR2", G::General, kNoBounds, nullptr, "",
      "with `--test`: the references are `DIR2/NAME.png` instead of beside the scenes",
-     setPath<&Options::referencesDir>},
+     setPath<&Options::referencesDir>,
+     kNeedsTest},
     {"--junit", "", "FILE.xml", G::General, kNoBounds, nullptr, "",
      "with `--test`: also write the results as JUnit XML (one testcase per scene; a difference is a failure "
      "with the numbers, a case that could not be compared an error), atomically",
-     setPath<&Options::junit>},
+     setPath<&Options::junit>,
+     kNeedsTest},
     {"--report", "", "FILE.html", G::General, kNoBounds, nullptr, "",
      "with `--test`: also write one self-contained HTML page: each failing case's reference, render and "
      "amplified difference side by side at their pixel size, with its numbers; the matching cases listed",
-     setPath<&Options::report>},
+     setPath<&Options::report>,
+     kNeedsTest},
     {"--update", "", "", G::General, kNoBounds, nullptr, "",
      "with `--test`: after a person has looked, rewrite the references of the cases that differ or have none "
      "(missing or malformed) from this run's renders, atomically, and say which; matching references are "
      "left untouched. Exit status 0 unless a case could not be rendered",
-     setTrue<&Options::update>},
+     setTrue<&Options::update>,
+     kNeedsTest},
     {"--artifacts", "", "DIR", G::General, kNoBounds, nullptr, "",
      "with `--test`: write each failing case's render (`NAME.actual.png`), difference (`NAME.diff.png`) and "
      "reference (`NAME.reference.png`) into DIR (created if missing), for the CI to keep; the JUnit testcase "
      "links them as `[[ATTACHMENT|DIR/NAME.diff.png]]`",
-     setPath<&Options::artifacts>},
+     setPath<&Options::artifacts>,
+     kNeedsTest},
     {"--list", "", "", G::General, kNoBounds, nullptr, "",
      "with `--test`: print the names of the cases it would run (after `--filter` and `--shard`), one a line, "
      "and render nothing",
-     setTrue<&Options::list>},
+     setTrue<&Options::list>,
+     kNeedsTest},
     {"--filter", "", "GLOB", G::General, kNoBounds, nullptr, "",
      "with `--test`: only the cases whose name (the scene's path in DIR without .json) matches GLOB (`*` any "
      "characters, `?` one); repeat for more. One that matches no case is refused",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          if (v.empty()) throw InputError(std::string(self.name) + ": empty pattern");
          o.filters.push_back(v);
-     }},
+     },
+     kNeedsTest},
     {"--shard", "", "K/N", G::General, kNoBounds, nullptr, "",
      "with `--test`: run the K-th of N disjoint parts of the cases (1 <= K <= N <= 1000), for N parallel CI jobs; "
      "a case's part follows from its name alone, so adding a case moves no other",
@@ -255,7 +287,8 @@ const OptionSpec kOptions[] = {
          const auto kn = pairOf(self.name, v, '/', "K/N, the K-th of N parts, e.g. 2/4");
          const int n = parseInt(self.name, kn.second, 1, 1000);
          o.shard = {parseInt(self.name, kn.first, 1, n), n};
-     }},
+     },
+     kNeedsTest},
     {"--shading", "", "MODE", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "shading",
      "shading mode (single layout): {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); }},
@@ -376,7 +409,11 @@ const OptionSpec kOptions[] = {
                    std::string(self.name) + ": at most two sweeps (columns and rows)");
          if (o.sweeps.size() == 2 && o.sweeps[0].parameter == o.sweeps[1].parameter)
              throw InputError(std::string(self.name) + ": " + o.sweeps[1].parameter + " is swept twice");
-     }},
+     },
+     {nullptr,
+      {{"--benchmark", nullptr, "--sweep: renders a sheet to a PNG: give --output FILE.png (and no --benchmark)"}},
+      {{{"--output"}, "renders a sheet to a PNG: give --output FILE.png (and no --benchmark)"}},
+      RunMode::SweepSheet, RunMode::SweepSheet}},
     // Animations and videos (core/scene/animation.hpp, video/video_encoder.hpp; checked in options.cpp).
     {"--animate", "", "SPEC", G::General, kNoBounds, nullptr, "",
      "with `--output FILE.gif|.mp4|.webm`: render an animation to a video; without, the viewer plays it (Space "
@@ -388,10 +425,14 @@ const OptionSpec kOptions[] = {
      [](Options& o, const OptionSpec& self, const std::string& v) {
          addAtMost(o.animations, parseAnimation(v, self.name), kMaxAnimations,
                    std::string(self.name) + ": at most " + std::to_string(kMaxAnimations) + " animations");
-     }},
+     },
+     {"renders a video of one scene",
+      {{"--sweep"}, {"--probe"}, {"--benchmark"}, {"--info"}, {"--plot"}, {"--reference"}, {"--captions"}},
+      {}, RunMode::Viewer, RunMode::Video}},
     {"--fps", "", "N", G::General, bounds(kVideoFpsRange), nullptr, "",
      "the video's frames per second ({range}, default {fps})",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.fps = intIn(self, v); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.fps = intIn(self, v); },
+     kVideoSetting},
     {"--duration", "", "SECONDS", G::General, Bounds{0, kMaxAnimationSeconds, true}, nullptr, "",
      "the video's length (more than 0, at most {max}; default the longest animation's): frame i shows time "
      "i / fps, and a ramp's video ends on a frame of its end value B",
@@ -401,11 +442,13 @@ const OptionSpec kOptions[] = {
              throw InputError(std::string(self.name) + ": must be more than 0 and at most " +
                               formatNumber(kMaxAnimationSeconds) + " seconds (got " + v + ")");
          o.duration = x;
-     }},
+     },
+     kVideoSetting},
     {"--dither", "", "", G::General, kNoBounds, nullptr, "",
      "a GIF's colours Floyd-Steinberg dithered onto each frame's palette (default off: each pixel takes its colour's "
      "palette entry; a frame of at most 256 colours is exact either way)",
-     setTrue<&Options::dither>},
+     setTrue<&Options::dither>,
+     kVideoSetting},
     {"--plot", "", "KIND", G::General, kNoBounds, [] { return namesList(kPlotKindNames, " | "); }, "",
      "{names}, with `--output`: the lecture's plot for the scene's parameters, drawn on the CPU (no GL), {plot-size} "
      "unless `--size` ({plot-sizes}): lobe = Phong and Blinn-Phong spec in the plane of incidence for "
@@ -413,14 +456,21 @@ const OptionSpec kOptions[] = {
      "f_r(omega_i -> omega_o) for the light at `--incidence` as a 3-D polar surface over the hemisphere; brdf-slice = "
      "heat maps of f_r over (theta_i, theta_o) in the plane of incidence and over (delta_phi, theta_o) at `--incidence` "
      "(with `--anisotropy`, at phi_i = 0 and 90 deg) (see *Plots*)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.plot = choice(self.name, v, kPlotKindNames); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.plot = choice(self.name, v, kPlotKindNames); },
+     {nullptr,
+      {{"--sweep", nullptr, "--plot: draws one plot: not with --sweep or --benchmark"},
+       {"--benchmark", nullptr, "--plot: draws one plot: not with --sweep or --benchmark"}},
+      {{{"--output"}, "writes a PNG: give --output FILE.png"}},
+      RunMode::Plot, RunMode::Plot}},
     {"--incidence", "", "DEG", G::General, bounds(kIncidenceDegRange), nullptr, "",
      "the lobe, lobe3d and brdf-slice plots' angle between the incoming light I and N ({range}, default 45)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.incidenceDeg = floatIn(self, v, " degrees"); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.incidenceDeg = floatIn(self, v, " degrees"); },
+     plotSetting("--incidence: sets up the plots: use it with --plot, or in the viewer")},
     {"--from-inside", "", "", G::General, kNoBounds, nullptr, "",
      "the Fresnel plot from inside the material (eta1 = `--ior`, eta2 = 1): total internal reflection past the "
      "critical angle",
-     setTrue<&Options::fromInside>},
+     setTrue<&Options::fromInside>,
+     plotSetting("--from-inside: sets up the plots: use it with --plot, or in the viewer")},
     {"--probe", "", "X,Y", G::General, Bounds{0, kImageSideRange.hi - 1, true}, nullptr, "",
      "with `--output`: also print on stdout, as JSON, every term of the formula at pixel X,Y (top-left origin, "
      "any layout) the way that pixel's mode evaluates it (see *Pixel probe*); without `--output`: open the "
@@ -429,16 +479,22 @@ const OptionSpec kOptions[] = {
          const auto xy = pairOf(self.name, v, ',', "the pixel as X,Y, e.g. 640,360");
          const int x = intIn(self, xy.first);  // x first: it is named first
          o.probe = glm::ivec2(x, intIn(self, xy.second));
-     }},
+     },
+     {"probes one pixel of one frame (with --output, or in the viewer)", {{"--sweep"}, {"--benchmark"}, {"--info"}},
+      {}, RunMode::Viewer, RunMode::ProbeImage}},
     {"--benchmark", "", "N", G::General, bounds(kBenchmarkFramesRange), nullptr, "",
      "render N frames ({range}) offscreen per shading mode, print one JSON line per mode (frames, triangles, "
      "size, shading, median and p95 ms)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.benchmarkFrames = intIn(self, v); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.benchmarkFrames = intIn(self, v); },
+     {nullptr, {{kViewerOptions, nullptr, "--benchmark: {viewer} are for the viewer, which --output/--benchmark do not open"}},
+      {}, RunMode::Benchmark, RunMode::Benchmark}},
     {"--progressive", "", "S", G::General, bounds(kProgressiveStrideRange), nullptr, "",
      "area lights in the viewer: every S-th sample per axis a frame, S x S frames to the full image ({range}; "
      "default: the viewer adapts S to its frame time); with `--benchmark`, times one such frame while the camera "
      "orbits",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.progressiveStride = intIn(self, v); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.progressiveStride = intIn(self, v); },
+     {nullptr,
+      {{"--output", nullptr, "--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark"}}}},
     {"--backend", "", "NAME", G::General, kNoBounds, [] { return namesList(kBackendNames, " | "); }, "",
      "the headless OpenGL context for `--output`/`--benchmark`: {names}: OSMesa, EGL (surfaceless or a GPU's "
      "EGL device, drawing into an FBO), or the first that works, OSMesa first (default)",
@@ -474,13 +530,16 @@ const OptionSpec kOptions[] = {
      [](Options& o, const OptionSpec&, const std::string& v) { o.shaderDir = v; }},
     {"--info", "", "", G::General, kNoBounds, nullptr, "",
      "print what was loaded (meshes, triangles, bounds, normals, the model's cameras) and exit",
-     setTrue<&Options::info>},
+     setTrue<&Options::info>,
+     {nullptr, {}, {}, RunMode::Info, RunMode::Info}},
     {"--verbose", "-v", "", G::General, kNoBounds, nullptr, "", "say what was loaded and written",
      setTrue<&Options::verbose>},
     {"--help", "-h", "", G::General, kNoBounds, nullptr, "", "print this help and exit",
-     setTrue<&Options::help>},
+     setTrue<&Options::help>,
+     {nullptr, {}, {}, RunMode::Help, RunMode::Help}},
     {"--version", "", "", G::General, kNoBounds, nullptr, "", "print the version and exit",
-     setTrue<&Options::version>},
+     setTrue<&Options::version>,
+     {nullptr, {}, {}, RunMode::Version, RunMode::Version}},
     // The viewer's window (options.cpp refuses them with --output and --benchmark).
     {"--frames", "", "N", G::Viewer, bounds(kViewerFramesRange), nullptr, "", "quit after N frames ({range})",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.frames = intIn(self, v); }},
@@ -503,7 +562,7 @@ const OptionSpec kOptions[] = {
              o.overlays.push_back(*valueNamed(kOverlayNames, name));
      }},
     {"--panel-sections", "", "LIST", G::Viewer, kNoBounds,
-     [] { return joined(std::begin(kPanelSections), std::end(kPanelSections), ", "); }, "",
+     [] { return namesList(kPanelSections, ", "); }, "",
      "start with exactly these panel sections open, e.g. plots or shading,material ({names}); `--incidence` and "
      "`--from-inside` set the Plots section's controls",
      [](Options& o, const OptionSpec& self, const std::string& v) {
@@ -550,8 +609,8 @@ std::string optionHelp(const OptionSpec& spec) {
     if (spec.names) fill("{names}", spec.names());
     fill("{plot-size}", std::to_string(kPlotDefaultWidth) + "x" + std::to_string(kPlotDefaultHeight));
     fill("{plot-sizes}", plotSizesText());
-    fill("{max-diff}", formatNumber(ReferenceTolerance{}.maxDiff));
-    fill("{mean-diff}", formatNumber(ReferenceTolerance{}.meanDiff));
+    fill("{max-diff}", formatNumber(ImageTolerance{}.maxDiff));
+    fill("{mean-diff}", formatNumber(ImageTolerance{}.meanDiff));
     fill("{diff-factor}", formatNumber(DiffSettings{}.factor));
     fill("{max-animations}", std::to_string(kMaxAnimations));
     fill("{animation-seconds}", formatNumber(kDefaultAnimationSeconds));

@@ -19,6 +19,7 @@
 #include "core/scene/scene_limits.hpp"
 
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -36,6 +37,33 @@ constexpr Bounds bounds(const Range<T>& r) {
     return {double(r.lo), double(r.hi), true};
 }
 
+// Which options go together, declared on each option's row and checked for every option given in one
+// loop (options.cpp, checkRules): what it refuses, what it needs, and the run it asks for.
+//
+// An option another cannot go with. The refusal names the row's option: "--test: " + the row's
+// OptionRules::does + "; not with " + (shownAs or other), or `message` as it stands when given.
+struct Conflict {
+    const char* other;               // "--sweep"; kViewerOptions: any option of the viewer's group
+    const char* shownAs = nullptr;   // how the refusal names it, when not by `other`
+    const char* message = nullptr;   // the whole refusal ("{viewer}": the viewer's options, listed)
+    const char* unless = nullptr;    // no conflict when this option is given too
+};
+inline constexpr const char* kViewerOptions = "the viewer's options";
+// Options one of which must be given too: refused with "NAME: " + text.
+struct Need {
+    std::vector<const char*> anyOf;
+    const char* text;
+};
+struct OptionRules {
+    const char* does = nullptr;          // what the option does, before "; not with OTHER"
+    std::vector<Conflict> conflicts = {};  // checked in this order, every option's before any `needs`
+    std::vector<Need> needs = {};
+    // The run it asks for, alone and with --output; the run is the first in RunMode's order of the
+    // options given (none: the viewer).
+    RunMode mode = RunMode::Viewer;
+    RunMode modeWithOutput = RunMode::Viewer;
+};
+
 struct OptionSpec {
     const char* name;         // "--ior"
     const char* alias;        // "-o", or ""
@@ -47,6 +75,7 @@ struct OptionSpec {
     const char* help;         // one paragraph; "{range}" and "{names}" stand for the two above
     // Reads the value (empty for a switch) into the options; throws InputError "--name: ...".
     void (*apply)(Options& options, const OptionSpec& self, const std::string& value);
+    OptionRules rules = {};   // which options it goes with, and the run it asks for
 };
 
 // Every option, in the order --help and the README list them.

@@ -17,8 +17,12 @@ bool isVideoPath(const std::string& path) {
     return hasExtension(path, ".gif") || hasExtension(path, ".mp4") || hasExtension(path, ".webm");
 }
 
-bool anyGiven(const std::vector<const OptionSpec*>& given, OptionGroup group) {
-    return std::any_of(given.begin(), given.end(), [group](const OptionSpec* s) { return s->group == group; });
+// Whether `name` ("--test") is among the options given; kViewerOptions: any of the viewer's group.
+bool isGiven(const std::vector<const OptionSpec*>& given, const char* name) {
+    const bool viewer = name == std::string(kViewerOptions);
+    return std::any_of(given.begin(), given.end(), [&](const OptionSpec* s) {
+        return viewer ? s->group == OptionGroup::Viewer : s->name == std::string(name);
+    });
 }
 
 // "--a, --b and --c": the options of a group, as a refusal lists them.
@@ -32,75 +36,90 @@ std::string groupNames(OptionGroup group) {
     return list;
 }
 
-// The first option given that asks for a run other than one image (--reference and --animate refuse them;
-// --animate plays on a playlist's presets in the viewer: `playlist` false leaves it out).
-const char* otherRun(const Options& o, bool playlist = true) {
-    return o.playlist && playlist ? "--playlist"
-           : !o.sweeps.empty()   ? "--sweep"
-           : o.probe             ? "--probe"
-           : o.benchmarkFrames   ? "--benchmark"
-           : o.info              ? "--info"
-                                 : nullptr;
+// Which options go together, as each row of the table declares it (OptionSpec::rules): first, for every
+// option given in the table's order, the first option it refuses; then the first it needs and lacks
+// (so "--test DIR --reference R" names what --test refuses rather than what --reference lacks).
+void checkRules(const std::vector<const OptionSpec*>& given) {
+    const auto isSet = [&](const OptionSpec* spec) { return std::find(given.begin(), given.end(), spec) != given.end(); };
+    for (const OptionSpec* spec = optionsBegin(); spec != optionsEnd(); ++spec) {
+        if (!isSet(spec)) continue;
+        for (const Conflict& c : spec->rules.conflicts) {
+            if (!isGiven(given, c.other) || (c.unless && isGiven(given, c.unless))) continue;
+            if (!c.message)
+                throw InputError(std::string(spec->name) + ": " + spec->rules.does + "; not with " +
+                                 (c.shownAs ? c.shownAs : c.other));
+            std::string message = c.message;
+            const std::size_t at = message.find("{viewer}");
+            if (at != std::string::npos) message.replace(at, 8, groupNames(OptionGroup::Viewer));
+            throw InputError(message);
+        }
+    }
+    for (const OptionSpec* spec = optionsBegin(); spec != optionsEnd(); ++spec)
+        for (const Need& n : spec->rules.needs)
+            if (isSet(spec) && std::none_of(n.anyOf.begin(), n.anyOf.end(), [&](const char* o) { return isGiven(given, o); }))
+                throw InputError(std::string(spec->name) + ": " + n.text);
 }
 
-void checkPlaylist(const Options& o) {
-    if (!o.playlist) return;
-    if (!o.input.empty())
+// The run the options ask for: the first in RunMode's order of those the options given ask for.
+RunMode runMode(const Options& o, const std::vector<const OptionSpec*>& given) {
+    RunMode mode = RunMode::Viewer;
+    for (const OptionSpec* spec : given) mode = std::min(mode, o.output ? spec->rules.modeWithOutput : spec->rules.mode);
+    return mode;
+}
+
+// What the table's rules cannot say: a scene file given to a run of a folder, file names' endings, a
+// plot's size, and the video's (its output's name and a tessellation ramp).
+void checkInput(const Options& o) {
+    if (o.testDir && !o.input.empty())
+        throw InputError("--test: renders the scene files of its folder; give no scene file (" + o.input + ") with it");
+    if (o.playlist && !o.input.empty())
         throw InputError("--playlist: shows the scene files of a folder; give no scene file (" + o.input + ") with it");
-    if (!o.sweeps.empty()) throw InputError("--sweep: not with --playlist (sweep one preset file instead)");
-    if (o.benchmarkFrames) throw InputError("--benchmark: not with --playlist (benchmark one preset file instead)");
-    if (o.info) throw InputError("--info: not with --playlist");
-    if (o.plot) throw InputError("--plot: not with --playlist (a plot is of one scene)");
-    if (o.probe) throw InputError("--probe: not with --playlist (probe one preset file instead)");
 }
 
-void checkOutputs(const Options& o) {
-    if (o.captions && (!o.output || !o.sweeps.empty()))
-        throw InputError("--captions: adds a title strip to --output images (not to sweep sheets); give --output");
-    if (o.formula && (!o.sweeps.empty() || o.benchmarkFrames || o.plot || o.info))
-        throw InputError(std::string("--formula: draws over a frame (the viewer's or --output's); not with ") +
-                         (!o.sweeps.empty() ? "--sweep" : o.benchmarkFrames ? "--benchmark" : o.plot ? "--plot" : "--info"));
-    if (o.intersection && !o.probe)
-        throw InputError("--intersection: draws the diagram at a probed point: give --probe X,Y");
+// The files whose name must end in one way: "NAME: FILE: refusal" otherwise (--output, which also
+// takes a video or a playlist's folder, is checked on its own).
+struct FileEnding {
+    std::optional<std::string> Options::*file;
+    const char* flag;
+    const char* ending;
+    const char* refusal;
+};
+const FileEnding kFileEndings[] = {
+    {&Options::screenshot, "--screenshot", ".png", "only .png is supported"},
+    {&Options::screenshotView, "--screenshot-view", ".png", "only .png is supported"},
+    {&Options::saveScene, "--save-scene", ".json", "scene files end in .json"},
+    {&Options::junit, "--junit", ".xml", "JUnit reports end in .xml"},
+    {&Options::report, "--report", ".html", "the report is a page: end its name in .html"},
+    {&Options::reference, "--reference", ".png", "only .png references are supported"},
+    {&Options::diffOutput, "--diff-output", ".png", "only .png output is supported"}};
+
+void checkFileNames(const Options& o) {
     if (o.output && !o.playlist && !hasExtension(*o.output, ".png") && !isVideoPath(*o.output))
         throw InputError("--output: " + *o.output + ": only .png output is supported (and .gif, .mp4, .webm with --animate)");
-    if (o.screenshot && !hasExtension(*o.screenshot, ".png"))
-        throw InputError("--screenshot: " + *o.screenshot + ": only .png is supported");
-    if (o.screenshotView && !hasExtension(*o.screenshotView, ".png"))
-        throw InputError("--screenshot-view: " + *o.screenshotView + ": only .png is supported");
-    if (o.saveScene && !hasExtension(*o.saveScene, ".json"))
-        throw InputError("--save-scene: " + *o.saveScene + ": scene files end in .json");
-    if (!o.sweeps.empty() && (!o.output || o.benchmarkFrames))
-        throw InputError("--sweep: renders a sheet to a PNG: give --output FILE.png (and no --benchmark)");
-    if (o.probe && (!o.sweeps.empty() || o.benchmarkFrames || o.info))
-        throw InputError(std::string("--probe: probes one pixel of one frame (with --output, or in the viewer); not with ") +
-                         (!o.sweeps.empty() ? "--sweep" : o.benchmarkFrames ? "--benchmark" : "--info"));
-    if (o.progressiveStride && o.output)
-        throw InputError("--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark");
+    for (const FileEnding& f : kFileEndings)
+        if (const std::optional<std::string>& file = o.*f.file; file && !hasExtension(*file, f.ending))
+            throw InputError(std::string(f.flag) + ": " + *file + ": " + f.refusal);
 }
 
-// --animate renders a video: --output names it, and the video's settings need --animate.
+void checkPlotSize(const Options& o) {
+    if (o.plot && o.width &&
+        (*o.width < kPlotMinWidth || *o.height < kPlotMinHeight || *o.width > kPlotMaxSide || *o.height > kPlotMaxSide))
+        throw InputError("--size: a plot is " + plotSizesText() + " pixels");
+}
+
+// --animate renders a video: --output names it (a .gif, .mp4 or .webm), and only a video ramps the
+// tessellation.
 void checkAnimation(const Options& o) {
     const bool video = o.output && !o.playlist && isVideoPath(*o.output);
     if (o.animations.empty()) {
         if (video) throw InputError("--output: " + *o.output + ": a video needs --animate SPEC (e.g. --animate light-orbit)");
-        const char* flag = o.fps ? "--fps" : o.duration ? "--duration" : o.dither ? "--dither" : nullptr;
-        if (flag) throw InputError(std::string(flag) + ": sets up the --animate video: give --animate SPEC and --output FILE.gif|.mp4|.webm");
         return;
     }
     // With --playlist the viewer plays the animation on every preset; a video is of one scene.
     if (o.playlist && o.output)
         throw InputError("--animate: with --playlist the viewer plays it on every preset; a video (--output) is of one "
                          "scene: give that preset's file instead of --playlist");
-    const char* other = otherRun(o, false) ? otherRun(o, false)
-                        : o.plot        ? "--plot"
-                        : o.reference   ? "--reference"
-                        : o.captions    ? "--captions"
-                                        : nullptr;
-    if (other) throw InputError(std::string("--animate: renders a video of one scene; not with ") + other);
-    if (!o.output) {  // the viewer plays it; the video's settings mean nothing there
-        const char* flag = o.fps ? "--fps" : o.duration ? "--duration" : o.dither ? "--dither" : nullptr;
-        if (flag) throw InputError(std::string(flag) + ": sets up the video: give --output FILE.gif, .mp4 or .webm");
+    if (!o.output) {  // the viewer plays it
         for (const Animation& a : o.animations)
             if (a.parameter == "tessellation")
                 throw InputError("--animate: " + a.text + ": a tessellation ramp is for videos (--output); the "
@@ -110,104 +129,6 @@ void checkAnimation(const Options& o) {
     if (!video) throw InputError("--animate: writes a video: give --output FILE.gif, .mp4 or .webm (not " + *o.output + ")");
     if (o.dither && !hasExtension(*o.output, ".gif"))
         throw InputError("--dither: dithers a GIF's palette; " + *o.output + " is not a .gif");
-}
-
-void checkViewerAndPlot(const Options& o, const std::vector<const OptionSpec*>& given) {
-    // The viewer's scripting flags mean nothing to a headless run; say so rather than ignore them.
-    if (anyGiven(given, OptionGroup::Viewer) && (o.output || o.benchmarkFrames))
-        throw InputError(std::string(o.output ? "--output" : "--benchmark") + ": " + groupNames(OptionGroup::Viewer) +
-                         " are for the viewer, which --output/--benchmark do not open");
-    if (o.plot) {
-        if (!o.output) throw InputError("--plot: writes a PNG: give --output FILE.png");
-        if (!o.sweeps.empty() || o.benchmarkFrames)
-            throw InputError("--plot: draws one plot: not with --sweep or --benchmark");
-        if (o.width && (*o.width < kPlotMinWidth || *o.height < kPlotMinHeight || *o.width > kPlotMaxSide ||
-                        *o.height > kPlotMaxSide))
-            throw InputError("--size: a plot is " + plotSizesText() + " pixels");
-    } else if ((o.incidenceDeg || o.fromInside) && (o.output || o.benchmarkFrames)) {
-        // They set up the plots (--plot, or the viewer's Plots section); a render has no use for them.
-        throw InputError(std::string(o.incidenceDeg ? "--incidence" : "--from-inside") +
-                         ": sets up the plots: use it with --plot, or in the viewer");
-    }
-}
-
-// --test DIR runs a folder of its own: the one-image modes and the viewer have no place in it, and its
-// settings need it.
-void checkTestSuite(const Options& o, const std::vector<const OptionSpec*>& given) {
-    if (!o.testDir) {
-        const char* flag = o.referencesDir ? "--references" : o.junit ? "--junit" : o.report ? "--report"
-                           : o.update             ? "--update"
-                           : o.artifacts          ? "--artifacts"
-                           : o.list               ? "--list"
-                           : !o.filters.empty()   ? "--filter"
-                           : o.shard              ? "--shard"
-                                                  : nullptr;
-        if (flag) throw InputError(std::string(flag) + ": belongs to a folder of screenshot tests: give --test DIR");
-        return;
-    }
-    if (!o.input.empty())
-        throw InputError("--test: renders the scene files of its folder; give no scene file (" + o.input + ") with it");
-    const char* other = o.output              ? "--output"
-                        : o.playlist          ? "--playlist"
-                        : o.reference         ? "--reference"
-                        : o.referenceMissing  ? "--reference-missing (--update writes missing references)"
-                        : o.diffOutput        ? "--diff-output (--report shows the differences)"
-                        : !o.sweeps.empty()   ? "--sweep"
-                        : o.probe             ? "--probe"
-                        : o.benchmarkFrames   ? "--benchmark"
-                        : o.info              ? "--info"
-                        : o.plot              ? "--plot"
-                        : o.captions          ? "--captions"
-                        : !o.animations.empty() ? "--animate"
-                        : anyGiven(given, OptionGroup::Viewer) ? "the viewer's options"
-                                                               : nullptr;
-    if (other) throw InputError(std::string("--test: compares its folder's scenes with their references; not with ") + other);
-    if (o.junit && !hasExtension(*o.junit, ".xml"))
-        throw InputError("--junit: " + *o.junit + ": JUnit reports end in .xml");
-    if (o.report && !hasExtension(*o.report, ".html"))
-        throw InputError("--report: " + *o.report + ": the report is a page: end its name in .html");
-}
-
-// --reference compares one image: a frame (--output) or a plot (--plot --output). Its settings need it
-// (the thresholds, or --test).
-void checkReference(const Options& o) {
-    if (!o.reference) {
-        const char* flag = o.referenceMissing           ? "--reference-missing"
-                           : o.maxDiff && !o.testDir    ? "--max-diff"
-                           : o.meanDiff && !o.testDir   ? "--mean-diff"
-                           : o.maxDiffPixels && !o.testDir ? "--max-diff-pixels"
-                           : o.diffOutput               ? "--diff-output"
-                                                        : nullptr;
-        if (!flag) return;
-        const bool threshold = flag == std::string("--max-diff") || flag == std::string("--mean-diff") ||
-                               flag == std::string("--max-diff-pixels");
-        throw InputError(std::string(flag) + ": sets up the comparison with a reference: give --reference REF.png" +
-                         (threshold ? " (or --test DIR)" : ""));
-    }
-    const char* other = otherRun(o);
-    if (other)
-        throw InputError(std::string("--reference: compares one --output image (a frame or a --plot); not with ") + other);
-    if (!o.output) throw InputError("--reference: compares the --output image with it: give --output FILE.png");
-    if (!hasExtension(*o.reference, ".png"))
-        throw InputError("--reference: " + *o.reference + ": only .png references are supported");
-    if (o.diffOutput && !hasExtension(*o.diffOutput, ".png"))
-        throw InputError("--diff-output: " + *o.diffOutput + ": only .png output is supported");
-}
-
-// The one place the run mode is worked out (the checks above have refused what does not go together).
-RunMode runMode(const Options& o) {
-    if (o.help) return RunMode::Help;
-    if (o.version) return RunMode::Version;
-    if (o.testDir) return RunMode::TestSuite;
-    if (o.playlist) return o.output ? RunMode::PlaylistImages : RunMode::PlaylistViewer;
-    if (o.plot && !o.info) return RunMode::Plot;
-    if (o.output && !o.sweeps.empty() && !o.info) return RunMode::SweepSheet;
-    if (o.output && o.probe) return RunMode::ProbeImage;
-    if (o.output && !o.animations.empty() && !o.info) return RunMode::Video;
-    if (o.output && !o.info && o.benchmarkFrames == 0) return RunMode::Image;
-    if (o.info) return RunMode::Info;
-    if (o.benchmarkFrames > 0) return RunMode::Benchmark;
-    return RunMode::Viewer;
 }
 
 }  // namespace
@@ -239,13 +160,12 @@ Options parseOptions(const std::vector<std::string>& args) {
         spec->apply(o, *spec, value);
         given.push_back(spec);
     }
-    checkTestSuite(o, given);
-    checkPlaylist(o);
-    checkOutputs(o);
-    checkViewerAndPlot(o, given);
-    checkReference(o);
+    checkInput(o);
+    checkRules(given);
+    checkFileNames(o);
+    checkPlotSize(o);
     checkAnimation(o);
-    o.mode = runMode(o);
+    o.mode = runMode(o, given);
     return o;
 }
 

@@ -19,19 +19,21 @@
 namespace shadelab {
 
 // What a run does, decided once by parseOptions from the options given (main.cpp acts on it).
+// In order of precedence: the run is the first of those the options given ask for (cli/option_table.hpp,
+// OptionRules::mode).
 enum class RunMode {
     Help,            // --help: print usage()
     Version,         // --version
+    TestSuite,       // --test DIR: every DIR/*.json against its reference (cli/test_suite.hpp)
     PlaylistImages,  // --playlist DIR --output OUT/: one PNG per preset
     PlaylistViewer,  // --playlist DIR: the viewer stepping through the presets
-    TestSuite,       // --test DIR: every DIR/*.json against its reference (cli/test_suite.hpp)
+    Info,            // --info: what was loaded
     Plot,            // --plot KIND --output FILE.png: drawn on the CPU, no GL
     SweepSheet,      // --sweep ... --output FILE.png: a contact sheet
     ProbeImage,      // --probe X,Y --output FILE.png: the frame and the pixel's terms as JSON
-    Image,           // --output FILE.png: one frame
     Video,           // --animate SPEC --output FILE.gif|.mp4|.webm: the animation, frame by frame
-    Info,            // --info: what was loaded
     Benchmark,       // --benchmark N: frame times as JSON lines
+    Image,           // --output FILE.png: one frame
     Viewer,          // anything else: the interactive viewer
 };
 
@@ -50,7 +52,7 @@ struct Options {
     bool intersection = false;              // --intersection: with --probe, the intersection diagram (viewer: key I)
     // --reference REF.png: the --output image compared with REF.png (cli/reference.hpp); the thresholds,
     // what a missing reference does and where the amplified difference goes. Unset: the defaults
-    // (core/image/image.hpp, ReferenceTolerance); each is refused without --reference.
+    // (core/image/image.hpp, ImageTolerance); each is refused without --reference.
     std::optional<std::string> reference;
     std::optional<MissingReference> referenceMissing;
     std::optional<int> maxDiff;             // --max-diff D (0..255)

@@ -5,7 +5,6 @@
 #include "core/base/message.hpp"
 #include "core/scene/scene_limits.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -24,21 +23,10 @@ void say(const std::string& line) { std::cout << oneLine("shadelab: " + line) <<
 
 }  // namespace
 
-// The mean to three significant digits (a single pixel off by 1/255 in a 1280x720 frame is 2.71e-07, not 0).
-std::string comparisonText(const CompareResult& r, const ReferenceTolerance& t) {
-    char mean[32];
-    std::snprintf(mean, sizeof mean, "%.3g", r.channelMean);
-    return "max " + std::to_string(r.channelMax) + "/255 (limit " + std::to_string(t.maxDiff) + "), mean " + mean +
-           " (limit " + formatNumber(t.meanDiff) + ")" +
-           (t.maxDiffPixels ? ", " + std::to_string(r.differingPixels) + (r.differingPixels == 1 ? " pixel differs" : " pixels differ") +
-                                  " (limit " + std::to_string(*t.maxDiffPixels) + ")"
-                            : "");
-}
-
 std::string sizeText(const Image& image) { return std::to_string(image.width) + "x" + std::to_string(image.height); }
 
-ReferenceTolerance referenceTolerance(const Options& options) {
-    ReferenceTolerance t;
+ImageTolerance referenceTolerance(const Options& options) {
+    ImageTolerance t;
     if (options.maxDiff) t.maxDiff = *options.maxDiff;
     if (options.meanDiff) t.meanDiff = *options.meanDiff;
     t.maxDiffPixels = options.maxDiffPixels;
@@ -92,9 +80,9 @@ int writeOutputAndCompare(const Options& options, const Image& image, const std:
         writePng(*options.diffOutput, amplifiedDifference(image, *reference, diffFactor));
         if (options.verbose) std::cerr << "shadelab: wrote " << *options.diffOutput << "\n";
     }
-    const ReferenceTolerance tolerance = referenceTolerance(options);
+    const ImageTolerance tolerance = referenceTolerance(options);
     const bool matches = tolerance.matches(r);
-    say(against + comparisonText(r, tolerance) + (matches ? ": matches" : ": differs"));
+    say(against + describe(r, tolerance) + (matches ? ": matches" : ": differs"));
     return matches ? 0 : 1;
 }
 

@@ -24,11 +24,7 @@ int writeOutputAndCompare(const Options& options, const Image& image, const std:
                           float diffFactor);
 
 // The thresholds: --max-diff and --mean-diff, or the defaults.
-ReferenceTolerance referenceTolerance(const Options& options);
-
-// The numbers of a comparison against the thresholds, as every line and report says them:
-// "max 3/255 (limit 4), mean 0.0157 (limit 0.002)".
-std::string comparisonText(const CompareResult& r, const ReferenceTolerance& t);
+ImageTolerance referenceTolerance(const Options& options);
 
 // "160x120".
 std::string sizeText(const Image& image);

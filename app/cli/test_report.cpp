@@ -183,7 +183,7 @@ std::string junitXml(const TestRun& run) {
     return x.str();
 }
 
-float differenceFactorFor(int channelMax) { return channelMax > 0 ? 255.0f / float(channelMax) : 1.0f; }
+float differenceFactorFor(int maxDiff) { return maxDiff > 0 ? 255.0f / float(maxDiff) : 1.0f; }
 
 Image differenceForReport(const Image& actual, const Image& reference, float factor, const std::vector<glm::ivec4>& masks) {
     Image d = amplifiedDifference(actual, reference, factor);
@@ -253,7 +253,7 @@ std::string failingCase(const TestCase& c) {
     h += dataImage(c.actualPng, "this render", c.name + " render");
     char factor[32];
     std::snprintf(factor, sizeof factor, "%.4g", double(c.differenceFactor));
-    const std::string largest = c.numbers ? std::to_string(c.numbers->channelMax) + "/255" : "";
+    const std::string largest = c.numbers ? std::to_string(c.numbers->maxDiff) + "/255" : "";
     h += dataImage(c.differencePng,
                    std::string("|render - reference| x ") + factor + " (the largest, " + largest + ", at full)" +
                        (c.masks.empty() ? "" : "; hatched: masked, not compared"),
@@ -287,7 +287,7 @@ std::string htmlReport(const TestRun& run) {
         for (const TestCase& c : run.cases)
             if (c.outcome == CaseOutcome::Match)
                 h += "<tr><td>" + xmlEscaped(c.name) + "</td><td>" +
-                     (c.numbers ? xmlEscaped(comparisonText(*c.numbers, c.tolerance)) : "") + "</td></tr>\n";
+                     (c.numbers ? xmlEscaped(describe(*c.numbers, c.tolerance)) : "") + "</td></tr>\n";
         h += "</table>\n";
     }
     return h + "</body></html>\n";

@@ -29,7 +29,7 @@ struct TestCase {
     std::string message;
     bool shaderError = false;              // the message is a ShaderError's (the summary repeats it once)
     std::optional<CompareResult> numbers;  // when it was compared (same size), the masks left out
-    ReferenceTolerance tolerance;          // the run's, or the scene's own "test" settings
+    ImageTolerance tolerance;              // the run's, or the scene's own "test" settings
     std::vector<glm::ivec4> masks;         // the scene's "test": "masks", [x, y, w, h] left out of the comparison
     double seconds = 0;                    // render, reading the reference and comparing
     bool updated = false;                  // --update rewrote its reference from this render
@@ -46,7 +46,7 @@ struct TestRun {
     std::string referencesDir;   // --references DIR2, or DIR
     std::string shaderDir;       // --shader-dir, empty when not given
     std::string shard;           // --shard K/N as given, empty when not given
-    ReferenceTolerance tolerance;
+    ImageTolerance tolerance;
     std::vector<TestCase> cases; // in name order
     double seconds = 0;          // the whole run, wall-clock
     // Set when the run could not start at all (OpenGL cannot start): the reason. JUnit then holds one
@@ -83,8 +83,8 @@ std::string htmlReport(const TestRun& run);
 // |render - reference| x `factor` (255 / the largest difference: that one at full brightness), the
 // masked rectangles hatched grey.
 Image differenceForReport(const Image& actual, const Image& reference, float factor, const std::vector<glm::ivec4>& masks);
-// The factor that brings a largest difference of `channelMax` /255 to 255 (1 when nothing differs).
-float differenceFactorFor(int channelMax);
+// The factor that brings a largest difference of `maxDiff` /255 to 255 (1 when nothing differs).
+float differenceFactorFor(int maxDiff);
 
 // Text escaped for XML and HTML (&, <, >, ", '), control characters and bytes that are not UTF-8 as
 // message.hpp's escapeControls writes them (XML 1.0 allows neither); newlines kept when `keepNewlines`.

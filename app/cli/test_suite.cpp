@@ -103,8 +103,8 @@ std::vector<std::string> selectedNames(const std::vector<std::string>& names, co
 }
 
 // The run's thresholds with the scene's own "test" settings over them.
-ReferenceTolerance toleranceOf(const ReferenceTolerance& run, const TestSettings& t) {
-    ReferenceTolerance r = run;
+ImageTolerance toleranceOf(const ImageTolerance& run, const TestSettings& t) {
+    ImageTolerance r = run;
     if (t.maxDiff) r.maxDiff = *t.maxDiff;
     if (t.meanDiff) r.meanDiff = *t.meanDiff;
     if (t.maxDiffPixels) r.maxDiffPixels = *t.maxDiffPixels;
@@ -183,7 +183,7 @@ CompareResult compareCaseImages(const Image& actual, const Image& reference, con
     std::size_t maskedPixels = 0;
     CompareResult r = compareImages(masked(actual, reference, masks, maskedPixels), reference, 0);
     const double all = double(actual.width) * double(actual.height), compared = all - double(maskedPixels);
-    r.channelMean = compared > 0 ? r.channelMean * all / compared : 0.0;
+    r.meanDiff = compared > 0 ? r.meanDiff * all / compared : 0.0;
     return r;
 }
 
@@ -213,13 +213,13 @@ void compareCase(TestCase& c, const Image& actual, const Options& options) {
     if (reference) {
         const CompareResult r = compareCaseImages(actual, *reference, c.masks);
         c.outcome = c.tolerance.matches(r) ? CaseOutcome::Match : CaseOutcome::Differs;
-        if (r.sizeMatches) c.numbers = r, c.message = comparisonText(r, c.tolerance);
+        if (r.sizeMatches) c.numbers = r, c.message = describe(r, c.tolerance);
         else c.message = "size " + sizeText(actual) + ", the reference's " + sizeText(*reference);
     }
     if (c.outcome != CaseOutcome::Match) {
         std::optional<Image> difference;
         if (c.numbers) {
-            c.differenceFactor = differenceFactorFor(c.numbers->channelMax);
+            c.differenceFactor = differenceFactorFor(c.numbers->maxDiff);
             difference = differenceForReport(actual, *reference, c.differenceFactor, c.masks);
         }
         if (options.report) {

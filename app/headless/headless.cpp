@@ -122,6 +122,16 @@ HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, Hea
     return frame;
 }
 
+bool SceneGeometryCache::update(const Scene& s, int msaaSamples, std::uint64_t keptBytes) {
+    if (built_ && sameMeshes(*built_, s)) return false;
+    geometry_.reset();  // the previous meshes go before the next are read
+    built_.reset();
+    geometry_ = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
+    checkFrameMemory(s, msaaSamples, geometry_->triangleCount(), keptBytes, geometry_->textureBytes());
+    built_ = std::make_unique<Scene>(s);
+    return true;
+}
+
 HeadlessSession::HeadlessSession(const ShaderLibrary& shaders, HeadlessBackend backend, int width, int height)
     : context_(makeHeadlessContext(backend, width, height)),
       renderer_(std::make_unique<Renderer>(context_->getProcAddress(), shaders, headlessOptions())),
@@ -135,15 +145,8 @@ HeadlessSession::~HeadlessSession() {
 const char* HeadlessSession::backendName() const { return context_->backendName(); }
 
 Image HeadlessSession::render(Scene& s, int msaaSamples, std::uint64_t keptBytes) {
-    if (!built_ || !sameMeshes(*built_, s)) {
-        geometry_.reset();  // the previous meshes go before the next are read
-        built_.reset();
-        geometry_ = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-        checkFrameMemory(s, msaaSamples, geometry_->triangleCount(), keptBytes, geometry_->textureBytes());
-        renderer_->setGeometry(geometry_);
-        built_ = std::make_unique<Scene>(s);
-    }
-    frameIfNeeded(s, *geometry_);
+    if (geometry_.update(s, msaaSamples, keptBytes)) renderer_->setGeometry(geometry_.geometry());
+    frameIfNeeded(s, *geometry_.geometry());
     if (context_->target().width != s.width || context_->target().height != s.height)
         context_->resize(s.width, s.height);
     drawFrame(*renderer_, s, context_->target(), *msaa_, msaaSamples);
@@ -188,24 +191,17 @@ void renderFramesHeadless(const Scene& base, std::size_t count,
                           int msaaSamples) {
     checkFrameMemory(base, msaaSamples, std::nullopt);
     Scene framed = base;
-    auto geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(framed));
-    checkFrameMemory(framed, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
-    frameIfNeeded(framed, *geometry);
+    SceneGeometryCache geometry;
+    geometry.update(framed, msaaSamples);
+    frameIfNeeded(framed, *geometry.geometry());
     const auto context = makeHeadlessContext(backend, base.width, base.height);
     Renderer renderer(context->getProcAddress(), shaders, headlessOptions());
-    renderer.setGeometry(geometry);
+    renderer.setGeometry(geometry.geometry());
     MultisampleTarget msaa;
-    Scene built = framed;  // whose meshes `geometry` holds
-    Image image;           // every frame read into the same pixels
+    Image image;  // every frame read into the same pixels
     for (std::size_t i = 0; i < count; ++i) {
         const Scene s = sceneAt(framed, i);
-        if (!sameMeshes(built, s)) {
-            geometry.reset();  // the previous meshes go before the next are read
-            geometry = std::make_shared<SceneGeometry>(buildSceneGeometry(s));
-            checkFrameMemory(s, msaaSamples, geometry->triangleCount(), 0, geometry->textureBytes());
-            renderer.setGeometry(geometry);
-            built = s;
-        }
+        if (geometry.update(s, msaaSamples)) renderer.setGeometry(geometry.geometry());
         drawFrame(renderer, s, context->target(), msaa, msaaSamples);
         readPixelsInto(context->target(), image);
         done(i, image);
@@ -246,7 +242,7 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
     RendererOptions manyFrames = headlessOptions();  // of one mesh, as in the viewer
     manyFrames.meshOrder = RendererOptions::MeshOrder::VertexCache;
     Renderer renderer(context->getProcAddress(), shaders, manyFrames);
-    const std::size_t triangles = geometry->triangleCount() * ((scene.layout == Layout::Compare ? 3 : scene.layout == Layout::Diff ? 2 : 1));
+    const std::size_t triangles = geometry->triangleCount() * scenePaneCount(scene.layout);
     renderer.setGeometry(std::move(geometry));
     const RenderTarget target = context->target();
     MultisampleTarget msaa;

@@ -39,6 +39,22 @@ struct HeadlessFrame {
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend,
                                   int msaaSamples = 1);
 
+// The geometry of a run of scenes (HeadlessSession, renderFramesHeadless): built again only when a
+// scene's meshes differ from those of the scene it was built for.
+class SceneGeometryCache {
+public:
+    // Makes the geometry `scene`'s: when its meshes differ, the previous geometry is released, the new
+    // one built and checked against the memory budget (with `keptBytes` more for the caller's images).
+    // Returns whether it was built (the renderer then needs it). Throws InputError; after one the next
+    // call builds again.
+    bool update(const Scene& scene, int msaaSamples, std::uint64_t keptBytes = 0);
+    const std::shared_ptr<SceneGeometry>& geometry() const { return geometry_; }
+
+private:
+    std::shared_ptr<SceneGeometry> geometry_;
+    std::unique_ptr<Scene> built_;  // whose meshes geometry_ holds
+};
+
 // One context and renderer kept for many frames (renderScenesHeadless, --test, the Python module's
 // shadelab.Renderer): programs stay compiled, a scene's geometry is built only when its meshes differ from
 // the previous scene's, and the context is resized when the size changes. The context is current on
@@ -54,15 +70,14 @@ public:
     // InputError, ShaderError; after one the session can draw the next scene.
     Image render(Scene& scene, int msaaSamples = 1, std::uint64_t keptBytes = 0);
     // The CPU geometry of the last scene drawn (for the probe's ray cast); null before the first.
-    std::shared_ptr<const SceneGeometry> geometry() const { return geometry_; }
+    std::shared_ptr<const SceneGeometry> geometry() const { return geometry_.geometry(); }
     const char* backendName() const;
 
 private:
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<MultisampleTarget> msaa_;
-    std::shared_ptr<SceneGeometry> geometry_;
-    std::unique_ptr<Scene> built_;  // whose meshes geometry_ holds
+    SceneGeometryCache geometry_;
 };
 
 // Renders each scene in turn on one context (resized when a scene's size differs from the previous

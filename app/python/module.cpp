@@ -245,7 +245,7 @@ py::dict compare(const py::array& actualArray, const py::array& referenceArray, 
     const Image reference = fromArray(referenceArray, "reference");
     std::vector<std::string> words = {"--reference", "reference.png"};
     words.insert(words.end(), args.begin(), args.end());
-    const ReferenceTolerance tolerance = referenceTolerance(parseCall({words, std::nullopt, ""}, "image.png"));
+    const ImageTolerance tolerance = referenceTolerance(parseCall({words, std::nullopt, ""}, "image.png"));
     CompareResult r;
     std::optional<Image> difference;
     {
@@ -256,11 +256,11 @@ py::dict compare(const py::array& actualArray, const py::array& referenceArray, 
     py::dict result;
     result["matches"] = tolerance.matches(r);
     result["size_matches"] = r.sizeMatches;
-    result["max"] = r.channelMax;
-    result["mean"] = r.channelMean;
+    result["max"] = r.maxDiff;
+    result["mean"] = r.meanDiff;
     result["max_diff"] = tolerance.maxDiff;
     result["mean_diff"] = tolerance.meanDiff;
-    result["message"] = r.sizeMatches ? comparisonText(r, tolerance)
+    result["message"] = r.sizeMatches ? describe(r, tolerance)
                                        : "size " + sizeText(actual) + ", the reference's " + sizeText(reference);
     result["difference"] = difference ? py::object(toArray(*difference)) : py::object(py::none());
     return result;

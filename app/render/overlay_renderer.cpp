@@ -257,11 +257,9 @@ void OverlayRenderer::drawLights(const Scene& scene, std::size_t identityObject)
         const GLint first = GLint(data.size() / kFloatsPerVertex);
         glm::vec3 at = light.position;
         if (light.type == LightType::Directional) {
-            const glm::vec3 dir = glm::normalize(light.direction);
-            const float reach = 0.6f * glm::length(cam.eye - cam.target);
-            at = cam.target - dir * reach;
+            at = lightHandle(light, cam);
             pushVertex(data, at);
-            pushVertex(data, at + dir * (0.4f * reach));
+            pushVertex(data, at + glm::normalize(light.direction) * (0.4f * directionalHandleDistance(cam)));
         }
         if (light.type == LightType::Spot) {
             // The axis and four lines along the outer cone, a quarter of the way to the eye long.

@@ -5,41 +5,89 @@
 #include "render/program.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace shadelab {
+
+namespace {
+
+// A constant of shaders/shared_defs.glsl as a program's defines name it: its value and its name, both
+// made by the preprocessor from the one token, so a table of them cannot say another name than the
+// value's (the GLSL file stays the one definition; nothing mirrors it by hand).
+struct SharedDefine {
+    int value;
+    const char* name;
+};
+#define SL_SHARED_DEFINE(name) SharedDefine{name, #name}
+
+// Each scene value's constant: one row per value, the scene's enum beside the shaders' name.
+template <typename E>
+using DefineOf = std::pair<E, SharedDefine>;
+constexpr DefineOf<LightType> kLightKinds[] = {{LightType::Point, SL_SHARED_DEFINE(SL_LIGHT_POINT)},
+                                               {LightType::Directional, SL_SHARED_DEFINE(SL_LIGHT_DIRECTIONAL)},
+                                               {LightType::Area, SL_SHARED_DEFINE(SL_LIGHT_AREA)},
+                                               {LightType::Spot, SL_SHARED_DEFINE(SL_LIGHT_SPOT)}};
+constexpr SharedDefine kAttenuations[] = {SL_SHARED_DEFINE(SL_ATTENUATION_NONE),
+                                          SL_SHARED_DEFINE(SL_ATTENUATION_INVERSE_SQUARE),
+                                          SL_SHARED_DEFINE(SL_ATTENUATION_INVERSE_SQUARE_RANGE)};
+constexpr DefineOf<ReflectionModel> kReflections[] = {{ReflectionModel::Phong, SL_SHARED_DEFINE(SL_REFLECTION_PHONG)},
+                                                      {ReflectionModel::BlinnPhong, SL_SHARED_DEFINE(SL_REFLECTION_BLINN_PHONG)}};
+constexpr DefineOf<OutputEncoding> kEncodings[] = {{OutputEncoding::Linear, SL_SHARED_DEFINE(SL_ENCODING_LINEAR)},
+                                                   {OutputEncoding::Srgb, SL_SHARED_DEFINE(SL_ENCODING_SRGB)}};
+constexpr DefineOf<SpecularNormalization> kNormalizations[] = {
+    {SpecularNormalization::None, SL_SHARED_DEFINE(SL_NORMALIZATION_NONE)},
+    {SpecularNormalization::Energy, SL_SHARED_DEFINE(SL_NORMALIZATION_ENERGY)}};
+constexpr DefineOf<FresnelMode> kFresnels[] = {{FresnelMode::None, SL_SHARED_DEFINE(SL_FRESNEL_NONE)},
+                                               {FresnelMode::Schlick, SL_SHARED_DEFINE(SL_FRESNEL_SCHLICK)},
+                                               {FresnelMode::Exact, SL_SHARED_DEFINE(SL_FRESNEL_EXACT)}};
+constexpr DefineOf<ShowTerm> kShowTerms[] = {{ShowTerm::All, SL_SHARED_DEFINE(SL_SHOW_ALL)},
+                                             {ShowTerm::Ambient, SL_SHARED_DEFINE(SL_SHOW_AMBIENT)},
+                                             {ShowTerm::Diffuse, SL_SHARED_DEFINE(SL_SHOW_DIFFUSE)},
+                                             {ShowTerm::Specular, SL_SHARED_DEFINE(SL_SHOW_SPECULAR)},
+                                             {ShowTerm::Light, SL_SHARED_DEFINE(SL_SHOW_LIGHT)},
+                                             {ShowTerm::Unlit, SL_SHARED_DEFINE(SL_SHOW_UNLIT)},
+                                             {ShowTerm::Emissive, SL_SHARED_DEFINE(SL_SHOW_EMISSIVE)}};
+constexpr SharedDefine kAlphaModes[] = {SL_SHARED_DEFINE(SL_ALPHA_OPAQUE), SL_SHARED_DEFINE(SL_ALPHA_MASK),
+                                        SL_SHARED_DEFINE(SL_ALPHA_BLEND)};
+#undef SL_SHARED_DEFINE
+
+template <typename E, std::size_t N>
+const SharedDefine& defineOf(const DefineOf<E> (&table)[N], E value) {
+    for (const auto& row : table)
+        if (row.first == value) return row.second;
+    return table[0].second;  // (every value has its row)
+}
+template <std::size_t N>
+const char* nameOf(const SharedDefine (&table)[N], int value) {
+    for (const SharedDefine& d : table)
+        if (d.value == value) return d.name;
+    return table[0].name;
+}
+
+// "SL_SHOW SL_SHOW_AMBIENT": `name` defined as the constant.
+std::string defineAs(const char* name, const SharedDefine& value) { return std::string(name) + " " + value.name; }
+
+}  // namespace
 
 int attenuationKind(const Light& l) {
     if (l.type == LightType::Directional || l.attenuation != Attenuation::InverseSquare) return SL_ATTENUATION_NONE;
     return l.range > 0.0f ? SL_ATTENUATION_INVERSE_SQUARE_RANGE : SL_ATTENUATION_INVERSE_SQUARE;
 }
 
-int lightKind(const Light& l) {
-    switch (l.type) {
-    case LightType::Point: return SL_LIGHT_POINT;
-    case LightType::Directional: return SL_LIGHT_DIRECTIONAL;
-    case LightType::Area: return SL_LIGHT_AREA;
-    case LightType::Spot: return SL_LIGHT_SPOT;
-    }
-    return SL_LIGHT_POINT;
-}
+int lightKind(const Light& l) { return defineOf(kLightKinds, l.type).value; }
 
-std::string encodingDefine(OutputEncoding encoding) {
-    return std::string("SL_ENCODING ") + (encoding == OutputEncoding::Srgb ? "SL_ENCODING_SRGB" : "SL_ENCODING_LINEAR");
-}
+std::string encodingDefine(OutputEncoding encoding) { return defineAs("SL_ENCODING", defineOf(kEncodings, encoding)); }
 
 std::vector<std::string> programDefines(const Scene& s) {
     const std::size_t count = std::min<std::size_t>(s.lights.size(), SL_MAX_LIGHTS);
-    static const char* const kKinds[] = {"SL_LIGHT_POINT", "SL_LIGHT_DIRECTIONAL", "SL_LIGHT_AREA", "SL_LIGHT_SPOT"};
-    static const char* const kAttenuations[] = {"SL_ATTENUATION_NONE", "SL_ATTENUATION_INVERSE_SQUARE",
-                                                "SL_ATTENUATION_INVERSE_SQUARE_RANGE"};
     // Per light, as comma-separated lists that shaders/lighting.glsl reads into constant arrays.
     std::string kinds, attenuations, samplesX, samplesY;
     bool area = false;
     for (std::size_t l = 0; l < count; ++l) {
         const Light& light = s.lights[l];
         const char* comma = l > 0 ? ", " : "";
-        kinds += comma + std::string(kKinds[lightKind(light)]);
-        attenuations += comma + std::string(kAttenuations[attenuationKind(light)]);
+        kinds += comma + std::string(defineOf(kLightKinds, light.type).name);
+        attenuations += comma + std::string(nameOf(kAttenuations, attenuationKind(light)));
         samplesX += comma + std::to_string(light.type == LightType::Area ? light.samples.x : 1);
         samplesY += comma + std::to_string(light.type == LightType::Area ? light.samples.y : 1);
         area = area || light.type == LightType::Area;
@@ -53,28 +101,15 @@ std::vector<std::string> programDefines(const Scene& s) {
         d.push_back("SL_AREA_SAMPLES_Y " + samplesY);
     }
     if (area) d.push_back("SL_AREA_LIGHTS 1");
-    d.push_back(std::string("SL_REFLECTION ") +
-                (s.reflection == ReflectionModel::Phong ? "SL_REFLECTION_PHONG" : "SL_REFLECTION_BLINN_PHONG"));
+    d.push_back(defineAs("SL_REFLECTION", defineOf(kReflections, s.reflection)));
     d.push_back(encodingDefine(s.outputEncoding));
     // The model extensions and term isolation: only scenes that use them get these defines, so every
     // other scene compiles to the programs it always did.
-    if (s.specularNormalization == SpecularNormalization::Energy)
-        d.push_back("SL_SPECULAR_NORMALIZATION SL_NORMALIZATION_ENERGY");
-    if (s.fresnel != FresnelMode::None)
-        d.push_back(std::string("SL_FRESNEL ") +
-                    (s.fresnel == FresnelMode::Schlick ? "SL_FRESNEL_SCHLICK" : "SL_FRESNEL_EXACT"));
-    switch (s.show.term) {
-    case ShowTerm::All: break;
-    case ShowTerm::Ambient: d.push_back("SL_SHOW SL_SHOW_AMBIENT"); break;
-    case ShowTerm::Diffuse: d.push_back("SL_SHOW SL_SHOW_DIFFUSE"); break;
-    case ShowTerm::Specular: d.push_back("SL_SHOW SL_SHOW_SPECULAR"); break;
-    case ShowTerm::Unlit: d.push_back("SL_SHOW SL_SHOW_UNLIT"); break;
-    case ShowTerm::Emissive: d.push_back("SL_SHOW SL_SHOW_EMISSIVE"); break;
-    case ShowTerm::Light:
-        d.push_back("SL_SHOW SL_SHOW_LIGHT");
-        d.push_back("SL_SHOW_LIGHT_INDEX " + std::to_string(s.show.light));
-        break;
-    }
+    if (s.specularNormalization != SpecularNormalization::None)
+        d.push_back(defineAs("SL_SPECULAR_NORMALIZATION", defineOf(kNormalizations, s.specularNormalization)));
+    if (s.fresnel != FresnelMode::None) d.push_back(defineAs("SL_FRESNEL", defineOf(kFresnels, s.fresnel)));
+    if (s.show.term != ShowTerm::All) d.push_back(defineAs("SL_SHOW", defineOf(kShowTerms, s.show.term)));
+    if (s.show.term == ShowTerm::Light) d.push_back("SL_SHOW_LIGHT_INDEX " + std::to_string(s.show.light));
     // Only scenes with shadows get these: without them the programs are the ones they always were.
     if (s.shadows.enabled && count > 0) {
         d.push_back("SL_SHADOWS 1");
@@ -95,8 +130,8 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.textured) defines.push_back("SL_TEXTURED 1");
     if (variant.instanced) defines.push_back("SL_INSTANCED 1");
     // Only draws that use them get these: an opaque draw without E compiles to the programs it always did.
-    if (variant.alphaMode == SL_ALPHA_MASK) defines.push_back("SL_ALPHA_MODE SL_ALPHA_MASK");
-    if (variant.alphaMode == SL_ALPHA_BLEND) defines.push_back("SL_ALPHA_MODE SL_ALPHA_BLEND");
+    if (variant.alphaMode != SL_ALPHA_OPAQUE)
+        defines.push_back(std::string("SL_ALPHA_MODE ") + nameOf(kAlphaModes, variant.alphaMode));
     if (variant.emissive) defines.push_back("SL_EMISSIVE 1");
     if (variant.emissive && variant.emissiveTexture && variant.textured) defines.push_back("SL_EMISSIVE_TEXTURE 1");
     if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");

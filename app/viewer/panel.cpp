@@ -567,7 +567,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
         requests.clearProbe |= probeSection(scene, *probe);
     // A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
-    auto section = [&](const char* title, const char* name, bool defaultOpen) {
+    auto section = [&](const char* title, PanelSection id, bool defaultOpen) {
+        const char* name = nameOf(kPanelSections, id);
         if (settings.startSections) {
             const auto& open = *settings.startSections;
             ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
@@ -578,36 +579,35 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     };
     settings.openSections.clear();
     settings.readout.clear();
-    if (section("Shading", kPanelSections[0], true)) sectionShading(scene);
+    if (section("Shading", PanelSection::Shading, true)) sectionShading(scene);
     settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
     SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
-    if (object && section("Material", kPanelSections[1], true)) {
+    if (object && section("Material", PanelSection::Material, true)) {
         if (scene.objects.size() > 1)
             ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
         sectionMaterial(object->material, scene.reflection, settings.readout);
     }
-    if (section("Plots: specular lobe, Fresnel", kPanelSections[2], false))
+    if (section("Plots: specular lobe, Fresnel", PanelSection::Plots, false))
         sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight);
     // S opens or closes it, and brings it into view.
     if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
-    if (section("Shader: the GLSL of the pane's mode (S: large over the view)", kPanelSections[3], false)) {
+    if (section("Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader, false)) {
         if (settings.openShader) ImGui::SetScrollHereY(0.0f);
         sectionShader(scene, settings, status, probe);
     }
     settings.openShader.reset();
-    if (object && section("Mesh", kPanelSections[4], true))
+    if (object && section("Mesh", PanelSection::Mesh, true))
         sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
-    if (section("Lights", kPanelSections[5], true)) sectionLights(scene, settings.selectedLight, settings.readout);
-    if (section("Shadows", kPanelSections[6], true)) sectionShadows(scene.shadows);
-    if (section("Overlays", kPanelSections[7], true)) {
+    if (section("Lights", PanelSection::Lights, true)) sectionLights(scene, settings.selectedLight, settings.readout);
+    if (section("Shadows", PanelSection::Shadows, true)) sectionShadows(scene.shadows);
+    if (section("Overlays", PanelSection::Overlays, true)) {
         sectionOverlays(settings);
         sectionDisplay(status, requests);
     }
-    if (section("Camera", kPanelSections[8], false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
-    if (section("Background", kPanelSections[9], false)) colorEdit("background", scene.background);
-    if (section("File", kPanelSections[10], true)) sectionFile(settings, status, requests);
-    if (section("Keys", kPanelSections[11], false)) sectionKeys();
-    static_assert(std::size(kPanelSections) == 12, "every section above has its name");
+    if (section("Camera", PanelSection::Camera, false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
+    if (section("Background", PanelSection::Background, false)) colorEdit("background", scene.background);
+    if (section("File", PanelSection::File, true)) sectionFile(settings, status, requests);
+    if (section("Keys", PanelSection::Keys, false)) sectionKeys();
     settings.startSections.reset();
     // ImGui marks every edit a widget makes (MarkItemEdited, this frame's flag); the light buttons
     // change the list.
@@ -814,13 +814,7 @@ void drawHelpOverlay(const UiRect& view) {
     ImGui::End();
 }
 
-glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) {
-    const Light& l = scene.lights[light];
-    if (l.type != LightType::Directional) return l.position;
-    // Where the 3D light cross is drawn (OverlayRenderer::drawLights): 0.6 of the eye's distance.
-    const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
-    return scene.camera.target - glm::normalize(l.direction) * reach;
-}
+glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) { return lightHandle(scene.lights[light], scene.camera); }
 
 int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float radiusPixels) {
     int best = -1;
@@ -1000,7 +994,7 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
             if (l.type == LightType::Directional) {
                 // Toward the target (what it lights), from the handle.
                 const glm::vec3 dir = glm::normalize(l.direction);
-                const float reach = glm::length(scene.camera.eye - scene.camera.target) * 0.6f;
+                const float reach = directionalHandleDistance(scene.camera);
                 const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
                 const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.4f));
                 if (a.z > 0.0f && b.z > 0.0f) boxes.push_back(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));

@@ -154,8 +154,8 @@ void drawHelpOverlay(const UiRect& view);
 std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, float framebufferScale, int selected,
                                     float top, const std::vector<BoundingSphere>& models = {});
 
-// Where light `light`'s marker is grabbed (world space): a point or area light's position; for a
-// directional light the tail of its arrow, a third of the eye's distance up-light of the target.
+// Where light `light`'s marker is grabbed (world space): core/scene's lightHandle, for a directional
+// light the tail of its arrow.
 glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light);
 // The light whose handle is nearest to `pixel` (image pixels of the view, in `pane`) within
 // `radiusPixels`; -1 for none.

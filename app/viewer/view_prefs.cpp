@@ -48,8 +48,7 @@ ViewPrefs loadViewPrefs(const std::string& path) {
             std::vector<std::string> open;
             for (const auto& name : j.at("open_sections")) {
                 const std::string s = name.get<std::string>();
-                if (std::find(std::begin(kPanelSections), std::end(kPanelSections), s) != std::end(kPanelSections))
-                    open.push_back(s);
+                if (valueNamed(kPanelSections, s)) open.push_back(s);
             }
             p.openSections = open;
         }

@@ -789,9 +789,7 @@ void Viewer::uploadGeometryIfChanged() {
         overlays_->setGeometry(geometry);
         uploadedGeometry_ = document_.geometryRevision();
     }
-    const Layout layout = document_.scene().layout;
-    const std::size_t panes = layout == Layout::Compare ? 3 : layout == Layout::Diff ? 2 : 1;
-    status_.frameTriangles = geometry ? geometry->triangleCount() * panes : 0;
+    status_.frameTriangles = geometry ? geometry->triangleCount() * scenePaneCount(document_.scene().layout) : 0;
     const auto selected = std::size_t(settings_.selectedObject);
     status_.objectTriangles = geometry && selected < geometry->meshes.size() ? geometry->meshes[selected].triangleCount() : 0;
     status_.modelCameras.clear();

@@ -152,7 +152,7 @@ json describe() {
         std::fprintf(stderr, "shadelab: %s\n", oneLine(e.what()).c_str());
     }
     json sections = json::array();
-    for (const char* s : kPanelSections) sections.push_back(s);
+    for (const auto& section : kPanelSections) sections.push_back(section.first);
     json plots = json::array();
     for (const auto& [name, kind] : kPlotKindNames) plots.push_back(name);
     // The --mesh and --light shorthands' parts (scene_limits.hpp, scene_names.hpp), for the page's

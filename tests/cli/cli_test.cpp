@@ -53,7 +53,7 @@ TEST_F(Cli, BothHeadlessBackendsRenderTheSameImage) {
     ASSERT_EQ(egl.exitCode, 0) << egl.err;
     const CompareResult d = compareImages(readPng(path("e.png")), readPng(path("o.png")), 0);
     EXPECT_TRUE(d.sizeMatches);
-    EXPECT_LE(d.maxDifference, 1);
+    EXPECT_LE(d.maxDiff, 1);
     const RunResult bench = run({"--backend", "egl", "--benchmark", "2", "--size", "64x48", "--shading", "phong"});
     ASSERT_EQ(bench.exitCode, 0) << bench.err;
     EXPECT_EQ(nlohmann::json::parse(bench.out.substr(0, bench.out.find('\n'))).at("backend"), "egl") << bench.out;
@@ -71,7 +71,7 @@ TEST_F(Cli, LlvmpipeOn128BitsDrawsPhongWithoutCrashing) {
     ASSERT_EQ(narrow.exitCode, 0) << narrow.err;
     const CompareResult d = compareImages(readPng(path("narrow.png")), readPng(path("wide.png")), 0);
     EXPECT_TRUE(d.sizeMatches);
-    EXPECT_LE(d.maxDifference, 2);
+    EXPECT_LE(d.maxDiff, 2);
 }
 
 // --sweep: one labelled tile per value in one PNG, a second sweep makes rows; the tiles are the renders
@@ -90,7 +90,7 @@ TEST_F(Cli, SweepSheetHasOneTilePerValue) {
     for (int y = 0; y < 48; ++y)
         for (int x = 0; x < 64; ++x)
             std::copy_n(sheet.pixel(4 + 68 + x, 4 + (48 + bar + 4) + bar + y), 4, tile.pixel(x, y));
-    EXPECT_EQ(compareImages(tile, one, 0).maxDifference, 0);
+    EXPECT_EQ(compareImages(tile, one).maxDiff, 0);
     const RunResult noOutput = run({"--sweep", "ke=1,2"});
     EXPECT_EQ(noOutput.exitCode, 2);
     EXPECT_NE(noOutput.err.find("--sweep: renders a sheet to a PNG"), std::string::npos) << noOutput.err;
@@ -373,7 +373,7 @@ TEST_F(Cli, MsaaTakesSampleCountsAndChangesTheOutput) {
     const Image four = runToPng({"--msaa", "4", "--size", "96x64"}, "x.png");
     const Image one = runToPng({"--size", "96x64"}, "one.png");
     ASSERT_EQ(four.width, 96);
-    EXPECT_GT(compareImages(four, one, 2).failingPixels, 20u);
+    EXPECT_GT(compareImages(four, one, 2).differingPixels, 20u);
 
     const RunResult bench = run({"--benchmark", "2", "--size", "64x48", "--shading", "phong", "--msaa", "4"});
     ASSERT_EQ(bench.exitCode, 0) << bench.err;
@@ -507,7 +507,7 @@ TEST_F(Cli, PlaylistWritesOnePngPerPreset) {
     const std::string last = *expected.rbegin();
     const fs::path preset = lecture / (last.substr(0, last.size() - 4) + ".json");
     ASSERT_EQ(run({preset.string(), "--size", "96x54", "--output", path("single.png")}).exitCode, 0);
-    EXPECT_EQ(compareImages(readPng(path("slides/" + last)), readPng(path("single.png")), 0).maxDifference, 0) << preset;
+    EXPECT_EQ(compareImages(readPng(path("slides/" + last)), readPng(path("single.png"))).maxDiff, 0) << preset;
 }
 
 // --playlist NAME: a bare name that is no folder where shadelab runs is the scene folder of that name
@@ -596,7 +596,7 @@ TEST_F(Cli, PlaylistCaptionsAndOutputFolder) {
         ASSERT_GT(captioned.height, 90 + 10) << name;
         Image top(160, 90);
         std::copy_n(captioned.rgba.begin(), top.rgba.size(), top.rgba.begin());
-        EXPECT_EQ(compareImages(top, plain, 0).maxDifference, 0) << name;
+        EXPECT_EQ(compareImages(top, plain).maxDiff, 0) << name;
     }
     // A title and a caption take more room than a file name alone.
     EXPECT_GT(readPng(path("captioned/01-titled.png")).height, readPng(path("captioned/02-bare.png")).height);
@@ -635,7 +635,7 @@ TEST_F(Cli, TexturedModelsAreReportedProbedAndCanBeDrawnWithout) {
     ASSERT_EQ(off.exitCode, 0) << off.err;
     EXPECT_FALSE(nlohmann::json::parse(off.out).contains("texture"));
     const Image on = readPng(path("on.png")), plain = readPng(path("off.png"));
-    EXPECT_GT(compareImages(on, plain, 30).failingPixels, 500u) << "the texture should change much of the picture";
+    EXPECT_GT(compareImages(on, plain, 30).differingPixels, 500u) << "the texture should change much of the picture";
 }
 
 // A model with lights of its own (KHR_lights_punctual): --info lists them in the file's units, and a
@@ -651,7 +651,7 @@ TEST_F(Cli, ModelLightsAreListedAndLightTheScene) {
     ASSERT_EQ(own.exitCode, 0) << own.err;
     const RunResult given = run({stage, "--size", "160x120", "--light", "point:3,4,5", "--output", path("given.png")});
     ASSERT_EQ(given.exitCode, 0) << given.err;
-    EXPECT_GT(compareImages(readPng(path("own.png")), readPng(path("given.png")), 20).failingPixels, 1000u);
+    EXPECT_GT(compareImages(readPng(path("own.png")), readPng(path("given.png")), 20).differingPixels, 1000u);
 }
 
 // --formula: the PNG differs from the plain render only at the bottom, where the overlay is; the term

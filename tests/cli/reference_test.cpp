@@ -23,7 +23,7 @@ using test::slurp;
 namespace {
 
 // The defaults (core/image/image.hpp), as the line prints them.
-const ReferenceTolerance kDefaults;
+const ImageTolerance kDefaults;
 
 // The numbers of the stdout line "shadelab: A against B: max 3/255 (limit 4), mean 0.0157 (limit 0.002): differs".
 struct Verdict {
@@ -205,11 +205,11 @@ TEST_F(Cli, DiffOutputIsTheDiffLayoutsPane) {
         return p;
     };
     // The GPU's pane is the CPU's mapping of its own two panes, exactly...
-    EXPECT_EQ(compareImages(amplifiedDifference(pane(0), pane(1), 2.0f), pane(2), 0).channelMax, 0);
+    EXPECT_EQ(compareImages(amplifiedDifference(pane(0), pane(1), 2.0f), pane(2), 0).maxDiff, 0);
     // ...the panes are the single renders, and so the difference image is the pane.
-    EXPECT_EQ(compareImages(pane(0), readPng(path("gouraud.png")), 0).channelMax, 0);
-    EXPECT_EQ(compareImages(pane(1), readPng(path("phong.png")), 0).channelMax, 0);
-    EXPECT_EQ(compareImages(diff, pane(2), 0).channelMax, 0);
+    EXPECT_EQ(compareImages(pane(0), readPng(path("gouraud.png")), 0).maxDiff, 0);
+    EXPECT_EQ(compareImages(pane(1), readPng(path("phong.png")), 0).maxDiff, 0);
+    EXPECT_EQ(compareImages(diff, pane(2), 0).maxDiff, 0);
 
     // What a person sees: black where the modes agree (the background, most of the sphere), bright in the
     // highlight Gouraud misses.

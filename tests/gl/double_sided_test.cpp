@@ -303,7 +303,7 @@ TEST(DoubleSided, ProgressivePassesSumToTheOnePassImage) {
     while (!status.complete()) status = renderer.renderProgressive(scene, target, 2, false);
     const Image progressive = readPixels(target);
     EXPECT_EQ(status.passCount, 4);
-    EXPECT_LE(compareImages(progressive, onePass, 0).maxDifference, 1);
+    EXPECT_LE(compareImages(progressive, onePass).maxDiff, 1);
     // And the inside is drawn, in every pane.
     int inside = 0;
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height))

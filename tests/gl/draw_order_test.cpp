@@ -48,23 +48,23 @@ TEST_P(DrawOrder, SamePixelsWhateverTheOrder) {
     frameIfNeeded(scene, *geometry);
     const Image given = renderWith(scene, geometry, Renderer::MeshOrder::AsGiven);
     const Image ordered = renderWith(scene, geometry, Renderer::MeshOrder::VertexCache);
-    EXPECT_EQ(compareImages(ordered, given, 0).failingPixels, 0u)
+    EXPECT_EQ(compareImages(ordered, given).differingPixels, 0u)
         << name << ": " << saveForInspection("draw_order_" + name + "_given", given) << " vs "
         << saveForInspection("draw_order_" + name + "_ordered", ordered);
     // Chunks of 50 triangles: every draw of these scenes is split, most into many chunks.
     const Image chunked = renderWith(scene, geometry, Renderer::MeshOrder::AsGiven, 50);
-    EXPECT_EQ(compareImages(chunked, given, 0).failingPixels, 0u)
+    EXPECT_EQ(compareImages(chunked, given).differingPixels, 0u)
         << name << ": " << saveForInspection("draw_order_" + name + "_given", given) << " vs "
         << saveForInspection("draw_order_" + name + "_chunked", chunked);
     // Packed flat vertices: the same picture up to one step of rounding where a face normal's
     // rebuilt z differs in its last bits.
     const Image packed = renderWith(scene, geometry, Renderer::MeshOrder::AsGiven, 0, true);
-    const CompareResult r = compareImages(packed, given, 0);
-    EXPECT_LE(r.maxDifference, 1) << name << ": " << saveForInspection("draw_order_" + name + "_given", given)
+    const CompareResult r = compareImages(packed, given);
+    EXPECT_LE(r.maxDiff, 1) << name << ": " << saveForInspection("draw_order_" + name + "_given", given)
                                   << " vs " << saveForInspection("draw_order_" + name + "_packed_flat", packed);
-    EXPECT_LE(r.failingPixels, std::size_t(given.width * given.height / 100)) << name;
+    EXPECT_LE(r.differingPixels, std::size_t(given.width * given.height / 100)) << name;
     // Not a blank frame on both sides.
-    EXPECT_GT(compareImages(given, Image(given.width, given.height), 0).failingPixels,
+    EXPECT_GT(compareImages(given, filled(given.width, given.height)).differingPixels,
               std::size_t(given.width * given.height / 20));
 }
 

@@ -58,6 +58,15 @@ glm::ivec3 quantize(const glm::vec3& c) {
     return glm::ivec3(int(std::lround(c.x * 255.0f)), int(std::lround(c.y * 255.0f)), int(std::lround(c.z * 255.0f)));
 }
 
+Image filled(int w, int h, const glm::ivec3& rgb) {
+    Image img(w, h);
+    for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+        img.rgba[i] = std::uint8_t(rgb.x), img.rgba[i + 1] = std::uint8_t(rgb.y), img.rgba[i + 2] = std::uint8_t(rgb.z);
+        img.rgba[i + 3] = 255;
+    }
+    return img;
+}
+
 Ray pixelRay(const Scene& s, const Pane& pane, float px, float py) {
     const glm::mat4 clipFromWorld = clipFromView(s.camera, float(pane.width) / float(pane.height)) * viewFromWorld(s.camera);
     const glm::mat4 worldFromClip = glm::inverse(clipFromWorld);

@@ -37,6 +37,8 @@ Rendered renderScene(const Scene& scene);
 glm::vec3 color(const Image& image, int x, int y);
 // The 8-bit value GL stores for a float colour (round to nearest).
 glm::ivec3 quantize(const glm::vec3& c);
+// A w x h image of one opaque colour (8-bit RGB, alpha 255): what a blank render is compared with.
+Image filled(int w, int h, const glm::ivec3& rgb = glm::ivec3(0));
 
 struct Ray {
     glm::vec3 origin;

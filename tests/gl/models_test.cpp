@@ -12,17 +12,6 @@
 using namespace shadelab;
 namespace fs = std::filesystem;
 
-namespace {
-Image filled(int w, int h, const glm::ivec3& c) {
-    Image img(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            std::uint8_t* p = img.pixel(x, y);
-            p[0] = std::uint8_t(c.x), p[1] = std::uint8_t(c.y), p[2] = std::uint8_t(c.z), p[3] = 255;
-        }
-    return img;
-}
-}  // namespace
 
 TEST(SharedModels, RenderInEveryMode) {
     const fs::path root = fs::path(SHADELAB_SOURCE_DIR) / ".." / "shared" / "assets" / "gltf";
@@ -49,7 +38,7 @@ TEST(SharedModels, RenderInEveryMode) {
             scene.shading = mode;
             ASSERT_NO_THROW(renderer.render(scene, target));
             const Image image = readPixels(target);
-            const std::size_t covered = compareImages(image, filled(96, 96, test::quantize(scene.background)), 0).failingPixels;
+            const std::size_t covered = compareImages(image, test::filled(96, 96, test::quantize(scene.background))).differingPixels;
             if (geometry->triangleCount() > 0) {
                 EXPECT_GT(covered, 30u) << toString(mode) << ": the model is not visible";
             } else {

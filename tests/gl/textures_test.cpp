@@ -38,7 +38,7 @@ int maxChannelDifference(const glm::ivec3& a, const glm::ivec3& b) {
 
 // How much of the image differs from `b` by more than 8/255 (share of all pixels).
 double shareDiffering(const Image& a, const Image& b) {
-    return double(compareImages(a, b, 8).failingPixels) / double(a.width * a.height);
+    return double(compareImages(a, b, 8).differingPixels) / double(a.width * a.height);
 }
 
 }  // namespace
@@ -103,7 +103,7 @@ TEST(Textures, NoTexturesDrawsTheBaseColourFactor) {
     factor.objects[0].material.color = {1.0f, 0.95f, 0.9f};
     factor.objects[0].material.colorSet = true;
     const Rendered a = renderScene(off), b = renderScene(factor);
-    EXPECT_EQ(compareImages(a.image, b.image, 0).failingPixels, 0u);
+    EXPECT_EQ(compareImages(a.image, b.image).differingPixels, 0u);
     // ... and the texture changes a large part of every pane.
     const Rendered textured = renderScene(globeScene());
     for (const Pane& pane : layoutPanes(off.layout, off.shading, off.width, off.height)) {

@@ -57,9 +57,9 @@ TEST(GltfVariants, RenderLikeTheirOriginals) {
         // degenerate (196 of MetalRoughSpheres' 1,040,409).
         EXPECT_LE(variantTriangles, originalTriangles);
         EXPECT_GE(double(variantTriangles), 0.999 * double(originalTriangles));
-        const CompareTolerance tolerance;
-        const CompareResult r = compareImages(actual, expected, tolerance.pixelThreshold);
-        EXPECT_TRUE(r.matches(tolerance)) << describe(r, tolerance);
+        const ImageTolerance tolerance = toleranceWithShare(expected.width, expected.height);
+        const CompareResult r = tolerance.compare(actual, expected);
+        EXPECT_TRUE(tolerance.matches(r)) << describe(r, tolerance);
         ++compared;
     }
     EXPECT_GE(compared, 14);  // the project's own models' variants need nothing from ../shared
@@ -98,9 +98,9 @@ TEST(GltfVariants, InstancesAreDrawnInstanced) {
         return readPixels(context->target());
     };
     const Image instanced = render(true), bakedImage = render(false);
-    const CompareTolerance tolerance;
-    const CompareResult r = compareImages(instanced, bakedImage, tolerance.pixelThreshold);
-    EXPECT_TRUE(r.matches(tolerance)) << describe(r, tolerance);
-    EXPECT_LE(r.maxDifference, 2) << "the same transforms, composed in another order: float rounding only";
+    const ImageTolerance tolerance = toleranceWithShare(bakedImage.width, bakedImage.height);
+    const CompareResult r = tolerance.compare(instanced, bakedImage);
+    EXPECT_TRUE(tolerance.matches(r)) << describe(r, tolerance);
+    EXPECT_LE(r.maxDiff, 2) << "the same transforms, composed in another order: float rounding only";
     if (HasFailure()) test::saveForInspection("instanced_draws", instanced);
 }

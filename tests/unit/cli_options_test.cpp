@@ -317,9 +317,9 @@ TEST(CliOptions, Reference) {
     EXPECT_NE(errorOf({"-o", "x.png", "--reference", "r.png", "--reference-missing", "create"})
                   .find("--reference-missing: unknown value \"create\" (expected one of fail, write)"),
               std::string::npos);
-    // --help gives the defaults, from core/image/image.hpp (ReferenceTolerance).
+    // --help gives the defaults, from core/image/image.hpp (ImageTolerance).
     const std::string help = usage();
-    EXPECT_NE(help.find("(0..255, default " + std::to_string(ReferenceTolerance{}.maxDiff) + ")"), std::string::npos) << help;
+    EXPECT_NE(help.find("(0..255, default " + std::to_string(ImageTolerance{}.maxDiff) + ")"), std::string::npos) << help;
     EXPECT_NE(help.find("default 0.002)"), std::string::npos) << help;
 }
 

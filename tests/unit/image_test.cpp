@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <stdexcept>
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -69,11 +70,19 @@ TEST(Image, CompareCountsPixelsOverTheThreshold) {
     b.pixel(4, 4)[1] = std::uint8_t(b.pixel(4, 4)[1] + 2);   // one pixel slightly off
     const CompareResult r = compareImages(b, a, 8);
     EXPECT_TRUE(r.sizeMatches);
-    EXPECT_EQ(r.maxDifference, 20);
-    EXPECT_EQ(r.failingPixels, 1u);
-    EXPECT_NEAR(r.meanDifference, 22.0 / 100.0, 1e-9);
-    EXPECT_FALSE(r.matches(CompareTolerance{8, 0.001, 0.5}));
-    EXPECT_TRUE(r.matches(CompareTolerance{8, 0.02, 0.5}));
+    EXPECT_EQ(r.maxDiff, 20);
+    EXPECT_EQ(r.differingPixels, 1u);
+    EXPECT_NEAR(r.meanDiff, 22.0 / 400.0, 1e-9);  // 100 pixels x 4 channels
+    // The golden tests' kind: a share of the pixels may be over the threshold, by any amount.
+    const ImageTolerance none = toleranceWithShare(10, 10, 8, 0.001, 0.5), two = toleranceWithShare(10, 10, 8, 0.02, 0.5);
+    EXPECT_EQ(none.maxDiffPixels, 0u);
+    EXPECT_EQ(two.maxDiffPixels, 2u);
+    EXPECT_FALSE(none.matches(r));
+    EXPECT_TRUE(two.matches(r));
+    EXPECT_FALSE(toleranceWithShare(10, 10, 8, 0.02, 0.05).matches(r));  // the mean over its limit
+    EXPECT_EQ(describe(r, two), "max 20/255 (limit 255), mean 0.055 (limit 0.5), 1 pixel differs by more than 8/255 (limit 2)");
+    // A result counted with another threshold cannot be judged by it.
+    EXPECT_THROW((void)two.matches(compareImages(b, a, 0)), std::logic_error);
     EXPECT_FALSE(compareImages(gradient(10, 9), a, 8).sizeMatches);
     const Image diff = differenceImage(b, a, 8);
     EXPECT_EQ(diff.pixel(3, 3)[0], 255);
@@ -127,25 +136,23 @@ TEST(Image, ChannelDifferences) {
     for (std::size_t i = 0; i < a.rgba.size(); ++i) a.rgba[i] = b.rgba[i] = 100;
     CompareResult r = compareImages(a, b, 0);
     EXPECT_TRUE(r.sizeMatches);
-    EXPECT_EQ(r.channelMax, 0);
-    EXPECT_EQ(r.channelMean, 0.0);
+    EXPECT_EQ(r.maxDiff, 0);
+    EXPECT_EQ(r.meanDiff, 0.0);
     b.pixel(1, 0)[0] = 103;  // 3 in red
     b.pixel(2, 1)[2] = 95;   // 5 in blue
     b.pixel(3, 1)[3] = 98;   // 2 in alpha
     r = compareImages(a, b, 0);
-    EXPECT_EQ(r.channelMax, 5);
-    EXPECT_DOUBLE_EQ(r.channelMean, (3.0 + 5.0 + 2.0) / 32.0);  // 8 pixels x 4 channels
-    EXPECT_EQ(r.maxDifference, 5);                               // the golden metric's, RGB only, as before
-    EXPECT_DOUBLE_EQ(r.meanDifference, (3.0 + 5.0) / 8.0);
+    EXPECT_EQ(r.maxDiff, 5);
+    EXPECT_DOUBLE_EQ(r.meanDiff, (3.0 + 5.0 + 2.0) / 32.0);  // 8 pixels x 4 channels
 
-    const ReferenceTolerance t{5, 10.0 / 32.0, std::nullopt};
+    const ImageTolerance t{5, 10.0 / 32.0, std::nullopt};
     EXPECT_TRUE(t.matches(r));
-    EXPECT_FALSE((ReferenceTolerance{4, 1.0, std::nullopt}).matches(r));          // the max over its limit
-    EXPECT_FALSE((ReferenceTolerance{255, 9.9 / 32.0, std::nullopt}).matches(r));  // the mean over its limit
+    EXPECT_FALSE((ImageTolerance{4, 1.0, std::nullopt}).matches(r));          // the max over its limit
+    EXPECT_FALSE((ImageTolerance{255, 9.9 / 32.0, std::nullopt}).matches(r));  // the mean over its limit
     // Issue 32: the pixels that differ at all, in any channel (alpha too): three.
     EXPECT_EQ(r.differingPixels, 3u);
-    EXPECT_TRUE((ReferenceTolerance{5, 1.0, 3}).matches(r));
-    EXPECT_FALSE((ReferenceTolerance{5, 1.0, 2}).matches(r));  // more pixels than allowed
+    EXPECT_TRUE((ImageTolerance{5, 1.0, 3}).matches(r));
+    EXPECT_FALSE((ImageTolerance{5, 1.0, 2}).matches(r));  // more pixels than allowed
     EXPECT_FALSE(t.matches(compareImages(a, Image(4, 3), 0)));      // another size never matches
     EXPECT_FALSE(compareImages(a, Image(2, 4), 0).sizeMatches);
 }

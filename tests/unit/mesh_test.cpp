@@ -133,6 +133,13 @@ TEST(Camera, ComparePanesCoverTheImageExactly) {
     EXPECT_EQ(single[0].width, 100);
 }
 
+// The status line's "triangles per frame": the scene is drawn once per pane but diff's difference pane.
+TEST(Camera, ScenePanesLeaveOutTheDifference) {
+    EXPECT_EQ(scenePaneCount(Layout::Single), 1u);
+    EXPECT_EQ(scenePaneCount(Layout::Compare), 3u);
+    EXPECT_EQ(scenePaneCount(Layout::Diff), 2u);
+}
+
 TEST(Camera, TransformAppliesScaleThenRotationXYZThenTranslation) {
     Transform t;
     t.translation = {1, 2, 3};

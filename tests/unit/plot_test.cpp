@@ -369,15 +369,15 @@ TEST(PlotGolden, LobeFresnelAndBrdf) {
             continue;
         }
         const Image expected = readPng(golden);
-        const CompareTolerance tolerance;
-        const CompareResult r = compareImages(actual, expected, tolerance.pixelThreshold);
-        if (!r.matches(tolerance)) {
+        const ImageTolerance tolerance = toleranceWithShare(expected.width, expected.height);
+        const CompareResult r = tolerance.compare(actual, expected);
+        if (!tolerance.matches(r)) {
             const std::filesystem::path out = SHADELAB_TEST_OUTPUT_DIR;
             std::filesystem::create_directories(out);
             writePng((out / (name + ".actual.png")).string(), actual);
             writePng((out / (name + ".diff.png")).string(), differenceImage(actual, expected, tolerance.pixelThreshold));
         }
-        EXPECT_TRUE(r.matches(tolerance)) << name << ": " << describe(r, tolerance) << " (actual and diff in "
+        EXPECT_TRUE(tolerance.matches(r)) << name << ": " << describe(r, tolerance) << " (actual and diff in "
                                           << SHADELAB_TEST_OUTPUT_DIR << ")";
     }
 }

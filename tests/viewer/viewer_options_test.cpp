@@ -26,7 +26,7 @@ TEST(ViewerOptions, PanelSections) {
     EXPECT_FALSE(parseOptions({}).panelSections.has_value());
     EXPECT_EQ(*parseOptions({"--panel-sections", "plots,shading"}).panelSections,
               (std::vector<std::string>{"plots", "shading"}));
-    for (const char* name : kPanelSections) EXPECT_NO_THROW(parseOptions({"--panel-sections", name})) << name;
+    for (const auto& section : kPanelSections) EXPECT_NO_THROW(parseOptions({"--panel-sections", section.first})) << section.first;
 }
 
 TEST(ViewerOptions, RefusesWhatCannotWork) {

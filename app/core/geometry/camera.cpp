@@ -46,6 +46,11 @@ std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int he
     return panes;
 }
 
+std::size_t scenePaneCount(Layout layout) {
+    const std::vector<Pane> panes = layoutPanes(layout, ShadingMode::Phong, 3, 1);
+    return std::size_t(std::count_if(panes.begin(), panes.end(), [](const Pane& p) { return !p.difference; }));
+}
+
 glm::vec3 pixelDirectionWorld(const Camera& c, const Pane& pane, float px, float py) {
     const float aspect = float(pane.width) / float(std::max(pane.height, 1));
     const glm::mat4 worldFromClip = glm::inverse(clipFromView(c, aspect) * viewFromWorld(c));

@@ -29,6 +29,9 @@ struct Pane {
 // columns stay background, so the difference pane's pixels line up with both sources).
 std::vector<Pane> layoutPanes(Layout layout, ShadingMode mode, int width, int height,
                               const DiffSettings& diff = DiffSettings{});
+// How many of a layout's panes draw the scene (layoutPanes' panes but the difference pane): single 1,
+// compare 3, diff 2. A frame draws the scene's triangles this many times.
+std::size_t scenePaneCount(Layout layout);
 
 // The unit direction (world space) from the eye through image point (px, py) of a pane; pixel
 // centres are at +0.5, y runs down. The inverse of the renderer's projection for that pane.

@@ -2,6 +2,8 @@
 
 #include "core/scene/scene_names.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <sstream>
 
 namespace shadelab {
@@ -38,6 +40,13 @@ const char* toString(FresnelMode f) { return nameOf(kFresnelModeNames, f); }
 const char* toString(EnvironmentKind k) { return k == EnvironmentKind::Image ? "image" : nameOf(kEnvironmentNames, k); }
 std::string toString(const TermView& t) {
     return t.term == ShowTerm::Light ? "light:" + std::to_string(t.light) : nameOf(kShowTermNames, t.term);
+}
+
+float directionalHandleDistance(const Camera& camera) { return 0.6f * glm::length(camera.eye - camera.target); }
+
+glm::vec3 lightHandle(const Light& light, const Camera& camera) {
+    if (light.type != LightType::Directional) return light.position;
+    return camera.target - glm::normalize(light.direction) * directionalHandleDistance(camera);
 }
 
 std::string formatNumber(double v) {

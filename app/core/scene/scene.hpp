@@ -148,6 +148,13 @@ struct Camera {
     float farPlane = 100.0f;
 };
 
+// Where the viewer draws and drags a light (the overlay's cross, the panel's label and arrow): its
+// position, or for a directional light, which has none, a point against its direction from the
+// camera's target, directionalHandleDistance away: 0.6 of the eye's distance, so the handle stays in
+// front of the eye however the camera moves.
+float directionalHandleDistance(const Camera& camera);
+glm::vec3 lightHandle(const Light& light, const Camera& camera);
+
 // What the formula draws: every term, one of them, one light's share, or the unlit colour C.
 struct TermView {
     ShowTerm term = ShowTerm::All;

@@ -1,9 +1,16 @@
 #pragma once
-// The names of the panel's collapsing sections, as --panel-sections takes them (in the panel's order).
+// The panel's collapsing sections and their names, as --panel-sections takes them (in the panel's order).
 // Header-only constants in core: cli/ checks the flag against them without depending on the viewer.
+#include "core/scene/scene_names.hpp"
+
 namespace shadelab {
 
-inline constexpr const char* kPanelSections[] = {"shading", "material", "plots", "shader", "mesh", "lights", "shadows",
-                                                 "overlays", "camera", "background", "file", "keys"};
+enum class PanelSection { Shading, Material, Plots, Shader, Mesh, Lights, Shadows, Overlays, Camera, Background, File, Keys };
+
+inline constexpr EnumName<PanelSection> kPanelSections[] = {
+    {"shading", PanelSection::Shading}, {"material", PanelSection::Material}, {"plots", PanelSection::Plots},
+    {"shader", PanelSection::Shader},   {"mesh", PanelSection::Mesh},         {"lights", PanelSection::Lights},
+    {"shadows", PanelSection::Shadows}, {"overlays", PanelSection::Overlays}, {"camera", PanelSection::Camera},
+    {"background", PanelSection::Background}, {"file", PanelSection::File},   {"keys", PanelSection::Keys}};
 
 }  // namespace shadelab
