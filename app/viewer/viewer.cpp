@@ -5,6 +5,7 @@
 #include "core/base/file_io.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene_json.hpp"
+#include "core/figures/plot.hpp"
 #include "core/figures/shader_listing.hpp"
 #include "core/ui/controls.hpp"
 #include "platform/platform.hpp"
@@ -155,6 +156,7 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
         softwareGl_ = softwareGl_ || status_.glRenderer.find(software) != std::string::npos;
     imgui_.setBackBufferKept(softwareGl_ && status_.glRenderer.find("SwiftShader") == std::string::npos);
     pendingProbe_ = options_.probe;
+    openAsSlide(document_.scene().viewer, options_.probe.has_value(), options_.panelSections.has_value());
     settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
     status_.trueTypeFont = imgui_.trueTypeFont();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
@@ -246,6 +248,11 @@ bool Viewer::frame(bool last) {
     const FrameLayout l = layout();
     document_.setViewSize(std::max(l.viewWidth, 1), std::max(l.viewHeight, 1));
     if (pendingProbe_) setProbe(pendingProbe_->x, pendingProbe_->y), pendingProbe_.reset();
+    if (slideProbe_) {
+        const glm::ivec2 at = slidePixel(*slideProbe_, l.viewWidth, l.viewHeight);
+        setProbe(at.x, at.y, false);
+        slideProbe_.reset();
+    }
     handleInput(l, keys);
     evaluateProbe();
     apply(panelEdits(l));
@@ -281,7 +288,8 @@ bool Viewer::countEvents() {
 // following the view where a camera value or a transform was typed in.
 PanelRequests Viewer::panelEdits(const FrameLayout& l) {
     status_.presetTitles.clear();
-    for (std::size_t i = 0; i < playlist_.size(); ++i) status_.presetTitles.push_back(presetTitle(playlist_.preset(i)));
+    for (std::size_t i = 0; i < playlist_.size(); ++i)
+        status_.presetTitles.push_back(lectureNotation(presetTitle(playlist_.preset(i))));
     status_.currentPreset = int(playlist_.current());
     status_.uiScale = uiScale_;
     status_.msaa = msaaSamples_;
@@ -873,6 +881,34 @@ void Viewer::showingPreset(const std::string& what) {
     playing_ = !options_.animations.empty();
     if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
     if (options_.verbose) std::cerr << "shadelab: " << what << p.path << "\n";
+    openAsSlide(document_.scene().viewer, false, false);
+}
+
+// A scene's "viewer" block (core/scene/scene.hpp, ViewerStart): the slide opens with its probe (set on
+// the next frame, when the view has its size), the intersection diagram and the panel's sections, unless
+// the command line gave its own for the first one. A slide without a block leaves them as they were.
+void Viewer::openAsSlide(const ViewerStart& start, bool probeGiven, bool sectionsGiven) {
+    if (start.probe && !probeGiven) {
+        slideProbe_ = start;
+        settings_.showIntersection = start.intersection;
+    }
+    if ((start.panelSections || !start.plot.empty()) && !sectionsGiven) {
+        settings_.startSections = start.panelSections.value_or(std::vector<std::string>{});
+        if (!start.plot.empty() && std::find(settings_.startSections->begin(), settings_.startSections->end(), "plots") ==
+                                       settings_.startSections->end())
+            settings_.startSections->push_back("plots");
+        settings_.scrollToPlot = start.plot;
+        settings_.showPanel = true;  // the sections are the slide's figure
+    }
+}
+
+// The view's pixel that shows what the scene's pixel `start.probe` shows at the scene's size: the camera
+// keeps its vertical field of view, so both scale with the view's height about the centre.
+glm::ivec2 Viewer::slidePixel(const ViewerStart& start, int viewWidth, int viewHeight) {
+    const glm::vec2 of(start.probeOf);
+    const glm::vec2 view{float(viewWidth), float(viewHeight)};
+    const glm::vec2 p = 0.5f * view + (glm::vec2(*start.probe) + 0.5f - 0.5f * of) * (view.y / of.y);
+    return glm::ivec2(glm::floor(p));
 }
 
 // Mesh edits in the panel rebuild geometry here, once per change; every other frame only compares specs.
@@ -1100,7 +1136,7 @@ const std::vector<BoundingSphere>& Viewer::modelSpheres() {
     return modelSpheres_;
 }
 
-void Viewer::setProbe(int x, int y) {
+void Viewer::setProbe(int x, int y, bool announce) {
     const Scene& scene = document_.scene();
     if (!document_.geometry() || x < 0 || y < 0 || x >= scene.width || y >= scene.height) {
         setStatus("probe: pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
@@ -1115,8 +1151,8 @@ void Viewer::setProbe(int x, int y) {
     }
     probeAnchor_ = r.anchor;
     probeGeometry_ = document_.geometry();
-    settings_.scrollToProbe = true;  // the panel shows its Probe section, wherever it was scrolled
-    setStatus("probe at pixel " + std::to_string(x) + "," + std::to_string(y) + " (Esc clears it)", false);
+    settings_.scrollToProbe = announce;  // the panel shows its Probe section, wherever it was scrolled
+    if (announce) setStatus("probe at pixel " + std::to_string(x) + "," + std::to_string(y) + " (Esc clears it)", false);
 }
 
 void Viewer::evaluateProbe() {

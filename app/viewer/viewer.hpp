@@ -138,7 +138,11 @@ private:
     Layout layoutBeforeToggle_ = Layout::Single;  // what C or D pressed again goes back to
     // The pixel probe: set at a pixel of the 3D view (a click, --probe), re-evaluated every frame at
     // the same surface point with the scene as it is then.
-    void setProbe(int x, int y);
+    // `announce`: a message over the view and the panel scrolled to its Probe section (not for a slide's).
+    void setProbe(int x, int y, bool announce = true);
+    void openAsSlide(const ViewerStart& start, bool probeGiven, bool sectionsGiven);
+    static glm::ivec2 slidePixel(const ViewerStart& start, int viewWidth, int viewHeight);
+    std::optional<ViewerStart> slideProbe_;  // a slide's "viewer" probe, set on the next frame
     void evaluateProbe();
     const SceneRayCaster& rayCaster();
     // This frame's probe arrows (their labels go on ImGui's list now; renderView draws the arrows),

@@ -379,8 +379,13 @@ var Module = (function () {
     const control = {
       update() {
         const v = shownValue(name, fallback);
-        if (v === undefined || v === "") {
+        // Unset (a material's mirror, transmission, anisotropy): an empty box and the slider at its
+        // low end, dimmed, until a value is given.
+        const unset = v === undefined || v === "";
+        slider.classList.toggle("unset", unset);
+        if (unset) {
           box.value = "";
+          slider.value = toSlider(slo);
           return;
         }
         const x = parseFloat(v);
