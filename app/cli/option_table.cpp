@@ -4,7 +4,7 @@
 #include "core/base/file_io.hpp"
 #include "core/scene/memory_budget.hpp"
 #include "core/base/message.hpp"
-#include "core/ui/panel_sections.hpp"
+#include "core/scene/panel_sections.hpp"
 #include "core/figures/plot_image.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene_json.hpp"

@@ -1,9 +1,10 @@
 #include "viewer/panel.hpp"
 
 #include "core/figures/formula.hpp"
+#include "core/figures/plot.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/ui/controls.hpp"
-#include "core/ui/panel_sections.hpp"
+#include "core/scene/panel_sections.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/view_names.hpp"
 #include "viewer/plot_view.hpp"
@@ -23,6 +24,7 @@
 #include <iterator>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace shadelab {
 namespace {
@@ -219,19 +221,37 @@ std::optional<ProbedLobe> probedLobe(const Scene& scene, const ProbeResult* prob
 // The lecture's plots for the current parameters (core/figures/plot.hpp): rebuilt every frame, which costs
 // about a thousand formula evaluations for the 2-D plots (tens of thousands for the BRDF's), so every
 // slider in the panel moves the curves at once.
-void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, const ProbeResult* probe, int selectedLight) {
+// A slide's "plot" brings its plot to the panel's top, once (a scene's "viewer" field).
+void scrollHereFor(const char* plot, std::string& scrollTo) {
+    if (scrollTo != plot) return;
+    ImGui::SetScrollHereY(0.0f);
+    scrollTo.clear();
+}
+
+void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, const ProbeResult* probe, int selectedLight,
+                  std::string& scrollTo) {
+    static_assert(
+        [] {
+            for (std::size_t i = 0; i < std::size(kPanelPlots); ++i)
+                if (std::string_view(kPanelPlots[i]) != kPlotKindNames[i].first) return false;
+            return std::size(kPanelPlots) == std::size(kPlotKindNames);
+        }(),
+        "kPanelPlots names the section's plots as --plot does, in the order drawn below");
     ImGui::SliderFloat("incidence", &plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi, "\u03b8_i = %.1f\u00b0");
     plots.incidenceDeg = std::clamp(plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi);
     iorSlider(scene);
     ImGui::Checkbox("from inside (\u03b7\u2081 = ior, \u03b7\u2082 = 1)", &plots.fromInside);
     // Heights that leave room for the header and legend rows at the panel's width and the plot below.
     const float width = ImGui::GetContentRegionAvail().x;
+    scrollHereFor(kPanelPlots[0], scrollTo);
     plotWidget("##lobe", scenePlot(PlotKind::Lobe, scene, material, plots), width * 0.85f);
     ImGui::Spacing();
+    scrollHereFor(kPanelPlots[1], scrollTo);
     plotWidget("##fresnel", scenePlot(PlotKind::Fresnel, scene, material, plots), width * 0.95f);
     // The BRDF as a function (issue 30): the 3-D lobe from a fixed view, and the heat maps (about 32 000
     // evaluations; two rows of them with anisotropy).
     ImGui::Spacing();
+    scrollHereFor(kPanelPlots[2], scrollTo);
     const std::optional<ProbedLobe> probed = probedLobe(scene, probe, selectedLight);
     if (probed) {
         ImGui::TextWrapped("3-D lobe: the probed point's own N, I (light %d) and V; Esc clears the probe.", probed->light);
@@ -251,6 +271,7 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, c
     if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) plots.lobeView = LobeView{};
     ImGui::Spacing();
     const bool twoRows = anisotropicLobe(material, lightingEnvironment(scene));
+    scrollHereFor(kPanelPlots[3], scrollTo);
     plotWidget("##brdf-slice", scenePlot(PlotKind::BrdfSlice, scene, material, plots), width * (twoRows ? 1.0f : 0.65f));
 }
 
@@ -588,7 +609,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
         sectionMaterial(object->material, scene.reflection, settings.readout);
     }
     if (section("Plots: specular lobe, Fresnel", PanelSection::Plots, false))
-        sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight);
+        sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight,
+                     settings.scrollToPlot);
     // S opens or closes it, and brings it into view.
     if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
     if (section("Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader, false)) {
@@ -703,6 +725,7 @@ CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, floa
                             float viewText) {
     CaptionLayout l;
     if (scene.title.empty() && scene.caption.empty()) return l;
+    const std::string title = lectureNotation(scene.title), caption = lectureNotation(scene.caption);
     ImFont* font = ImGui::GetFont();
     // Sizes follow the view's width (a 1000-unit view gets 1.6 times the panel's font for the title,
     // 1.25 for the caption), or the view text's size where that is larger (the caption 1.25 times
@@ -717,11 +740,11 @@ CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, floa
         const float counterWidth =
             counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;
         const float wrap = std::max(width - 2.0f * l.pad - counterWidth, 1.0f);
-        const float title = scene.title.empty() ? 0.0f : font->CalcTextSizeA(l.titleSize, 1e9f, wrap, scene.title.c_str()).y;
-        const float caption =
-            scene.caption.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, wrap, scene.caption.c_str()).y;
-        const float gap = title > 0.0f && caption > 0.0f ? l.pad * 0.5f : 0.0f;
-        l.height = std::ceil(title + gap + caption + 2.0f * l.pad);
+        const float titleHeight = title.empty() ? 0.0f : font->CalcTextSizeA(l.titleSize, 1e9f, wrap, title.c_str()).y;
+        const float captionHeight =
+            caption.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, wrap, caption.c_str()).y;
+        const float gap = titleHeight > 0.0f && captionHeight > 0.0f ? l.pad * 0.5f : 0.0f;
+        l.height = std::ceil(titleHeight + gap + captionHeight + 2.0f * l.pad);
         if (l.height <= maxHeight) break;
     }
     l.height = std::min(l.height, maxHeight);
@@ -730,6 +753,9 @@ CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, floa
 
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& l, const UiRect& band) {
     if (l.height <= 0.0f) return;
+    // Scene files write the lecture's symbols in ASCII ("theta_i", as --captions' bitmap font needs):
+    // the view shows them as the lecture does (plot.hpp, lectureNotation).
+    const std::string title = lectureNotation(scene.title), caption = lectureNotation(scene.caption);
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     ImFont* font = ImGui::GetFont();
     const float counterWidth = counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;
@@ -737,12 +763,12 @@ void drawCaption(const Scene& scene, const std::string& counter, const CaptionLa
     const ImVec2 lo(band.x, band.y), hi(band.x + band.width, band.y + band.height);
     draw->PushClipRect(lo, hi, true);
     draw->AddRectFilled(lo, hi, IM_COL32(24, 24, 30, 255));
-    const float titleHeight = scene.title.empty() ? 0.0f : font->CalcTextSizeA(l.titleSize, 1e9f, wrap, scene.title.c_str()).y;
-    const float gap = titleHeight > 0.0f && !scene.caption.empty() ? l.pad * 0.5f : 0.0f;
+    const float titleHeight = title.empty() ? 0.0f : font->CalcTextSizeA(l.titleSize, 1e9f, wrap, title.c_str()).y;
+    const float gap = titleHeight > 0.0f && !caption.empty() ? l.pad * 0.5f : 0.0f;
     const ImVec2 titlePos(std::round(band.x + l.pad), std::round(band.y + l.pad));
-    draw->AddText(font, l.titleSize, titlePos, IM_COL32(255, 255, 255, 255), scene.title.c_str(), nullptr, wrap);
+    draw->AddText(font, l.titleSize, titlePos, IM_COL32(255, 255, 255, 255), title.c_str(), nullptr, wrap);
     draw->AddText(font, l.captionSize, ImVec2(titlePos.x, std::round(titlePos.y + titleHeight + gap)),
-                  IM_COL32(225, 225, 225, 255), scene.caption.c_str(), nullptr, wrap);
+                  IM_COL32(225, 225, 225, 255), caption.c_str(), nullptr, wrap);
     if (!counter.empty())
         draw->AddText(font, l.captionSize, ImVec2(std::round(band.x + band.width - counterWidth), titlePos.y),
                       IM_COL32(200, 200, 200, 255), counter.c_str());

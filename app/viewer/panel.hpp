@@ -52,6 +52,7 @@ struct ViewSettings {
     std::optional<bool> openShader;
     bool shaderOverView = false;  // S: the Shader view large over the 3D view (drawShaderOverView)
     bool scrollToProbe = false;   // a new probe: the panel scrolls to its Probe section once
+    std::string scrollToPlot;     // a slide's "plot" (kPanelPlots): the panel scrolls to that plot once
 };
 
 // What the panel shows besides the scene.

@@ -2,7 +2,7 @@
 
 #include "core/base/file_io.hpp"
 #include "core/ui/controls.hpp"
-#include "core/ui/panel_sections.hpp"
+#include "core/scene/panel_sections.hpp"
 
 #include <nlohmann/json.hpp>
 

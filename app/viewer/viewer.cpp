@@ -5,6 +5,7 @@
 #include "core/base/file_io.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene_json.hpp"
+#include "core/figures/plot.hpp"
 #include "core/figures/shader_listing.hpp"
 #include "core/ui/controls.hpp"
 #include "platform/platform.hpp"
@@ -148,6 +149,7 @@ Viewer::Viewer(Scene scene, std::shared_ptr<const SceneGeometry> geometry, Viewe
     status_.glRenderer = renderer_->glRenderer();
     quality_ = ViewQuality(startMsaa(options_, prefs_), isSoftwareGl(status_.glRenderer));
     imgui_.setBackBufferKept(quality_.softwareGl() && status_.glRenderer.find("SwiftShader") == std::string::npos);
+    openAsSlide(document_.scene().viewer, options_.probe.has_value(), options_.panelSections.has_value());
     settings_.scenePath = document_.scene().sourcePath.empty() ? "scene.json" : document_.scene().sourcePath;
     status_.trueTypeFont = imgui_.trueTypeFont();
     // Scripted runs go as fast as they can; a person gets frames at the display's refresh rate.
@@ -230,6 +232,11 @@ bool Viewer::frame(bool last) {
     const FrameLayout l = layout();
     document_.setViewSize(std::max(l.viewWidth, 1), std::max(l.viewHeight, 1));
     if (const auto pending = probe_.takePending()) setProbe(pending->x, pending->y);
+    if (slideProbe_) {
+        const glm::ivec2 at = slideProbe_->probeIn(l.viewWidth, l.viewHeight);
+        setProbe(at.x, at.y, false);
+        slideProbe_.reset();
+    }
     handleInput(l, keys);
     probe_.evaluate(document_.scene(), document_.geometry());
     apply(panelEdits(l));
@@ -257,7 +264,8 @@ bool Viewer::frame(bool last) {
 // following the view where a camera value or a transform was typed in.
 PanelRequests Viewer::panelEdits(const FrameLayout& l) {
     status_.presetTitles.clear();
-    for (std::size_t i = 0; i < playlist_.size(); ++i) status_.presetTitles.push_back(presetTitle(playlist_.preset(i)));
+    for (std::size_t i = 0; i < playlist_.size(); ++i)
+        status_.presetTitles.push_back(lectureNotation(presetTitle(playlist_.preset(i))));
     status_.currentPreset = int(playlist_.current());
     status_.uiScale = uiScale_;
     status_.msaa = quality_.msaaSamples();
@@ -774,7 +782,27 @@ void Viewer::showingPreset(const std::string& what) {
     animation_.restart();
     if (!status_.isError) messageUntil_ = std::chrono::steady_clock::now();
     if (options_.verbose) std::cerr << "shadelab: " << what << p.path << "\n";
+    openAsSlide(document_.scene().viewer, false, false);
 }
+
+// A scene's "viewer" block (core/scene/scene.hpp, ViewerStart): the slide opens with its probe (set on
+// the next frame, when the view has its size), the intersection diagram and the panel's sections, unless
+// the command line gave its own for the first one. A slide without a block leaves them as they were.
+void Viewer::openAsSlide(const ViewerStart& start, bool probeGiven, bool sectionsGiven) {
+    if (start.probe && !probeGiven) {
+        slideProbe_ = start;
+        settings_.showIntersection = start.intersection;
+    }
+    if ((start.panelSections || !start.plot.empty()) && !sectionsGiven) {
+        settings_.startSections = start.panelSections.value_or(std::vector<std::string>{});
+        if (!start.plot.empty() && std::find(settings_.startSections->begin(), settings_.startSections->end(), "plots") ==
+                                       settings_.startSections->end())
+            settings_.startSections->push_back("plots");
+        settings_.scrollToPlot = start.plot;
+        settings_.showPanel = true;  // the sections are the slide's figure
+    }
+}
+
 
 // Mesh edits in the panel rebuild geometry here, once per change; every other frame only compares specs.
 void Viewer::uploadGeometryIfChanged() {
@@ -961,10 +989,12 @@ void Viewer::reloadShaders() {
     }
 }
 
-void Viewer::setProbe(int x, int y) {
+void Viewer::setProbe(int x, int y, bool announce) {
     const ProbeState::Outcome outcome = probe_.set(document_.scene(), document_.geometry(), x, y);
-    if (outcome.set) settings_.scrollToProbe = true;  // the panel shows its Probe section, wherever it was scrolled
-    setStatus(outcome.message, outcome.isError);
+    // A person's probe: the panel shows its Probe section, wherever it was scrolled, and the status line
+    // says where; a slide's probe (openAsSlide) says nothing.
+    if (outcome.set && announce) settings_.scrollToProbe = true;
+    if (announce || !outcome.set) setStatus(outcome.message, outcome.isError);
 }
 
 std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std::vector<UiRect>& avoid) {

@@ -143,8 +143,11 @@ private:
     void setStatus(std::string message, bool isError);
     void cameraMoved();
     Layout layoutBeforeToggle_ = Layout::Single;  // what C or D pressed again goes back to
-    // The pixel probe (ProbeState) set at a pixel of the 3D view, the outcome on the status line.
-    void setProbe(int x, int y);
+    // The pixel probe (ProbeState) set at a pixel of the 3D view, the outcome on the status line;
+    // `announce`: the message and the panel scrolled to its Probe section (not for a slide's probe).
+    void setProbe(int x, int y, bool announce = true);
+    void openAsSlide(const ViewerStart& start, bool probeGiven, bool sectionsGiven);
+    std::optional<ViewerStart> slideProbe_;  // a slide's "viewer" probe, set on the next frame
     // This frame's probe arrows (their labels go on ImGui's list now; renderView draws the arrows),
     // and the selected light's sample markers switched on.
     std::vector<OverlayArrow> probeOverlays(const FrameLayout& layout, const std::vector<UiRect>& avoid);

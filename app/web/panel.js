@@ -379,8 +379,13 @@ var Module = (function () {
     const control = {
       update() {
         const v = shownValue(name, fallback);
-        if (v === undefined || v === "") {
+        // Unset (a material's mirror, transmission, anisotropy): an empty box and the slider at its
+        // low end, dimmed, until a value is given.
+        const unset = v === undefined || v === "";
+        slider.classList.toggle("unset", unset);
+        if (unset) {
           box.value = "";
+          slider.value = toSlider(slo);
           return;
         }
         const x = parseFloat(v);
@@ -658,7 +663,7 @@ var Module = (function () {
   }
 
   // ---------------------------------------------------------------------------------------------
-  // The panel: the sections of kPanelSections (core/ui/panel_sections.hpp), in its order.
+  // The panel: the sections of kPanelSections (core/scene/panel_sections.hpp), in its order.
   // Which option sits in which section is the page's choice (the table has no section column).
   const SECTION_OPTIONS = {
     shading: ["layout", "shading", "diff", "diff-factor", "reflection", "specular-normalization", "fresnel", "ior", "show", "output-encoding", "msaa"],

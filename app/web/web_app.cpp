@@ -24,7 +24,7 @@
 #include "core/scene/scene_limits.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/controls.hpp"
-#include "core/ui/panel_sections.hpp"
+#include "core/scene/panel_sections.hpp"
 #include "core/ui/view_names.hpp"
 #include "render/image_pass.hpp"
 #include "render/multisample_target.hpp"
@@ -147,7 +147,8 @@ json describe() {
     json presets = json::array();
     try {
         for (const Preset& p : loadPlaylist(kPresetFolder))
-            presets.push_back({{"path", p.path}, {"name", p.name}, {"title", presetTitle(p)}, {"caption", p.scene.caption}});
+            presets.push_back({{"path", p.path}, {"name", p.name}, {"title", lectureNotation(presetTitle(p))},
+                               {"caption", lectureNotation(p.scene.caption)}});
     } catch (const std::exception& e) {
         std::fprintf(stderr, "shadelab: %s\n", oneLine(e.what()).c_str());
     }
@@ -188,7 +189,7 @@ json describeScene() {
     const SceneGeometry& geometry = *a.document->geometry();
     for (std::size_t i = 0; i < geometry.gltfInfo.size() && i < s.objects.size(); ++i)
         for (const std::string& w : geometry.gltfInfo[i].warnings) warnings.push_back(oneLine(s.objects[i].mesh.path + ": " + w));
-    return {{"scene", json::parse(sceneToJson(s, "/"))}, {"title", s.title}, {"caption", s.caption},
+    return {{"scene", json::parse(sceneToJson(s, "/"))}, {"title", lectureNotation(s.title)}, {"caption", lectureNotation(s.caption)},
             {"width", s.width}, {"height", s.height}, {"pinned", a.pinned}, {"panes", panes}, {"warnings", warnings}};
 }
 

@@ -491,6 +491,9 @@ TEST(BrdfPlot, SlicePanelsAndTheMirrorRidge) {
     const Plot p = scenePlot(PlotKind::BrdfSlice, Scene{}, m, PlotSettings{30.0f, false, {}, {}});
     EXPECT_NE(p.title.find("f_r(delta_phi; theta_i -> theta_o)"), std::string::npos) << p.title;
     EXPECT_EQ(lectureNotation("delta_phi, phi_i, omega_o"), "\u0394\u03c6, \u03c6_i, \u03c9_o");
+    // Captions (the viewer's and the web page's) too: a name that ends a word, not a word's start.
+    EXPECT_EQ(lectureNotation("eta_i sin theta_i = eta_t sin theta_t, 90 deg, 45 degrees"),
+              "\u03b7_i sin \u03b8_i = \u03b7_t sin \u03b8_t, 90\u00b0, 45 degrees");
 }
 
 // The viewer turns the 3-D lobe through PlotSettings::lobeView; the default is the PNG's view, and a

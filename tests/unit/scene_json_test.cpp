@@ -245,6 +245,38 @@ TEST(SceneJson, LectureFieldsAreReadAndSaved) {
         EXPECT_EQ(toString(parse(std::string(R"({"show": ")") + term + "\"}").show), term);
 }
 
+// "viewer": what a preset's slide opens with in the viewer (a probe, the diagram, panel sections); the
+// probe is a pixel of the scene's own size, so it is checked against "size" wherever that is written.
+TEST(SceneJson, ViewerStartIsReadCheckedAndSaved) {
+    EXPECT_TRUE(parse("{}").viewer.empty());
+    const Scene s = parse(R"({"viewer": {"probe": [639, 10], "intersection": true, "panel_sections": ["plots", "lights"]},
+      "size": [640, 360]})");
+    ASSERT_TRUE(s.viewer.probe.has_value());
+    EXPECT_EQ(*s.viewer.probe, glm::ivec2(639, 10));
+    EXPECT_EQ(s.viewer.probeOf, glm::ivec2(640, 360));
+    EXPECT_TRUE(s.viewer.intersection);
+    EXPECT_EQ(s.viewer.panelSections, (std::vector<std::string>{"plots", "lights"}));
+    const Scene r = parse(sceneToJson(s, "/scenes"));
+    EXPECT_EQ(r.viewer.probe, s.viewer.probe);
+    EXPECT_EQ(r.viewer.intersection, s.viewer.intersection);
+    EXPECT_EQ(r.viewer.panelSections, s.viewer.panelSections);
+    // The viewer saves at its view's size: the probe follows the picture (scaled with the height about the
+    // centre) and stays inside.
+    Scene resized = s;
+    resized.width = 320, resized.height = 180;
+    const Scene saved = parse(sceneToJson(resized, "/scenes"));
+    EXPECT_EQ(*saved.viewer.probe, glm::ivec2(319, 5));
+    EXPECT_EQ(saved.viewer.probeOf, glm::ivec2(320, 180));
+    expectError(R"({"viewer": {"probe": [640, 10]}, "size": [640, 360]})", {"viewer.probe[0]"});
+    expectError(R"({"viewer": {"probe": [1, 2, 3]}})", {"viewer.probe", "[x, y]"});
+    expectError(R"({"viewer": {"intersection": true}})", {"viewer.intersection", "probe"});
+    expectError(R"({"viewer": {"panel_sections": ["plot"]}})", {"viewer.panel_sections[0]", "\"plot\"", "plots"});
+    expectError(R"({"viewer": {"zoom": 2}})", {"viewer.zoom", "unknown field"});
+    EXPECT_EQ(parse(R"({"viewer": {"plot": "lobe3d"}})").viewer.plot, "lobe3d");
+    EXPECT_EQ(parse(sceneToJson(parse(R"({"viewer": {"plot": "brdf-slice"}})"), "/")).viewer.plot, "brdf-slice");
+    expectError(R"({"viewer": {"plot": "lobe-3d"}})", {"viewer.plot", "\"lobe-3d\"", "lobe3d"});
+}
+
 TEST(SceneJson, DefaultSceneIsBuiltInAndValid) {
     const Scene s = defaultScene();
     ASSERT_EQ(s.objects.size(), 1u);

@@ -1,7 +1,7 @@
 // The viewer's command-line flags (app/cli/options.*).
 #include "cli/options.hpp"
 #include "core/base/error.hpp"
-#include "core/ui/panel_sections.hpp"
+#include "core/scene/panel_sections.hpp"
 
 #include <gtest/gtest.h>
 

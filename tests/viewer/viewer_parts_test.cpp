@@ -15,6 +15,8 @@
 
 #include "test_files.hpp"
 
+#include "core/scene/scene_limits.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -30,12 +32,13 @@ const Clock::time_point kT0 = Clock::time_point{} + 100s;
 
 TEST(ViewRevision, EveryInputMovesItAndNothingElseDoes) {
     ViewRevision revision;
-    const ViewInputs start{3, 1, 0, 7, 640, 480};
+    const ViewInputs start{3, 1, 0, 7, 640, 480, 0};
     const std::uint64_t r0 = revision.of(start);
     EXPECT_EQ(revision.of(start), r0);  // nothing changed: the same view
     // Each input in turn (the fields in declaration order): the view changed, and stays at its new revision.
     std::uint64_t ViewInputs::*const fields[] = {&ViewInputs::scene,     &ViewInputs::geometry, &ViewInputs::renderer,
-                                                 &ViewInputs::animation, &ViewInputs::width,    &ViewInputs::height};
+                                                 &ViewInputs::animation, &ViewInputs::width,    &ViewInputs::height,
+                                                 &ViewInputs::moving};
     static_assert(std::size(fields) * sizeof(std::uint64_t) == sizeof(ViewInputs), "a new input: add it here");
     std::uint64_t last = r0;
     for (auto field : fields) {
@@ -68,6 +71,24 @@ TEST(ProgressiveSampling, RestartsWhenTheViewRevisionMoves) {
     p.off();  // a scene without sampled lights: no sum; the next one restarts whatever the revision
     p.frameBegins(kT0 + 150ms);
     EXPECT_TRUE(p.begin(2, 64).restart);
+}
+
+// A moving frame (ViewQuality) draws one sample of each area light and leaves the still view's stride
+// alone; the still frame after it restarts the sum at that stride.
+TEST(ProgressiveSampling, MovingFramesTakeOneSampleAndKeepTheStillStride) {
+    ProgressiveSampling p;
+    p.frameBegins(kT0);
+    const int still = p.begin(1, 64).stride;
+    p.drawn(false, false);
+    p.frameBegins(kT0 + 50ms);
+    const ProgressiveSampling::Pass moving = p.begin(2, 64, true);
+    EXPECT_TRUE(moving.restart);
+    EXPECT_EQ(moving.stride, kAreaSamplesPerSideRange.hi);
+    p.drawn(false, false);
+    p.frameBegins(kT0 + 900ms);  // a slow moving frame is not taken for a pass's time
+    const ProgressiveSampling::Pass after = p.begin(3, 64);
+    EXPECT_TRUE(after.restart);
+    EXPECT_EQ(after.stride, still);
 }
 
 TEST(ProgressiveSampling, StrideStartsNearFourSamplesAPassThenFollowsThePassTime) {

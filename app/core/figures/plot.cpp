@@ -5,6 +5,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <cstdio>
@@ -410,12 +411,18 @@ std::pair<glm::vec2, glm::vec2> arrowHead(glm::vec2 from, glm::vec2 tip, float l
 std::string lectureNotation(std::string text) {
     static const std::pair<const char*, const char*> kSymbols[] = {
         {"delta_phi", "\u0394\u03c6"}, {">=", "\u2265"}, {"phi_", "\u03c6_"}, {"omega_", "\u03c9_"},
-        {"theta_", "\u03b8_"}, {"eta_1", "\u03b7\u2081"}, {"eta_2", "\u03b7\u2082"}, {" deg", "\u00b0"},
+        {"theta_", "\u03b8_"}, {"eta_1", "\u03b7\u2081"}, {"eta_2", "\u03b7\u2082"},
+        {"eta_", "\u03b7_"}, {" deg", "\u00b0"},
         {"->", "\u2192"}, {"R_par", "R\u2225"}, {"R_perp", "R\u22a5"}, {"R.V", "R\u00b7V"}, {"N.H", "N\u00b7H"},
         {"V.H", "V\u00b7H"}, {"N.I", "N\u00b7I"}};
+    // A name ending in a letter is replaced only where its word ends there (" deg" but not " degrees").
+    const auto wordEnds = [&](std::size_t end, const char* ascii) {
+        const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+        return !letter(ascii[std::strlen(ascii) - 1]) || end >= text.size() || !letter(text[end]);
+    };
     for (const auto& [ascii, symbol] : kSymbols)
         for (std::size_t at = text.find(ascii); at != std::string::npos; at = text.find(ascii, at + 1))
-            text.replace(at, std::strlen(ascii), symbol);
+            if (wordEnds(at + std::strlen(ascii), ascii)) text.replace(at, std::strlen(ascii), symbol);
     return text;
 }
 

@@ -185,6 +185,22 @@ struct TestSettings {
     bool empty() const { return !maxDiff && !meanDiff && !maxDiffPixels && masks.empty(); }
 };
 
+// "viewer": how the viewer opens the scene as a lecture preset's slide, so a slide can show the lecture's
+// figure by itself: a probed point, the intersection diagram at it, the panel's sections. Headless runs
+// draw nothing of it (--probe and --intersection say there what to draw).
+struct ViewerStart {
+    // "probe": [x, y], a pixel of the scene's "size" (top-left origin); the viewer probes the same point
+    // of its view (scaled by the view's height about its centre, as the camera's vertical field of view is).
+    std::optional<glm::ivec2> probe;
+    glm::ivec2 probeOf{0, 0};            // the scene's size the probe was given in
+    bool intersection = false;           // "intersection": the diagram at the probe (the viewer's key I)
+    std::optional<std::vector<std::string>> panelSections;  // "panel_sections": exactly these open
+    std::string plot;                    // "plot": the panel's Plots section open, scrolled to this plot
+    bool empty() const { return !probe && !intersection && !panelSections && plot.empty(); }
+    // The pixel of a width x height view that shows what `probe` shows at `probeOf` (clamped into it).
+    glm::ivec2 probeIn(int width, int height) const;
+};
+
 struct Scene {
     std::vector<SceneObject> objects{SceneObject{}};
     ShadingMode shading = ShadingMode::Phong;
@@ -208,6 +224,7 @@ struct Scene {
     std::string caption;          // one sentence under the title
     bool textures = true;         // "textures": glTF models' base colour textures and vertex colours (C varies)
     TestSettings test;            // "test": thresholds and masks for `shadelab --test`
+    ViewerStart viewer;           // "viewer": the probe, diagram and panel sections a preset opens with
 
     // Bookkeeping, not part of the file format:
     bool cameraGiven = false;     // false: a glTF model may be auto-framed

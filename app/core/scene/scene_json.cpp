@@ -5,11 +5,14 @@
 #include "core/base/message.hpp"
 #include "core/base/json_depth.hpp"
 #include "core/scene/scene_names.hpp"
+#include "core/scene/panel_sections.hpp"
 #include "core/base/file_io.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
@@ -153,6 +156,8 @@ private:
     TermView show(const json& j, const std::string& path, std::size_t lightCount) const;
     glm::ivec2 imageSize(const json& j, const std::string& path) const;
     TestSettings testSettings(const json& j, const std::string& path) const;
+    ViewerStart viewerStart(const json& j, const std::string& path, glm::ivec2 size) const;
+    std::string oneOf(const std::string& name, const std::vector<std::string>& names, const std::string& path, const char* what) const;
 
     std::string file_;
     std::string baseDir_;
@@ -315,7 +320,7 @@ Scene SceneReader::read(const json& root) {
     requireObject(root, "",
                   {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
                    "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
-                   "fresnel", "ior", "show", "diff", "title", "caption", "textures", "test", "environment"});
+                   "fresnel", "ior", "show", "diff", "title", "caption", "textures", "test", "environment", "viewer"});
     readObjects(root, s);
     choice(root, "shading", "", s.shading, kShadingModeNames);
     choice(root, "layout", "", s.layout, kLayoutNames);
@@ -356,7 +361,65 @@ Scene SceneReader::read(const json& root) {
         s.height = size.y;
     }
     if (root.contains("test")) s.test = testSettings(root["test"], "test");
+    if (root.contains("viewer")) s.viewer = viewerStart(root["viewer"], "viewer", glm::ivec2(s.width, s.height));
     return s;
+}
+
+// `name` if it is one of `names`, else an error naming the field and every choice.
+std::string SceneReader::oneOf(const std::string& name, const std::vector<std::string>& names, const std::string& path,
+                               const char* what) const {
+    std::string allowed;
+    for (const std::string& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    if (std::find(names.begin(), names.end(), name) == names.end())
+        fail(path, "unknown " + std::string(what) + " \"" + name + "\" (one of " + allowed + ")");
+    return name;
+}
+
+}  // namespace
+
+// The camera keeps its vertical field of view, so the picture scales with the view's height about its
+// centre.
+glm::ivec2 ViewerStart::probeIn(int width, int height) const {
+    const glm::vec2 of(probeOf);
+    const glm::vec2 view{float(width), float(height)};
+    const glm::vec2 p = 0.5f * view + (glm::vec2(*probe) + 0.5f - 0.5f * of) * (view.y / of.y);
+    return glm::clamp(glm::ivec2(glm::floor(p)), glm::ivec2(0), glm::ivec2(width - 1, height - 1));
+}
+
+namespace {
+
+ViewerStart SceneReader::viewerStart(const json& j, const std::string& path, glm::ivec2 size) const {
+    ViewerStart v;
+    requireObject(j, path, {"probe", "intersection", "panel_sections", "plot"});
+    if (j.contains("probe")) {
+        const json& p = j["probe"];
+        const std::string at = join(path, "probe");
+        if (!p.is_array() || p.size() != 2) fail(at, "expected [x, y], a pixel of the scene's size");
+        v.probe = glm::ivec2(integer(p[0], at + "[0]", 0, size.x - 1), integer(p[1], at + "[1]", 0, size.y - 1));
+        v.probeOf = size;
+    }
+    boolean(j, "intersection", path, v.intersection);
+    if (v.intersection && !v.probe) fail(join(path, "intersection"), "draws the diagram at a probed point: give \"probe\"");
+    if (j.contains("panel_sections")) {
+        const json& list = j["panel_sections"];
+        const std::string at = join(path, "panel_sections");
+        if (!list.is_array()) fail(at, std::string("expected an array of section names, got ") + typeName(list));
+        v.panelSections.emplace();
+        std::vector<std::string> sectionNames;
+        for (const auto& [n, section] : kPanelSections) sectionNames.push_back(n);
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string item = at + "[" + std::to_string(i) + "]";
+            if (!list[i].is_string()) fail(item, std::string("expected a section name, got ") + typeName(list[i]));
+            const std::string name = list[i].get<std::string>();
+            v.panelSections->push_back(oneOf(name, sectionNames, item, "section"));
+        }
+    }
+    if (j.contains("plot")) {
+        const std::string at = join(path, "plot");
+        if (!j["plot"].is_string()) fail(at, std::string("expected a plot's name, got ") + typeName(j["plot"]));
+        v.plot = oneOf(j["plot"].get<std::string>(), {std::begin(kPanelPlots), std::end(kPanelPlots)}, at, "plot");
+    }
+    return v;
 }
 
 TestSettings SceneReader::testSettings(const json& j, const std::string& path) const {
@@ -647,6 +710,17 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     if (!s.title.empty()) j["title"] = s.title;
     if (!s.caption.empty()) j["caption"] = s.caption;
     if (!s.test.empty()) j["test"] = testJson(s.test);
+    if (!s.viewer.empty()) {
+        json v = json::object();
+        if (s.viewer.probe) {  // in pixels of the size written (the viewer saves at its view's)
+            const glm::ivec2 p = s.viewer.probeIn(s.width, s.height);
+            v["probe"] = {p.x, p.y};
+        }
+        if (s.viewer.intersection) v["intersection"] = true;
+        if (s.viewer.panelSections) v["panel_sections"] = *s.viewer.panelSections;
+        if (!s.viewer.plot.empty()) v["plot"] = s.viewer.plot;
+        j["viewer"] = v;
+    }
     return j.dump(2) + "\n";
 }
 

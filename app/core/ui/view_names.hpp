@@ -2,7 +2,7 @@
 // The names of the view's choices that both the command line and the viewer's panel offer, defined
 // once: the overlays (--overlays, the panel's Overlays section) and multisample anti-aliasing (--msaa,
 // the panel's Display section). GL-free, header-only; in core so the command line needs no viewer
-// header (like core/ui/controls.hpp and core/ui/panel_sections.hpp).
+// header (like core/ui/controls.hpp and core/scene/panel_sections.hpp).
 #include "core/scene/scene_names.hpp"
 
 #include <string>

@@ -13,4 +13,8 @@ inline constexpr EnumName<PanelSection> kPanelSections[] = {
     {"shadows", PanelSection::Shadows}, {"overlays", PanelSection::Overlays}, {"camera", PanelSection::Camera},
     {"background", PanelSection::Background}, {"file", PanelSection::File},   {"keys", PanelSection::Keys}};
 
+// The plots of the "plots" section, top to bottom, by their --plot names (a scene's "viewer": "plot"
+// scrolls the panel to one; viewer/panel.cpp checks them against core/figures/plot.hpp's names).
+inline constexpr const char* kPanelPlots[] = {"lobe", "fresnel", "lobe3d", "brdf-slice"};
+
 }  // namespace shadelab
