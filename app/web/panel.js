@@ -379,7 +379,7 @@ var Module = (function () {
     const control = {
       update() {
         const v = shownValue(name, fallback);
-        // Unset (a material's mirror, transmission, anisotropy): an empty box and the slider at its
+        // Unset (a material's mirror or transmission): an empty box and the slider at its
         // low end, dimmed, until a value is given.
         const unset = v === undefined || v === "";
         slider.classList.toggle("unset", unset);
@@ -637,7 +637,7 @@ var Module = (function () {
         const pair = current();
         on.checked = !!pair;
         if (document.activeElement !== box) box.value = pair ? pair.map(fmt).join(",") : "";
-        sliders.forEach((slider, i) => { slider.disabled = !pair; if (pair) slider.value = toSlider(pair[i]); });
+        sliders.forEach((slider, i) => { slider.disabled = !pair; slider.value = toSlider(pair ? pair[i] : lo); });  // off: at the low end
       },
     });
     box.id = "c" + (++uid);
