@@ -91,28 +91,12 @@ std::vector<FresnelSample> sampleFresnel(float eta1, float eta2) {
     return samples;
 }
 
-Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg) {
-    const std::vector<LobeSample> samples = sampleLobe(env, ke, incidenceDeg);
-    float peak = 0.0f;
-    for (const LobeSample& s : samples) peak = std::max({peak, s.phong, s.blinnPhong});
-    // Reference half circles at up to four round spec values; the outer one reaches the higher peak.
-    // A peak of float rounding only (Fresnel at ior 1 reflects nothing) keeps the scale of 1.
-    if (peak < 1e-6f) peak = 1.0f;
-    const float step = niceStep(peak, 4);
-    const int rings = std::max(1, int(std::ceil(peak / step - 1e-4f)));
+namespace {
+
+// The reference half circles, `rings` of them `step` apart (labelled along the surface), the dashed
+// spokes every 30 degrees from N (labelled with their angle) and the surface.
+void addLobeGrid(Plot& p, float step, int rings, float incidenceDeg) {
     const float r = step * float(rings);
-
-    Plot p;
-    p.kind = PlotKind::Lobe;
-    p.title = "Specular lobe: k_e = " + shortNumber(ke) + ", theta_i = " + shortNumber(incidenceDeg) + " deg";
-    p.subtitle = "radius = spec for V in the plane of incidence";
-    if (env.normalization == SpecularNormalization::Energy) p.subtitle += ", energy-normalised";
-    if (env.fresnel != FresnelMode::None)
-        p.subtitle += std::string(", times F(V.H) ") + toString(env.fresnel) + " for ior " + format("%.2f", double(env.ior));
-    p.min = {-1.22f * r, -0.1f * r};
-    p.max = {1.22f * r, 1.18f * r};
-    p.equalAspect = true;
-
     for (int k = 1; k <= rings; ++k) {
         const float radius = step * float(k);
         std::vector<glm::vec2> arc;
@@ -131,11 +115,12 @@ Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg) {
     }
     p.lines.push_back(line("surface", {{-1.12f * r, 0.0f}, {1.12f * r, 0.0f}}, kPlotAxis, 1.5f));
     p.labels.push_back(label({-1.12f * r, 0.0f}, "surface", {0.0f, 0.0f}, {0.0f, 0.25f}, kPlotAxis));
+}
 
-    // N, I (toward the light) and R = 2(N.I)N - I, drawn as the lecture draws them: from the point outward.
-    const float arrowLength = 1.1f * r;
-    // Labels above the tips, I's to the left and R's to the right, so that at normal incidence (all
-    // three along N) they stand side by side as "I N R".
+// N, I (toward the light) and R = 2(N.I)N - I, drawn as the lecture draws them: from the point outward.
+// Labels above the tips, I's to the left and R's to the right, so that at normal incidence (all three
+// along N) they stand side by side as "I N R".
+void addLobeArrows(Plot& p, float arrowLength, float incidenceDeg) {
     auto arrow = [&](const std::string& name, float angleDeg, Rgba8 color, bool dashed, float side) {
         PlotPolyline a = line(name, {{0.0f, 0.0f}, arrowLength * unitAt(angleDeg)}, color, 1.5f);
         a.arrow = true;
@@ -147,10 +132,13 @@ Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg) {
     arrow("N", 0.0f, kPlotText, false, 0.0f);
     arrow("I", -incidenceDeg, kYellow, false, -1.0f);
     arrow("R", incidenceDeg, kPlotAxis, true, 1.0f);
+}
 
+// Phong's and Blinn-Phong's lobes as polar curves, the model in use marked in the legend.
+void addLobeCurves(Plot& p, const std::vector<LobeSample>& samples, ReflectionModel inUse) {
     auto curve = [&](ReflectionModel model, const char* name, Rgba8 color) {
         PlotPolyline c = line(name, {}, color, kCurveWidth);
-        if (model == env.model) c.name += "  (in use)";
+        if (model == inUse) c.name += "  (in use)";
         c.inLegend = true;
         for (const LobeSample& s : samples)
             c.points.push_back((model == ReflectionModel::Phong ? s.phong : s.blinnPhong) * unitAt(s.angleDeg));
@@ -158,6 +146,31 @@ Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg) {
     };
     curve(ReflectionModel::Phong, "Phong max(0, R.V)^k_e", kOrange);
     curve(ReflectionModel::BlinnPhong, "Blinn-Phong max(0, N.H)^k_e", kSkyBlue);
+}
+
+}  // namespace
+
+Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg) {
+    const std::vector<LobeSample> samples = sampleLobe(env, ke, incidenceDeg);
+    float peak = 0.0f;
+    for (const LobeSample& s : samples) peak = std::max({peak, s.phong, s.blinnPhong});
+    // Reference half circles at up to four round spec values; the outer one reaches the higher peak.
+    // A peak of float rounding only (Fresnel at ior 1 reflects nothing) keeps the scale of 1.
+    if (peak < 1e-6f) peak = 1.0f;
+    const float step = niceStep(peak, 4);
+    const int rings = std::max(1, int(std::ceil(peak / step - 1e-4f)));
+    const float r = step * float(rings);
+
+    Plot p;
+    p.kind = PlotKind::Lobe;
+    p.title = "Specular lobe: k_e = " + shortNumber(ke) + ", theta_i = " + shortNumber(incidenceDeg) + " deg";
+    p.subtitle = "radius = spec for V in the plane of incidence" + specularModifiers(env);
+    p.min = {-1.22f * r, -0.1f * r};
+    p.max = {1.22f * r, 1.18f * r};
+    p.equalAspect = true;
+    addLobeGrid(p, step, rings, incidenceDeg);
+    addLobeArrows(p, 1.1f * r, incidenceDeg);
+    addLobeCurves(p, samples, env.model);
     return p;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // What the plots' builders share (plot.cpp: the lobe and Fresnel plots; brdf_plot.cpp: the 3-D lobe
-// and the BRDF slices): their colours, number labels, and the polyline and label values they emit.
+// and the BRDF slices): their colours, number labels, the subtitles' modifiers, and the polyline and
+// label values they emit.
 // Internal to core/figures.
 #include "core/figures/plot.hpp"
 
@@ -38,6 +39,16 @@ inline float niceStep(float peak, int count) {
     for (float m : {1.0f, 2.0f, 2.5f, 5.0f, 10.0f})
         if (m * decade * float(count) >= peak * (1.0f - 1e-6f)) return m * decade;
     return 10.0f * decade;
+}
+
+// What else shapes the specular term: normalisation and Fresnel, as the subtitles say them
+// (", energy-normalised, times F(V.H) exact for ior 1.50"; empty for neither).
+inline std::string specularModifiers(const LightingEnvironment& env) {
+    std::string s;
+    if (env.normalization == SpecularNormalization::Energy) s += ", energy-normalised";
+    if (env.fresnel != FresnelMode::None)
+        s += std::string(", times F(V.H) ") + toString(env.fresnel) + " for ior " + format("%.2f", double(env.ior));
+    return s;
 }
 
 inline PlotPolyline line(std::string name, std::vector<glm::vec2> points, Rgba8 color, float width = 1.0f) {
