@@ -76,6 +76,119 @@ std::string fixed(const char* fmt, double v) {
     return buffer;
 }
 
+// What every part of the diagram draws with: the image, the font, and sizes that grow with the image's
+// height (720 pixels: 17-pixel text, 2.5-pixel arrows).
+struct Pen {
+    Image& image;
+    const TrueTypeFont& font;
+    float scale, width, size, em;  // em: the font's scale for text `size` pixels tall
+
+    Pen(Image& im, const TrueTypeFont& f)
+        : image(im), font(f), scale(std::clamp(float(im.height) / 720.0f, 0.6f, 4.0f)), width(2.5f * scale), size(17.0f * scale),
+          em(size / f.height(1.0f)) {}
+    void text(float x, float y, const std::string& s, Rgba8 color) const { font.draw(image, x, y, s, em, color); }
+    float textWidth(const std::string& s) const { return font.width(s, em); }
+};
+
+// A world point's image pixel in the probed pane.
+glm::vec2 panePixelOf(const IntersectionPoint& at, const glm::vec3& posWorld) {
+    const glm::vec4 c = at.clipFromWorld * glm::vec4(posWorld, 1.0f);
+    const glm::vec2 ndc = glm::vec2(c) / std::max(c.w, 1e-6f);
+    return glm::vec2(at.paneX + (0.5f + 0.5f * ndc.x) * at.paneWidth, at.paneY + (0.5f - 0.5f * ndc.y) * at.paneHeight);
+}
+
+// On the model: the probed point, N, R and T as the 3-D vectors they are (I is the pixel's own ray,
+// seen end-on: the schematic draws it), each letter beyond its arrow's tip. Returns R's tip, which the
+// box must leave visible.
+glm::vec2 drawOnModel(const Pen& pen, const Scene& scene, const IntersectionPoint& at) {
+    const glm::vec3 n = at.nrmWorld, v = glm::normalize(scene.camera.eye - at.posWorld);
+    Material probe;
+    const EnvironmentTerm t = environmentTerm(probe, lightingEnvironment(scene), n, v);
+    const float length = 0.2f * glm::length(scene.camera.eye - at.posWorld);  // as the viewer's probe arrows
+    const glm::vec2 p = panePixelOf(at, at.posWorld);
+    auto arrow = [&](const glm::vec3& d, const std::string& name, Rgba8 color) {
+        const glm::vec2 tip = panePixelOf(at, at.posWorld + length * d);
+        drawArrow(pen.image, p, tip, pen.width, color);
+        const glm::vec2 along = glm::length(tip - p) > 1e-3f ? glm::normalize(tip - p) : glm::vec2(0, -1);
+        const glm::vec2 at2 = tip + 0.9f * pen.size * along;
+        pen.text(at2.x - 0.5f * pen.textWidth(name), at2.y - 0.5f * pen.size, name, color);
+        return tip;
+    };
+    drawSegment(pen.image, p - glm::vec2(0.6f * pen.size, 0), p + glm::vec2(0.6f * pen.size, 0), pen.width, kIncoming);
+    drawSegment(pen.image, p - glm::vec2(0, 0.6f * pen.size), p + glm::vec2(0, 0.6f * pen.size), pen.width, kIncoming);
+    arrow(n, "N", kNormal);
+    const glm::vec2 rTip = arrow(t.reflectedDirection, "R", kReflected);
+    if (!t.totalInternal) arrow(t.transmittedDirection, "T", kRefracted);
+    return rTip;
+}
+
+// The numbers under the schematic: the angles, Snell's law, and the Fresnel split.
+std::vector<std::string> numberLines(const IntersectionNumbers& num) {
+    return {"θ_i = " + fixed("%.1f°", num.thetaIDeg) +
+                (num.totalInternal ? "   θ_t: none (total internal reflection)" : "   θ_t = " + fixed("%.1f°", num.thetaTDeg)),
+            "η_i sin θ_i = " + fixed("%.3f", num.etaI * std::sin(num.thetaIDeg * 3.14159265f / 180.0f)) +
+                (num.totalInternal ? "  > η_t" : " = η_t sin θ_t"),
+            "R_∥ = " + fixed("%.3f", num.rParallel) + "   R_⊥ = " + fixed("%.3f", num.rPerpendicular),
+            "R = (R_∥ + R_⊥)/2 = " + fixed("%.3f", num.r) + "   1 − R = " + fixed("%.3f", 1.0 - double(num.r))};
+}
+
+// The box beside the point (image pixels): the schematic, `sketch` tall, on top and the numbers' lines
+// under it, `pad` around each.
+struct Box {
+    float x = 0, y = 0, width = 0, height = 0;
+    float pad = 0, sketch = 0, lineHeight = 0;
+};
+
+// On the side the reflected arrow does not point to (it stays visible), else where there is room;
+// inside the pane.
+Box placeBox(const Pen& pen, const IntersectionPoint& at, glm::vec2 p, glm::vec2 rTip, const std::vector<std::string>& lines) {
+    const float size = pen.size;
+    float textWidth = 0.0f;
+    for (const std::string& l : lines) textWidth = std::max(textWidth, pen.textWidth(l));
+    Box b;
+    b.pad = 0.6f * size, b.lineHeight = 1.3f * size;
+    b.width = std::max(textWidth, 14.0f * size) + 2.0f * b.pad;
+    b.sketch = 9.0f * size;
+    b.height = b.pad + b.sketch + b.pad + b.lineHeight * float(lines.size()) + b.pad;
+    const float right = at.paneX + at.paneWidth, bottom = at.paneY + at.paneHeight;
+    const bool left = rTip.x > p.x ? p.x - 3.0f * size - b.width >= at.paneX : p.x + 3.0f * size + b.width > right;
+    b.x = std::clamp(left ? p.x - 3.0f * size - b.width : p.x + 3.0f * size, at.paneX, std::max(at.paneX, right - b.width));
+    b.y = std::clamp(p.y - 0.5f * b.height, at.paneY, std::max(at.paneY, bottom - b.height));
+    return b;
+}
+
+// The schematic at the top of the box: the interface with eta_i above and eta_t below (tinted), the
+// point O in the middle, N, I arriving at theta_i, and R and T leaving with the share of the light
+// each carries (T at theta_t; none past the critical angle).
+void drawSchematic(const Pen& pen, const Box& box, const IntersectionNumbers& num) {
+    const float x = box.x, y = box.y, pad = box.pad, sketch = box.sketch, size = pen.size, width = pen.width;
+    const glm::vec2 o(x + 0.5f * box.width, y + pad + 0.5f * sketch);
+    const float arm = 0.42f * sketch;
+    fillBox(pen.image, x + pad, o.y, x + box.width - pad, y + pad + sketch, Rgba8{90, 140, 200, 70});
+    drawSegment(pen.image, glm::vec2(x + pad, o.y), glm::vec2(x + box.width - pad, o.y), 0.6f * width, Rgba8{200, 200, 200, 255});
+    pen.text(x + pad + 0.3f * size, y + pad, "η_i = " + fixed("%.2f", num.etaI), kText);
+    pen.text(x + pad + 0.3f * size, y + pad + sketch - size, "η_t = " + fixed("%.2f", num.etaT), kText);
+    drawSegment(pen.image, o - glm::vec2(0, arm), o + glm::vec2(0, arm), 0.4f * width, Rgba8{255, 255, 255, 120});  // the normal's line
+    drawArrow(pen.image, o, o - glm::vec2(0, arm), 0.8f * width, kNormal);
+    pen.text(o.x + 0.3f * size, o.y - arm - 0.5f * size, "N", kNormal);
+    const float ti = num.thetaIDeg * 3.14159265f / 180.0f, tt = num.thetaTDeg * 3.14159265f / 180.0f;
+    const glm::vec2 iFrom = o + arm * glm::vec2(-std::sin(ti), -std::cos(ti));
+    drawArrow(pen.image, iFrom, o, width, kIncoming);
+    pen.text(iFrom.x - 1.0f * size, iFrom.y - 0.6f * size, "I", kIncoming);
+    const glm::vec2 rTo = o + arm * glm::vec2(std::sin(ti), -std::cos(ti));
+    drawArrow(pen.image, o, rTo, width, kReflected);
+    pen.text(rTo.x + 0.3f * size, rTo.y - 0.8f * size, "R  " + fixed("%.3f", num.r), kReflected);
+    if (!num.totalInternal) {
+        const glm::vec2 tTo = o + arm * glm::vec2(std::sin(tt), std::cos(tt));
+        drawArrow(pen.image, o, tTo, width, kRefracted);
+        pen.text(tTo.x + 0.4f * size, tTo.y - 0.8f * size, "T  " + fixed("%.3f", 1.0 - double(num.r)), kRefracted);
+        const glm::vec2 at2 = o + 0.6f * arm * glm::vec2(std::sin(0.5f * tt), std::cos(0.5f * tt));
+        pen.text(std::max(at2.x, o.x + 0.1f * size) - 0.5f * pen.textWidth("θ_t") + 0.4f * size, at2.y - 0.2f * size, "θ_t", kRefracted);
+    }
+    const glm::vec2 at1 = o + 0.6f * arm * glm::vec2(-std::sin(0.5f * ti), -std::cos(0.5f * ti));
+    pen.text(std::min(at1.x, o.x - 0.1f * size) - 0.5f * pen.textWidth("θ_i"), at1.y - 0.8f * size, "θ_i", kIncoming);
+}
+
 }  // namespace
 
 IntersectionNumbers intersectionNumbers(const Scene& scene, const IntersectionPoint& at) {
@@ -93,97 +206,22 @@ IntersectionNumbers intersectionNumbers(const Scene& scene, const IntersectionPo
     return n;
 }
 
+
 void drawIntersectionDiagram(Image& image, const Scene& scene, const IntersectionPoint& at) {
     const TrueTypeFont* font = TrueTypeFont::dejaVuSans();
     if (!font) throw InputError("--intersection: needs the DejaVu Sans font (Debian: fonts-dejavu-core), which was not found");
-    auto project = [&](const glm::vec3& p) {
-        const glm::vec4 c = at.clipFromWorld * glm::vec4(p, 1.0f);
-        const glm::vec2 ndc = glm::vec2(c) / std::max(c.w, 1e-6f);
-        return glm::vec2(at.paneX + (0.5f + 0.5f * ndc.x) * at.paneWidth, at.paneY + (0.5f - 0.5f * ndc.y) * at.paneHeight);
-    };
-    const glm::vec3 n = at.nrmWorld, v = glm::normalize(scene.camera.eye - at.posWorld);
-    Material probe;
-    const EnvironmentTerm t = environmentTerm(probe, lightingEnvironment(scene), n, v);
-    const IntersectionNumbers num = intersectionNumbers(scene, at);
-
-    const float scale = std::clamp(float(image.height) / 720.0f, 0.6f, 4.0f);
-    const float width = 2.5f * scale, size = 17.0f * scale, em = size / font->height(1.0f);
-    const float length = 0.2f * glm::length(scene.camera.eye - at.posWorld);  // as the viewer's probe arrows
-    const glm::vec2 p = project(at.posWorld);
-    auto label = [&](glm::vec2 tip, glm::vec2 from, const std::string& text, Rgba8 color) {
-        const glm::vec2 d = glm::length(tip - from) > 1e-3f ? glm::normalize(tip - from) : glm::vec2(0, -1);
-        const glm::vec2 at2 = tip + 0.9f * size * d;
-        font->draw(image, at2.x - 0.5f * font->width(text, em), at2.y - 0.5f * size, text, em, color);
-    };
-    // On the model: the probed point, N, R and T as the 3-D vectors they are (I is the pixel's own ray,
-    // seen end-on: the schematic below draws it).
-    drawSegment(image, p - glm::vec2(0.6f * size, 0), p + glm::vec2(0.6f * size, 0), width, kIncoming);
-    drawSegment(image, p - glm::vec2(0, 0.6f * size), p + glm::vec2(0, 0.6f * size), width, kIncoming);
-    const glm::vec2 nTip = project(at.posWorld + length * n);
-    drawArrow(image, p, nTip, width, kNormal);
-    label(nTip, p, "N", kNormal);
-    const glm::vec2 rTip = project(at.posWorld + length * t.reflectedDirection);
-    drawArrow(image, p, rTip, width, kReflected);
-    label(rTip, p, "R", kReflected);
-    if (!t.totalInternal) {
-        const glm::vec2 tTip = project(at.posWorld + length * t.transmittedDirection);
-        drawArrow(image, p, tTip, width, kRefracted);
-        label(tTip, p, "T", kRefracted);
-    }
-
+    const Pen pen(image, *font);
+    const glm::vec2 p = panePixelOf(at, at.posWorld), rTip = drawOnModel(pen, scene, at);
     // The slide's picture in the plane of incidence, with the numbers under it, in a box beside the point.
-    const std::vector<std::string> lines = {
-        "θ_i = " + fixed("%.1f°", num.thetaIDeg) +
-            (num.totalInternal ? "   θ_t: none (total internal reflection)" : "   θ_t = " + fixed("%.1f°", num.thetaTDeg)),
-        "η_i sin θ_i = " + fixed("%.3f", num.etaI * std::sin(num.thetaIDeg * 3.14159265f / 180.0f)) +
-            (num.totalInternal ? "  > η_t" : " = η_t sin θ_t"),
-        "R_∥ = " + fixed("%.3f", num.rParallel) + "   R_⊥ = " + fixed("%.3f", num.rPerpendicular),
-        "R = (R_∥ + R_⊥)/2 = " + fixed("%.3f", num.r) + "   1 − R = " + fixed("%.3f", 1.0 - double(num.r))};
-    float textWidth = 0.0f;
-    for (const std::string& l : lines) textWidth = std::max(textWidth, font->width(l, em));
-    const float pad = 0.6f * size, lineHeight = 1.3f * size;
-    const float boxWidth = std::max(textWidth, 14.0f * size) + 2.0f * pad;
-    const float sketch = 9.0f * size;  // the schematic's height
-    const float boxHeight = pad + sketch + pad + lineHeight * float(lines.size()) + pad;
-    const float right = at.paneX + at.paneWidth, bottom = at.paneY + at.paneHeight;
-    // On the side the reflected arrow does not point to (it stays visible), else where there is room.
-    const bool left = rTip.x > p.x ? p.x - 3.0f * size - boxWidth >= at.paneX : p.x + 3.0f * size + boxWidth > right;
-    float x = left ? p.x - 3.0f * size - boxWidth : p.x + 3.0f * size, y = p.y - 0.5f * boxHeight;
-    x = std::clamp(x, at.paneX, std::max(at.paneX, right - boxWidth));
-    y = std::clamp(y, at.paneY, std::max(at.paneY, bottom - boxHeight));
-    fillBox(image, x, y, x + boxWidth, y + boxHeight, Rgba8{0, 0, 0, 190});
-    drawSegment(image, p, glm::vec2(x < p.x ? x + boxWidth : x, std::clamp(p.y, y, y + boxHeight)), 1.0f * scale,
-                Rgba8{255, 255, 255, 110});  // a leader from the box to the point
-    // The interface: eta_i above, eta_t below (tinted), the point O in the middle.
-    const glm::vec2 o(x + 0.5f * boxWidth, y + pad + 0.5f * sketch);
-    const float arm = 0.42f * sketch;
-    fillBox(image, x + pad, o.y, x + boxWidth - pad, y + pad + sketch, Rgba8{90, 140, 200, 70});
-    drawSegment(image, glm::vec2(x + pad, o.y), glm::vec2(x + boxWidth - pad, o.y), 0.6f * width, Rgba8{200, 200, 200, 255});
-    const std::string etaI = "η_i = " + fixed("%.2f", num.etaI), etaT = "η_t = " + fixed("%.2f", num.etaT);
-    font->draw(image, x + pad + 0.3f * size, y + pad, etaI, em, kText);
-    font->draw(image, x + pad + 0.3f * size, y + pad + sketch - size, etaT, em, kText);
-    drawSegment(image, o - glm::vec2(0, arm), o + glm::vec2(0, arm), 0.4f * width, Rgba8{255, 255, 255, 120});  // the normal's line
-    drawArrow(image, o, o - glm::vec2(0, arm), 0.8f * width, kNormal);
-    font->draw(image, o.x + 0.3f * size, o.y - arm - 0.5f * size, "N", em, kNormal);
-    const float ti = num.thetaIDeg * 3.14159265f / 180.0f, tt = num.thetaTDeg * 3.14159265f / 180.0f;
-    const glm::vec2 iFrom = o + arm * glm::vec2(-std::sin(ti), -std::cos(ti));
-    drawArrow(image, iFrom, o, width, kIncoming);
-    font->draw(image, iFrom.x - 1.0f * size, iFrom.y - 0.6f * size, "I", em, kIncoming);
-    // R and T with the share of the light each carries.
-    const glm::vec2 rTo = o + arm * glm::vec2(std::sin(ti), -std::cos(ti));
-    drawArrow(image, o, rTo, width, kReflected);
-    font->draw(image, rTo.x + 0.3f * size, rTo.y - 0.8f * size, "R  " + fixed("%.3f", num.r), em, kReflected);
-    if (!num.totalInternal) {
-        const glm::vec2 tTo = o + arm * glm::vec2(std::sin(tt), std::cos(tt));
-        drawArrow(image, o, tTo, width, kRefracted);
-        font->draw(image, tTo.x + 0.4f * size, tTo.y - 0.8f * size, "T  " + fixed("%.3f", 1.0 - double(num.r)), em, kRefracted);
-        const glm::vec2 at2 = o + 0.6f * arm * glm::vec2(std::sin(0.5f * tt), std::cos(0.5f * tt));
-        font->draw(image, std::max(at2.x, o.x + 0.1f * size) - 0.5f * font->width("θ_t", em) + 0.4f * size, at2.y - 0.2f * size, "θ_t", em, kRefracted);
-    }
-    const glm::vec2 at1 = o + 0.6f * arm * glm::vec2(-std::sin(0.5f * ti), -std::cos(0.5f * ti));
-    font->draw(image, std::min(at1.x, o.x - 0.1f * size) - 0.5f * font->width("θ_i", em), at1.y - 0.8f * size, "θ_i", em, kIncoming);
+    const IntersectionNumbers num = intersectionNumbers(scene, at);
+    const std::vector<std::string> lines = numberLines(num);
+    const Box box = placeBox(pen, at, p, rTip, lines);
+    fillBox(image, box.x, box.y, box.x + box.width, box.y + box.height, Rgba8{0, 0, 0, 190});
+    drawSegment(image, p, glm::vec2(box.x < p.x ? box.x + box.width : box.x, std::clamp(p.y, box.y, box.y + box.height)),
+                1.0f * pen.scale, Rgba8{255, 255, 255, 110});  // a leader from the box to the point
+    drawSchematic(pen, box, num);
     for (std::size_t k = 0; k < lines.size(); ++k)
-        font->draw(image, x + pad, y + pad + sketch + pad + float(k) * lineHeight, lines[k], em, kText);
+        pen.text(box.x + box.pad, box.y + box.pad + box.sketch + box.pad + float(k) * box.lineHeight, lines[k], kText);
 }
 
 }  // namespace shadelab
