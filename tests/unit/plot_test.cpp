@@ -335,6 +335,25 @@ TEST(PlotLayout, EverythingFitsAndCirclesStayRound) {
         }
 }
 
+// The painters write each wrapped header line through lectureNotation, which makes " deg" a degree sign
+// only where the space and the unit share a line: the viewer's 3-D lobe title read "theta_i = 56.9" and
+// then "deg, Phong k_e = 16" at some panel widths. At every width the unit stays with its value, and
+// the lines still make up the whole title.
+TEST(PlotLayout, WrappingKeepsDegreesWithTheirValue) {
+    const MeasureText measure = [](const std::string& t) { return glm::vec2(6.0f * float(t.size()), 9.0f); };
+    const Plot plot = lobe3dPlot(Material{}, LightingEnvironment{}, 56.9f);
+    ASSERT_NE(plot.title.find("56.9 deg,"), std::string::npos) << plot.title;
+    for (int width = 120; width <= 700; ++width) {
+        const PlotLayout l = layoutPlot(plot, glm::vec2(float(width), 600.0f), 10.0f, measure);
+        std::string title;  // the title's lines (kPlotText; the subtitle's are kPlotAxis)
+        for (const PlotLayout::Line& line : l.header) {
+            EXPECT_NE(line.text.rfind("deg", 0), 0u) << width << ": " << line.text;
+            if (line.color.r == kPlotText.r) title += (title.empty() ? "" : " ") + line.text;
+        }
+        EXPECT_EQ(title, plot.title) << width;
+    }
+}
+
 TEST(PlotLayout, DashesCoverTheirShareOfTheLine) {
     const std::vector<glm::vec2> polyline = {{0, 0}, {103, 0}, {103, 47}};  // 150 pixels long
     const auto dashes = dashPolyline(polyline, 6.0f, 4.0f);

@@ -241,6 +241,18 @@ glm::vec2 PlotLayout::labelAt(const PlotLabel& l, glm::vec2 textSize) const {
 
 namespace {
 
+// Where the word from `start` ends: at the next space, except one before the unit "deg", so that a
+// value keeps its unit on its line ("56.9 deg", which the painters' lectureNotation writes 56.9°;
+// a line starting "deg," would stay ASCII).
+std::size_t wordEnd(const std::string& text, std::size_t start) {
+    const auto unitAt = [&](std::size_t at) {
+        return text.compare(at, 3, "deg") == 0 && (at + 3 >= text.size() || !std::isalpha(static_cast<unsigned char>(text[at + 3])));
+    };
+    std::size_t end = text.find(' ', start);
+    while (end != std::string::npos && unitAt(end + 1)) end = text.find(' ', end + 1);
+    return end == std::string::npos ? text.size() : end;
+}
+
 // The title and subtitle from `y` down, each wrapped at spaces to `width` (a single word wider than
 // the plot stays whole); returns the y below them.
 float layoutHeader(const Plot& plot, float width, float pad, const MeasureText& measure, PlotLayout& out, float y) {
@@ -249,8 +261,7 @@ float layoutHeader(const Plot& plot, float width, float pad, const MeasureText& 
         std::string row;
         std::size_t start = 0;
         while (start < text.size()) {
-            std::size_t end = text.find(' ', start);
-            if (end == std::string::npos) end = text.size();
+            const std::size_t end = wordEnd(text, start);
             const std::string word = text.substr(start, end - start);
             const std::string longer = row.empty() ? word : row + " " + word;
             if (!row.empty() && measure(longer).x > width - 2.0f * pad) {
