@@ -721,7 +721,7 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
     return bottom;
 }
 
-CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight, float maxZoom,
+CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight, int minStep,
                             float viewText) {
     CaptionLayout l;
     if (scene.title.empty() && scene.caption.empty()) return l;
@@ -731,10 +731,11 @@ CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, floa
     // 1.25 for the caption), or the view text's size where that is larger (the caption 1.25 times
     // it: 3% of the window's height); smaller in steps while the band would take more than `maxHeight`.
     const float base = std::max(ImGui::GetFontSize() * std::clamp(width / 1000.0f, 0.7f, 1.25f), viewText);
-    float zoom = std::min(1.0f, maxZoom);
-    for (int step = 0; step < 8; ++step, zoom *= 0.9f) {
-        l.zoom = zoom;
-        l.titleSize = base * 1.6f * zoom;
+    for (int step = std::max(minStep, 0); step < 8 * kCaptionTitleSteps; ++step) {
+        // The caption's size in steps of 10%; at each, the title from 1.6 times the caption's base down to 1.3.
+        const float zoom = std::pow(0.9f, float(step / kCaptionTitleSteps));
+        l.step = step;
+        l.titleSize = base * (1.6f - 0.15f * float(step % kCaptionTitleSteps)) * zoom;
         l.captionSize = base * 1.25f * zoom;
         l.pad = l.captionSize * 0.45f;
         const float counterWidth =
@@ -775,12 +776,8 @@ void drawCaption(const Scene& scene, const std::string& counter, const CaptionLa
     draw->PopClipRect();
 }
 
-void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
-    if (strip.height <= 0.0f) return;
-    ImDrawList* draw = ImGui::GetForegroundDrawList();
-    const ImVec2 lo(strip.x, strip.y), hi(strip.x + strip.width, strip.y + strip.height);
-    draw->PushClipRect(lo, hi, true);
-    draw->AddRectFilled(lo, hi, IM_COL32(16, 16, 20, 255));
+std::string statusStripText(const PanelStatus& status, float width,
+                            const std::function<float(const std::string&)>& measure) {
     char timing[64] = "idle";
     const double ms = status.frameMs;
     if (!status.idle) {  // no frame in the last second yet: the first one after a sleep
@@ -790,15 +787,40 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
         else if (ms > 0.0) std::snprintf(timing, sizeof timing, "%.1f ms (%.0f FPS)", ms, 1000.0 / ms);
         else std::snprintf(timing, sizeof timing, "\u2026 ms");
     }
-    char text[512];
-    std::snprintf(text, sizeof text, "%s  \u00b7  %zu triangles  \u00b7  %s%s%s%s%s", timing, status.frameTriangles,
-                  status.glRenderer.c_str(),
-                  status.progress.empty() ? "" : "  \u00b7  ", status.progress.c_str(),
-                  status.animation.empty() ? "" : status.playing ? "  \u00b7  playing " : "  \u00b7  paused at ",
-                  status.animation.c_str());
+    const std::string animation =
+        status.animation.empty() ? "" : (status.playing ? "playing " : "paused at ") + status.animation;
+    // In the order shown; the ones that may be left out where there is no room, the first first.
+    struct Part { std::string text; int dropOrder; };
+    std::vector<Part> parts = {{timing, 0},
+                               {std::to_string(status.frameTriangles) + " triangles", 2},
+                               {status.glRenderer, 1},
+                               {status.progress, 0},
+                               {animation, 0}};
+    const auto join = [&parts] {
+        std::string text;
+        for (const Part& p : parts)
+            if (!p.text.empty()) text += (text.empty() ? "" : "  \u00b7  ") + p.text;
+        return text;
+    };
+    for (int drop = 1; drop <= 2 && measure(join()) > width; ++drop)
+        for (Part& p : parts)
+            if (p.dropOrder == drop) p.text.clear();
+    return join();
+}
+
+void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
+    if (strip.height <= 0.0f) return;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const ImVec2 lo(strip.x, strip.y), hi(strip.x + strip.width, strip.y + strip.height);
+    draw->PushClipRect(lo, hi, true);
+    draw->AddRectFilled(lo, hi, IM_COL32(16, 16, 20, 255));
+    const float margin = ImGui::GetFontSize() * 0.5f;
+    const std::string text = statusStripText(status, strip.width - 2.0f * margin, [](const std::string& t) {
+        return ImGui::CalcTextSize(t.c_str()).x;
+    });
     const float pad = (strip.height - ImGui::GetFontSize()) * 0.5f;
-    draw->AddText(ImVec2(std::round(strip.x + ImGui::GetFontSize() * 0.5f), std::round(strip.y + pad)),
-                  IM_COL32(200, 200, 200, 255), text);
+    draw->AddText(ImVec2(std::round(strip.x + margin), std::round(strip.y + pad)), IM_COL32(200, 200, 200, 255),
+                  text.c_str());
     draw->PopClipRect();
 }
 

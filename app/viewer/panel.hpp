@@ -10,6 +10,7 @@
 #include "core/geometry/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -126,19 +127,28 @@ void drawPaneSeparators(const Scene& scene, const UiRect& view, float framebuffe
 // text sizes and height (0: no title or caption).
 struct CaptionLayout {
     float titleSize = 0, captionSize = 0, pad = 0, height = 0;
-    float zoom = 0;  // the text size, as a share of the largest (1: not made smaller to fit)
+    int step = 0;  // how far it was made smaller to fit (0: not)
 };
-// `maxZoom` caps the text size (a playlist's captions share the smallest one). `viewText`: the view
-// text's size (ImGui units; the caption is 1.25 times it, the title 1.6 times), where that is larger
-// than the size the view's width gives the panel's font.
+// Where the band has no room, the title gets smaller first (down to 1.3 times the caption's base, in
+// kCaptionTitleSteps), then the caption by 10% with the title back at 1.6 times it, and so on: the
+// caption keeps the view text's size wherever a smaller title makes room.
+inline constexpr int kCaptionTitleSteps = 3;
+// `minStep` is where the steps start (a playlist's captions share the largest step any of them needs).
+// `viewText`: the view text's size (ImGui units; the caption is 1.25 times it, the title 1.6 times),
+// where that is larger than the size the view's width gives the panel's font.
 CaptionLayout layoutCaption(const Scene& scene, const std::string& counter, float width, float maxHeight,
-                            float maxZoom = 1e9f, float viewText = 0.0f);
+                            int minStep = 0, float viewText = 0.0f);
 // Draws it into `band` (above the 3D view), with `counter` ("3 / 20") at the right.
 void drawCaption(const Scene& scene, const std::string& counter, const CaptionLayout& layout, const UiRect& band);
 
 // The status strip above the view: frame time (the mean of the last second's frames) and the FPS it
-// allows, or "idle" while nothing is drawn; triangles, GL renderer, progressive passes.
+// allows, or "idle" while nothing is drawn; triangles, GL renderer, progressive passes, animation.
 void drawStatusStrip(const PanelStatus& status, const UiRect& strip);
+// Its text, in at most `width` as `measure` gives a text's width: where all does not fit (a 2x screen
+// beside the panel), the GL renderer's name goes first, then the triangle count; the frame time, the
+// progressive passes and the animation's clock stay. Never cut mid-word at the strip's edge.
+std::string statusStripText(const PanelStatus& status, float width,
+                            const std::function<float(const std::string&)>& measure);
 
 // The last message over the bottom of the 3D view (where the lecturer looks), red for an error.
 void drawMessage(const PanelStatus& status, const UiRect& view);

@@ -1,6 +1,7 @@
 #include "viewer/probe_view.hpp"
 
 #include "core/geometry/camera.hpp"
+#include "core/ui/view_names.hpp"
 #include "viewer/panel.hpp"
 
 #include <glm/common.hpp>
@@ -226,13 +227,16 @@ void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, 
     }
 }
 
+std::string probeWhere(const ProbeResult& probe) {
+    return "pixel " + std::to_string(probe.x) + "," + std::to_string(probe.y) + ", " + paneName(probe.pane) +
+           ": object " + std::to_string(probe.anchor.object) + ", triangle " + std::to_string(probe.anchor.triangle);
+}
+
 bool probeSection(const Scene& scene, const ProbeResult& probe) {
     const bool clear = ImGui::Button("clear probe (Esc)");
     ImGui::SameLine();
     ImGui::TextDisabled("click the view to probe");
-    // Panes numbered from 1, left to right, as the Shader view's combo numbers them.
-    ImGui::Text("pixel %d,%d, pane %d: object %zu, triangle %zu", probe.x, probe.y, probe.pane + 1, probe.anchor.object,
-                probe.anchor.triangle);
+    ImGui::TextUnformatted(probeWhere(probe).c_str());
     const glm::vec3& p = probe.posWorld;
     ImGui::Text("P (%.3f, %.3f, %.3f)", double(p.x), double(p.y), double(p.z));
     if (probe.backFace) ImGui::TextWrapped("back face of a double-sided material: lit with N flipped");

@@ -19,6 +19,10 @@ struct UiRect;
 void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, const UiRect& view,
                      float framebufferScale, const std::vector<UiRect>& avoid = {});
 
+// Where the probe is: "pixel 700,300, pane 2: object 0, triangle 1234" (panes numbered by paneName,
+// as the Shader section's combo numbers them).
+std::string probeWhere(const ProbeResult& probe);
+
 // The panel's "Probe" section (inside the panel window). Returns true when "clear probe" is pressed.
 bool probeSection(const Scene& scene, const ProbeResult& probe);
 

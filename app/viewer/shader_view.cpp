@@ -1,6 +1,7 @@
 #include "viewer/shader_view.hpp"
 
 #include "core/figures/shader_listing.hpp"
+#include "core/ui/view_names.hpp"
 #include "core/geometry/camera.hpp"
 
 #include <imgui.h>
@@ -33,8 +34,7 @@ ShadingMode chosenMode(const Scene& scene, ViewSettings& settings, const ProbeRe
     settings.shaderPane = std::clamp(settings.shaderPane, 0, int(panes.size()) - 1);
     if (panes.size() > 1) {
         std::string items;
-        for (std::size_t i = 0; i < panes.size(); ++i)
-            items += "pane " + std::to_string(i + 1) + ": " + toString(panes[i].mode) + '\0';
+        for (const std::string& choice : shaderPaneChoices(scene)) items += choice + '\0';
         ImGui::Combo("pane", &settings.shaderPane, items.c_str());
     }
     return panes[std::size_t(settings.shaderPane)].mode;
@@ -98,6 +98,14 @@ void drawLine(const GlslLine& line, float width, int columns = 0) {
 }
 
 }  // namespace
+
+std::vector<std::string> shaderPaneChoices(const Scene& scene) {
+    const std::vector<Pane> panes = shadedPanes(scene);
+    std::vector<std::string> choices;
+    if (panes.size() > 1)
+        for (std::size_t i = 0; i < panes.size(); ++i) choices.push_back(paneName(int(i)) + ": " + toString(panes[i].mode));
+    return choices;
+}
 
 bool focusShaderError(const Scene& scene, ViewSettings& settings, const std::string& log) {
     settings.shaderErrorFile.clear();

@@ -7,9 +7,16 @@
 #include "core/scene/scene.hpp"
 #include "viewer/panel.hpp"
 
+#include <string>
+#include <vector>
+
 struct ImFont;
 
 namespace shadelab {
+
+// The Shader section's combo: one item a pane that runs a mode (not the diff layout's difference),
+// "pane 2: gouraud", numbered as the probe numbers them (paneName); empty where there is one pane.
+std::vector<std::string> shaderPaneChoices(const Scene& scene);
 
 void sectionShader(const Scene& scene, ViewSettings& settings, const PanelStatus& status, const ProbeResult* probe);
 

@@ -444,11 +444,11 @@ Viewer::FrameLayout Viewer::layout() const {
     const int panelPixels = settings_.showPanel ? std::min(int(std::lround(kPanelEms * ems * l.scale)), l.framebufferWidth / 2) : 0;
     l.viewWidth = l.framebufferWidth - panelPixels;
     const float viewUnits = float(l.viewWidth) / l.scale;
-    // From the top: the status strip, the caption band (at most a fifth of the view's height), the view.
+    // From the top: the status strip, the caption band (at most a sixth of the window: a fifth of the view), the view.
     const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
     const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
     const float captionMax = std::floor((float(windowHeight) - stripUnits) / 6.0f);
-    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax, 1e9f, l.windowText)
+    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax, 0, l.windowText)
                                           : CaptionLayout{};
     // With a playlist every preset's caption has the same text size, the smallest any of them needs
     // to fit, and the band is as high as the longest caption of the playlist takes at that size: the
@@ -458,19 +458,19 @@ Viewer::FrameLayout Viewer::layout() const {
         const auto sceneOf = [&](std::size_t i) -> const Scene& {
             return i == playlist_.current() ? document_.scene() : playlist_.preset(i).scene;  // its title may be edited
         };
-        float zoom = 1e9f;
+        int step = 0;
         for (std::size_t i = 0; i < playlist_.size(); ++i) {
-            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, 1e9f, l.windowText);
-            if (c.height > 0.0f) zoom = std::min(zoom, c.zoom);
+            const CaptionLayout c = layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, 0, l.windowText);
+            if (c.height > 0.0f) step = std::max(step, c.step);
         }
         float height = 0.0f;
         for (std::size_t i = 0; i < playlist_.size(); ++i)
-            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, zoom, l.windowText).height);
-        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, zoom, l.windowText);
+            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, step, l.windowText).height);
+        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, step, l.windowText);
         if (height > 0.0f) {
             if (l.captionText.height <= 0.0f) {  // an empty band with the position, as the others
                 static const Scene blank = [] { Scene s; s.title = " "; return s; }();
-                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, zoom, l.windowText);
+                l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, step, l.windowText);
             }
             l.captionText.height = height;
         }

@@ -7,9 +7,12 @@
 #include "viewer/animation_playback.hpp"
 #include "viewer/frame_pacing.hpp"
 #include "viewer/placed_geometry.hpp"
+#include "viewer/panel.hpp"
 #include "viewer/probe_state.hpp"
+#include "viewer/probe_view.hpp"
 #include "viewer/progressive_sampling.hpp"
 #include "viewer/recording_session.hpp"
+#include "viewer/shader_view.hpp"
 #include "viewer/view_quality.hpp"
 #include "viewer/view_revision.hpp"
 
@@ -299,6 +302,61 @@ TEST(ProbeState, OutsideTheViewAndOnTheBackgroundSayWhy) {
     EXPECT_FALSE(background.isError);
     EXPECT_NE(background.message.find("background"), std::string::npos) << background.message;
     EXPECT_FALSE(probe.anchored());
+}
+
+// Issue 31, item 11: the probe's line and the Shader section's combo number the panes alike, so
+// "pane 2" in the Probe section is the combo's "pane 2: gouraud", in compare and in diff.
+TEST(ProbeState, NumbersPanesAsTheShaderSectionDoes) {
+    for (const Layout layout : {Layout::Compare, Layout::Diff}) {
+        Scene scene = defaultScene();
+        scene.layout = layout;
+        auto geometry = geometryOf(scene);
+        const std::vector<std::string> choices = shaderPaneChoices(scene);
+        const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
+        ASSERT_EQ(panes.size(), 3u);
+        EXPECT_EQ(choices.size(), layout == Layout::Compare ? 3u : 2u);
+        for (std::size_t p = 0; p < panes.size(); ++p) {
+            ProbeState probe;
+            const ProbeState::Outcome at = probe.set(scene, geometry, panes[p].x + panes[p].width / 2,
+                                                     panes[p].y + panes[p].height / 2);
+            ASSERT_TRUE(at.set) << at.message;
+            probe.evaluate(scene, geometry);
+            ASSERT_NE(probe.result(), nullptr);
+            const ProbeResult& r = *probe.result();
+            EXPECT_EQ(r.pane, int(p));
+            const std::string number = "pane " + std::to_string(p + 1);
+            EXPECT_NE(probeWhere(r).find(", " + number + ":"), std::string::npos) << probeWhere(r);
+            if (panes[p].difference) continue;  // the difference pane runs no program of its own
+            ASSERT_LT(p, choices.size());
+            EXPECT_EQ(choices[p], number + ": " + toString(r.modes.at(0).mode));
+        }
+    }
+}
+
+// Issue 31, item 11: on a 2x screen the status strip beside the panel is narrow; what does not fit
+// is left out whole, the renderer's name first, never the frame time or the animation's clock.
+TEST(StatusStrip, LeavesOutTheRendererThenTheTrianglesWhereTheStripIsNarrow) {
+    PanelStatus status;
+    status.frameMs = 20.0;
+    status.frameTriangles = 8588;
+    status.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    status.progress = "pass 3 of 16";
+    status.animation = "1.25 s of 4.00 s";
+    status.playing = true;
+    const auto chars = [](const std::string& t) { return float(t.size()); };  // a byte a unit
+    const std::string all = statusStripText(status, 1000.0f, chars);
+    for (const char* part : {"20.0 ms (50 FPS)", "8588 triangles", "llvmpipe", "pass 3 of 16", "playing 1.25 s of 4.00 s"})
+        EXPECT_NE(all.find(part), std::string::npos) << part << " in " << all;
+    const std::string noRenderer = statusStripText(status, chars(all) - 1.0f, chars);
+    EXPECT_EQ(noRenderer.find("llvmpipe"), std::string::npos) << noRenderer;
+    EXPECT_NE(noRenderer.find("8588 triangles"), std::string::npos) << noRenderer;
+    EXPECT_LE(chars(noRenderer), chars(all) - 1.0f);
+    const std::string least = statusStripText(status, 10.0f, chars);
+    EXPECT_EQ(least.find("triangles"), std::string::npos) << least;
+    for (const char* part : {"20.0 ms (50 FPS)", "pass 3 of 16", "playing 1.25 s of 4.00 s"})
+        EXPECT_NE(least.find(part), std::string::npos) << part << " in " << least;
+    status.idle = true;
+    EXPECT_EQ(statusStripText(status, 1000.0f, chars).rfind("idle", 0), 0u);
 }
 
 TEST(PlacedGeometry, ATransformOrNewMeshesChangeItAndALightDoesNot) {

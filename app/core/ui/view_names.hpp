@@ -34,4 +34,8 @@ inline constexpr EnumName<int> kMsaaNames[] = {{"0", 0}, {"1", 1}, {"2", 2}, {"4
 // How the panel shows a sample count: "off" for 0 and 1, else "4x".
 inline std::string msaaLabel(int samples) { return samples <= 1 ? "off" : std::to_string(samples) + "x"; }
 
+// A pane by its index in layoutPanes (core/geometry/camera.hpp): numbered from 1, left to right, the
+// same in the probe's line and the Shader section's combo.
+inline std::string paneName(int index) { return "pane " + std::to_string(index + 1); }
+
 }  // namespace shadelab
