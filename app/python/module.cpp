@@ -237,7 +237,7 @@ py::array_t<std::uint8_t> plot(const Call& call) {
     return toArray(image);
 }
 
-// --reference's comparison (cli/reference.hpp) of two arrays, with --max-diff/--mean-diff's words
+// --reference's comparison (cli/reference.hpp) of two arrays, with --max-diff/--mean-diff/--max-diff-pixels' words
 // checked by the parser.
 py::dict compare(const py::array& actualArray, const py::array& referenceArray, const std::vector<std::string>& args,
                  float diffFactor) {
@@ -260,6 +260,8 @@ py::dict compare(const py::array& actualArray, const py::array& referenceArray, 
     result["mean"] = r.meanDiff;
     result["max_diff"] = tolerance.maxDiff;
     result["mean_diff"] = tolerance.meanDiff;
+    result["differing_pixels"] = r.differingPixels;
+    result["max_diff_pixels"] = tolerance.maxDiffPixels ? py::object(py::int_(*tolerance.maxDiffPixels)) : py::object(py::none());
     result["message"] = r.sizeMatches ? describe(r, tolerance)
                                        : "size " + sizeText(actual) + ", the reference's " + sizeText(reference);
     result["difference"] = difference ? py::object(toArray(*difference)) : py::object(py::none());

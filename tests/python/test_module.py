@@ -192,6 +192,14 @@ def test_compare_is_the_references_comparison(tmp_path):
     assert r.message in out and out.rstrip().endswith("differs")
     assert r.difference.shape == image.shape and r.difference[15, 15, 0] == 255 and r.difference[50, 50, 0] == 0
     assert shadelab.compare(image, changed, max_diff=64, mean_diff=0.5).matches
+    assert r.differing_pixels == 100 and r.max_diff_pixels is None
+    loose = dict(max_diff=64, mean_diff=0.5)
+    assert shadelab.compare(image, changed, max_diff_pixels=100, **loose).matches
+    few = shadelab.compare(image, changed, max_diff_pixels=99, **loose)
+    assert not few and few.max_diff_pixels == 99
+    status, out, _ = cli("--size", "160x120", "--output", str(tmp_path / "a.png"), "--reference",
+                         str(tmp_path / "ref.png"), "--max-diff", "64", "--mean-diff", "0.5", "--max-diff-pixels", "99")
+    assert status == 1 and few.message in out
     assert not shadelab.compare(image, image[:, :100]).size_matches
     assert shadelab.compare(image[:, :, :3], image).matches  # RGB against RGBA: alpha 255
 

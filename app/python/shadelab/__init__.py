@@ -155,8 +155,9 @@ def plot(kind, scene=None, *, size=None, **options):
 
 
 class Comparison:
-    """What compare() found. `matches`: within max_diff and mean_diff (and of one size); `max` (/255)
-    and `mean`: the per-channel differences as --reference measures them; `difference`: the difference
+    """What compare() found. `matches`: within max_diff, mean_diff and max_diff_pixels (and of one size);
+    `max` (/255) and `mean`: the per-channel differences as --reference measures them; `differing_pixels`:
+    the pixels that differ at all; `max_diff_pixels`: the limit (None: none); `difference`: the difference
     amplified as the diff layout shows it (None when the sizes differ); `message`: --reference's words."""
 
     def __init__(self, d):
@@ -175,11 +176,12 @@ def _image(value, what):
     return value
 
 
-def compare(image, reference, *, max_diff=None, mean_diff=None, diff_factor=4.0):
+def compare(image, reference, *, max_diff=None, mean_diff=None, max_diff_pixels=None, diff_factor=4.0):
     """`image` against `reference` (arrays or PNG paths) as `--reference` and `--test` compare: matches when
-    no channel of any pixel differs by more than max_diff (/255, default 4) and the mean over all channels
-    is at most mean_diff (default 0.002). Returns a Comparison (truthy when it matches)."""
-    args = _args({"max_diff": max_diff, "mean_diff": mean_diff})
+    no channel of any pixel differs by more than max_diff (/255, default 4), the mean over all channels
+    is at most mean_diff (default 0.002) and, given max_diff_pixels, at most that many pixels differ at
+    all (--max-diff-pixels). Returns a Comparison (truthy when it matches)."""
+    args = _args({"max_diff": max_diff, "mean_diff": mean_diff, "max_diff_pixels": max_diff_pixels})
     return Comparison(_shadelab.compare(_image(image, "image"), _image(reference, "reference"), args,
                                         float(diff_factor)))
 
