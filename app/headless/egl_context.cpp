@@ -11,43 +11,37 @@
 namespace shadelab {
 namespace {
 
+// An entry point of libEGL, looked up by name: converts to the function pointer type it initialises
+// (null where the library or the entry point is missing).
+struct EglEntry {
+    PFNEGLGETPROCADDRESSPROC lookup;
+    const char* name;
+    template <typename Function>
+    operator Function() const {
+        return lookup ? reinterpret_cast<Function>(lookup(name)) : nullptr;
+    }
+};
+
+// The EGL functions shadelab calls: one row each, loaded in this order when the table is made.
 struct EglApi {
-    PFNEGLGETPROCADDRESSPROC getProcAddress = nullptr;
-    PFNEGLQUERYSTRINGPROC queryString = nullptr;
-    PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay = nullptr;
-    PFNEGLQUERYDEVICESEXTPROC queryDevices = nullptr;
-    PFNEGLQUERYDEVICESTRINGEXTPROC queryDeviceString = nullptr;
-    PFNEGLINITIALIZEPROC initialize = nullptr;
-    PFNEGLTERMINATEPROC terminate = nullptr;
-    PFNEGLBINDAPIPROC bindApi = nullptr;
-    PFNEGLCREATECONTEXTPROC createContext = nullptr;
-    PFNEGLDESTROYCONTEXTPROC destroyContext = nullptr;
-    PFNEGLMAKECURRENTPROC makeCurrent = nullptr;
-    PFNEGLGETERRORPROC getError = nullptr;
+    void* library = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);  // never dlclose'd: drivers keep global state
+    PFNEGLGETPROCADDRESSPROC getProcAddress =
+        library ? reinterpret_cast<PFNEGLGETPROCADDRESSPROC>(dlsym(library, "eglGetProcAddress")) : nullptr;
+    PFNEGLQUERYSTRINGPROC queryString = EglEntry{getProcAddress, "eglQueryString"};
+    PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay = EglEntry{getProcAddress, "eglGetPlatformDisplayEXT"};
+    PFNEGLQUERYDEVICESEXTPROC queryDevices = EglEntry{getProcAddress, "eglQueryDevicesEXT"};
+    PFNEGLQUERYDEVICESTRINGEXTPROC queryDeviceString = EglEntry{getProcAddress, "eglQueryDeviceStringEXT"};
+    PFNEGLINITIALIZEPROC initialize = EglEntry{getProcAddress, "eglInitialize"};
+    PFNEGLTERMINATEPROC terminate = EglEntry{getProcAddress, "eglTerminate"};
+    PFNEGLBINDAPIPROC bindApi = EglEntry{getProcAddress, "eglBindAPI"};
+    PFNEGLCREATECONTEXTPROC createContext = EglEntry{getProcAddress, "eglCreateContext"};
+    PFNEGLDESTROYCONTEXTPROC destroyContext = EglEntry{getProcAddress, "eglDestroyContext"};
+    PFNEGLMAKECURRENTPROC makeCurrent = EglEntry{getProcAddress, "eglMakeCurrent"};
+    PFNEGLGETERRORPROC getError = EglEntry{getProcAddress, "eglGetError"};
 };
 
 const EglApi& api() {
-    static const EglApi loaded = [] {
-        EglApi a;
-        // Never dlclose'd: drivers keep global state.
-        void* lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
-        if (!lib) return a;
-        a.getProcAddress = reinterpret_cast<PFNEGLGETPROCADDRESSPROC>(dlsym(lib, "eglGetProcAddress"));
-        if (!a.getProcAddress) return a;
-        auto get = [&](const char* name) { return a.getProcAddress(name); };
-        a.queryString = reinterpret_cast<PFNEGLQUERYSTRINGPROC>(get("eglQueryString"));
-        a.getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(get("eglGetPlatformDisplayEXT"));
-        a.queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(get("eglQueryDevicesEXT"));
-        a.queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(get("eglQueryDeviceStringEXT"));
-        a.initialize = reinterpret_cast<PFNEGLINITIALIZEPROC>(get("eglInitialize"));
-        a.terminate = reinterpret_cast<PFNEGLTERMINATEPROC>(get("eglTerminate"));
-        a.bindApi = reinterpret_cast<PFNEGLBINDAPIPROC>(get("eglBindAPI"));
-        a.createContext = reinterpret_cast<PFNEGLCREATECONTEXTPROC>(get("eglCreateContext"));
-        a.destroyContext = reinterpret_cast<PFNEGLDESTROYCONTEXTPROC>(get("eglDestroyContext"));
-        a.makeCurrent = reinterpret_cast<PFNEGLMAKECURRENTPROC>(get("eglMakeCurrent"));
-        a.getError = reinterpret_cast<PFNEGLGETERRORPROC>(get("eglGetError"));
-        return a;
-    }();
+    static const EglApi loaded;
     if (!loaded.getProcAddress || !loaded.getPlatformDisplay || !loaded.initialize || !loaded.createContext ||
         !loaded.makeCurrent)
         throw std::runtime_error("EGL headless rendering needs libEGL.so.1 with EGL_EXT_platform_base "

@@ -112,9 +112,8 @@ std::string withWebNote(const std::string& message) {
 
 const char* errorReply(const std::string& message) { return reply(json{{"error", oneLine(withWebNote(message))}}); }
 
-// The option table, the key table, the panel's sections and the lecture presets: what the page
-// builds its panel, its keys and its help from.
-json describe() {
+// The option table: each option's name, argument, help and what it sets.
+json describeOptions() {
     json options = json::array();
     for (const OptionSpec* o = optionsBegin(); o != optionsEnd(); ++o) {
         json entry{{"name", o->name},
@@ -127,6 +126,11 @@ json describe() {
         if (o->names) entry["names"] = o->names();
         options.push_back(entry);
     }
+    return options;
+}
+
+// The key table: each control's input, action and the keys that do it.
+json describeControls() {
     json controls = json::array();
     for (const Control& c : kControls) {
         json keys = json::array();
@@ -141,9 +145,11 @@ json describe() {
         }
         controls.push_back({{"input", c.input}, {"action", c.action}, {"keys", keys}});
     }
-    json overlays = json::array();
-    for (const auto& [name, overlay] : kOverlayNames)
-        overlays.push_back({{"name", name}, {"label", nameOf(kOverlayLabels, overlay)}});
+    return controls;
+}
+
+// The lecture presets, in playlist order (none, with a line on stderr, where they cannot be read).
+json describePresets() {
     json presets = json::array();
     try {
         for (const Preset& p : loadPlaylist(kPresetFolder))
@@ -152,14 +158,18 @@ json describe() {
     } catch (const std::exception& e) {
         std::fprintf(stderr, "shadelab: %s\n", oneLine(e.what()).c_str());
     }
-    json sections = json::array();
-    for (const auto& section : kPanelSections) sections.push_back(section.first);
-    json plots = json::array();
-    for (const auto& [name, kind] : kPlotKindNames) plots.push_back(name);
-    // The --mesh and --light shorthands' parts (scene_limits.hpp, scene_names.hpp), for the page's
-    // Mesh and Lights sections.
-    auto range = [](const auto& r) { return json::array({r.lo, r.hi}); };
-    json meshes = json::array({
+    return presets;
+}
+
+// A range of the scene's limits as [lo, hi].
+template <typename T>
+json range(const Range<T>& r) {
+    return json::array({r.lo, r.hi});
+}
+
+// The --mesh shorthands' parts (scene_limits.hpp), for the page's Mesh section.
+json describeMeshes() {
+    return json::array({
         {{"name", "uvsphere"}, {"parameters", {{{"name", "slices"}, {"range", range(kUvSphereSlicesRange)}},
                                                {{"name", "stacks"}, {"range", range(kUvSphereStacksRange)}}}}},
         {{"name", "icosphere"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kIcoSphereSubdivisionsRange)}}}}},
@@ -167,11 +177,24 @@ json describe() {
                                             {{"name", "minor_segments"}, {"range", range(kTorusSegmentsRange)}}}}},
         {{"name", "cube"}, {"parameters", json::array()}},
         {{"name", "plane"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kPlaneSubdivisionsRange)}}}}}});
+}
+
+// The option table, the key table, the panel's sections and the lecture presets: what the page
+// builds its panel, its keys and its help from.
+json describe() {
+    json overlays = json::array();
+    for (const auto& [name, overlay] : kOverlayNames)
+        overlays.push_back({{"name", name}, {"label", nameOf(kOverlayLabels, overlay)}});
+    json sections = json::array();
+    for (const auto& section : kPanelSections) sections.push_back(section.first);
+    json plots = json::array();
+    for (const auto& [name, kind] : kPlotKindNames) plots.push_back(name);
+    // The --light shorthand's parts (scene_names.hpp), for the page's Lights section.
     json lightTypes = json::array(), attenuations = json::array();
     for (const auto& [name, type] : kLightTypeNames) lightTypes.push_back(name);
     for (const auto& [name, attenuation] : kAttenuationNames) attenuations.push_back(name);
-    return {{"options", options}, {"controls", controls}, {"overlays", overlays}, {"presets", presets},
-            {"sections", sections}, {"plots", plots}, {"meshes", meshes},
+    return {{"options", describeOptions()}, {"controls", describeControls()}, {"overlays", overlays},
+            {"presets", describePresets()}, {"sections", sections}, {"plots", plots}, {"meshes", describeMeshes()},
             {"lights", {{"types", lightTypes}, {"attenuation", attenuations}, {"intensity", range(kIntensityRange)}}},
             {"version", SHADELAB_VERSION}};
 }

@@ -103,6 +103,14 @@ private:
     };
     View view(int accessorIndex, const std::string& where, const std::vector<int>& allowedTypes,
               const std::vector<int>& allowedComponentTypes) const;
+    // view()'s steps for a sparse accessor: the count of one without a bufferView checked against the
+    // file's bytes, and its elements materialised into v.
+    void checkZeroBackedCount(std::size_t count, const std::string& name) const;
+    void materialiseSparse(const tinygltf::Accessor& a, std::size_t elementSize, const std::string& name, View& v) const;
+    // A vertex attribute's view beside POSITION: `count` elements, and where `integers` names them
+    // ("colours"), integer values normalized. `where` names the attribute.
+    View vertexAttribute(int accessorIndex, const std::string& where, const std::vector<int>& allowedTypes,
+                         const std::vector<int>& allowedComponentTypes, std::size_t count, const char* integers) const;
     static std::uint32_t unsignedInteger(const View& v, std::size_t i);  // a SCALAR of an unsigned type
     // All elements of a VEC3 accessor (POSITION, NORMAL): floats copied, integer types dequantized.
     static std::vector<glm::vec3> readVec3(const View& v);
@@ -134,6 +142,10 @@ private:
     void addPart(int materialIndex, std::uint32_t firstIndex, int textureSlot, int emissiveSlot,
                  const std::vector<glm::mat4>& instances);
     void visit(int nodeIndex, const glm::mat4& parent, int depth);
+    // read()'s steps: the nodes the walk starts from, the instanced pass, and the counts and bounds of info_.
+    std::vector<int> rootNodes() const;
+    void readInstanced(const std::vector<int>& roots);
+    void summarise();
     // A material's texture: the object texture of the lecture's C (baseColorTexture) or of E
     // (emissiveTexture), decoded once per image and sampler into Mesh::textures; -1 (with a warning)
     // where it cannot be drawn.
@@ -147,6 +159,8 @@ private:
     MaterialTexture baseColorTexture(int materialIndex);
     MaterialTexture emissiveTexture(int materialIndex);
     int textureSlot(int textureIndex);
+    // textureSlot's step: the image decoded into `out` (its name set), or why it is not drawn.
+    std::string decodeImage(const tinygltf::Image& image, TextureImage& out) const;
     std::vector<glm::vec2> texcoords(const tinygltf::Primitive& p, const MaterialTexture& t, std::size_t count,
                                      const std::string& where) const;
     std::vector<glm::vec4> vertexColors(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
@@ -216,45 +230,62 @@ GltfReader::View GltfReader::view(int ai, const std::string& where, const std::v
     } else if (!a.sparse.isSparse) {
         fail(name, "has neither a bufferView nor sparse values");
     }
-    if (a.bufferView < 0) {
-        // Sparse values over zeros: the count is backed by no bytes. It may not exceed the bytes the
-        // file's buffers hold (a real one, a morph target's deltas, matches a mesh stored beside it).
-        std::size_t present = 0;
-        for (const tinygltf::Buffer& b : model_.buffers) present += b.data.size();
-        if (v.count > std::max<std::size_t>(present, std::size_t(1) << 20))
-            fail(name, "sparse accessor of " + std::to_string(v.count) + " elements without a bufferView: more than the " +
-                           std::to_string(present) + " bytes of the file's buffers");
+    if (a.bufferView < 0) checkZeroBackedCount(v.count, name);
+    if (a.sparse.isSparse) materialiseSparse(a, elementSize, name, v);
+    return v;
+}
+
+// Sparse values over zeros: the count is backed by no bytes. It may not exceed the bytes the file's
+// buffers hold (a real one, a morph target's deltas, matches a mesh stored beside it).
+void GltfReader::checkZeroBackedCount(std::size_t count, const std::string& name) const {
+    std::size_t present = 0;
+    for (const tinygltf::Buffer& b : model_.buffers) present += b.data.size();
+    if (count > std::max<std::size_t>(present, std::size_t(1) << 20))
+        fail(name, "sparse accessor of " + std::to_string(count) + " elements without a bufferView: more than the " +
+                       std::to_string(present) + " bytes of the file's buffers");
+}
+
+// Materialise: the base values (or zeros), then the sparse ones written over them, byte for byte.
+void GltfReader::materialiseSparse(const tinygltf::Accessor& a, std::size_t elementSize, const std::string& name,
+                                   View& v) const {
+    auto bytes = std::make_shared<std::vector<unsigned char>>(v.count * elementSize, 0);
+    if (v.base)
+        for (std::size_t i = 0; i < v.count; ++i) std::memcpy(bytes->data() + i * elementSize, v.base + i * v.stride, elementSize);
+    const std::size_t n = std::size_t(a.sparse.count);
+    if (a.sparse.count < 0 || n > v.count) fail(name, "sparse count out of range");
+    View idx;
+    idx.componentType = a.sparse.indices.componentType;
+    idx.components = 1;
+    const int idxSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(idx.componentType));
+    if (idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        fail(name, "sparse indices must be unsigned integers");
+    checkRange(a.sparse.indices.bufferView, std::size_t(a.sparse.indices.byteOffset), std::size_t(idxSize),
+               std::size_t(idxSize), n, name + " sparse indices", &idx.stride, &idx.base);
+    std::size_t valuesStride = 0;
+    const unsigned char* values = nullptr;
+    checkRange(a.sparse.values.bufferView, std::size_t(a.sparse.values.byteOffset), elementSize, elementSize, n,
+               name + " sparse values", &valuesStride, &values);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t target = unsignedInteger(idx, k);
+        if (target >= v.count) fail(name, "sparse index " + std::to_string(target) + " out of range");
+        std::memcpy(bytes->data() + std::size_t(target) * elementSize, values + k * valuesStride, elementSize);
     }
-    if (a.sparse.isSparse) {
-        // Materialise: the base values (or zeros), then the sparse ones written over them, byte for byte.
-        auto bytes = std::make_shared<std::vector<unsigned char>>(v.count * elementSize, 0);
-        if (v.base)
-            for (std::size_t i = 0; i < v.count; ++i) std::memcpy(bytes->data() + i * elementSize, v.base + i * v.stride, elementSize);
-        const std::size_t n = std::size_t(a.sparse.count);
-        if (a.sparse.count < 0 || n > v.count) fail(name, "sparse count out of range");
-        View idx;
-        idx.componentType = a.sparse.indices.componentType;
-        idx.components = 1;
-        const int idxSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(idx.componentType));
-        if (idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-            idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(name, "sparse indices must be unsigned integers");
-        checkRange(a.sparse.indices.bufferView, std::size_t(a.sparse.indices.byteOffset), std::size_t(idxSize),
-                   std::size_t(idxSize), n, name + " sparse indices", &idx.stride, &idx.base);
-        std::size_t valuesStride = 0;
-        const unsigned char* values = nullptr;
-        checkRange(a.sparse.values.bufferView, std::size_t(a.sparse.values.byteOffset), elementSize, elementSize, n,
-                   name + " sparse values", &valuesStride, &values);
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::uint32_t target = unsignedInteger(idx, k);
-            if (target >= v.count) fail(name, "sparse index " + std::to_string(target) + " out of range");
-            std::memcpy(bytes->data() + std::size_t(target) * elementSize, values + k * valuesStride, elementSize);
-        }
-        v.materialised = std::move(bytes);
-        v.base = v.materialised->data();
-        v.stride = elementSize;
-    }
+    v.materialised = std::move(bytes);
+    v.base = v.materialised->data();
+    v.stride = elementSize;
+}
+
+GltfReader::View GltfReader::vertexAttribute(int ai, const std::string& where, const std::vector<int>& types,
+                                             const std::vector<int>& componentTypes, std::size_t count,
+                                             const char* integers) const {
+    const View v = view(ai, where, types, componentTypes);
+    const std::string name = where + " (accessor " + std::to_string(ai) + ")";
+    if (integers && v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized)
+        fail(name, std::string("integer ") + integers + " must be normalized");
+    if (v.count != count)
+        fail(name, "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
     return v;
 }
 
@@ -404,6 +435,22 @@ int wrapMode(int mode) {
                                                                                                       : TINYGLTF_TEXTURE_WRAP_REPEAT;
 }
 
+// A sampler's wrap modes and filters on a texture; glTF's defaults (repeat, trilinear) where it gives none.
+void useSampler(const tinygltf::Sampler& s, TextureImage& out) {
+    out.wrapS = wrapMode(s.wrapS);
+    out.wrapT = wrapMode(s.wrapT);
+    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.magFilter = s.magFilter;
+    switch (s.minFilter) {
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: out.minFilter = s.minFilter; break;
+    default: break;  // none given: trilinear
+    }
+}
+
 // Images larger than this on a side, or with more pixels, are not decoded (a 16k texture is 1 GiB),
 // nor past kMaxModelTexturePixels in one model (a small PNG can decode to 256 MiB).
 constexpr int kMaxTextureSide = 16384;
@@ -454,52 +501,44 @@ int GltfReader::textureSlot(int ti) {
     const tinygltf::Image& image = model_.images[std::size_t(texture.source)];
     auto out = std::make_shared<TextureImage>();
     out->name = image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "image " + std::to_string(texture.source) : image.uri;
+    if (const std::string why = decodeImage(image, *out); !why.empty()) return skip(why);
+    if (texture.sampler >= 0 && std::size_t(texture.sampler) < model_.samplers.size())
+        useSampler(model_.samplers[std::size_t(texture.sampler)], *out);
+    slot = int(mesh_.textures.size());
+    mesh_.textures.push_back(std::move(out));
+    return slot;
+}
+
+std::string GltfReader::decodeImage(const tinygltf::Image& image, TextureImage& out) const {
     const unsigned char* bytes = image.image.data();
     std::size_t size = image.image.size();
     if (image.bufferView >= 0) {
         if (std::size_t(image.bufferView) >= model_.bufferViews.size())
-            fail(out->name, "bufferView " + std::to_string(image.bufferView) + " does not exist");
+            fail(out.name, "bufferView " + std::to_string(image.bufferView) + " does not exist");
         const std::size_t length = model_.bufferViews[std::size_t(image.bufferView)].byteLength;
-        if (length == 0) return skip(out->name + "'s bufferView is empty");
+        if (length == 0) return out.name + "'s bufferView is empty";
         std::size_t stride = 0;  // the view's bytes one by one: its byteStride does not apply to an image
-        checkRange(image.bufferView, 0, 1, 1, length, out->name, &stride, &bytes);
+        checkRange(image.bufferView, 0, 1, 1, length, out.name, &stride, &bytes);
         size = length;
     }
-    if (size == 0) return skip(out->name + " could not be read");
-    if (size > std::size_t(std::numeric_limits<int>::max())) return skip(out->name + " is too large");
+    if (size == 0) return out.name + " could not be read";
+    if (size > std::size_t(std::numeric_limits<int>::max())) return out.name + " is too large";
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &w, &h, &channels))
-        return skip(out->name + " is not an image shadelab decodes (PNG or JPEG)");
+        return out.name + " is not an image shadelab decodes (PNG or JPEG)";
     if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide || std::size_t(w) * std::size_t(h) > kMaxTexturePixels)
-        return skip(out->name + " is " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than shadelab reads (" +
-                    std::to_string(kMaxTextureSide) + " on a side, 64 Mpixels)");
+        return out.name + " is " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than shadelab reads (" +
+               std::to_string(kMaxTextureSide) + " on a side, 64 Mpixels)";
     std::size_t decoded = 0;
     for (const auto& t : mesh_.textures) decoded += std::size_t(t->width) * std::size_t(t->height);
     if (decoded + std::size_t(w) * std::size_t(h) > kMaxModelTexturePixels)
-        return skip(out->name + " would take the model's textures past 256 Mpixels");
+        return out.name + " would take the model's textures past 256 Mpixels";
     std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load_from_memory(bytes, int(size), &w, &h, &channels, 4),
                                                            &stbi_image_free);
-    if (!pixels) return skip(out->name + " does not decode (" + std::string(stbi_failure_reason()) + ")");
-    out->width = w, out->height = h;
-    out->rgba.assign(pixels.get(), pixels.get() + std::size_t(w) * std::size_t(h) * 4);
-    if (texture.sampler >= 0 && std::size_t(texture.sampler) < model_.samplers.size()) {
-        const tinygltf::Sampler& s = model_.samplers[std::size_t(texture.sampler)];
-        out->wrapS = wrapMode(s.wrapS);
-        out->wrapT = wrapMode(s.wrapT);
-        if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out->magFilter = s.magFilter;
-        switch (s.minFilter) {
-        case TINYGLTF_TEXTURE_FILTER_NEAREST:
-        case TINYGLTF_TEXTURE_FILTER_LINEAR:
-        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
-        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
-        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
-        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: out->minFilter = s.minFilter; break;
-        default: break;  // none given: trilinear
-        }
-    }
-    slot = int(mesh_.textures.size());
-    mesh_.textures.push_back(std::move(out));
-    return slot;
+    if (!pixels) return out.name + " does not decode (" + std::string(stbi_failure_reason()) + ")";
+    out.width = w, out.height = h;
+    out.rgba.assign(pixels.get(), pixels.get() + std::size_t(w) * std::size_t(h) * 4);
+    return "";
 }
 
 // The primitive's texture coordinates for its base colour texture (TEXCOORD_n, transformed): FLOAT,
@@ -514,12 +553,10 @@ std::vector<glm::vec2> GltfReader::texcoords(const tinygltf::Primitive& p, const
                                  t.role + " factor");
         return {};
     }
-    const View v = view(it->second, where + " " + name, {TINYGLTF_TYPE_VEC2},
-                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                         TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
-    if (v.count != count)
-        fail(where + " " + name + " (accessor " + std::to_string(it->second) + ")",
-             "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
+    const View v = vertexAttribute(it->second, where + " " + name, {TINYGLTF_TYPE_VEC2},
+                                   {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                    TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                   count, nullptr);
     std::vector<glm::vec2> out(count);
     for (std::size_t i = 0; i < count; ++i) {
         const glm::vec3 uv = t.transform * glm::vec3(scalarAt(v, i, 0), scalarAt(v, i, 1), 1.0f);
@@ -537,12 +574,10 @@ std::vector<glm::vec4> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     const auto it = p.attributes.find("COLOR_0");
     if (it == p.attributes.end()) return {};
     const std::string name = where + " COLOR_0 (accessor " + std::to_string(it->second) + ")";
-    const View v = view(it->second, where + " COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
-                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                         TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
-    if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized) fail(name, "integer colours must be normalized");
-    if (v.count != count)
-        fail(name, "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
+    const View v = vertexAttribute(it->second, where + " COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
+                                   {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                    TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                   count, "colours");
     const bool rgba = v.components == 4;
     std::vector<glm::vec4> out(count);
     for (std::size_t i = 0; i < count; ++i) {
@@ -558,11 +593,9 @@ std::vector<glm::vec4> GltfReader::readTangents(const tinygltf::Primitive& p, st
     const auto it = p.attributes.find("TANGENT");
     if (it == p.attributes.end()) return {};
     const std::string name = where + " TANGENT (accessor " + std::to_string(it->second) + ")";
-    const View v = view(it->second, where + " TANGENT", {TINYGLTF_TYPE_VEC4},
-                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
-    if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized) fail(name, "integer tangents must be normalized");
-    if (v.count != count)
-        fail(name, "count " + std::to_string(v.count) + " differs from POSITION's " + std::to_string(count));
+    const View v = vertexAttribute(it->second, where + " TANGENT", {TINYGLTF_TYPE_VEC4},
+                                   {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
+                                   count, "tangents");
     std::vector<glm::vec4> out(count);
     for (std::size_t i = 0; i < count; ++i) {
         const glm::vec4 t(scalarAt(v, i, 0), scalarAt(v, i, 1), scalarAt(v, i, 2), scalarAt(v, i, 3));
@@ -693,11 +726,9 @@ std::vector<glm::vec3> GltfReader::readNormals(const tinygltf::Primitive& p, con
         return normals;
     }
     const std::string name = where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")";
-    const View nv = view(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
-                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
-    if (nv.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !nv.normalized) fail(name, "integer normals must be normalized");
-    if (nv.count != positions.size())
-        fail(name, "count " + std::to_string(nv.count) + " differs from POSITION's " + std::to_string(positions.size()));
+    const View nv = vertexAttribute(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
+                                    {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
+                                    positions.size(), "normals");
     normals = readVec3(nv);
     for (std::size_t i = 0; i < normals.size(); ++i) {
         glm::vec3& n = normals[i];
@@ -1028,38 +1059,53 @@ bool instancesInvertible(const Mesh& m) {
 }
 
 Mesh GltfReader::read() {
+    const std::vector<int> roots = rootNodes();
+    for (int r : roots) visit(r, glm::mat4(1.0f), 0);
+    if (instanced_) readInstanced(roots);
+    summarise();
+    if (mesh_.indices.empty()) info_.warnings.push_back("nothing to draw: the default scene has no triangles");
+    completeTangents(mesh_);  // TANGENT where given, else from the texture coordinates or the up axis
+    return std::move(mesh_);
+}
+
+// The default scene's nodes (the first scene's where none is named); with no scene, every node that
+// is nobody's child.
+std::vector<int> GltfReader::rootNodes() const {
     std::vector<int> roots;
     if (!model_.scenes.empty()) {
         const int si = model_.defaultScene >= 0 ? model_.defaultScene : 0;
         if (std::size_t(si) >= model_.scenes.size()) fail("scene", std::to_string(si) + " does not exist");
-        roots = model_.scenes[std::size_t(si)].nodes;
-    } else {
-        // No scene: draw every node that is nobody's child.
-        std::vector<bool> isChild(model_.nodes.size(), false);
-        for (const auto& n : model_.nodes)
-            for (int c : n.children)
-                if (c >= 0 && std::size_t(c) < isChild.size()) isChild[std::size_t(c)] = true;
-        for (std::size_t i = 0; i < model_.nodes.size(); ++i)
-            if (!isChild[i]) roots.push_back(int(i));
+        return model_.scenes[std::size_t(si)].nodes;
     }
+    std::vector<bool> isChild(model_.nodes.size(), false);
+    for (const auto& n : model_.nodes)
+        for (int c : n.children)
+            if (c >= 0 && std::size_t(c) < isChild.size()) isChild[std::size_t(c)] = true;
+    for (std::size_t i = 0; i < model_.nodes.size(); ++i)
+        if (!isChild[i]) roots.push_back(int(i));
+    return roots;
+}
+
+// GPU instancing: the same scene again with each instanced node's primitives once and its instances
+// as transforms (MeshPart::instances), for the renderer's instanced draws. The baked mesh of the first
+// walk stays what everything else reads (bounds, the probe, overlays).
+void GltfReader::readInstanced(const std::vector<int>& roots) {
+    const GltfInfo baked = info_;
+    auto compact = std::make_shared<Mesh>();
+    out_ = compact.get();
+    instancedPass_ = true;
+    info_.nodes = 0, info_.triangles = 0, info_.primitives = 0, info_.generatedNormals = 0;  // limits count one walk
     for (int r : roots) visit(r, glm::mat4(1.0f), 0);
-    if (instanced_) {
-        // GPU instancing: the same scene again with each instanced node's primitives once and its
-        // instances as transforms (MeshPart::instances), for the renderer's instanced draws. The baked
-        // mesh above stays what everything else reads (bounds, the probe, overlays).
-        const GltfInfo baked = info_;
-        auto compact = std::make_shared<Mesh>();
-        out_ = compact.get();
-        instancedPass_ = true;
-        info_.nodes = 0, info_.triangles = 0, info_.primitives = 0, info_.generatedNormals = 0;  // limits count one walk
-        for (int r : roots) visit(r, glm::mat4(1.0f), 0);
-        out_ = &mesh_;
-        instancedPass_ = false;
-        info_ = baked;
-        compact->textures = mesh_.textures;
-        completeTangents(*compact);
-        if (instancesInvertible(*compact)) mesh_.instanced = std::move(compact);
-    }
+    out_ = &mesh_;
+    instancedPass_ = false;
+    info_ = baked;
+    compact->textures = mesh_.textures;
+    completeTangents(*compact);
+    if (instancesInvertible(*compact)) mesh_.instanced = std::move(compact);
+}
+
+// What the file holds and what was drawn (info_'s counts and bounds), and each camera's target.
+void GltfReader::summarise() {
     info_.meshes = int(model_.meshes.size());
     info_.materials = int(model_.materials.size());
     info_.doubleSidedMaterials = int(std::count_if(model_.materials.begin(), model_.materials.end(),
@@ -1088,9 +1134,6 @@ Mesh GltfReader::read() {
         const glm::vec3 forward = c.target - c.eye;
         c.target = c.eye + forward * std::max(glm::dot(centre - c.eye, forward), std::max(c.znear, 1e-3f) * 2.0f);
     }
-    if (mesh_.indices.empty()) info_.warnings.push_back("nothing to draw: the default scene has no triangles");
-    completeTangents(mesh_);  // TANGENT where given, else from the texture coordinates or the up axis
-    return std::move(mesh_);
 }
 
 }  // namespace

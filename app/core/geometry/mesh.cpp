@@ -42,6 +42,17 @@ void orientToNormals(Mesh& m) {
     }
 }
 
+// Two triangles for each cell of a grid of (rows + 1) x (columns + 1) vertices stored row by row (the
+// torus's and the plane's); orientToNormals turns them to face their normals.
+void appendGridTriangles(std::vector<uint32_t>& indices, int rows, int columns) {
+    const int row = columns + 1;
+    for (int i = 0; i < rows; ++i)
+        for (int j = 0; j < columns; ++j) {
+            const uint32_t a = uint32_t(i * row + j), b = a + uint32_t(row);
+            indices.insert(indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+}
+
 }  // namespace
 
 Mesh makeUvSphere(int slices, int stacks, float radius) {
@@ -108,7 +119,6 @@ Mesh makeIcoSphere(int subdivisions, float radius) {
 
 Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments) {
     Mesh m;
-    const int row = minorSegments + 1;
     for (int i = 0; i <= majorSegments; ++i) {
         const float u = 2.0f * glm::pi<float>() * float(i) / float(majorSegments);
         const glm::vec3 ring(std::cos(u), 0.0f, std::sin(u));
@@ -119,11 +129,7 @@ Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int mino
             m.positions.push_back(majorRadius * ring + minorRadius * n);
         }
     }
-    for (int i = 0; i < majorSegments; ++i)
-        for (int j = 0; j < minorSegments; ++j) {
-            const uint32_t a = uint32_t(i * row + j), b = a + uint32_t(row);
-            m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
-        }
+    appendGridTriangles(m.indices, majorSegments, minorSegments);
     orientToNormals(m);
     return m;
 }
@@ -149,18 +155,13 @@ Mesh makeCube(float size) {
 
 Mesh makePlane(float size, int subdivisions) {
     Mesh m;
-    const int row = subdivisions + 1;
     for (int i = 0; i <= subdivisions; ++i)
         for (int j = 0; j <= subdivisions; ++j) {
             m.positions.push_back({size * (float(j) / float(subdivisions) - 0.5f), 0.0f,
                                    size * (float(i) / float(subdivisions) - 0.5f)});
             m.normals.push_back({0.0f, 1.0f, 0.0f});
         }
-    for (int i = 0; i < subdivisions; ++i)
-        for (int j = 0; j < subdivisions; ++j) {
-            const uint32_t a = uint32_t(i * row + j), b = a + uint32_t(row);
-            m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
-        }
+    appendGridTriangles(m.indices, subdivisions, subdivisions);
     orientToNormals(m);
     return m;
 }

@@ -16,7 +16,8 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// One light sample's addend: radiance * (k_d C (N.I) + k_s S spec), nothing when N.I <= 0.
+// One light sample's addend: radiance * (k_d C (N.I) + k_s S spec), nothing when N.I <= 0 (lecture.glsl's
+// oneLight()).
 // `frame`: the tangent frame, for an anisotropic lobe (else unused).
 void addSample(LightShare& t, const Material& m, const LightingEnvironment& env, const glm::vec3& n,
                const glm::vec3& v, const glm::vec3& i, const glm::vec3& radiance, const TangentFrame& frame) {
@@ -220,71 +221,122 @@ glm::vec3 areaSamplePosition(const Light& l, int i, int j) {
     return l.position + o.x * f.u + o.y * f.v;
 }
 
-ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& p, const glm::vec3& n,
-                        const Visibility& visibility, const TangentFrame* tangents) {
-    ShadingTerms t;
-    const TangentFrame frame = tangents ? *tangents : tangentFrame(n, glm::vec3(tangentAroundUp(n)), 1.0f);
-    t.lights.resize(env.lights.size());
-    const glm::vec3 v = glm::normalize(env.eyeWorld - p);
-    t.emissive = m.emissive;
-    t.ambient = m.ka * env.ambient * m.color;
-    auto visible = [&](std::size_t light, int sample, const glm::vec3& i, float distance) {
-        if (!visibility || glm::dot(n, i) <= 0.0f) return 1.0f;  // N.I <= 0 adds nothing anyway
+namespace {
+
+// The point being shaded, as each light's samples reach it: P, its unit normal N, the unit vector V
+// towards the eye, the tangent frame (for an anisotropic lobe) and the caller's occlusion test.
+struct ShadedPoint {
+    const Material& m;
+    const LightingEnvironment& env;
+    glm::vec3 p, n, v;
+    TangentFrame frame;
+    const Visibility& visibility;
+
+    // v(p, I) of the sample towards `i`: 1 without a Visibility, and where N.I <= 0 (it adds nothing anyway).
+    float visible(std::size_t light, int sample, const glm::vec3& i, float distance) const {
+        if (!visibility || glm::dot(n, i) <= 0.0f) return 1.0f;
         return visibility(p, LightRay{light, sample, i, distance});
-    };
-    for (std::size_t li = 0; li < env.lights.size(); ++li) {
-        const Light& light = env.lights[li];
-        const glm::vec3 power = light.color * light.intensity;
-        switch (light.type) {
-        case LightType::Directional: {
-            const glm::vec3 i = glm::normalize(-light.direction);
-            addSample(t.lights[li], m, env, n, v, i, power * visible(li, 0, i, std::numeric_limits<float>::infinity()), frame);
-            break;
-        }
-        case LightType::Point:
-        case LightType::Spot: {
-            const glm::vec3 d = light.position - p;
+    }
+    // One light sample arriving from `i` with `radiance`, reflected into `share`.
+    void reflect(LightShare& share, const glm::vec3& i, const glm::vec3& radiance) const {
+        addSample(share, m, env, n, v, i, radiance, frame);
+    }
+};
+
+// ---- What this program adds to L_l: distance, spot cone, shadow; area lights (lighting.glsl) ----
+
+// A point or spot light: L_l weakened by the distance (attenuationFactor) and the spot cone
+// (spotFalloff), and v where the cone lets any light through.
+LightShare pointLight(const ShadedPoint& at, std::size_t li) {
+    const Light& light = at.env.lights[li];
+    LightShare share;
+    const glm::vec3 d = light.position - at.p;
+    const float r2 = glm::dot(d, d), r = std::sqrt(r2);
+    const glm::vec3 i = d / r;
+    const float cone = spotFalloff(light, i);
+    const glm::vec3 power = light.color * light.intensity;
+    at.reflect(share, i, power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? at.visible(li, 0, i, r) : 1.0f));
+    return share;
+}
+
+// An area light: nx * ny point lights, its samples, each weighted by its share of the area, the
+// cosine at the light (|cos| when two-sided; nothing from behind the emitting side) and its own v.
+LightShare areaLight(const ShadedPoint& at, std::size_t li) {
+    const Light& light = at.env.lights[li];
+    LightShare share;
+    const glm::vec3 power = light.color * light.intensity;
+    const glm::vec3 front = glm::normalize(light.normal);
+    const float area = 1.0f / float(light.samples.x * light.samples.y);
+    for (int sj = 0; sj < light.samples.y; ++sj)
+        for (int si = 0; si < light.samples.x; ++si) {
+            const glm::vec3 d = areaSamplePosition(light, si, sj) - at.p;
             const float r2 = glm::dot(d, d), r = std::sqrt(r2);
             const glm::vec3 i = d / r;
-            const float cone = spotFalloff(light, i);
-            addSample(t.lights[li], m, env, n, v, i,
-                      power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? visible(li, 0, i, r) : 1.0f), frame);
-            break;
+            float cosLight = -glm::dot(front, i);
+            if (light.twoSided) cosLight = std::fabs(cosLight);
+            if (cosLight <= 0.0f) continue;  // behind the emitting side
+            const float vis = at.visible(li, sj * light.samples.x + si, i, r);
+            at.reflect(share, i, power * (attenuationFactor(light, r2) * cosLight * area * vis));
         }
-        case LightType::Area: {
-            const glm::vec3 front = glm::normalize(light.normal);
-            const float share = 1.0f / float(light.samples.x * light.samples.y);
-            for (int sj = 0; sj < light.samples.y; ++sj)
-                for (int si = 0; si < light.samples.x; ++si) {
-                    const glm::vec3 d = areaSamplePosition(light, si, sj) - p;
-                    const float r2 = glm::dot(d, d), r = std::sqrt(r2);
-                    const glm::vec3 i = d / r;
-                    float cosLight = -glm::dot(front, i);
-                    if (light.twoSided) cosLight = std::fabs(cosLight);
-                    if (cosLight <= 0.0f) continue;  // behind the emitting side
-                    const float vis = visible(li, sj * light.samples.x + si, i, r);
-                    addSample(t.lights[li], m, env, n, v, i, power * (attenuationFactor(light, r2) * cosLight * share * vis), frame);
-                }
-            break;
-        }
-        }
+    return share;
+}
+
+// ---- The lecture's sum, one light at a time (lecture.glsl's loop in lecture()) ----
+
+// Light l's share of the sum: v L_l (k_d C max(0, N.I) + k_s S spec); a directional light's I is the
+// same everywhere and its L_l arrives whole.
+LightShare lightShare(const ShadedPoint& at, std::size_t li) {
+    const Light& light = at.env.lights[li];
+    switch (light.type) {
+    case LightType::Directional: {
+        LightShare share;
+        const glm::vec3 i = glm::normalize(-light.direction);
+        const glm::vec3 power = light.color * light.intensity;
+        at.reflect(share, i, power * at.visible(li, 0, i, std::numeric_limits<float>::infinity()));
+        return share;
     }
-    for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
-    if (mirrorOrGlass(m, env.environment)) t.environment = environmentTerm(m, env, n, v).total();
-    glm::vec3& shown = t.shown;
-    switch (env.show.term) {
-    case ShowTerm::All: shown = t.emissive + t.ambient + t.diffuse + t.specular + t.environment; break;
-    case ShowTerm::Emissive: shown = t.emissive; break;
-    case ShowTerm::Ambient: shown = t.ambient; break;
-    case ShowTerm::Diffuse: shown = t.diffuse; break;
-    case ShowTerm::Specular: shown = t.specular; break;
+    case LightType::Point:
+    case LightType::Spot: return pointLight(at, li);
+    case LightType::Area: return areaLight(at, li);
+    }
+    return {};
+}
+
+// ---- "show": one term of the sum alone ----
+
+// The term drawn (all of them by default), before the clamp.
+glm::vec3 termsShown(const ShadingTerms& t, const Material& m, const TermView& show) {
+    switch (show.term) {
+    case ShowTerm::All: return t.emissive + t.ambient + t.diffuse + t.specular + t.environment;
+    case ShowTerm::Emissive: return t.emissive;
+    case ShowTerm::Ambient: return t.ambient;
+    case ShowTerm::Diffuse: return t.diffuse;
+    case ShowTerm::Specular: return t.specular;
     case ShowTerm::Light:
-        if (env.show.light >= 0 && std::size_t(env.show.light) < t.lights.size())
-            shown = t.lights[std::size_t(env.show.light)].diffuse + t.lights[std::size_t(env.show.light)].specular;
-        break;
-    case ShowTerm::Unlit: shown = m.color; break;
+        if (show.light >= 0 && std::size_t(show.light) < t.lights.size())
+            return t.lights[std::size_t(show.light)].diffuse + t.lights[std::size_t(show.light)].specular;
+        return glm::vec3(0.0f);
+    case ShowTerm::Unlit: return m.color;
     }
-    t.total = glm::clamp(shown, 0.0f, 1.0f);
+    return glm::vec3(0.0f);
+}
+
+}  // namespace
+
+ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& p, const glm::vec3& n,
+                        const Visibility& visibility, const TangentFrame* tangents) {
+    const TangentFrame frame = tangents ? *tangents : tangentFrame(n, glm::vec3(tangentAroundUp(n)), 1.0f);
+    const ShadedPoint at{m, env, p, n, glm::normalize(env.eyeWorld - p), frame, visibility};
+    ShadingTerms t;
+    // The lecture's sum: k_a A C + sum_l L_l (k_d C max(0, N.I_l) + k_s S spec_l), each light's share kept.
+    t.ambient = m.ka * env.ambient * m.color;
+    for (std::size_t li = 0; li < env.lights.size(); ++li) t.lights.push_back(lightShare(at, li));
+    for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
+    // What this program adds: E before the sum, mirror and glass after it, and "show" keeping one term.
+    t.emissive = m.emissive;
+    if (mirrorOrGlass(m, env.environment)) t.environment = environmentTerm(m, env, n, at.v).total();
+    t.shown = termsShown(t, m, env.show);
+    t.total = glm::clamp(t.shown, 0.0f, 1.0f);
     return t;
 }
 
