@@ -21,6 +21,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <iterator>
 #include <optional>
 #include <string>
@@ -57,6 +58,19 @@ bool radio(const char* label, E& value, E choice) {
     if (!ImGui::RadioButton(label, value == choice)) return false;
     value = choice;
     return true;
+}
+
+// A row: `label`, then its choices' radio buttons side by side, from 6 font sizes in (rows line up).
+template <typename E>
+void radioRow(const char* label, E& value, std::initializer_list<std::pair<const char*, E>> choices) {
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(label);
+    float indent = ImGui::GetFontSize() * 6.0f;
+    for (const auto& [name, choice] : choices) {
+        ImGui::SameLine(indent);
+        indent = 0.0f;  // the next button right after this one
+        radio(name, value, choice);
+    }
 }
 
 template <typename E, std::size_t N>
@@ -109,14 +123,8 @@ void iorSlider(Scene& scene) {
 }
 
 void sectionShading(Scene& scene) {
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("Shading");
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    radio("flat (1)", scene.shading, ShadingMode::Flat);
-    ImGui::SameLine();
-    radio("gouraud (2)", scene.shading, ShadingMode::Gouraud);
-    ImGui::SameLine();
-    radio("phong (3)", scene.shading, ShadingMode::Phong);
+    radioRow("Shading", scene.shading,
+             {{"flat (1)", ShadingMode::Flat}, {"gouraud (2)", ShadingMode::Gouraud}, {"phong (3)", ShadingMode::Phong}});
     bool compare = scene.layout == Layout::Compare;
     if (ImGui::Checkbox("compare: flat | gouraud | phong  (C)", &compare))
         scene.layout = compare ? Layout::Compare : Layout::Single;
@@ -133,12 +141,7 @@ void sectionShading(Scene& scene) {
                            ImGuiSliderFlags_Logarithmic);
         scene.diff.factor = std::clamp(scene.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
     }
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("Reflection");
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    radio("Phong", scene.reflection, ReflectionModel::Phong);
-    ImGui::SameLine();
-    radio("Blinn-Phong", scene.reflection, ReflectionModel::BlinnPhong);
+    radioRow("Reflection", scene.reflection, {{"Phong", ReflectionModel::Phong}, {"Blinn-Phong", ReflectionModel::BlinnPhong}});
     static const char* const kEncodings[] = {"linear", "sRGB"};
     combo("output encoding", scene.outputEncoding, kEncodings);
     // Beyond the heuristic model (core/shading/lighting.hpp): each switch recompiles the programs once.
@@ -327,6 +330,47 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
     }
 }
 
+void areaLightFields(Light& l) {
+    dragNonZero("normal", l.normal, 0.02f, false);
+    ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    l.size = glm::max(l.size, glm::vec2(float(kSizeRange.lo)));
+    // Sample counts are a specialisation constant: changing them recompiles (once per count).
+    ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kAreaSamplesPerSideRange.hi);
+    l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kAreaSamplesPerSideRange.hi));
+    ImGui::Checkbox("two-sided", &l.twoSided);
+}
+
+void spotLightFields(Light& l) {
+    dragNonZero("direction", l.direction, 0.02f, false);
+    // Half-angles from the axis: full light inside the inner cone, none outside the outer.
+    ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kSpotConeDegRange.hi, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("inner cone (deg)", &l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f, "%.1f",
+                       ImGuiSliderFlags_AlwaysClamp);
+    l.innerConeDeg = std::clamp(l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f);
+}
+
+// One light's fields in its open tree node: type, where it is, what its type adds, colour, intensity, falloff.
+void lightFields(Light& l, std::string& readout) {
+    combo("type", l.type, kLightTypeNames);
+    if (l.type == LightType::Directional)
+        dragNonZero("direction", l.direction, 0.02f, false);
+    else
+        dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
+    if (l.type == LightType::Area) areaLightFields(l);
+    if (l.type == LightType::Spot) spotLightFields(l);
+    colorEdit("colour", l.color);
+    ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    readoutWhileActive(readout, "intensity", l.intensity);
+    if (l.type != LightType::Directional) {
+        combo("attenuation", l.attenuation, kAttenuationNames);
+        if (l.attenuation == Attenuation::InverseSquare) {
+            // 0 = no window; otherwise the light fades smoothly to zero at this distance.
+            ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+            if (l.range > 0.0f && l.range < float(kLightRangeRange.lo)) l.range = float(kLightRangeRange.lo);
+        }
+    }
+}
+
 void sectionLights(Scene& scene, int& selected, std::string& readout) {
     colorEdit("ambient A", scene.ambient);
     ImGui::TextDisabled("click a light's name to select it (again: none)");
@@ -343,40 +387,7 @@ void sectionLights(Scene& scene, int& selected, std::string& readout) {
                                             isSelected && l.type == LightType::Area ? ": samples shown" : "");
         if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selected = isSelected ? -1 : int(i);
         if (open) {
-            combo("type", l.type, kLightTypeNames);
-            if (l.type == LightType::Directional)
-                dragNonZero("direction", l.direction, 0.02f, false);
-            else
-                dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
-            if (l.type == LightType::Area) {
-                dragNonZero("normal", l.normal, 0.02f, false);
-                ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-                l.size = glm::max(l.size, glm::vec2(float(kSizeRange.lo)));
-                // Sample counts are a specialisation constant: changing them recompiles (once per count).
-                ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kAreaSamplesPerSideRange.hi);
-                l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kAreaSamplesPerSideRange.hi));
-                ImGui::Checkbox("two-sided", &l.twoSided);
-            }
-            if (l.type == LightType::Spot) {
-                dragNonZero("direction", l.direction, 0.02f, false);
-                // Half-angles from the axis: full light inside the inner cone, none outside the outer.
-                ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kSpotConeDegRange.hi, "%.1f", ImGuiSliderFlags_AlwaysClamp);
-                ImGui::SliderFloat("inner cone (deg)", &l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f, "%.1f",
-                                   ImGuiSliderFlags_AlwaysClamp);
-                l.innerConeDeg = std::clamp(l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f);
-            }
-            colorEdit("colour", l.color);
-            ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-            readoutWhileActive(readout, "intensity", l.intensity);
-            if (l.type != LightType::Directional) {
-                combo("attenuation", l.attenuation, kAttenuationNames);
-                if (l.attenuation == Attenuation::InverseSquare) {
-                    // 0 = no window; otherwise the light fades smoothly to zero at this distance.
-                    ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f",
-                                     ImGuiSliderFlags_AlwaysClamp);
-                    if (l.range > 0.0f && l.range < float(kLightRangeRange.lo)) l.range = float(kLightRangeRange.lo);
-                }
-            }
+            lightFields(l, readout);
             if (ImGui::Button("remove light")) remove = int(i);
             ImGui::TreePop();
         }
@@ -561,12 +572,8 @@ void sectionKeys() {
     ImGui::EndTable();
 }
 
-}  // namespace
-
-PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
-                        const ProbeResult* probe) {
-    PanelRequests requests;
-    const std::size_t lightsBefore = scene.lights.size();
+// The panel's window at `area`; false (and ended) when ImGui skips it.
+bool beginPanelWindow(const UiRect& area) {
     ImGui::SetNextWindowPos(ImVec2(area.x, area.y));
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height));
     // NoNavInputs: Tab belongs to the viewer (hide the panel), not to ImGui's widget tabbing.
@@ -575,10 +582,65 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
                                    // At a UI scale the window has no room for (the panel is at most half
                                    // of it), a row wider than the panel scrolls instead of being cut.
                                    ImGuiWindowFlags_HorizontalScrollbar;
-    if (!ImGui::Begin("shadelab  (Tab hides this panel)", nullptr, flags)) {
-        ImGui::End();
-        return requests;
+    if (ImGui::Begin("shadelab  (Tab hides this panel)", nullptr, flags)) return true;
+    ImGui::End();
+    return false;
+}
+
+// A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
+bool section(ViewSettings& settings, const char* title, PanelSection id, bool defaultOpen) {
+    const char* name = nameOf(kPanelSections, id);
+    if (settings.startSections) {
+        const auto& open = *settings.startSections;
+        ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
     }
+    const bool open = ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
+    if (open) settings.openSections.push_back(name);
+    return open;
+}
+
+// The scene's sections, Shading to Keys, in the panel's order.
+void sceneSections(Scene& scene, ViewSettings& settings, const PanelStatus& status, PanelRequests& requests,
+                   const ProbeResult* probe) {
+    if (section(settings, "Shading", PanelSection::Shading, true)) sectionShading(scene);
+    settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
+    SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
+    if (object && section(settings, "Material", PanelSection::Material, true)) {
+        if (scene.objects.size() > 1)
+            ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
+        sectionMaterial(object->material, scene.reflection, settings.readout);
+    }
+    if (section(settings, "Plots: specular lobe, Fresnel", PanelSection::Plots, false))
+        sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight,
+                     settings.scrollToPlot);
+    // S opens or closes it, and brings it into view.
+    if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
+    if (section(settings, "Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader, false)) {
+        if (settings.openShader) ImGui::SetScrollHereY(0.0f);
+        sectionShader(scene, settings, status, probe);
+    }
+    settings.openShader.reset();
+    if (object && section(settings, "Mesh", PanelSection::Mesh, true))
+        sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
+    if (section(settings, "Lights", PanelSection::Lights, true)) sectionLights(scene, settings.selectedLight, settings.readout);
+    if (section(settings, "Shadows", PanelSection::Shadows, true)) sectionShadows(scene.shadows);
+    if (section(settings, "Overlays", PanelSection::Overlays, true)) {
+        sectionOverlays(settings);
+        sectionDisplay(status, requests);
+    }
+    if (section(settings, "Camera", PanelSection::Camera, false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
+    if (section(settings, "Background", PanelSection::Background, false)) colorEdit("background", scene.background);
+    if (section(settings, "File", PanelSection::File, true)) sectionFile(settings, status, requests);
+    if (section(settings, "Keys", PanelSection::Keys, false)) sectionKeys();
+}
+
+}  // namespace
+
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
+                        const ProbeResult* probe) {
+    PanelRequests requests;
+    const std::size_t lightsBefore = scene.lights.size();
+    if (!beginPanelWindow(area)) return requests;
     // Widgets leave room for the longest label on their right, so no label is clipped at any scale.
     ImGui::PushItemWidth(-(longestLabelWidth() + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f + ImGui::GetFontSize()));
     if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
@@ -587,49 +649,9 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (probe && settings.scrollToProbe) ImGui::SetScrollHereY(0.0f), settings.scrollToProbe = false;
     if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
         requests.clearProbe |= probeSection(scene, *probe);
-    // A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
-    auto section = [&](const char* title, PanelSection id, bool defaultOpen) {
-        const char* name = nameOf(kPanelSections, id);
-        if (settings.startSections) {
-            const auto& open = *settings.startSections;
-            ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
-        }
-        const bool open = ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
-        if (open) settings.openSections.push_back(name);
-        return open;
-    };
     settings.openSections.clear();
     settings.readout.clear();
-    if (section("Shading", PanelSection::Shading, true)) sectionShading(scene);
-    settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
-    SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
-    if (object && section("Material", PanelSection::Material, true)) {
-        if (scene.objects.size() > 1)
-            ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
-        sectionMaterial(object->material, scene.reflection, settings.readout);
-    }
-    if (section("Plots: specular lobe, Fresnel", PanelSection::Plots, false))
-        sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight,
-                     settings.scrollToPlot);
-    // S opens or closes it, and brings it into view.
-    if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
-    if (section("Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader, false)) {
-        if (settings.openShader) ImGui::SetScrollHereY(0.0f);
-        sectionShader(scene, settings, status, probe);
-    }
-    settings.openShader.reset();
-    if (object && section("Mesh", PanelSection::Mesh, true))
-        sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
-    if (section("Lights", PanelSection::Lights, true)) sectionLights(scene, settings.selectedLight, settings.readout);
-    if (section("Shadows", PanelSection::Shadows, true)) sectionShadows(scene.shadows);
-    if (section("Overlays", PanelSection::Overlays, true)) {
-        sectionOverlays(settings);
-        sectionDisplay(status, requests);
-    }
-    if (section("Camera", PanelSection::Camera, false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
-    if (section("Background", PanelSection::Background, false)) colorEdit("background", scene.background);
-    if (section("File", PanelSection::File, true)) sectionFile(settings, status, requests);
-    if (section("Keys", PanelSection::Keys, false)) sectionKeys();
+    sceneSections(scene, settings, status, requests, probe);
     settings.startSections.reset();
     // ImGui marks every edit a widget makes (MarkItemEdited, this frame's flag); the light buttons
     // change the list.
