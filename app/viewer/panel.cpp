@@ -7,6 +7,7 @@
 #include "core/scene/panel_sections.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/view_names.hpp"
+#include "viewer/light_label_placement.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
 #include "viewer/shader_view.hpp"
@@ -878,73 +879,29 @@ int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float ra
 
 namespace {
 
-// How the light labels are drawn, and the part of a pane they keep inside (below the pane labels).
+// How the light labels are drawn.
 struct LightLabelStyle {
     ImDrawList* draw;
     float font, thick, ring;  // text size, line width, marker radius
 };
-// A model's outline in the pane, for the labels to keep off: the disc its bounding sphere covers.
-struct ModelDisc {
-    ImVec2 centre;
-    float radius;
-};
-struct LightLabelArea {
-    ImVec2 lo, hi;
-    ImVec2 centre;
-    std::vector<ModelDisc> models;
-};
 
-bool boxOnModel(const LightLabelArea& a, ImVec2 lo, ImVec2 hi) {
-    for (const ModelDisc& m : a.models) {
-        const float dx = std::clamp(m.centre.x, lo.x, hi.x) - m.centre.x, dy = std::clamp(m.centre.y, lo.y, hi.y) - m.centre.y;
-        if (dx * dx + dy * dy < m.radius * m.radius) return true;
-    }
-    return false;
-}
+glm::vec2 vec(ImVec2 v) { return glm::vec2(v.x, v.y); }
+ImVec2 imVec(glm::vec2 v) { return ImVec2(v.x, v.y); }
 
-// A marker's label where it covers no model (issue 31: "0 point" over all three spheres): beside the
-// marker at `at` (right, left, above, below, `gap` away), else moved out along the line from the
-// model's centre through the marker until it clears every model, tied to the marker by a thin line.
-// Where nothing is clear (a model filling the pane) it stays beside the marker.
+// A marker's label where it covers no model and touches no other label (placeLightLabel), tied to the
+// marker by a thin line where it had to move away from it.
 UiRect placeLabel(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, float gap, const std::string& label,
                   ImU32 colour) {
-    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str());
+    const glm::vec2 size = vec(ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str()));
     const float pad = s.font * 0.3f;
-    // The text's top-left corner kept inside the area, as labelBox does.
-    const auto inside = [&](ImVec2 p) {
-        return ImVec2(std::max(std::min(p.x, a.hi.x - size.x - pad), a.lo.x + pad),
-                      std::max(std::min(p.y, a.hi.y - size.y - pad), a.lo.y + pad));
-    };
-    const auto clear = [&](ImVec2 p) {
-        return !boxOnModel(a, ImVec2(p.x - pad, p.y - pad), ImVec2(p.x + size.x + pad, p.y + size.y + pad));
-    };
-    const ImVec2 beside[] = {ImVec2(at.x + gap, at.y - size.y * 0.5f), ImVec2(at.x - gap - size.x, at.y - size.y * 0.5f),
-                             ImVec2(at.x - size.x * 0.5f, at.y - gap - size.y), ImVec2(at.x - size.x * 0.5f, at.y + gap)};
-    for (const ImVec2& p : beside)
-        if (clear(inside(p))) return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
-    // Out from the nearest model's centre (up when the marker is at it), a third of the font a step.
-    const ModelDisc* nearest = nullptr;
-    float best = 1e30f;
-    for (const ModelDisc& m : a.models) {
-        const float d = std::hypot(at.x - m.centre.x, at.y - m.centre.y) - m.radius;
-        if (d < best) best = d, nearest = &m;
+    const LabelPlacement place = placeLightLabel(a, vec(at), gap, size, pad, s.font * 0.33f);
+    if (place.tied) {
+        const LabelRect box = place.box(size, pad);
+        const ImVec2 near(std::clamp(at.x, box.lo.x, box.hi.x), std::clamp(at.y, box.lo.y, box.hi.y));
+        const float dx = near.x - at.x, dy = near.y - at.y, d = std::hypot(dx, dy);
+        if (d > s.ring) s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour, 1.0f + s.thick * 0.4f);
     }
-    if (nearest) {
-        ImVec2 u(at.x - nearest->centre.x, at.y - nearest->centre.y);
-        const float len = std::hypot(u.x, u.y);
-        u = len > 1e-3f ? ImVec2(u.x / len, u.y / len) : ImVec2(0.0f, -1.0f);
-        const float reach = std::hypot(a.hi.x - a.lo.x, a.hi.y - a.lo.y);
-        for (float t = gap; t < reach; t += s.font * 0.33f) {
-            const ImVec2 c(at.x + u.x * t, at.y + u.y * t);  // the box's centre, then its nearest point to the marker
-            const ImVec2 p = inside(ImVec2(c.x - size.x * 0.5f + u.x * size.x * 0.5f, c.y - size.y * 0.5f + u.y * size.y * 0.5f));
-            if (!clear(p)) continue;
-            const ImVec2 near(std::clamp(at.x, p.x - pad, p.x + size.x + pad), std::clamp(at.y, p.y - pad, p.y + size.y + pad));
-            const float dx = near.x - at.x, dy = near.y - at.y, d = std::hypot(dx, dy);
-            if (d > s.ring) s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour, 1.0f + s.thick * 0.4f);
-            return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
-        }
-    }
-    return labelBox(s.draw, s.font, beside[0], label, colour, a.lo, a.hi);
+    return labelBox(s.draw, s.font, imVec(place.text), label, colour, imVec(a.lo), imVec(a.hi));
 }
 
 // A directional light: an arrow from `from` along the light's travel to `to`; its tail is the handle
@@ -974,14 +931,15 @@ UiRect drawLightMarker(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
 // toward the nearer corner.
 UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, bool behind,
                        const std::string& label, ImU32 colour) {
-    ImVec2 d(at.x - a.centre.x, at.y - a.centre.y);
+    const ImVec2 centre((a.lo.x + a.hi.x) * 0.5f, (a.lo.y + a.hi.y) * 0.5f);
+    ImVec2 d(at.x - centre.x, at.y - centre.y);
     if (behind) d = ImVec2(-d.x, -d.y);
     const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
     const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
     const float halfW = (a.hi.x - a.lo.x) * 0.5f - s.font * 0.5f, halfH = (a.hi.y - a.lo.y) * 0.5f - s.font * 0.5f;
     const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
                              std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
-    const ImVec2 tip(a.centre.x + u.x * t, a.centre.y + u.y * t);
+    const ImVec2 tip(centre.x + u.x * t, centre.y + u.y * t);
     const float head = s.font * 0.9f;
     s.draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
                               ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
@@ -998,9 +956,39 @@ UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
     const float pad = s.font * 0.3f;
     pos.x = std::max(std::min(pos.x, a.hi.x - size.x - pad), a.lo.x + pad);
     pos.y = std::max(std::min(pos.y, a.hi.y - size.y - pad), a.lo.y + pad);
-    if (!boxOnModel(a, ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad)))
-        return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
-    return placeLabel(s, a, tip, head * 1.2f, label, colour);  // a model reaches the border there
+    // The label keeps clear of the arrow's head too (pushed along the border, it ran into it).
+    LightLabelArea withHead = a;
+    const ImVec2 c1(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f);
+    const ImVec2 c2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f);
+    const LabelRect headBox{glm::min(vec(tip), glm::min(vec(c1), vec(c2))), glm::max(vec(tip), glm::max(vec(c1), vec(c2)))};
+    withHead.taken.push_back(headBox);
+    const float separation = kLabelSeparation * s.font;
+    if (rectClear(withHead, LabelRect{vec(pos) - pad, vec(pos) + vec(size) + pad}, separation))
+        return labelBox(s.draw, s.font, pos, label, colour, imVec(a.lo), imVec(a.hi));
+    // A model, a label or the head itself is there: beside the head, clear of its box.
+    const glm::vec2 half = (headBox.hi - headBox.lo) * 0.5f;
+    return placeLabel(s, withHead, imVec(headBox.lo + half), std::max(half.x, half.y) + pad + 2.0f * separation, label, colour);
+}
+
+// Each model's disc in the view's units (the view's top-left at `origin`): its bounding sphere's centre
+// and the farthest of four points on its rim across the view (a sphere off the axis projects a little
+// wider than its centre's distance says).
+std::vector<LabelDisc> modelDiscs(const Scene& scene, const Pane& pane, const std::vector<BoundingSphere>& models,
+                                  glm::vec2 origin, float framebufferScale) {
+    std::vector<LabelDisc> discs;
+    const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, scene.camera.up)), up = glm::cross(right, forward);
+    for (const BoundingSphere& m : models) {
+        const glm::vec3 c = projectToImage(scene.camera, pane, m.center);
+        if (!(c.z > 0.0f) || m.radius <= 0.0f) continue;
+        float radius = 0.0f;
+        for (const glm::vec3& rim : {right, -right, up, -up}) {
+            const glm::vec3 p = projectToImage(scene.camera, pane, m.center + rim * m.radius);
+            if (p.z > 0.0f) radius = std::max(radius, glm::length(glm::vec2(p) - glm::vec2(c)));
+        }
+        discs.push_back({origin + glm::vec2(c) / framebufferScale, radius * 1.05f / framebufferScale});
+    }
+    return discs;
 }
 
 }  // namespace
@@ -1018,23 +1006,15 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
         // Labels and border arrows stay below the pane labels (`top`).
         const float y0 = std::min(std::max(paneTop, top), y1);
         style.draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
-        LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f), {}};
+        // Labels keep clear of each other (placeLightLabel): each box placed is taken for the next.
+        LightLabelArea area{glm::vec2(x0, y0), glm::vec2(x1, y1), {}, {}};
+        const auto placed = [&](const UiRect& r) {
+            boxes.push_back(r);
+            area.taken.push_back({glm::vec2(r.x, r.y), glm::vec2(r.x + r.width, r.y + r.height)});
+        };
         // projectToImage gives image pixels of the whole view (the pane's offset included).
         auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
-        // Each model's disc: its bounding sphere's centre and the farthest of four points on its rim
-        // across the view (a sphere off the axis projects a little wider than its centre's distance says).
-        const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
-        const glm::vec3 right = glm::normalize(glm::cross(forward, scene.camera.up)), up = glm::cross(right, forward);
-        for (const BoundingSphere& m : models) {
-            const glm::vec3 c = projectToImage(scene.camera, pane, m.center);
-            if (!(c.z > 0.0f) || m.radius <= 0.0f) continue;
-            float radius = 0.0f;
-            for (const glm::vec3& rim : {right, -right, up, -up}) {
-                const glm::vec3 p = projectToImage(scene.camera, pane, m.center + rim * m.radius);
-                if (p.z > 0.0f) radius = std::max(radius, glm::length(glm::vec2(p) - glm::vec2(c)));
-            }
-            area.models.push_back({toUi(c), radius * 1.05f / framebufferScale});
-        }
+        area.models = modelDiscs(scene, pane, models, glm::vec2(view.x, view.y), framebufferScale);
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& l = scene.lights[i];
             const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);
@@ -1045,14 +1025,14 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
                 const float reach = directionalHandleDistance(scene.camera);
                 const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
                 const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.4f));
-                if (a.z > 0.0f && b.z > 0.0f) boxes.push_back(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));
+                if (a.z > 0.0f && b.z > 0.0f) placed(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));
                 continue;
             }
             const glm::vec3 p = projectToImage(scene.camera, pane, l.position);
             const ImVec2 at = toUi(p);
             const bool inside = p.z > 0.0f && at.x >= x0 && at.x <= x1 && at.y >= y0 && at.y <= y1;
-            boxes.push_back(inside ? drawLightMarker(style, area, at, label, colour)
-                                   : drawBorderArrow(style, area, at, p.z <= 0.0f, label, colour));
+            placed(inside ? drawLightMarker(style, area, at, label, colour)
+                          : drawBorderArrow(style, area, at, p.z <= 0.0f, label, colour));
         }
         style.draw->PopClipRect();
     }
