@@ -99,6 +99,63 @@ void upload(gl::VertexArray& vao, gl::Buffer& vbo, const std::vector<float>& dat
 
 void copyMat(float (&dst)[16], const glm::mat4& m) { std::memcpy(dst, glm::value_ptr(m), sizeof dst); }
 
+// drawLights' parts, one per kind of light. A directional light: a line from its handle along the
+// direction the light travels; returns the handle, where the cross goes.
+glm::vec3 pushDirectionMarker(std::vector<float>& data, const Light& light, const Camera& cam) {
+    const glm::vec3 at = lightHandle(light, cam);
+    pushVertex(data, at);
+    pushVertex(data, at + glm::normalize(light.direction) * (0.4f * directionalHandleDistance(cam)));
+    return at;
+}
+
+// A spot light: the axis and four lines along the outer cone, a quarter of the way to the eye long.
+void pushSpotCone(std::vector<float>& data, const Light& light, const Camera& cam) {
+    const glm::vec3 at = light.position;
+    const glm::vec3 z = glm::normalize(light.direction);
+    const glm::vec3 ref = std::fabs(z.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 x = glm::normalize(glm::cross(ref, z)), y = glm::cross(z, x);
+    const float length = 0.25f * std::max(glm::length(cam.eye - at), 1e-3f);
+    const float spread = std::tan(glm::radians(std::min(light.outerConeDeg, 80.0f)));
+    pushVertex(data, at);
+    pushVertex(data, at + z * length);
+    for (const glm::vec3& side : {x, -x, y, -y}) {
+        pushVertex(data, at);
+        pushVertex(data, at + (z + side * spread) * (length / std::sqrt(1.0f + spread * spread)));
+    }
+}
+
+// An area light: the rectangle's outline, its emitting normal, and a dot per sample position.
+void pushAreaOutline(std::vector<float>& data, const Light& light, const Camera& cam) {
+    const glm::vec3 at = light.position;
+    const AreaFrame f = areaFrame(light);
+    const glm::vec3 c[4] = {at - 0.5f * f.u - 0.5f * f.v, at + 0.5f * f.u - 0.5f * f.v,
+                            at + 0.5f * f.u + 0.5f * f.v, at - 0.5f * f.u + 0.5f * f.v};
+    for (int k = 0; k < 4; ++k) {
+        pushVertex(data, c[k]);
+        pushVertex(data, c[(k + 1) % 4]);
+    }
+    const float extent = 0.5f * std::max(light.size.x, light.size.y);
+    pushVertex(data, at);
+    pushVertex(data, at + f.n * extent);
+    const float tick = 0.01f * std::max(glm::length(cam.eye - at), 1e-3f);
+    for (int j = 0; j < light.samples.y; ++j)
+        for (int k = 0; k < light.samples.x; ++k) {
+            const glm::vec3 p = areaSamplePosition(light, k, j);
+            pushVertex(data, p - tick * glm::normalize(f.u));
+            pushVertex(data, p + tick * glm::normalize(f.u));
+        }
+}
+
+// A three-axis cross `half` long each way from `at`.
+void pushCross(std::vector<float>& data, const glm::vec3& at, float half) {
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::vec3 d(0.0f);
+        d[axis] = half;
+        pushVertex(data, at - d);
+        pushVertex(data, at + d);
+    }
+}
+
 }  // namespace
 
 OverlayRenderer::LineProgram OverlayRenderer::lineProgram(gl::Program program) {
@@ -165,14 +222,9 @@ const OverlayRenderer::Lines& OverlayRenderer::lines(std::size_t object, LineKin
     return l;
 }
 
-void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options,
-                             const std::vector<OverlayArrow>& arrows) {
-    if (!options.any() && arrows.empty()) return;
-    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
-    const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
-
-    // A FrameBlock per pane, an ObjectBlock per object, then an identity ObjectBlock for the light
-    // markers (which are given in world space). Only the matrices are read.
+// A FrameBlock per pane, an ObjectBlock per object, then an identity ObjectBlock for the light markers
+// (which are given in world space). Only the matrices are read.
+void OverlayRenderer::stageMatrices(const Scene& scene, const std::vector<Pane>& panes, std::size_t objects) {
     uniforms_.begin(panes.size(), objects + 1);
     for (std::size_t p = 0; p < panes.size(); ++p) {
         gpu::FrameBlock b{};
@@ -188,6 +240,41 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
         uniforms_.setObject(o, b);
     }
     uniforms_.upload();
+}
+
+// Object o's wireframe, normals and tangents, as `options` asks, in the bound pane.
+void OverlayRenderer::drawObjectLines(const Scene& scene, const OverlayOptions& options, std::size_t o) {
+    uniforms_.bindObject(o);
+    const glm::vec3 s = glm::abs(scene.objects[o].transform.scale);
+    const float normalLength = options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z});
+    const std::pair<bool, LineKind> kinds[] = {
+        {options.wireframe, Edges}, {options.vertexNormals, VertexNormals}, {options.faceNormals, FaceNormals},
+        {options.tangents, Tangents}};
+    for (const auto& [enabled, kind] : kinds) {
+        if (!enabled) continue;
+        // Wireframe: light grey, half covering; vertex normals cyan; face normals yellow (the
+        // colours of the lecture's normal slides); tangents magenta.
+        static const float kColors[kLineKinds][4] = {{0.92f, 0.92f, 0.92f, 0.55f},
+                                                     {0.25f, 0.85f, 1.0f, 1.0f},
+                                                     {1.0f, 0.85f, 0.2f, 1.0f},
+                                                     {1.0f, 0.3f, 0.85f, 1.0f}};
+        const Lines& l = lines(o, kind);
+        if (l.vertexCount == 0) continue;
+        const LineProgram& program = useWidth(std::max(1.0f, options.lineWidth * (kind == Edges ? 0.5f : 0.75f)));
+        glUniform1f(program.normalLength, normalLength);
+        glUniform1f(program.tangentTips, kind == Tangents ? 1.0f : 0.0f);
+        glUniform4fv(program.color, 1, kColors[kind]);
+        glBindVertexArray(l.vao.get());
+        glDrawArrays(GL_LINES, 0, l.vertexCount);
+    }
+}
+
+void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, const OverlayOptions& options,
+                             const std::vector<OverlayArrow>& arrows) {
+    if (!options.any() && arrows.empty()) return;
+    const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, target.width, target.height, scene.diff);
+    const std::size_t objects = geometry_ ? std::min(geometry_->meshes.size(), scene.objects.size()) : 0;
+    stageMatrices(scene, panes, objects);
 
     // Lines are tested against the surface's depth but do not write it, and blend so the shading shows
     // through the wireframe of a dense mesh.
@@ -207,31 +294,7 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
         paneWidth_ = float(std::max(pane.width, 1)), paneHeight_ = float(std::max(pane.height, 1));
         uniforms_.bindFrame(p);
-        for (std::size_t o = 0; o < objects; ++o) {
-            uniforms_.bindObject(o);
-            const glm::vec3 s = glm::abs(scene.objects[o].transform.scale);
-            const float normalLength = options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z});
-            const std::pair<bool, LineKind> kinds[] = {
-                {options.wireframe, Edges}, {options.vertexNormals, VertexNormals}, {options.faceNormals, FaceNormals},
-                {options.tangents, Tangents}};
-            for (const auto& [enabled, kind] : kinds) {
-                if (!enabled) continue;
-                // Wireframe: light grey, half covering; vertex normals cyan; face normals yellow (the
-                // colours of the lecture's normal slides); tangents magenta.
-                static const float kColors[kLineKinds][4] = {{0.92f, 0.92f, 0.92f, 0.55f},
-                                                             {0.25f, 0.85f, 1.0f, 1.0f},
-                                                             {1.0f, 0.85f, 0.2f, 1.0f},
-                                                             {1.0f, 0.3f, 0.85f, 1.0f}};
-                const Lines& l = lines(o, kind);
-                if (l.vertexCount == 0) continue;
-                const LineProgram& program = useWidth(std::max(1.0f, options.lineWidth * (kind == Edges ? 0.5f : 0.75f)));
-                glUniform1f(program.normalLength, normalLength);
-                glUniform1f(program.tangentTips, kind == Tangents ? 1.0f : 0.0f);
-                glUniform4fv(program.color, 1, kColors[kind]);
-                glBindVertexArray(l.vao.get());
-                glDrawArrays(GL_LINES, 0, l.vertexCount);
-            }
-        }
+        for (std::size_t o = 0; o < objects; ++o) drawObjectLines(scene, options, o);
         if (options.lightMarkers) drawLights(scene, objects);
         const int marked = options.sampleMarkersLight;
         if (marked >= 0 && std::size_t(marked) < scene.lights.size() && scene.lights[std::size_t(marked)].type == LightType::Area)
@@ -256,52 +319,10 @@ void OverlayRenderer::drawLights(const Scene& scene, std::size_t identityObject)
         const Light& light = scene.lights[i];
         const GLint first = GLint(data.size() / kFloatsPerVertex);
         glm::vec3 at = light.position;
-        if (light.type == LightType::Directional) {
-            at = lightHandle(light, cam);
-            pushVertex(data, at);
-            pushVertex(data, at + glm::normalize(light.direction) * (0.4f * directionalHandleDistance(cam)));
-        }
-        if (light.type == LightType::Spot) {
-            // The axis and four lines along the outer cone, a quarter of the way to the eye long.
-            const glm::vec3 z = glm::normalize(light.direction);
-            const glm::vec3 ref = std::fabs(z.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-            const glm::vec3 x = glm::normalize(glm::cross(ref, z)), y = glm::cross(z, x);
-            const float length = 0.25f * std::max(glm::length(cam.eye - at), 1e-3f);
-            const float spread = std::tan(glm::radians(std::min(light.outerConeDeg, 80.0f)));
-            pushVertex(data, at);
-            pushVertex(data, at + z * length);
-            for (const glm::vec3& side : {x, -x, y, -y}) {
-                pushVertex(data, at);
-                pushVertex(data, at + (z + side * spread) * (length / std::sqrt(1.0f + spread * spread)));
-            }
-        }
-        if (light.type == LightType::Area) {
-            // The rectangle's outline, its emitting normal, and a dot per sample position.
-            const AreaFrame f = areaFrame(light);
-            const glm::vec3 c[4] = {at - 0.5f * f.u - 0.5f * f.v, at + 0.5f * f.u - 0.5f * f.v,
-                                    at + 0.5f * f.u + 0.5f * f.v, at - 0.5f * f.u + 0.5f * f.v};
-            for (int k = 0; k < 4; ++k) {
-                pushVertex(data, c[k]);
-                pushVertex(data, c[(k + 1) % 4]);
-            }
-            const float extent = 0.5f * std::max(light.size.x, light.size.y);
-            pushVertex(data, at);
-            pushVertex(data, at + f.n * extent);
-            const float tick = 0.01f * std::max(glm::length(cam.eye - at), 1e-3f);
-            for (int j = 0; j < light.samples.y; ++j)
-                for (int k = 0; k < light.samples.x; ++k) {
-                    const glm::vec3 p = areaSamplePosition(light, k, j);
-                    pushVertex(data, p - tick * glm::normalize(f.u));
-                    pushVertex(data, p + tick * glm::normalize(f.u));
-                }
-        }
-        const float half = 0.03f * std::max(glm::length(cam.eye - at), 1e-3f);
-        for (int axis = 0; axis < 3; ++axis) {
-            glm::vec3 d(0.0f);
-            d[axis] = half;
-            pushVertex(data, at - d);
-            pushVertex(data, at + d);
-        }
+        if (light.type == LightType::Directional) at = pushDirectionMarker(data, light, cam);
+        if (light.type == LightType::Spot) pushSpotCone(data, light, cam);
+        if (light.type == LightType::Area) pushAreaOutline(data, light, cam);
+        pushCross(data, at, 0.03f * std::max(glm::length(cam.eye - at), 1e-3f));
         // The light's colour brought to full brightness, so a dim or dark-coloured light still shows.
         const float peak = std::max({light.color.r, light.color.g, light.color.b});
         const glm::vec3 c = peak > 1e-3f ? light.color / peak : glm::vec3(1.0f);

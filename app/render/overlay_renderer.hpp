@@ -82,6 +82,9 @@ private:
     // Lines given in world space (light markers, sample markers, arrows), one colour per run.
     void drawWorldLines(const std::vector<float>& data, const std::vector<std::pair<GLint, glm::vec4>>& runs,
                         std::size_t identityObject);
+    // render()'s steps: the matrices of every pane and object, and one object's lines in the bound pane.
+    void stageMatrices(const Scene& scene, const std::vector<Pane>& panes, std::size_t objects);
+    void drawObjectLines(const Scene& scene, const OverlayOptions& options, std::size_t object);
     void drawLights(const Scene& scene, std::size_t identityObject);
     void drawAreaSamples(const Scene& scene, const Light& light, std::size_t identityObject);
     void drawArrows(const Scene& scene, const Pane& pane, int paneIndex, const std::vector<OverlayArrow>& arrows,

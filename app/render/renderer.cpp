@@ -368,6 +368,57 @@ void Renderer::beginPanes(const Scene& scene, const RenderTarget& target, bool a
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
+// Per object: does this pane's Phong program take interpolated inputs (see interpolatesInputs)?
+// Anisotropic objects take the tangent from their own vertex arrays, which the speed variant does not read.
+// So do mirror-and-glass objects (their programs have the variant's inputs only for the lecture's sum).
+std::vector<char> Renderer::paneInputs(const Scene& scene, const Pane& pane) const {
+    const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
+    std::vector<char> inputs(objects, 0);
+    for (std::size_t o = 0; o < objects; ++o)
+        inputs[o] = interpolatesInputs(o, pane, scene) && !anisotropicObject(scene, o) &&
+                    environmentObject(scene, o) == SL_ENVIRONMENT_NONE;
+    return inputs;
+}
+
+// The program variant one draw needs.
+ProgramCache::Variant Renderer::drawVariant(const Scene& scene, const Draw& draw, bool accumulate,
+                                            bool interpolatedInputs) const {
+    ProgramCache::Variant v{accumulate, interpolatedInputs, draw.textured, draw.instances >= 0, draw.doubleSided};
+    // A progressive pass sums its samples: blended parts are drawn in it as if opaque.
+    v.alphaMode = draw.alphaMode == AlphaMode::Mask ? SL_ALPHA_MASK
+                  : draw.alphaMode == AlphaMode::Blend && !accumulate ? SL_ALPHA_BLEND : SL_ALPHA_OPAQUE;
+    v.emissive = draw.emissive != glm::vec3(0.0f);
+    v.emissiveTexture = draw.emissiveTexture >= 0;
+    v.anisotropic = anisotropicObject(scene, draw.object);
+    v.environment = environmentObject(scene, draw.object);
+    v.singleShadowTap = movingFrames_;
+    return v;
+}
+
+// Draw d's textures, object block and triangles (once, or its group of instances), with the program bound.
+void Renderer::drawMesh(const Scene& scene, const Draw& draw, std::size_t d, ShadingMode mode,
+                        const ProgramCache::Variant& v) {
+    if (draw.textured) bindTexture(SL_TEXTURE_BASE_COLOR, meshes_.texture(draw.object, draw.texture));
+    if (v.emissiveTexture) bindTexture(SL_TEXTURE_EMISSIVE, meshes_.texture(draw.object, draw.emissiveTexture));
+    const MeshCache::GpuMesh& mesh = meshes_.gpuMesh(draw.object, mode, v.anisotropic);
+    uniforms_->bindObject(d);
+    // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
+    const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);
+    bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    glBindVertexArray(mesh.vao.get());
+    if (!v.instanced) {
+        glFrontFace(mirrored ? GL_CW : GL_CCW);
+        drawTriangles(draw.first, draw.count);
+        return;
+    }
+    const MeshCache::InstanceGroup& group = meshes_.instanceGroups(draw.object)[std::size_t(draw.instances)];
+    mirrored = mirrored != group.mirrored;
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
+    meshes_.bindInstances(draw.object, group);
+    glDrawElementsInstanced(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
+                            reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)), group.count);
+}
+
 // Pane p's draws with its shading mode's programs.
 void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, const RenderTarget& target,
                         const std::vector<Draw>& draws, bool accumulate) {
@@ -376,15 +427,8 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
     // draws it after the resolve, where no surface is).
     if (!accumulate) environment_.drawBackground(scene, pane, target, programs_.shaders(), false);
     glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
-    // Per object: does this pane's Phong program take interpolated inputs (see interpolatesInputs)?
     // Only the variants some draw uses are built (each is an LLVM compile on first use).
-    const std::size_t objects = std::min(meshes_.objects(), scene.objects.size());
-    std::vector<char> inputs(objects, 0);
-    // Anisotropic objects take the tangent from their own vertex arrays, which the speed variant does not read.
-    // So do mirror-and-glass objects (their programs have the variant's inputs only for the lecture's sum).
-    for (std::size_t o = 0; o < objects; ++o)
-        inputs[o] = interpolatesInputs(o, pane, scene) && !anisotropicObject(scene, o) &&
-                    environmentObject(scene, o) == SL_ENVIRONMENT_NONE;
+    const std::vector<char> inputs = paneInputs(scene, pane);
     std::map<unsigned, GLuint> programs;  // by variantKey()
     GLuint current = 0;
     bool blending = false;
@@ -392,16 +436,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
     for (std::size_t d = 0; d < draws.size(); ++d) {
         const Draw& draw = draws[d];
         if (draw.count == 0) continue;
-        const bool instanced = draw.instances >= 0;
-        ProgramCache::Variant v{accumulate, inputs[draw.object] != 0, draw.textured, instanced, draw.doubleSided};
-        // A progressive pass sums its samples: blended parts are drawn in it as if opaque.
-        v.alphaMode = draw.alphaMode == AlphaMode::Mask ? SL_ALPHA_MASK
-                      : draw.alphaMode == AlphaMode::Blend && !accumulate ? SL_ALPHA_BLEND : SL_ALPHA_OPAQUE;
-        v.emissive = draw.emissive != glm::vec3(0.0f);
-        v.emissiveTexture = draw.emissiveTexture >= 0;
-        v.anisotropic = anisotropicObject(scene, draw.object);
-        v.environment = environmentObject(scene, draw.object);
-        v.singleShadowTap = movingFrames_;
+        const ProgramCache::Variant v = drawVariant(scene, draw, accumulate, inputs[draw.object] != 0);
         GLuint& variant = programs[variantKey(v)];
         if (!variant) variant = programs_.get(pane.mode, scene, v);
         if (variant != current) glUseProgram(current = variant);
@@ -419,25 +454,7 @@ void Renderer::drawPane(const Scene& scene, const Pane& pane, std::size_t p, con
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
             glDepthMask(GL_FALSE);
         }
-        if (draw.textured) bindTexture(SL_TEXTURE_BASE_COLOR, meshes_.texture(draw.object, draw.texture));
-        if (v.emissiveTexture) bindTexture(SL_TEXTURE_EMISSIVE, meshes_.texture(draw.object, draw.emissiveTexture));
-        const MeshCache::GpuMesh& mesh = meshes_.gpuMesh(draw.object, pane.mode, v.anisotropic);
-        uniforms_->bindObject(d);
-        // A mirroring transform turns the mesh's counter-clockwise triangles clockwise on screen.
-        const glm::mat4 world = worldFromObject(scene.objects[draw.object].transform);
-        bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
-        glBindVertexArray(mesh.vao.get());
-        if (!instanced) {
-            glFrontFace(mirrored ? GL_CW : GL_CCW);
-            drawTriangles(draw.first, draw.count);
-            continue;
-        }
-        const MeshCache::InstanceGroup& group = meshes_.instanceGroups(draw.object)[std::size_t(draw.instances)];
-        mirrored = mirrored != group.mirrored;
-        glFrontFace(mirrored ? GL_CW : GL_CCW);
-        meshes_.bindInstances(draw.object, group);
-        glDrawElementsInstanced(GL_TRIANGLES, draw.count, GL_UNSIGNED_INT,
-                                reinterpret_cast<void*>(std::size_t(draw.first) * sizeof(std::uint32_t)), group.count);
+        drawMesh(scene, draw, d, pane.mode, v);
     }
     if (blending) {
         glDisable(GL_BLEND);

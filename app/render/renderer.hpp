@@ -110,6 +110,11 @@ private:
     void beginPanes(const Scene& scene, const RenderTarget& target, bool accumulate, bool add);
     void drawPane(const Scene& scene, const Pane& pane, std::size_t p, const RenderTarget& target,
                   const std::vector<Draw>& draws, bool accumulate);
+    // drawPane's steps: which objects take interpolated inputs in the pane, each draw's program variant,
+    // and one draw's textures, object block and triangles.
+    std::vector<char> paneInputs(const Scene& scene, const Pane& pane) const;
+    ProgramCache::Variant drawVariant(const Scene& scene, const Draw& draw, bool accumulate, bool interpolatedInputs) const;
+    void drawMesh(const Scene& scene, const Draw& draw, std::size_t d, ShadingMode mode, const ProgramCache::Variant& v);
 
     const RendererOptions options_;
     // PhongInputs::Auto may pick the interpolated-inputs variant: not on llvmpipe's 128-bit path

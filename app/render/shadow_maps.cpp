@@ -34,16 +34,26 @@ std::vector<float> signatureOf(const Scene& scene, const std::vector<ShadowMaps:
 
 void copy4(float (&dst)[4], const glm::vec4& v) { std::memcpy(dst, glm::value_ptr(v), sizeof dst); }
 
+// The GL state of the depth views: depth only, no culling, slope-scaled offset `bias`.
+void beginDepthPass(float bias) {
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);  // open meshes (a plane) cast from both sides
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    // Slope-scaled offset: surfaces at a grazing angle to the light get pushed further.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(bias, bias);
+    glClearDepth(1.0);
+}
 
 }  // namespace
 
-void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws, const std::vector<Aabb>& boxes,
-                        const ShaderLibrary& shaders) {
-    viewsRendered_ = 0;
-    const std::size_t count = std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS);
-    std::vector<float> signature = signatureOf(scene, draws);
-    if (signature == signature_ && projections_.size() == count) return;
-
+// The depth program and framebuffer (once), the layers each light takes, and texture arrays that hold them.
+void ShadowMaps::prepareTargets(const Scene& scene, std::size_t count, const ShaderLibrary& shaders) {
     if (!solid_.program) {
         solid_ = depthProgram(shaders, {});
         GLuint fbo = 0;
@@ -60,6 +70,16 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     maps_.allocate(scene.shadows.mapSize, layout_.layers);
     areaMaps_.allocate(scene.shadows.areaMapSize, layout_.areaLayers);
     projections_.resize(count);
+}
+
+void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws, const std::vector<Aabb>& boxes,
+                        const ShaderLibrary& shaders) {
+    viewsRendered_ = 0;
+    const std::size_t count = std::min<std::size_t>(scene.lights.size(), SL_MAX_LIGHTS);
+    std::vector<float> signature = signatureOf(scene, draws);
+    if (signature == signature_ && projections_.size() == count) return;
+
+    prepareTargets(scene, count, shaders);
     signature_ = std::move(signature);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glDrawBuffer(GL_NONE);
@@ -67,19 +87,8 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     bool cutOuts = false;
     for (const DepthDraw& d : draws) cutOuts = cutOuts || d.maskTexture != 0;
     if (cutOuts && !cutOut_.program) cutOut_ = depthProgram(shaders, {"SL_ALPHA_MODE SL_ALPHA_MASK"});
+    beginDepthPass(scene.shadows.depthBias);
     GLuint current = 0;
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);  // open meshes (a plane) cast from both sides
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    // Slope-scaled offset: surfaces at a grazing angle to the light get pushed further.
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(scene.shadows.depthBias, scene.shadows.depthBias);
-    glClearDepth(1.0);
 
     for (std::size_t l = 0; l < count; ++l) {
         projections_[l] = shadowProjection(scene.lights[l], boxes, scene.shadows);

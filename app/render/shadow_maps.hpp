@@ -49,6 +49,7 @@ public:
     int viewsRendered() const { return viewsRendered_; }
 
 private:
+    void prepareTargets(const Scene& scene, std::size_t count, const ShaderLibrary& shaders);  // render()'s first step
     struct LayerArray {
         gl::Texture texture;
         int size = 0, layers = 0;

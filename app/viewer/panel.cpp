@@ -7,6 +7,7 @@
 #include "core/scene/panel_sections.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/view_names.hpp"
+#include "viewer/light_label_placement.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
 #include "viewer/shader_view.hpp"
@@ -21,6 +22,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <iterator>
 #include <optional>
 #include <string>
@@ -57,6 +59,19 @@ bool radio(const char* label, E& value, E choice) {
     if (!ImGui::RadioButton(label, value == choice)) return false;
     value = choice;
     return true;
+}
+
+// A row: `label`, then its choices' radio buttons side by side, from 6 font sizes in (rows line up).
+template <typename E>
+void radioRow(const char* label, E& value, std::initializer_list<std::pair<const char*, E>> choices) {
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(label);
+    float indent = ImGui::GetFontSize() * 6.0f;
+    for (const auto& [name, choice] : choices) {
+        ImGui::SameLine(indent);
+        indent = 0.0f;  // the next button right after this one
+        radio(name, value, choice);
+    }
 }
 
 template <typename E, std::size_t N>
@@ -109,14 +124,8 @@ void iorSlider(Scene& scene) {
 }
 
 void sectionShading(Scene& scene) {
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("Shading");
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    radio("flat (1)", scene.shading, ShadingMode::Flat);
-    ImGui::SameLine();
-    radio("gouraud (2)", scene.shading, ShadingMode::Gouraud);
-    ImGui::SameLine();
-    radio("phong (3)", scene.shading, ShadingMode::Phong);
+    radioRow("Shading", scene.shading,
+             {{"flat (1)", ShadingMode::Flat}, {"gouraud (2)", ShadingMode::Gouraud}, {"phong (3)", ShadingMode::Phong}});
     bool compare = scene.layout == Layout::Compare;
     if (ImGui::Checkbox("compare: flat | gouraud | phong  (C)", &compare))
         scene.layout = compare ? Layout::Compare : Layout::Single;
@@ -133,12 +142,7 @@ void sectionShading(Scene& scene) {
                            ImGuiSliderFlags_Logarithmic);
         scene.diff.factor = std::clamp(scene.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
     }
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("Reflection");
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    radio("Phong", scene.reflection, ReflectionModel::Phong);
-    ImGui::SameLine();
-    radio("Blinn-Phong", scene.reflection, ReflectionModel::BlinnPhong);
+    radioRow("Reflection", scene.reflection, {{"Phong", ReflectionModel::Phong}, {"Blinn-Phong", ReflectionModel::BlinnPhong}});
     static const char* const kEncodings[] = {"linear", "sRGB"};
     combo("output encoding", scene.outputEncoding, kEncodings);
     // Beyond the heuristic model (core/shading/lighting.hpp): each switch recompiles the programs once.
@@ -327,6 +331,47 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
     }
 }
 
+void areaLightFields(Light& l) {
+    dragNonZero("normal", l.normal, 0.02f, false);
+    ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    l.size = glm::max(l.size, glm::vec2(float(kSizeRange.lo)));
+    // Sample counts are a specialisation constant: changing them recompiles (once per count).
+    ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kAreaSamplesPerSideRange.hi);
+    l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kAreaSamplesPerSideRange.hi));
+    ImGui::Checkbox("two-sided", &l.twoSided);
+}
+
+void spotLightFields(Light& l) {
+    dragNonZero("direction", l.direction, 0.02f, false);
+    // Half-angles from the axis: full light inside the inner cone, none outside the outer.
+    ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kSpotConeDegRange.hi, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("inner cone (deg)", &l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f, "%.1f",
+                       ImGuiSliderFlags_AlwaysClamp);
+    l.innerConeDeg = std::clamp(l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f);
+}
+
+// One light's fields in its open tree node: type, where it is, what its type adds, colour, intensity, falloff.
+void lightFields(Light& l, std::string& readout) {
+    combo("type", l.type, kLightTypeNames);
+    if (l.type == LightType::Directional)
+        dragNonZero("direction", l.direction, 0.02f, false);
+    else
+        dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
+    if (l.type == LightType::Area) areaLightFields(l);
+    if (l.type == LightType::Spot) spotLightFields(l);
+    colorEdit("colour", l.color);
+    ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    readoutWhileActive(readout, "intensity", l.intensity);
+    if (l.type != LightType::Directional) {
+        combo("attenuation", l.attenuation, kAttenuationNames);
+        if (l.attenuation == Attenuation::InverseSquare) {
+            // 0 = no window; otherwise the light fades smoothly to zero at this distance.
+            ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+            if (l.range > 0.0f && l.range < float(kLightRangeRange.lo)) l.range = float(kLightRangeRange.lo);
+        }
+    }
+}
+
 void sectionLights(Scene& scene, int& selected, std::string& readout) {
     colorEdit("ambient A", scene.ambient);
     ImGui::TextDisabled("click a light's name to select it (again: none)");
@@ -343,40 +388,7 @@ void sectionLights(Scene& scene, int& selected, std::string& readout) {
                                             isSelected && l.type == LightType::Area ? ": samples shown" : "");
         if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selected = isSelected ? -1 : int(i);
         if (open) {
-            combo("type", l.type, kLightTypeNames);
-            if (l.type == LightType::Directional)
-                dragNonZero("direction", l.direction, 0.02f, false);
-            else
-                dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
-            if (l.type == LightType::Area) {
-                dragNonZero("normal", l.normal, 0.02f, false);
-                ImGui::DragFloat2("size (w, h)", &l.size.x, 0.01f, 1e-3f, 1e6f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-                l.size = glm::max(l.size, glm::vec2(float(kSizeRange.lo)));
-                // Sample counts are a specialisation constant: changing them recompiles (once per count).
-                ImGui::SliderInt2("samples (nx, ny)", &l.samples.x, 1, kAreaSamplesPerSideRange.hi);
-                l.samples = glm::clamp(l.samples, glm::ivec2(1), glm::ivec2(kAreaSamplesPerSideRange.hi));
-                ImGui::Checkbox("two-sided", &l.twoSided);
-            }
-            if (l.type == LightType::Spot) {
-                dragNonZero("direction", l.direction, 0.02f, false);
-                // Half-angles from the axis: full light inside the inner cone, none outside the outer.
-                ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kSpotConeDegRange.hi, "%.1f", ImGuiSliderFlags_AlwaysClamp);
-                ImGui::SliderFloat("inner cone (deg)", &l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f, "%.1f",
-                                   ImGuiSliderFlags_AlwaysClamp);
-                l.innerConeDeg = std::clamp(l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f);
-            }
-            colorEdit("colour", l.color);
-            ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-            readoutWhileActive(readout, "intensity", l.intensity);
-            if (l.type != LightType::Directional) {
-                combo("attenuation", l.attenuation, kAttenuationNames);
-                if (l.attenuation == Attenuation::InverseSquare) {
-                    // 0 = no window; otherwise the light fades smoothly to zero at this distance.
-                    ImGui::DragFloat("range (0: none)", &l.range, 0.05f, 0.0f, 1e6f, "%.2f",
-                                     ImGuiSliderFlags_AlwaysClamp);
-                    if (l.range > 0.0f && l.range < float(kLightRangeRange.lo)) l.range = float(kLightRangeRange.lo);
-                }
-            }
+            lightFields(l, readout);
             if (ImGui::Button("remove light")) remove = int(i);
             ImGui::TreePop();
         }
@@ -561,12 +573,8 @@ void sectionKeys() {
     ImGui::EndTable();
 }
 
-}  // namespace
-
-PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
-                        const ProbeResult* probe) {
-    PanelRequests requests;
-    const std::size_t lightsBefore = scene.lights.size();
+// The panel's window at `area`; false (and ended) when ImGui skips it.
+bool beginPanelWindow(const UiRect& area) {
     ImGui::SetNextWindowPos(ImVec2(area.x, area.y));
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height));
     // NoNavInputs: Tab belongs to the viewer (hide the panel), not to ImGui's widget tabbing.
@@ -575,10 +583,65 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
                                    // At a UI scale the window has no room for (the panel is at most half
                                    // of it), a row wider than the panel scrolls instead of being cut.
                                    ImGuiWindowFlags_HorizontalScrollbar;
-    if (!ImGui::Begin("shadelab  (Tab hides this panel)", nullptr, flags)) {
-        ImGui::End();
-        return requests;
+    if (ImGui::Begin("shadelab  (Tab hides this panel)", nullptr, flags)) return true;
+    ImGui::End();
+    return false;
+}
+
+// A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
+bool section(ViewSettings& settings, const char* title, PanelSection id, bool defaultOpen) {
+    const char* name = nameOf(kPanelSections, id);
+    if (settings.startSections) {
+        const auto& open = *settings.startSections;
+        ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
     }
+    const bool open = ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
+    if (open) settings.openSections.push_back(name);
+    return open;
+}
+
+// The scene's sections, Shading to Keys, in the panel's order.
+void sceneSections(Scene& scene, ViewSettings& settings, const PanelStatus& status, PanelRequests& requests,
+                   const ProbeResult* probe) {
+    if (section(settings, "Shading", PanelSection::Shading, true)) sectionShading(scene);
+    settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
+    SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
+    if (object && section(settings, "Material", PanelSection::Material, true)) {
+        if (scene.objects.size() > 1)
+            ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
+        sectionMaterial(object->material, scene.reflection, settings.readout);
+    }
+    if (section(settings, "Plots: specular lobe, Fresnel", PanelSection::Plots, false))
+        sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight,
+                     settings.scrollToPlot);
+    // S opens or closes it, and brings it into view.
+    if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
+    if (section(settings, "Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader, false)) {
+        if (settings.openShader) ImGui::SetScrollHereY(0.0f);
+        sectionShader(scene, settings, status, probe);
+    }
+    settings.openShader.reset();
+    if (object && section(settings, "Mesh", PanelSection::Mesh, true))
+        sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
+    if (section(settings, "Lights", PanelSection::Lights, true)) sectionLights(scene, settings.selectedLight, settings.readout);
+    if (section(settings, "Shadows", PanelSection::Shadows, true)) sectionShadows(scene.shadows);
+    if (section(settings, "Overlays", PanelSection::Overlays, true)) {
+        sectionOverlays(settings);
+        sectionDisplay(status, requests);
+    }
+    if (section(settings, "Camera", PanelSection::Camera, false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
+    if (section(settings, "Background", PanelSection::Background, false)) colorEdit("background", scene.background);
+    if (section(settings, "File", PanelSection::File, true)) sectionFile(settings, status, requests);
+    if (section(settings, "Keys", PanelSection::Keys, false)) sectionKeys();
+}
+
+}  // namespace
+
+PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, const UiRect& area,
+                        const ProbeResult* probe) {
+    PanelRequests requests;
+    const std::size_t lightsBefore = scene.lights.size();
+    if (!beginPanelWindow(area)) return requests;
     // Widgets leave room for the longest label on their right, so no label is clipped at any scale.
     ImGui::PushItemWidth(-(longestLabelWidth() + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f + ImGui::GetFontSize()));
     if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
@@ -587,49 +650,9 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (probe && settings.scrollToProbe) ImGui::SetScrollHereY(0.0f), settings.scrollToProbe = false;
     if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
         requests.clearProbe |= probeSection(scene, *probe);
-    // A collapsing header; on the first frame of a --panel-sections run, open exactly as listed.
-    auto section = [&](const char* title, PanelSection id, bool defaultOpen) {
-        const char* name = nameOf(kPanelSections, id);
-        if (settings.startSections) {
-            const auto& open = *settings.startSections;
-            ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
-        }
-        const bool open = ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
-        if (open) settings.openSections.push_back(name);
-        return open;
-    };
     settings.openSections.clear();
     settings.readout.clear();
-    if (section("Shading", PanelSection::Shading, true)) sectionShading(scene);
-    settings.selectedObject = std::clamp(settings.selectedObject, 0, std::max(int(scene.objects.size()) - 1, 0));
-    SceneObject* object = scene.objects.empty() ? nullptr : &scene.objects[std::size_t(settings.selectedObject)];
-    if (object && section("Material", PanelSection::Material, true)) {
-        if (scene.objects.size() > 1)
-            ImGui::SliderInt("object", &settings.selectedObject, 0, int(scene.objects.size()) - 1);
-        sectionMaterial(object->material, scene.reflection, settings.readout);
-    }
-    if (section("Plots: specular lobe, Fresnel", PanelSection::Plots, false))
-        sectionPlots(scene, object ? object->material : Material{}, settings.plots, probe, settings.selectedLight,
-                     settings.scrollToPlot);
-    // S opens or closes it, and brings it into view.
-    if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
-    if (section("Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader, false)) {
-        if (settings.openShader) ImGui::SetScrollHereY(0.0f);
-        sectionShader(scene, settings, status, probe);
-    }
-    settings.openShader.reset();
-    if (object && section("Mesh", PanelSection::Mesh, true))
-        sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
-    if (section("Lights", PanelSection::Lights, true)) sectionLights(scene, settings.selectedLight, settings.readout);
-    if (section("Shadows", PanelSection::Shadows, true)) sectionShadows(scene.shadows);
-    if (section("Overlays", PanelSection::Overlays, true)) {
-        sectionOverlays(settings);
-        sectionDisplay(status, requests);
-    }
-    if (section("Camera", PanelSection::Camera, false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
-    if (section("Background", PanelSection::Background, false)) colorEdit("background", scene.background);
-    if (section("File", PanelSection::File, true)) sectionFile(settings, status, requests);
-    if (section("Keys", PanelSection::Keys, false)) sectionKeys();
+    sceneSections(scene, settings, status, requests, probe);
     settings.startSections.reset();
     // ImGui marks every edit a widget makes (MarkItemEdited, this frame's flag); the light buttons
     // change the list.
@@ -878,73 +901,29 @@ int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float ra
 
 namespace {
 
-// How the light labels are drawn, and the part of a pane they keep inside (below the pane labels).
+// How the light labels are drawn.
 struct LightLabelStyle {
     ImDrawList* draw;
     float font, thick, ring;  // text size, line width, marker radius
 };
-// A model's outline in the pane, for the labels to keep off: the disc its bounding sphere covers.
-struct ModelDisc {
-    ImVec2 centre;
-    float radius;
-};
-struct LightLabelArea {
-    ImVec2 lo, hi;
-    ImVec2 centre;
-    std::vector<ModelDisc> models;
-};
 
-bool boxOnModel(const LightLabelArea& a, ImVec2 lo, ImVec2 hi) {
-    for (const ModelDisc& m : a.models) {
-        const float dx = std::clamp(m.centre.x, lo.x, hi.x) - m.centre.x, dy = std::clamp(m.centre.y, lo.y, hi.y) - m.centre.y;
-        if (dx * dx + dy * dy < m.radius * m.radius) return true;
-    }
-    return false;
-}
+glm::vec2 vec(ImVec2 v) { return glm::vec2(v.x, v.y); }
+ImVec2 imVec(glm::vec2 v) { return ImVec2(v.x, v.y); }
 
-// A marker's label where it covers no model (issue 31: "0 point" over all three spheres): beside the
-// marker at `at` (right, left, above, below, `gap` away), else moved out along the line from the
-// model's centre through the marker until it clears every model, tied to the marker by a thin line.
-// Where nothing is clear (a model filling the pane) it stays beside the marker.
+// A marker's label where it covers no model and touches no other label (placeLightLabel), tied to the
+// marker by a thin line where it had to move away from it.
 UiRect placeLabel(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, float gap, const std::string& label,
                   ImU32 colour) {
-    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str());
+    const glm::vec2 size = vec(ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str()));
     const float pad = s.font * 0.3f;
-    // The text's top-left corner kept inside the area, as labelBox does.
-    const auto inside = [&](ImVec2 p) {
-        return ImVec2(std::max(std::min(p.x, a.hi.x - size.x - pad), a.lo.x + pad),
-                      std::max(std::min(p.y, a.hi.y - size.y - pad), a.lo.y + pad));
-    };
-    const auto clear = [&](ImVec2 p) {
-        return !boxOnModel(a, ImVec2(p.x - pad, p.y - pad), ImVec2(p.x + size.x + pad, p.y + size.y + pad));
-    };
-    const ImVec2 beside[] = {ImVec2(at.x + gap, at.y - size.y * 0.5f), ImVec2(at.x - gap - size.x, at.y - size.y * 0.5f),
-                             ImVec2(at.x - size.x * 0.5f, at.y - gap - size.y), ImVec2(at.x - size.x * 0.5f, at.y + gap)};
-    for (const ImVec2& p : beside)
-        if (clear(inside(p))) return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
-    // Out from the nearest model's centre (up when the marker is at it), a third of the font a step.
-    const ModelDisc* nearest = nullptr;
-    float best = 1e30f;
-    for (const ModelDisc& m : a.models) {
-        const float d = std::hypot(at.x - m.centre.x, at.y - m.centre.y) - m.radius;
-        if (d < best) best = d, nearest = &m;
+    const LabelPlacement place = placeLightLabel(a, vec(at), gap, size, pad, s.font * 0.33f);
+    if (place.tied) {
+        const LabelRect box = place.box(size, pad);
+        const ImVec2 near(std::clamp(at.x, box.lo.x, box.hi.x), std::clamp(at.y, box.lo.y, box.hi.y));
+        const float dx = near.x - at.x, dy = near.y - at.y, d = std::hypot(dx, dy);
+        if (d > s.ring) s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour, 1.0f + s.thick * 0.4f);
     }
-    if (nearest) {
-        ImVec2 u(at.x - nearest->centre.x, at.y - nearest->centre.y);
-        const float len = std::hypot(u.x, u.y);
-        u = len > 1e-3f ? ImVec2(u.x / len, u.y / len) : ImVec2(0.0f, -1.0f);
-        const float reach = std::hypot(a.hi.x - a.lo.x, a.hi.y - a.lo.y);
-        for (float t = gap; t < reach; t += s.font * 0.33f) {
-            const ImVec2 c(at.x + u.x * t, at.y + u.y * t);  // the box's centre, then its nearest point to the marker
-            const ImVec2 p = inside(ImVec2(c.x - size.x * 0.5f + u.x * size.x * 0.5f, c.y - size.y * 0.5f + u.y * size.y * 0.5f));
-            if (!clear(p)) continue;
-            const ImVec2 near(std::clamp(at.x, p.x - pad, p.x + size.x + pad), std::clamp(at.y, p.y - pad, p.y + size.y + pad));
-            const float dx = near.x - at.x, dy = near.y - at.y, d = std::hypot(dx, dy);
-            if (d > s.ring) s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour, 1.0f + s.thick * 0.4f);
-            return labelBox(s.draw, s.font, p, label, colour, a.lo, a.hi);
-        }
-    }
-    return labelBox(s.draw, s.font, beside[0], label, colour, a.lo, a.hi);
+    return labelBox(s.draw, s.font, imVec(place.text), label, colour, imVec(a.lo), imVec(a.hi));
 }
 
 // A directional light: an arrow from `from` along the light's travel to `to`; its tail is the handle
@@ -974,14 +953,15 @@ UiRect drawLightMarker(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
 // toward the nearer corner.
 UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, bool behind,
                        const std::string& label, ImU32 colour) {
-    ImVec2 d(at.x - a.centre.x, at.y - a.centre.y);
+    const ImVec2 centre((a.lo.x + a.hi.x) * 0.5f, (a.lo.y + a.hi.y) * 0.5f);
+    ImVec2 d(at.x - centre.x, at.y - centre.y);
     if (behind) d = ImVec2(-d.x, -d.y);
     const float len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-3f);
     const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
     const float halfW = (a.hi.x - a.lo.x) * 0.5f - s.font * 0.5f, halfH = (a.hi.y - a.lo.y) * 0.5f - s.font * 0.5f;
     const float t = std::min(std::fabs(u.x) > 1e-4f ? halfW / std::fabs(u.x) : 1e9f,
                              std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
-    const ImVec2 tip(a.centre.x + u.x * t, a.centre.y + u.y * t);
+    const ImVec2 tip(centre.x + u.x * t, centre.y + u.y * t);
     const float head = s.font * 0.9f;
     s.draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
                               ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
@@ -998,9 +978,39 @@ UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
     const float pad = s.font * 0.3f;
     pos.x = std::max(std::min(pos.x, a.hi.x - size.x - pad), a.lo.x + pad);
     pos.y = std::max(std::min(pos.y, a.hi.y - size.y - pad), a.lo.y + pad);
-    if (!boxOnModel(a, ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad)))
-        return labelBox(s.draw, s.font, pos, label, colour, a.lo, a.hi);
-    return placeLabel(s, a, tip, head * 1.2f, label, colour);  // a model reaches the border there
+    // The label keeps clear of the arrow's head too (pushed along the border, it ran into it).
+    LightLabelArea withHead = a;
+    const ImVec2 c1(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f);
+    const ImVec2 c2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f);
+    const LabelRect headBox{glm::min(vec(tip), glm::min(vec(c1), vec(c2))), glm::max(vec(tip), glm::max(vec(c1), vec(c2)))};
+    withHead.taken.push_back(headBox);
+    const float separation = kLabelSeparation * s.font;
+    if (rectClear(withHead, LabelRect{vec(pos) - pad, vec(pos) + vec(size) + pad}, separation))
+        return labelBox(s.draw, s.font, pos, label, colour, imVec(a.lo), imVec(a.hi));
+    // A model, a label or the head itself is there: beside the head, clear of its box.
+    const glm::vec2 half = (headBox.hi - headBox.lo) * 0.5f;
+    return placeLabel(s, withHead, imVec(headBox.lo + half), std::max(half.x, half.y) + pad + 2.0f * separation, label, colour);
+}
+
+// Each model's disc in the view's units (the view's top-left at `origin`): its bounding sphere's centre
+// and the farthest of four points on its rim across the view (a sphere off the axis projects a little
+// wider than its centre's distance says).
+std::vector<LabelDisc> modelDiscs(const Scene& scene, const Pane& pane, const std::vector<BoundingSphere>& models,
+                                  glm::vec2 origin, float framebufferScale) {
+    std::vector<LabelDisc> discs;
+    const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, scene.camera.up)), up = glm::cross(right, forward);
+    for (const BoundingSphere& m : models) {
+        const glm::vec3 c = projectToImage(scene.camera, pane, m.center);
+        if (!(c.z > 0.0f) || m.radius <= 0.0f) continue;
+        float radius = 0.0f;
+        for (const glm::vec3& rim : {right, -right, up, -up}) {
+            const glm::vec3 p = projectToImage(scene.camera, pane, m.center + rim * m.radius);
+            if (p.z > 0.0f) radius = std::max(radius, glm::length(glm::vec2(p) - glm::vec2(c)));
+        }
+        discs.push_back({origin + glm::vec2(c) / framebufferScale, radius * 1.05f / framebufferScale});
+    }
+    return discs;
 }
 
 }  // namespace
@@ -1018,23 +1028,15 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
         // Labels and border arrows stay below the pane labels (`top`).
         const float y0 = std::min(std::max(paneTop, top), y1);
         style.draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
-        LightLabelArea area{ImVec2(x0, y0), ImVec2(x1, y1), ImVec2((x0 + x1) * 0.5f, (y0 + y1) * 0.5f), {}};
+        // Labels keep clear of each other (placeLightLabel): each box placed is taken for the next.
+        LightLabelArea area{glm::vec2(x0, y0), glm::vec2(x1, y1), {}, {}};
+        const auto placed = [&](const UiRect& r) {
+            boxes.push_back(r);
+            area.taken.push_back({glm::vec2(r.x, r.y), glm::vec2(r.x + r.width, r.y + r.height)});
+        };
         // projectToImage gives image pixels of the whole view (the pane's offset included).
         auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
-        // Each model's disc: its bounding sphere's centre and the farthest of four points on its rim
-        // across the view (a sphere off the axis projects a little wider than its centre's distance says).
-        const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
-        const glm::vec3 right = glm::normalize(glm::cross(forward, scene.camera.up)), up = glm::cross(right, forward);
-        for (const BoundingSphere& m : models) {
-            const glm::vec3 c = projectToImage(scene.camera, pane, m.center);
-            if (!(c.z > 0.0f) || m.radius <= 0.0f) continue;
-            float radius = 0.0f;
-            for (const glm::vec3& rim : {right, -right, up, -up}) {
-                const glm::vec3 p = projectToImage(scene.camera, pane, m.center + rim * m.radius);
-                if (p.z > 0.0f) radius = std::max(radius, glm::length(glm::vec2(p) - glm::vec2(c)));
-            }
-            area.models.push_back({toUi(c), radius * 1.05f / framebufferScale});
-        }
+        area.models = modelDiscs(scene, pane, models, glm::vec2(view.x, view.y), framebufferScale);
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& l = scene.lights[i];
             const ImU32 colour = int(i) == selected ? IM_COL32(255, 210, 60, 255) : IM_COL32(255, 245, 190, 255);
@@ -1045,14 +1047,14 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
                 const float reach = directionalHandleDistance(scene.camera);
                 const glm::vec3 a = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
                 const glm::vec3 b = projectToImage(scene.camera, pane, scene.camera.target - dir * (reach * 0.4f));
-                if (a.z > 0.0f && b.z > 0.0f) boxes.push_back(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));
+                if (a.z > 0.0f && b.z > 0.0f) placed(drawDirectionArrow(style, area, toUi(a), toUi(b), label, colour));
                 continue;
             }
             const glm::vec3 p = projectToImage(scene.camera, pane, l.position);
             const ImVec2 at = toUi(p);
             const bool inside = p.z > 0.0f && at.x >= x0 && at.x <= x1 && at.y >= y0 && at.y <= y1;
-            boxes.push_back(inside ? drawLightMarker(style, area, at, label, colour)
-                                   : drawBorderArrow(style, area, at, p.z <= 0.0f, label, colour));
+            placed(inside ? drawLightMarker(style, area, at, label, colour)
+                          : drawBorderArrow(style, area, at, p.z <= 0.0f, label, colour));
         }
         style.draw->PopClipRect();
     }

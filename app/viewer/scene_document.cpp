@@ -65,26 +65,26 @@ void SceneDocument::load(const std::string& path) {
     replace(hasModelExtension(path) ? sceneForModel(path) : loadSceneFile(path));
 }
 
-void SceneDocument::replace(Scene next) {
-    const int fileWidth = next.width, fileHeight = next.height;
+// The document becomes `next` at the window's size, with its geometry. The geometry is built before
+// anything of the document changes: when that throws, the document is as it was.
+void SceneDocument::adopt(Scene next) {
     next.width = scene_.width;
     next.height = scene_.height;
     auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(next));
-    // Nothing above touched the document: commit.
     scene_ = std::move(next);
     geometry_ = std::move(geometry);
     ++revision_, ++geometryRevision_;
+}
+
+void SceneDocument::replace(Scene next) {
+    const int fileWidth = next.width, fileHeight = next.height;
+    adopt(std::move(next));
     home_ = scene_.camera;
     startFraming(fileWidth, fileHeight);
 }
 
 void SceneDocument::restore(Scene scene, const Camera& home, bool following, int fileWidth, int fileHeight) {
-    scene.width = scene_.width;
-    scene.height = scene_.height;
-    auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(scene));
-    scene_ = std::move(scene);
-    geometry_ = std::move(geometry);
-    ++revision_, ++geometryRevision_;
+    adopt(std::move(scene));
     home_ = home;
     // A camera that followed the view follows it again (the view may have changed size since).
     bool model = false;

@@ -95,6 +95,7 @@ private:
     BoundingSphere bounds() const;
     float paneAspect(int width, int height) const;
     // After a new scene: what the home camera is, and how the view follows it.
+    void adopt(Scene next);  // replace's and restore's common step
     void startFraming(int fileWidth, int fileHeight);
     Camera clearOfLabels(const Camera& camera, float& aspect) const;
     void frameInsidePane(Camera& camera, const BoundingSphere& bounds, float aspect) const;
