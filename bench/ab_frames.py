@@ -2,7 +2,9 @@
 """Two builds' frame times, alternating: `--benchmark 20` (the median ms of 20 frames) of OLD then NEW on
 each scene, ROUNDS times, so both see the same load; prints the medians and the per-round ratios NEW/OLD.
 
-    /usr/bin/python3 bench/ab_frames.py OLD/shadelab NEW/shadelab [ROUNDS]
+    /usr/bin/python3 bench/ab_frames.py OLD/shadelab NEW/shadelab [ROUNDS] [--lights]
+
+--lights adds presets 17 (shadow maps per light) and 20 (a 4x4-sampled area light).
 """
 import json
 import os
@@ -15,6 +17,9 @@ LECTURE = os.path.join(HERE, "..", "assets", "scenes", "lecture")
 SCENES = [("200k-triangle sphere", ["--mesh", "uvsphere:224:224"]),
           ("01 compare", [os.path.join(LECTURE, "01-flat-gouraud-phong.json")]),
           ("16 occlusion", [os.path.join(LECTURE, "16-occlusion.json")])]
+# With --lights: also the presets whose frames are mostly shadow maps and area-light samples.
+LIGHTS = [("17 shadows per light", [os.path.join(LECTURE, "17-occlusion-per-light.json")]),
+          ("20 area light 4x4", [os.path.join(LECTURE, "20-area-light-4x4.json")])]
 
 
 def run(binary, args):
@@ -26,11 +31,13 @@ def run(binary, args):
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
-    old, new = sys.argv[1], sys.argv[2]
-    rounds = int(sys.argv[3]) if len(sys.argv) > 3 else 5
+    lights = "--lights" in sys.argv
+    argv = [a for a in sys.argv if a != "--lights"]
+    old, new = argv[1], argv[2]
+    rounds = int(argv[3]) if len(argv) > 3 else 5
     res = {}
     for _ in range(rounds):
-        for name, args in SCENES:
+        for name, args in SCENES + (LIGHTS if lights else []):
             a, b = run(old, args), run(new, args)
             for mode in a:
                 res.setdefault((name, mode), []).append((a[mode], b[mode]))
