@@ -963,8 +963,9 @@ UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
                              std::fabs(u.y) > 1e-4f ? halfH / std::fabs(u.y) : 1e9f);
     const ImVec2 tip(centre.x + u.x * t, centre.y + u.y * t);
     const float head = s.font * 0.9f;
-    s.draw->AddTriangleFilled(tip, ImVec2(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f),
-                              ImVec2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f), colour);
+    const ImVec2 c1(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f);
+    const ImVec2 c2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f);
+    s.draw->AddTriangleFilled(tip, c1, c2, colour);
     const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(s.font, 1e9f, 0.0f, label.c_str());
     const bool sideEdge = std::fabs(u.x) * halfH >= std::fabs(u.y) * halfW;  // left or right border
     ImVec2 pos;
@@ -980,8 +981,6 @@ UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
     pos.y = std::max(std::min(pos.y, a.hi.y - size.y - pad), a.lo.y + pad);
     // The label keeps clear of the arrow's head too (pushed along the border, it ran into it).
     LightLabelArea withHead = a;
-    const ImVec2 c1(tip.x - u.x * head + n.x * head * 0.6f, tip.y - u.y * head + n.y * head * 0.6f);
-    const ImVec2 c2(tip.x - u.x * head - n.x * head * 0.6f, tip.y - u.y * head - n.y * head * 0.6f);
     const LabelRect headBox{glm::min(vec(tip), glm::min(vec(c1), vec(c2))), glm::max(vec(tip), glm::max(vec(c1), vec(c2)))};
     withHead.taken.push_back(headBox);
     const float separation = kLabelSeparation * s.font;
