@@ -1,17 +1,18 @@
 // shadelab's entry point: parse the command line, run the mode it asks for, report errors as one line.
 // Exit status: 0 ok, 2 bad input, 1 anything else (and, with --reference, an image that differs from it:
-// cli/reference.hpp; its line on stdout tells the two apart). What needs no GL runs here; rendering and the viewer
-// are in run_headless.cpp and run_viewer.cpp, built where their parts are (program.hpp).
-#include "cli/options.hpp"
-#include "cli/program.hpp"
-#include "cli/reference.hpp"
+// run/reference.hpp; its line on stdout tells the two apart). What needs no GL runs here; rendering and the
+// viewer are in run/run_headless.cpp and run_viewer.cpp, built where their parts are (run/session.hpp).
+#include "cli/run_viewer.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/message.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/memory_budget.hpp"
+#include "options/options.hpp"
 #include "platform/platform.hpp"
+#include "run/reference.hpp"
+#include "run/session.hpp"
 
 #include <cstdio>
 #include <iostream>

@@ -1,10 +1,12 @@
-// The run modes with a window (program.hpp): the viewer on one scene or stepping through a playlist.
+// The run modes with a window (run_viewer.hpp): the viewer on one scene or stepping through a playlist.
 // Built where the viewer is (SHADELAB_VIEWER).
-#include "cli/program.hpp"
+#include "cli/run_viewer.hpp"
+
 #include "core/geometry/scene_geometry.hpp"
 #include "core/probe/probe.hpp"
 #include "core/scene/playlist.hpp"
 #include "render/shader_library.hpp"
+#include "run/session.hpp"
 #include "viewer/viewer.hpp"
 
 #include <memory>

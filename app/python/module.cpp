@@ -1,12 +1,12 @@
 // The Python module's C++ half, `shadelab._shadelab` (README, "Python"; the Python half is
 // shadelab/__init__.py, which turns keyword arguments into the command line's words). Every call parses
-// those words with the program's own parser (cli/options.hpp), so names, ranges and messages are the
+// those words with the program's own parser (options/options.hpp), so names, ranges and messages are the
 // CLI's; frames are drawn as `shadelab --output` draws them, on one headless context kept by a
 // Renderer on a thread of its own (a GL context is current on one thread), with the GIL released.
 // Bad input raises shadelab.InputError (a ValueError) with the CLI's one-line message.
-#include "cli/options.hpp"
-#include "cli/program.hpp"
-#include "cli/reference.hpp"
+#include "options/options.hpp"
+#include "run/session.hpp"
+#include "run/reference.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/message.hpp"
@@ -14,6 +14,8 @@
 #include "core/image/image.hpp"
 #include "core/probe/probe.hpp"
 #include "core/scene/memory_budget.hpp"
+#include "core/scene/panel_sections.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/scene/scene_json.hpp"
 #include "headless/headless.hpp"
 #include "render/shader_library.hpp"
@@ -22,6 +24,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
@@ -237,7 +240,7 @@ py::array_t<std::uint8_t> plot(const Call& call) {
     return toArray(image);
 }
 
-// --reference's comparison (cli/reference.hpp) of two arrays, with --max-diff/--mean-diff/--max-diff-pixels' words
+// --reference's comparison (run/reference.hpp) of two arrays, with --max-diff/--mean-diff/--max-diff-pixels' words
 // checked by the parser.
 py::dict compare(const py::array& actualArray, const py::array& referenceArray, const std::vector<std::string>& args,
                  float diffFactor) {
@@ -304,6 +307,25 @@ PYBIND11_MODULE(_shadelab, m) {
         .def(py::init<std::string>(), py::arg("shader_dir") = "")
         .def("render", &PyRenderer::render)
         .def("close", &PyRenderer::close);
+    // The lecture's parameters (core/scene/parameters.hpp), for shadelab.parameters() and the help.
+    m.def("parameters", [] {
+        py::list rows;
+        for (const Parameter* p = parametersBegin(); p != parametersEnd(); ++p) {
+            py::dict row;
+            row["name"] = p->name;
+            row["option"] = p->option;
+            row["symbol"] = p->symbol;
+            row["label"] = p->label;
+            row["section"] = nameOf(kPanelSections, p->section);
+            row["range"] = py::make_tuple(p->range.lo, p->range.hi);
+            row["slider"] = py::make_tuple(p->slider.lo, p->slider.hi);
+            row["scale"] = p->scale == SliderScale::Log ? "log" : "linear";
+            row["default"] = std::isnan(p->defaultValue) ? py::object(py::none()) : py::object(py::float_(p->defaultValue));
+            row["help"] = parameterHelp(*p);
+            rows.append(row);
+        }
+        return rows;
+    });
     m.def("probe", &probe);
     m.def("plot", &plot);
     m.def("compare", &compare, py::arg("image"), py::arg("reference"), py::arg("args"), py::arg("diff_factor"));

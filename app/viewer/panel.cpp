@@ -5,6 +5,7 @@
 #include "core/geometry/camera.hpp"
 #include "core/ui/controls.hpp"
 #include "core/scene/panel_sections.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/view_names.hpp"
 #include "viewer/light_label_placement.hpp"
@@ -47,11 +48,29 @@ void readoutWhileActive(std::string& readout, const char* name, float value) {
     if (ImGui::IsItemActive()) readout = std::string(name) + " = " + formulaNumber(value);
 }
 
-bool coefficient(const char* label, float& value, float sliderMax, std::string& readout, const char* name) {
-    const bool changed = ImGui::SliderFloat(label, &value, 0.0f, sliderMax, "%.3f");
-    if (changed) value = std::clamp(value, kCoefficientRange.lo, kCoefficientRange.hi);
-    readoutWhileActive(readout, name, value);
+// A slider of a parameter of the table (core/scene/parameters.hpp): its label (or `label`), slider range,
+// scale and decimals (or `format`); a typed value is clamped into the parameter's range.
+bool parameterSlider(Param id, float& value, const char* label = nullptr, const char* format = nullptr) {
+    const Parameter& p = parameter(id);
+    const std::string decimals = "%." + std::to_string(p.decimals) + "f";
+    const bool changed = ImGui::SliderFloat(label ? label : p.label, &value, float(p.slider.lo), float(p.slider.hi),
+                                            format ? format : decimals.c_str(),
+                                            p.scale == SliderScale::Log ? ImGuiSliderFlags_Logarithmic : 0);
+    if (changed) value = std::clamp(value, float(p.range.lo), float(p.range.hi));
     return changed;
+}
+bool parameterSlider(Param id, int& value) {
+    const Parameter& p = parameter(id);
+    const bool changed = ImGui::SliderInt(p.label, &value, int(p.slider.lo), int(p.slider.hi));
+    if (changed) value = std::clamp(value, int(p.range.lo), int(p.range.hi));
+    return changed;
+}
+// A material parameter's slider that also shows its value large over the view while dragged.
+void materialSlider(Param id, Material& m, std::string& readout) {
+    const Parameter& p = parameter(id);
+    float& value = *p.field.material(m);
+    parameterSlider(id, value);
+    readoutWhileActive(readout, p.symbol, value);
 }
 
 template <typename E>
@@ -118,10 +137,7 @@ bool cameraValid(const Camera& c) {
     return glm::length(glm::cross(glm::normalize(forward), glm::normalize(c.up))) >= 1e-3f;
 }
 
-void iorSlider(Scene& scene) {
-    ImGui::SliderFloat("ior \u03b7\u2082/\u03b7\u2081", &scene.ior, kIorRange.lo, 4.0f, "%.3f");
-    scene.ior = std::clamp(scene.ior, kIorRange.lo, kIorRange.hi);
-}
+void iorSlider(Scene& scene) { parameterSlider(Param::Ior, scene.ior); }
 
 void sectionShading(Scene& scene) {
     radioRow("Shading", scene.shading,
@@ -138,9 +154,7 @@ void sectionShading(Scene& scene) {
         ImGui::SameLine();
         combo("B", scene.diff.b, kShadingModeNames);
         ImGui::PopItemWidth();
-        ImGui::SliderFloat("factor", &scene.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi, "%.1f",
-                           ImGuiSliderFlags_Logarithmic);
-        scene.diff.factor = std::clamp(scene.diff.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
+        parameterSlider(Param::DiffFactor, scene.diff.factor);
     }
     radioRow("Reflection", scene.reflection, {{"Phong", ReflectionModel::Phong}, {"Blinn-Phong", ReflectionModel::BlinnPhong}});
     static const char* const kEncodings[] = {"linear", "sRGB"};
@@ -164,15 +178,9 @@ void sectionShading(Scene& scene) {
 
 // `reflection`: anisotropy is Blinn-Phong's lobe; under Phong its controls are greyed out (and not applied).
 void sectionMaterial(Material& m, ReflectionModel reflection, std::string& readout) {
-    colorEdit("colour C", m.color);
-    colorEdit("specular S", m.specularColor);
-    coefficient("k_a ambient", m.ka, 1.0f, readout, "k_a");
-    coefficient("k_d diffuse", m.kd, 1.0f, readout, "k_d");
-    coefficient("k_s specular", m.ks, 1.0f, readout, "k_s");
-    // The exponent is what the lecture sweeps: a logarithmic slider gives 1..10 as much travel as 100..1000.
-    if (ImGui::SliderFloat("k_e exponent", &m.ke, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
-        m.ke = std::clamp(m.ke, kExponentRange.lo, kExponentRange.hi);
-    readoutWhileActive(readout, "k_e", m.ke);
+    colorEdit(parameter(Param::Color).label, m.color);
+    colorEdit(parameter(Param::SpecularColor).label, m.specularColor);
+    for (Param id : {Param::Ka, Param::Kd, Param::Ks, Param::Ke}) materialSlider(id, m, readout);
     // Anisotropic reflection (brushed metal): Ashikhmin and Shirley's k_t along the tangent, k_b along
     // the bitangent, in place of k_e; logarithmic like k_e. Switching it on starts both at k_e.
     ImGui::BeginDisabled(reflection != ReflectionModel::BlinnPhong);
@@ -180,19 +188,16 @@ void sectionMaterial(Material& m, ReflectionModel reflection, std::string& reado
     ImGui::Checkbox("anisotropic (Blinn-Phong)", &m.anisotropic);
     if (m.anisotropic && !wasOn) m.anisotropy = glm::vec2(m.ke);
     ImGui::BeginDisabled(!m.anisotropic);
-    if (ImGui::SliderFloat("k_t along T", &m.anisotropy.x, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
-        m.anisotropy.x = std::clamp(m.anisotropy.x, kExponentRange.lo, kExponentRange.hi);
-    readoutWhileActive(readout, "k_t", m.anisotropy.x);
-    if (ImGui::SliderFloat("k_b along B", &m.anisotropy.y, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
-        m.anisotropy.y = std::clamp(m.anisotropy.y, kExponentRange.lo, kExponentRange.hi);
-    readoutWhileActive(readout, "k_b", m.anisotropy.y);
+    const Parameter& anisotropy = parameter(Param::Anisotropy);
+    for (int i = 0; i < 2; ++i) {
+        parameterSlider(Param::Anisotropy, m.anisotropy[i], anisotropy.parts[i]);
+        readoutWhileActive(readout, i == 0 ? "k_t" : "k_b", m.anisotropy[i]);
+    }
     ImGui::EndDisabled();
     ImGui::EndDisabled();
     // Mirror and glass, added after the sum with the scene's environment (none: they reflect nothing).
-    ImGui::SliderFloat("k_r mirror", &m.mirror, kUnitRange.lo, kUnitRange.hi, "%.2f");
-    ImGui::SliderFloat("k_t transmission", &m.transmission, kUnitRange.lo, kUnitRange.hi, "%.2f");
-    m.mirror = std::clamp(m.mirror, kUnitRange.lo, kUnitRange.hi);
-    m.transmission = std::clamp(m.transmission, kUnitRange.lo, kUnitRange.hi);
+    parameterSlider(Param::Mirror, m.mirror);
+    parameterSlider(Param::Transmission, m.transmission);
 }
 
 // With a probed pixel, the 3-D lobe is that point's: its N, its I toward the selected light (or the first
@@ -241,8 +246,7 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, c
             return std::size(kPanelPlots) == std::size(kPlotKindNames);
         }(),
         "kPanelPlots names the section's plots as --plot does, in the order drawn below");
-    ImGui::SliderFloat("incidence", &plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi, "\u03b8_i = %.1f\u00b0");
-    plots.incidenceDeg = std::clamp(plots.incidenceDeg, kIncidenceDegRange.lo, kIncidenceDegRange.hi);
+    parameterSlider(Param::Incidence, plots.incidenceDeg, nullptr, "\u03b8_i = %.1f\u00b0");
     iorSlider(scene);
     ImGui::Checkbox("from inside (\u03b7\u2081 = ior, \u03b7\u2082 = 1)", &plots.fromInside);
     // Heights that leave room for the header and legend rows at the panel's width and the plot below.
@@ -294,18 +298,17 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
     const float r = 1e-3f, big = 1e3f;
     switch (m.type) {
     case MeshSpec::Type::UvSphere:
-        ImGui::SliderInt("slices", &m.slices, 3, 256);
-        ImGui::SliderInt("stacks", &m.stacks, 2, 128);
+        parameterSlider(Param::UvSphereSlices, m.slices);
+        parameterSlider(Param::UvSphereStacks, m.stacks);
         ImGui::DragFloat("radius", &m.radius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         break;
     case MeshSpec::Type::IcoSphere:
-        // 20 * 4^7 = 327,680 triangles is still interactive on llvmpipe; the file format allows 8.
-        ImGui::SliderInt("subdivisions", &m.subdivisions, 0, 7);
+        parameterSlider(Param::IcoSphereSubdivisions, m.subdivisions);
         ImGui::DragFloat("radius", &m.radius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         break;
     case MeshSpec::Type::Torus:
-        ImGui::SliderInt("major segments", &m.majorSegments, 3, 256);
-        ImGui::SliderInt("minor segments", &m.minorSegments, 3, 128);
+        parameterSlider(Param::TorusMajorSegments, m.majorSegments);
+        parameterSlider(Param::TorusMinorSegments, m.minorSegments);
         ImGui::DragFloat("major radius", &m.majorRadius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         ImGui::DragFloat("minor radius", &m.minorRadius, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         break;
@@ -314,7 +317,7 @@ void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& texture
         break;
     case MeshSpec::Type::Plane:
         ImGui::DragFloat("size", &m.size, 0.01f, r, big, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        ImGui::SliderInt("subdivisions", &m.planeSubdivisions, 1, 128);
+        parameterSlider(Param::PlaneSubdivisions, m.planeSubdivisions);
         break;
     case MeshSpec::Type::Gltf:
         ImGui::TextWrapped("file: %s", m.path.c_str());
@@ -344,10 +347,12 @@ void areaLightFields(Light& l) {
 void spotLightFields(Light& l) {
     dragNonZero("direction", l.direction, 0.02f, false);
     // Half-angles from the axis: full light inside the inner cone, none outside the outer.
-    ImGui::SliderFloat("outer cone (deg)", &l.outerConeDeg, 1.0f, kSpotConeDegRange.hi, "%.1f", ImGuiSliderFlags_AlwaysClamp);
-    ImGui::SliderFloat("inner cone (deg)", &l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f, "%.1f",
+    parameterSlider(Param::OuterCone, l.outerConeDeg);
+    // The inner cone stays inside the outer one: its slider ends just short of it.
+    const Parameter& inner = parameter(Param::InnerCone);
+    ImGui::SliderFloat(inner.label, &l.innerConeDeg, float(inner.slider.lo), l.outerConeDeg - 0.1f, "%.1f",
                        ImGuiSliderFlags_AlwaysClamp);
-    l.innerConeDeg = std::clamp(l.innerConeDeg, 0.0f, l.outerConeDeg - 0.1f);
+    l.innerConeDeg = std::clamp(l.innerConeDeg, float(inner.range.lo), l.outerConeDeg - 0.1f);
 }
 
 // One light's fields in its open tree node: type, where it is, what its type adds, colour, intensity, falloff.
@@ -360,8 +365,11 @@ void lightFields(Light& l, std::string& readout) {
     if (l.type == LightType::Area) areaLightFields(l);
     if (l.type == LightType::Spot) spotLightFields(l);
     colorEdit("colour", l.color);
-    ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-    readoutWhileActive(readout, "intensity", l.intensity);
+    // A drag, not a slider: intensities span many orders of magnitude (the slider range is its limits).
+    const Parameter& intensity = parameter(Param::Intensity);
+    ImGui::DragFloat(intensity.label, &l.intensity, 0.01f, float(intensity.slider.lo), float(intensity.slider.hi), "%.3f",
+                     ImGuiSliderFlags_AlwaysClamp);
+    readoutWhileActive(readout, intensity.symbol, l.intensity);
     if (l.type != LightType::Directional) {
         combo("attenuation", l.attenuation, kAttenuationNames);
         if (l.attenuation == Attenuation::InverseSquare) {
@@ -407,12 +415,9 @@ void sectionLights(Scene& scene, int& selected, std::string& readout) {
 void sectionShadows(ShadowSettings& s) {
     ImGui::Checkbox("shadows (occlusion toward every light)", &s.enabled);
     ImGui::BeginDisabled(!s.enabled);
-    ImGui::SliderFloat("normal bias (texels)", &s.normalBias, 0.0f, 8.0f, "%.2f");
-    ImGui::SliderFloat("depth bias (slope)", &s.depthBias, 0.0f, 8.0f, "%.2f");
-    s.normalBias = std::clamp(s.normalBias, float(kShadowBiasRange.lo), float(kShadowBiasRange.hi));
-    s.depthBias = std::clamp(s.depthBias, float(kShadowBiasRange.lo), float(kShadowBiasRange.hi));
-    ImGui::SliderInt("PCF radius", &s.pcf, 0, kPcfRadiusRange.hi);
-    s.pcf = std::clamp(s.pcf, 0, kPcfRadiusRange.hi);
+    parameterSlider(Param::NormalBias, s.normalBias);
+    parameterSlider(Param::DepthBias, s.depthBias);
+    parameterSlider(Param::Pcf, s.pcf);
     // Powers of two over kShadowMapSizeRange (64 to 4096), as an exponent slider.
     auto sizeSlider = [](const char* label, int& size) {
         const auto log2 = [](int v) { return int(std::lround(std::log2(double(v)))); };
@@ -486,8 +491,7 @@ void sectionCamera(Camera& c, int modelCamera, const PanelStatus& status, PanelR
     Camera edited = c;
     bool changed = dragCoordinates("eye", edited.eye, 0.02f, "%.2f");
     changed |= dragCoordinates("target", edited.target, 0.02f, "%.2f");
-    changed |= ImGui::SliderFloat("fov y (deg)", &edited.fovYDeg, 5.0f, 120.0f, "%.1f");
-    edited.fovYDeg = std::clamp(edited.fovYDeg, kFovYDegRange.lo, kFovYDegRange.hi);
+    changed |= parameterSlider(Param::FovY, edited.fovYDeg);
     if (changed && cameraValid(edited)) c = edited;
     // The viewer places them every frame around the model and the lights (zoom never slices it).
     ImGui::TextDisabled("near %.4g, far %.4g: follow the eye", double(c.nearPlane), double(c.farPlane));
@@ -630,7 +634,8 @@ void sceneSections(Scene& scene, ViewSettings& settings, const PanelStatus& stat
         sectionDisplay(status, requests);
     }
     if (section(settings, "Camera", PanelSection::Camera, false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
-    if (section(settings, "Background", PanelSection::Background, false)) colorEdit("background", scene.background);
+    if (section(settings, "Background", PanelSection::Background, false))
+        colorEdit(parameter(Param::Background).label, scene.background);
     if (section(settings, "File", PanelSection::File, true)) sectionFile(settings, status, requests);
     if (section(settings, "Keys", PanelSection::Keys, false)) sectionKeys();
 }

@@ -4,6 +4,7 @@
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/image/image.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/figures/plot.hpp"
 #include "core/figures/shader_listing.hpp"
@@ -350,13 +351,13 @@ std::string rampReadout(const Scene& scene, const std::vector<Animation>& animat
     const Material* m = object < scene.objects.size() ? &scene.objects[object].material : nullptr;
     for (const Animation& a : animations) {
         if (a.kind != Animation::Kind::Ramp) continue;
-        const std::string& p = a.parameter;
-        if (m && p == "ke") return "k_e = " + formulaNumber(m->ke);
-        if (m && p == "ks") return "k_s = " + formulaNumber(m->ks);
-        if (m && p == "kd") return "k_d = " + formulaNumber(m->kd);
-        if (m && p == "ka") return "k_a = " + formulaNumber(m->ka);
-        if (p == "ior") return "ior = " + formulaNumber(scene.ior);
-        if (p == "intensity" && !scene.lights.empty()) return "intensity = " + formulaNumber(scene.lights[0].intensity);
+        const Parameter* p = parameterNamed(a.parameter);
+        if (!p) continue;
+        const std::string name = std::string(p->symbol) + " = ";
+        if (m && p->field.material) return name + formulaNumber(materialValue(*p, *m));
+        if (p->field.scene) return name + formulaNumber(sceneValue(*p, scene));
+        if (p->field.light && !scene.lights.empty())
+            return name + formulaNumber(lightValue(*p, scene.lights[0]));
     }
     return "";
 }

@@ -7,8 +7,9 @@
 //
 // Every function returns at once; nothing blocks the browser. Strings go in as UTF-8 and come back
 // as JSON, valid until the next call.
-#include "cli/option_table.hpp"
-#include "cli/options.hpp"
+#include "options/option_table.hpp"
+#include "options/options.hpp"
+#include "options/shorthand.hpp"
 #include "core/base/error.hpp"
 #include "core/base/message.hpp"
 #include "core/figures/formula.hpp"
@@ -25,6 +26,7 @@
 #include "core/scene/scene_names.hpp"
 #include "core/ui/controls.hpp"
 #include "core/scene/panel_sections.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/ui/view_names.hpp"
 #include "render/image_pass.hpp"
 #include "render/multisample_target.hpp"
@@ -112,7 +114,33 @@ std::string withWebNote(const std::string& message) {
 
 const char* errorReply(const std::string& message) { return reply(json{{"error", oneLine(withWebNote(message))}}); }
 
-// The option table: each option's name, argument, help and what it sets.
+// A parameter of the table (core/scene/parameters.hpp): what the page's control of it shows.
+json describeParameter(const Parameter& p) {
+    json entry{{"name", p.name},
+               {"option", p.option},
+               {"symbol", p.symbol},
+               {"label", p.label},
+               {"section", nameOf(kPanelSections, p.section)},
+               {"range", {p.range.lo, p.range.hi}},
+               {"slider", {p.slider.lo, p.slider.hi}},
+               {"scale", p.scale == SliderScale::Log ? "log" : "linear"},
+               {"decimals", p.decimals},
+               {"components", p.components},
+               {"help", parameterHelp(p)}};
+    if (!std::isnan(p.defaultValue)) entry["default"] = p.defaultValue;
+    if (p.parts[0]) entry["parts"] = {p.parts[0], p.parts[1]};
+    if (p.field.mesh) entry["mesh"] = toString(p.field.meshType);
+    return entry;
+}
+
+json describeParameters() {
+    json parameters = json::array();
+    for (const Parameter* p = parametersBegin(); p != parametersEnd(); ++p) parameters.push_back(describeParameter(*p));
+    return parameters;
+}
+
+// The option table: each option's name, argument, help, what it sets, its panel section and, for a
+// parameter's option, the parameter (its slider).
 json describeOptions() {
     json options = json::array();
     for (const OptionSpec* o = optionsBegin(); o != optionsEnd(); ++o) {
@@ -124,6 +152,8 @@ json describeOptions() {
                    {"synopsis", optionSynopsis(*o)}};
         if (o->bounds.given) entry["range"] = {o->bounds.lo, o->bounds.hi};
         if (o->names) entry["names"] = o->names();
+        if (const std::optional<PanelSection> section = optionSection(*o)) entry["section"] = nameOf(kPanelSections, *section);
+        if (const Parameter* p = parameterOfOption(o->name)) entry["parameter"] = describeParameter(*p);
         options.push_back(entry);
     }
     return options;
@@ -167,16 +197,18 @@ json range(const Range<T>& r) {
     return json::array({r.lo, r.hi});
 }
 
-// The --mesh shorthands' parts (scene_limits.hpp), for the page's Mesh section.
+// The procedural meshes and their --mesh shorthands' parts, in the shorthand's order (the parameter
+// table's mesh rows), for the page's Mesh section.
 json describeMeshes() {
-    return json::array({
-        {{"name", "uvsphere"}, {"parameters", {{{"name", "slices"}, {"range", range(kUvSphereSlicesRange)}},
-                                               {{"name", "stacks"}, {"range", range(kUvSphereStacksRange)}}}}},
-        {{"name", "icosphere"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kIcoSphereSubdivisionsRange)}}}}},
-        {{"name", "torus"}, {"parameters", {{{"name", "major_segments"}, {"range", range(kTorusSegmentsRange)}},
-                                            {{"name", "minor_segments"}, {"range", range(kTorusSegmentsRange)}}}}},
-        {{"name", "cube"}, {"parameters", json::array()}},
-        {{"name", "plane"}, {"parameters", {{{"name", "subdivisions"}, {"range", range(kPlaneSubdivisionsRange)}}}}}});
+    json meshes = json::array();
+    for (const auto& [name, type] : kMeshTypeNames) {
+        if (type == MeshSpec::Type::Gltf) continue;
+        json parameters = json::array();
+        for (const Parameter* p = parametersBegin(); p != parametersEnd(); ++p)
+            if (p->field.mesh && p->field.meshType == type) parameters.push_back(describeParameter(*p));
+        meshes.push_back({{"name", name}, {"parameters", parameters}});
+    }
+    return meshes;
 }
 
 // The option table, the key table, the panel's sections and the lecture presets: what the page
@@ -193,7 +225,8 @@ json describe() {
     json lightTypes = json::array(), attenuations = json::array();
     for (const auto& [name, type] : kLightTypeNames) lightTypes.push_back(name);
     for (const auto& [name, attenuation] : kAttenuationNames) attenuations.push_back(name);
-    return {{"options", describeOptions()}, {"controls", describeControls()}, {"overlays", overlays},
+    return {{"options", describeOptions()}, {"parameters", describeParameters()}, {"controls", describeControls()},
+            {"overlays", overlays},
             {"presets", describePresets()}, {"sections", sections}, {"plots", plots}, {"meshes", describeMeshes()},
             {"lights", {{"types", lightTypes}, {"attenuation", attenuations}, {"intensity", range(kIntensityRange)}}},
             {"version", SHADELAB_VERSION}};
@@ -519,6 +552,24 @@ EMSCRIPTEN_KEEPALIVE const std::uint8_t* sl_frame_data() { return app().frame.rg
 EMSCRIPTEN_KEEPALIVE const char* sl_shader(const char* name) {
     try {
         return reply(json{{"name", name}, {"source", ShaderLibrary().load(name)}});
+    } catch (const std::exception& e) {
+        return errorReply(e.what());
+    }
+}
+
+// A light or the first object's mesh as the scene's JSON gives it ({"type": "point", "position": [...], ...}),
+// as the --light or --mesh option that sets it: {"option": "point:1,2,3:intensity=2"} or {"error": ...}. The
+// page edits lights and meshes as JSON and keeps them in its state (and its link) as these options.
+EMSCRIPTEN_KEEPALIVE const char* sl_light_option(const char* lightJson) {
+    try {
+        return reply(json{{"option", lightShorthand(lightFromJson(lightJson, "light"))}});
+    } catch (const std::exception& e) {
+        return errorReply(e.what());
+    }
+}
+EMSCRIPTEN_KEEPALIVE const char* sl_mesh_option(const char* meshJson) {
+    try {
+        return reply(json{{"option", meshShorthand(meshFromJson(meshJson, "mesh"))}});
     } catch (const std::exception& e) {
         return errorReply(e.what());
     }

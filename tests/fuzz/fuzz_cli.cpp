@@ -1,7 +1,7 @@
 // libFuzzer target: the command-line parser. The input is split at NUL bytes into arguments. Any
 // argument list either parses or is an InputError; with no input file, the overrides are applied to
 // the built-in scene too (no file is read).
-#include "cli/options.hpp"
+#include "options/options.hpp"
 #include "core/base/error.hpp"
 
 #include <cstdint>

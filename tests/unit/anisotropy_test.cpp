@@ -2,7 +2,7 @@
 // lecture would write it, k_t = k_b = k_e against Blinn-Phong, the energy factor, the tangent frames
 // (glTF's TANGENT: gltf_import_test.cpp; texture coordinates; the up axis), and the scene field and
 // option with their refusals.
-#include "cli/options.hpp"
+#include "options/options.hpp"
 #include "core/base/error.hpp"
 #include "core/geometry/ray_cast.hpp"
 #include "core/geometry/scene_geometry.hpp"

@@ -3,7 +3,7 @@
 // build's options, every -DSHADELAB_… they give is an option of this build, every file of this
 // repository they name exists, every package list they install from exists. A renamed flag or
 // option, or a moved file, fails here instead of in a user's pipeline.
-#include "cli/options.hpp"
+#include "options/options.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 

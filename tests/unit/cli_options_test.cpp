@@ -1,4 +1,4 @@
-#include "cli/options.hpp"
+#include "options/options.hpp"
 #include "core/base/error.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/ui/controls.hpp"
@@ -388,7 +388,7 @@ TEST(CliOptions, ReadmeOptionTableIsTheTable) {
     std::stringstream text;
     text << in.rdbuf();
     std::string readme = text.str();
-    const std::string begin = "<!-- options: generated from app/cli/option_table.cpp (tests/unit/cli_options_test.cpp) -->\n";
+    const std::string begin = "<!-- options: generated from app/options/option_table.cpp (tests/unit/cli_options_test.cpp) -->\n";
     const std::string end = "<!-- end of options -->";
     const std::size_t from = readme.find(begin), to = readme.find(end);
     ASSERT_NE(from, std::string::npos) << "README.md has no line " << begin;

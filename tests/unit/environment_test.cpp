@@ -2,7 +2,7 @@
 // R, T, Snell's law and F against the lecture's formulas over many directions; total internal
 // reflection; "none" keeping k_r and k_t as they are; the procedural environments' continuity and the
 // image lookup's texels; the scene field, the options and the probe's "environment" at many pixels.
-#include "cli/options.hpp"
+#include "options/options.hpp"
 #include "core/base/error.hpp"
 #include "core/geometry/ray_cast.hpp"
 #include "core/figures/intersection_image.hpp"

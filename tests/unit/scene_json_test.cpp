@@ -2,6 +2,7 @@
 // and the round trip through sceneToJson that the viewer's "save scene" relies on.
 #include "core/base/error.hpp"
 #include "core/scene/scene_json.hpp"
+#include "options/shorthand.hpp"
 
 #include <gtest/gtest.h>
 

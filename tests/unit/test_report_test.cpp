@@ -1,6 +1,6 @@
-// The --test run's reports without GL (cli/test_report.hpp): the summary line, JUnit XML and the HTML
+// The --test run's reports without GL (run/test_report.hpp): the summary line, JUnit XML and the HTML
 // page made from a hand-built run, and the escaping and base64 they rest on.
-#include "cli/test_report.hpp"
+#include "run/test_report.hpp"
 
 #include <gtest/gtest.h>
 

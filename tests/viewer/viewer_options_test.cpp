@@ -1,5 +1,5 @@
-// The viewer's command-line flags (app/cli/options.*).
-#include "cli/options.hpp"
+// The viewer's command-line flags (app/options/options.*).
+#include "options/options.hpp"
 #include "core/base/error.hpp"
 #include "core/scene/panel_sections.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // 8-bit RGBA images, PNG input/output (libpng; stb on Windows) and the image comparison of the golden
-// tests and --reference (cli/reference.hpp).
+// tests and --reference (run/reference.hpp).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -44,7 +44,7 @@ CompareResult compareImages(const Image& actual, const Image& expected, int pixe
 // The thresholds on a CompareResult: the images match when they are of one size, no channel of any
 // pixel differs by more than maxDiff, the mean over every channel of every pixel is at most meanDiff and
 // at most maxDiffPixels pixels differ by more than pixelThreshold. The defaults are --reference's
-// (cli/reference.hpp, --max-diff and --mean-diff; the golden tests' are toleranceWithShare's).
+// (run/reference.hpp, --max-diff and --mean-diff; the golden tests' are toleranceWithShare's).
 //
 // The defaults, measured with llvmpipe (Mesa 22.3, Debian 12) on the default scene, the default in the
 // compare layout, lecture presets 06 (k_e 32), 14 (two objects) and 03 (layout diff, k_e 100) and the

@@ -172,7 +172,7 @@ struct DiffSettings {
     float factor = 4.0f;  // 1..kDiffFactorRange.hi
 };
 
-// "test": the scene's own settings as a screenshot test (`shadelab --test`, cli/test_suite.hpp), over the
+// "test": the scene's own settings as a screenshot test (`shadelab --test`, run/test_suite.hpp), over the
 // command line's --max-diff, --mean-diff and --max-diff-pixels (the folder's defaults). Nothing here
 // changes the picture.
 struct TestSettings {

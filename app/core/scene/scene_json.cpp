@@ -4,8 +4,9 @@
 #include "core/base/error.hpp"
 #include "core/base/message.hpp"
 #include "core/base/json_depth.hpp"
-#include "core/scene/scene_names.hpp"
 #include "core/scene/panel_sections.hpp"
+#include "core/scene/parameters.hpp"
+#include "core/scene/scene_names.hpp"
 #include "core/base/file_io.hpp"
 
 #include <glm/common.hpp>
@@ -31,6 +32,9 @@ public:
     SceneReader(std::string file, std::string baseDir) : file_(std::move(file)), baseDir_(std::move(baseDir)) {}
 
     Scene read(const json& root);
+    // One light or mesh, on its own (lightFromJson, meshFromJson); `path` names it in messages.
+    Light light(const json& j, const std::string& path) const;
+    MeshSpec mesh(const json& j, const std::string& path) const;
 
 private:
     [[noreturn]] void fail(const std::string& path, const std::string& what) const {
@@ -106,6 +110,23 @@ private:
         for (int i = 0; i < 2; ++i)
             out[i] = static_cast<float>(number(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi));
     }
+    // A parameter of the table (core/scene/parameters.hpp), by its name and in its range.
+    void value(const json& o, const std::string& path, Param id, float& out) const {
+        const Parameter& p = parameter(id);
+        number(o, p.name, path, out, p.range.lo, p.range.hi);
+    }
+    void value(const json& o, const std::string& path, Param id, int& out) const {
+        const Parameter& p = parameter(id);
+        integer(o, p.name, path, out, int(p.range.lo), int(p.range.hi));
+    }
+    void value(const json& o, const std::string& path, Param id, glm::vec2& out) const {
+        const Parameter& p = parameter(id);
+        vec2(o, p.name, path, out, p.range.lo, p.range.hi);
+    }
+    void value(const json& o, const std::string& path, Param id, glm::vec3& out) const {
+        const Parameter& p = parameter(id);
+        vec3(o, p.name, path, out, p.range.lo, p.range.hi);
+    }
     // [x, y] of integers in [lo, hi]
     void ivec2(const json& o, const char* key, const std::string& path, glm::ivec2& out, int lo, int hi) const {
         if (!o.contains(key)) return;
@@ -144,10 +165,8 @@ private:
         fail(p, "unknown value \"" + quoteInput(j.get<std::string>()) + "\" (expected one of " + allowed + ")");
     }
 
-    MeshSpec mesh(const json& j, const std::string& path) const;
     Material material(const json& j, const std::string& path) const;
     Transform transform(const json& j, const std::string& path) const;
-    Light light(const json& j, const std::string& path) const;
     ShadowSettings shadowSettings(const json& j, const std::string& path) const;
     Camera camera(const json& j, const std::string& path) const;
     void readObjects(const json& root, Scene& scene) const;
@@ -170,21 +189,21 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
     switch (m.type) {
     case MeshSpec::Type::UvSphere:
         requireObject(j, path, {"type", "slices", "stacks", "radius"});
-        integer(j, "slices", path, m.slices, kUvSphereSlicesRange.lo, kUvSphereSlicesRange.hi);
-        integer(j, "stacks", path, m.stacks, kUvSphereStacksRange.lo, kUvSphereStacksRange.hi);
+        value(j, path, Param::UvSphereSlices, m.slices);
+        value(j, path, Param::UvSphereStacks, m.stacks);
         number(j, "radius", path, m.radius, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::IcoSphere:
         requireObject(j, path, {"type", "subdivisions", "radius"});
-        integer(j, "subdivisions", path, m.subdivisions, kIcoSphereSubdivisionsRange.lo, kIcoSphereSubdivisionsRange.hi);
+        value(j, path, Param::IcoSphereSubdivisions, m.subdivisions);
         number(j, "radius", path, m.radius, kSizeRange.lo, kSizeRange.hi);
         break;
     case MeshSpec::Type::Torus:
         requireObject(j, path, {"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
         number(j, "major_radius", path, m.majorRadius, kSizeRange.lo, kSizeRange.hi);
         number(j, "minor_radius", path, m.minorRadius, kSizeRange.lo, kSizeRange.hi);
-        integer(j, "major_segments", path, m.majorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
-        integer(j, "minor_segments", path, m.minorSegments, kTorusSegmentsRange.lo, kTorusSegmentsRange.hi);
+        value(j, path, Param::TorusMajorSegments, m.majorSegments);
+        value(j, path, Param::TorusMinorSegments, m.minorSegments);
         break;
     case MeshSpec::Type::Cube:
         requireObject(j, path, {"type", "size"});
@@ -193,7 +212,7 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
     case MeshSpec::Type::Plane:
         requireObject(j, path, {"type", "size", "subdivisions"});
         number(j, "size", path, m.size, kSizeRange.lo, kSizeRange.hi);
-        integer(j, "subdivisions", path, m.planeSubdivisions, kPlaneSubdivisionsRange.lo, kPlaneSubdivisionsRange.hi);
+        value(j, path, Param::PlaneSubdivisions, m.planeSubdivisions);
         break;
     case MeshSpec::Type::Gltf: {
         requireObject(j, path, {"type", "path"});
@@ -212,17 +231,17 @@ MeshSpec SceneReader::mesh(const json& j, const std::string& path) const {
 Material SceneReader::material(const json& j, const std::string& path) const {
     Material m;
     requireObject(j, path, {"color", "specular_color", "ka", "kd", "ks", "ke", "anisotropy", "mirror", "transmission"});
-    vec3(j, "color", path, m.color, 0.0, 1.0);
-    m.colorSet = j.contains("color");
-    vec3(j, "specular_color", path, m.specularColor, 0.0, 1.0);
-    number(j, "ka", path, m.ka, kCoefficientRange.lo, kCoefficientRange.hi);
-    number(j, "kd", path, m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
-    number(j, "ks", path, m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
-    number(j, "ke", path, m.ke, kExponentRange.lo, kExponentRange.hi);
-    m.anisotropic = j.contains("anisotropy");
-    vec2(j, "anisotropy", path, m.anisotropy, kExponentRange.lo, kExponentRange.hi);
-    number(j, "mirror", path, m.mirror, kUnitRange.lo, kUnitRange.hi);
-    number(j, "transmission", path, m.transmission, kUnitRange.lo, kUnitRange.hi);
+    value(j, path, Param::Color, m.color);
+    m.colorSet = j.contains(parameter(Param::Color).name);
+    value(j, path, Param::SpecularColor, m.specularColor);
+    value(j, path, Param::Ka, m.ka);
+    value(j, path, Param::Kd, m.kd);
+    value(j, path, Param::Ks, m.ks);
+    value(j, path, Param::Ke, m.ke);
+    m.anisotropic = j.contains(parameter(Param::Anisotropy).name);
+    value(j, path, Param::Anisotropy, m.anisotropy);
+    value(j, path, Param::Mirror, m.mirror);
+    value(j, path, Param::Transmission, m.transmission);
     return m;
 }
 
@@ -267,8 +286,8 @@ Light SceneReader::light(const json& j, const std::string& path) const {
         vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
         vec3(j, "direction", path, l.direction, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.direction, join(path, "direction"));
-        number(j, "outer_cone_deg", path, l.outerConeDeg, kSpotOuterConeDegRange.lo, kSpotOuterConeDegRange.hi);
-        number(j, "inner_cone_deg", path, l.innerConeDeg, kSpotConeDegRange.lo, kSpotConeDegRange.hi);
+        value(j, path, Param::OuterCone, l.outerConeDeg);
+        value(j, path, Param::InnerCone, l.innerConeDeg);
         if (!j.contains("inner_cone_deg")) l.innerConeDeg = 0.5f * l.outerConeDeg;
         if (l.innerConeDeg >= l.outerConeDeg)
             fail(join(path, "inner_cone_deg"), "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
@@ -281,16 +300,16 @@ Light SceneReader::light(const json& j, const std::string& path) const {
             fail(join(path, "range"), "a range needs \"attenuation\": \"inverse-square\"");
     }
     vec3(j, "color", path, l.color, 0.0, 1.0);
-    number(j, "intensity", path, l.intensity, kIntensityRange.lo, kIntensityRange.hi);
+    value(j, path, Param::Intensity, l.intensity);
     return l;
 }
 
 ShadowSettings SceneReader::shadowSettings(const json& j, const std::string& path) const {
     ShadowSettings s;
     requireObject(j, path, {"normal_bias", "depth_bias", "pcf", "map_size", "area_map_size"});
-    number(j, "normal_bias", path, s.normalBias, kShadowBiasRange.lo, kShadowBiasRange.hi);
-    number(j, "depth_bias", path, s.depthBias, kShadowBiasRange.lo, kShadowBiasRange.hi);
-    integer(j, "pcf", path, s.pcf, 0, kPcfRadiusRange.hi);
+    value(j, path, Param::NormalBias, s.normalBias);
+    value(j, path, Param::DepthBias, s.depthBias);
+    value(j, path, Param::Pcf, s.pcf);
     integer(j, "map_size", path, s.mapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
     integer(j, "area_map_size", path, s.areaMapSize, kShadowMapSizeRange.lo, kShadowMapSizeRange.hi);
     return s;
@@ -302,7 +321,7 @@ Camera SceneReader::camera(const json& j, const std::string& path) const {
     vec3(j, "eye", path, c.eye, kCoordinateRange.lo, kCoordinateRange.hi);
     vec3(j, "target", path, c.target, kCoordinateRange.lo, kCoordinateRange.hi);
     vec3(j, "up", path, c.up, kCoordinateRange.lo, kCoordinateRange.hi);
-    number(j, "fov_y_deg", path, c.fovYDeg, kFovYDegRange.lo, kFovYDegRange.hi);
+    value(j, path, Param::FovY, c.fovYDeg);
     number(j, "near", path, c.nearPlane, 1e-6, 1e6);
     number(j, "far", path, c.farPlane, 1e-6, 1e7);
     if (c.farPlane <= c.nearPlane) fail(join(path, "far"), "must be greater than near");
@@ -327,7 +346,7 @@ Scene SceneReader::read(const json& root) {
     if (root.contains("diff")) s.diff = diff(root["diff"], "diff");
     choice(root, "specular_normalization", "", s.specularNormalization, kSpecularNormalizationNames);
     choice(root, "fresnel", "", s.fresnel, kFresnelModeNames);
-    number(root, "ior", "", s.ior, kIorRange.lo, kIorRange.hi);
+    value(root, "", Param::Ior, s.ior);
     if (root.contains("environment")) {
         if (!root["environment"].is_string()) fail("environment", std::string("expected a string, got ") + typeName(root["environment"]));
         s.environment = parseEnvironment(root["environment"].get<std::string>(), baseDir_, file_ + ": environment");
@@ -341,8 +360,8 @@ Scene SceneReader::read(const json& root) {
                                "Blinn-Phong's (about H)");
     choice(root, "output_encoding", "", s.outputEncoding, kOutputEncodingNames);
     s.outputEncodingGiven = root.contains("output_encoding");
-    vec3(root, "ambient", "", s.ambient, 0.0, 1.0);
-    vec3(root, "background", "", s.background, 0.0, 1.0);
+    value(root, "", Param::Ambient, s.ambient);
+    value(root, "", Param::Background, s.background);
     if (root.contains("lights")) {
         s.lights = lights(root["lights"], "lights");
         s.lightsGiven = true;
@@ -478,7 +497,7 @@ DiffSettings SceneReader::diff(const json& j, const std::string& path) const {
     requireObject(j, path, {"a", "b", "factor"});
     choice(j, "a", path, d.a, kShadingModeNames);
     choice(j, "b", path, d.b, kShadingModeNames);
-    number(j, "factor", path, d.factor, kDiffFactorRange.lo, kDiffFactorRange.hi);
+    value(j, path, Param::DiffFactor, d.factor);
     return d;
 }
 
@@ -562,10 +581,7 @@ nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh, Ref
     // A glTF model's own colours stay unless a colour was chosen: write it only then.
     if (m.colorSet || mesh.type != MeshSpec::Type::Gltf) j["color"] = vecJson(m.color);
     j["specular_color"] = vecJson(m.specularColor);
-    j["ka"] = m.ka;
-    j["kd"] = m.kd;
-    j["ks"] = m.ks;
-    j["ke"] = m.ke;
+    for (Param p : {Param::Ka, Param::Kd, Param::Ks, Param::Ke}) j[parameter(p).name] = materialValue(parameter(p), m);
     if (m.anisotropic && reflection == ReflectionModel::BlinnPhong) j["anisotropy"] = {m.anisotropy.x, m.anisotropy.y};
     if (m.mirror > 0.0f) j["mirror"] = m.mirror;
     if (m.transmission > 0.0f) j["transmission"] = m.transmission;
@@ -578,11 +594,13 @@ bool isIdentity(const Transform& t) {
 
 }  // namespace
 
-Scene parseScene(const std::string& text, const std::string& fileLabel, const std::string& baseDir) {
-    checkJsonDepth(text, fileLabel);
-    json root;
+namespace {
+
+// The text as JSON, within the nesting limit; a malformed text is an InputError "LABEL: malformed JSON: ...".
+json parseJson(const std::string& text, const std::string& label) {
+    checkJsonDepth(text, label);
     try {
-        root = json::parse(text);
+        return json::parse(text);
     } catch (const json::exception& e) {
         // parse_error ("[json.exception.parse_error.101] parse error at line 3, column 5: ...") and
         // out_of_range for numbers too large for a double ("... number overflow parsing '1e999'").
@@ -591,11 +609,25 @@ Scene parseScene(const std::string& text, const std::string& fileLabel, const st
         if (what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) what = what.substr(bracket + 2);
         for (char& c : what)
             if (c == '\n') c = ' ';
-        throw InputError(fileLabel + ": malformed JSON: " + what);
+        throw InputError(label + ": malformed JSON: " + what);
     }
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& fileLabel, const std::string& baseDir) {
+    const json root = parseJson(text, fileLabel);
     Scene s = SceneReader(fileLabel, baseDir).read(root);
     s.sourcePath = fileLabel;
     return s;
+}
+
+Light lightFromJson(const std::string& text, const std::string& label) {
+    return SceneReader(label, "").light(parseJson(text, label), "");
+}
+
+MeshSpec meshFromJson(const std::string& text, const std::string& label) {
+    return SceneReader(label, "").mesh(parseJson(text, label), "");
 }
 
 Scene loadSceneFile(const std::string& path) {
@@ -724,222 +756,6 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     return j.dump(2) + "\n";
 }
 
-MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
-    MeshSpec m;
-    std::vector<std::string> parts;
-    std::stringstream ss(text);
-    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
-    if (parts.empty()) throw InputError(opt + ": empty mesh");
-    auto intArg = [&](size_t i, int& out, const Range<int>& range) {
-        if (i >= parts.size()) return;
-        const std::string& p = parts[i];
-        size_t used = 0;
-        long v = 0;
-        try {
-            v = std::stol(p, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + quoteInput(p) + "\" is not an integer");
-        if (v < range.lo || v > range.hi) throw InputError(opt + ": " + p + " is out of range (" + rangeText(range) + ")");
-        out = static_cast<int>(v);
-    };
-    const std::string& kind = parts[0];
-    const std::optional<MeshSpec::Type> type = valueNamed(kMeshTypeNames, kind);
-    if (!type || *type == MeshSpec::Type::Gltf) {  // a model is given by its file name, not "gltf"
-        if (!hasModelExtension(text))
-            throw InputError(opt + ": unknown mesh \"" + kind +
-                             "\" (expected uvsphere[:slices[:stacks]], icosphere[:n], torus[:major[:minor]], cube, "
-                             "plane[:n], or a .gltf/.glb file)");
-        m.type = MeshSpec::Type::Gltf;
-        m.path = text;
-        m.resolvedPath = fs::path(text).lexically_normal().string();
-        return m;
-    }
-    m.type = *type;
-    size_t maxParts = 1;
-    switch (m.type) {
-    case MeshSpec::Type::UvSphere:
-        intArg(1, m.slices, kUvSphereSlicesRange);
-        intArg(2, m.stacks, kUvSphereStacksRange);
-        maxParts = 3;
-        break;
-    case MeshSpec::Type::IcoSphere:
-        intArg(1, m.subdivisions, kIcoSphereSubdivisionsRange);
-        maxParts = 2;
-        break;
-    case MeshSpec::Type::Torus:
-        intArg(1, m.majorSegments, kTorusSegmentsRange);
-        intArg(2, m.minorSegments, kTorusSegmentsRange);
-        maxParts = 3;
-        break;
-    case MeshSpec::Type::Plane:
-        intArg(1, m.planeSubdivisions, kPlaneSubdivisionsRange);
-        maxParts = 2;
-        break;
-    case MeshSpec::Type::Cube:
-    case MeshSpec::Type::Gltf: break;
-    }
-    if (parts.size() > maxParts) throw InputError(opt + ": too many ':' parameters for " + kind);
-    return m;
-}
-
-namespace {
-
-// The --light shorthand TYPE:X,Y,Z[:KEY=VALUE]... read into a Light; every error names the option and
-// quotes the text.
-class LightShorthand {
-public:
-    LightShorthand(const std::string& text, const std::string& opt) : text_(text), opt_(opt) {
-        std::stringstream ss(text);
-        for (std::string p; std::getline(ss, p, ':');) parts_.push_back(p);
-    }
-
-    Light read() {
-        if (parts_.size() < 2) fail("expected TYPE:X,Y,Z[:KEY=VALUE...], e.g. point:1,2,3:intensity=2");
-        readTypeAndPlace(parts_[0], parts_[1]);
-        for (std::size_t i = 2; i < parts_.size(); ++i) readKey(parts_[i]);
-        if (rangeGiven_ && l_.attenuation != Attenuation::InverseSquare) fail("range needs attenuation=inverse-square");
-        if (l_.type == LightType::Spot) {
-            if (!innerGiven_) l_.innerConeDeg = 0.5f * l_.outerConeDeg;
-            if (l_.innerConeDeg >= l_.outerConeDeg) fail("inner must be less than outer (degrees from the axis)");
-        }
-        return l_;
-    }
-
-private:
-    [[noreturn]] void fail(const std::string& what) const {
-        throw InputError(opt_ + ": " + what + " (in \"" + quoteInput(text_) + "\")");
-    }
-
-    // `count` numbers in lo..hi separated by `sep`.
-    std::vector<float> numbers(const std::string& key, const std::string& v, std::size_t count, char sep, double lo,
-                               double hi) const {
-        std::vector<float> out;
-        std::stringstream vs(v);
-        for (std::string item; std::getline(vs, item, sep);) {
-            char* end = nullptr;
-            const float x = std::strtof(item.c_str(), &end);
-            if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
-                fail(key + ": \"" + quoteInput(item) + "\" is not a number");
-            if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + formatNumber(lo) + ".." + formatNumber(hi) + ")");
-            out.push_back(x);
-        }
-        if (out.size() != count || (!v.empty() && v.back() == sep))
-            fail(key + ": expected " + std::to_string(count) + " numbers separated by '" + std::string(1, sep) + "'");
-        return out;
-    }
-    float number(const std::string& key, const std::string& v, double lo, double hi) const {
-        return numbers(key, v, 1, ',', lo, hi)[0];
-    }
-    glm::vec3 vec3Of(const std::string& key, const std::string& v, double lo, double hi) const {
-        const std::vector<float> n = numbers(key, v, 3, ',', lo, hi);
-        return glm::vec3(n[0], n[1], n[2]);
-    }
-    // A direction or normal: not (nearly) zero.
-    glm::vec3 nonZeroVec3Of(const std::string& key, const std::string& v) const {
-        const glm::vec3 d = vec3Of(key, v, kCoordinateRange.lo, kCoordinateRange.hi);
-        if (glm::length(d) < 1e-6f) fail(key + ": must not be a zero-length vector");
-        return d;
-    }
-
-    // TYPE and X,Y,Z: a directional light's travel direction, the others' position (an area light's centre).
-    void readTypeAndPlace(const std::string& type, const std::string& xyz) {
-        const std::optional<LightType> lightType = valueNamed(kLightTypeNames, type);
-        if (!lightType)
-            fail("unknown light type \"" + quoteInput(type) + "\" (expected " + namesList(kLightTypeNames, ", ", " or ") + ")");
-        l_.type = *lightType;
-        const glm::vec3 where = vec3Of(type, xyz, kCoordinateRange.lo, kCoordinateRange.hi);
-        if (l_.type == LightType::Directional) {
-            if (glm::length(where) < 1e-6f) fail("a direction must not be a zero-length vector");
-            l_.direction = where;
-        } else {
-            l_.position = where;
-        }
-    }
-
-    // One KEY=VALUE (or "two-sided"); which keys a light takes depends on its type.
-    void readKey(const std::string& kv) {
-        const std::size_t eq = kv.find('=');
-        const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
-        if (key == "two-sided" && l_.type == LightType::Area && eq == std::string::npos) {
-            l_.twoSided = true;
-            return;
-        }
-        if (eq == std::string::npos) fail("expected KEY=VALUE, got \"" + quoteInput(kv) + "\"");
-        if (key == "color") l_.color = vec3Of(key, value, 0.0, 1.0);
-        else if (key == "intensity") l_.intensity = number(key, value, kIntensityRange.lo, kIntensityRange.hi);
-        else if (!readAttenuationKey(key, value) && !readAreaKey(key, value) && !readSpotKey(key, value))
-            fail("unknown key \"" + quoteInput(key) + "\" for a " + parts_[0] + " light (" + keysOfType() + ")");
-    }
-    // attenuation, range: point, spot and area lights.
-    bool readAttenuationKey(const std::string& key, const std::string& value) {
-        if (l_.type == LightType::Directional) return false;
-        if (key == "attenuation") {
-            const std::optional<Attenuation> a = valueNamed(kAttenuationNames, value);
-            if (!a)
-                fail("attenuation: unknown value \"" + quoteInput(value) + "\" (expected " +
-                     namesList(kAttenuationNames, ", ", " or ") + ")");
-            l_.attenuation = *a;
-        } else if (key == "range") {
-            l_.range = number(key, value, kLightRangeRange.lo, kLightRangeRange.hi);
-            rangeGiven_ = true;
-        } else {
-            return false;
-        }
-        return true;
-    }
-    bool readAreaKey(const std::string& key, const std::string& value) {
-        if (l_.type != LightType::Area) return false;
-        if (key == "normal") {
-            l_.normal = nonZeroVec3Of(key, value);
-        } else if (key == "size") {
-            const std::vector<float> wh = numbers(key, value, 2, ',', kSizeRange.lo, kSizeRange.hi);
-            l_.size = {wh[0], wh[1]};
-        } else if (key == "samples") {
-            const std::vector<float> n = numbers(key, value, 2, 'x', 1, kAreaSamplesPerSideRange.hi);
-            if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
-            l_.samples = {int(n[0]), int(n[1])};
-        } else {
-            return false;
-        }
-        return true;
-    }
-    bool readSpotKey(const std::string& key, const std::string& value) {
-        if (l_.type != LightType::Spot) return false;
-        if (key == "direction") {
-            l_.direction = nonZeroVec3Of(key, value);
-        } else if (key == "outer") {
-            l_.outerConeDeg = number(key, value, kSpotOuterConeDegRange.lo, kSpotOuterConeDegRange.hi);
-        } else if (key == "inner") {
-            l_.innerConeDeg = number(key, value, kSpotConeDegRange.lo, kSpotConeDegRange.hi);
-            innerGiven_ = true;
-        } else {
-            return false;
-        }
-        return true;
-    }
-    const char* keysOfType() const {
-        switch (l_.type) {
-        case LightType::Area: return "color, intensity, attenuation, range, normal, size, samples, two-sided";
-        case LightType::Spot: return "direction, inner, outer, color, intensity, attenuation, range";
-        case LightType::Point: return "color, intensity, attenuation, range";
-        case LightType::Directional: break;
-        }
-        return "color, intensity";
-    }
-
-    const std::string& text_;
-    const std::string& opt_;
-    std::vector<std::string> parts_;
-    Light l_;
-    bool rangeGiven_ = false, innerGiven_ = false;
-};
-
-}  // namespace
-
-Light parseLightShorthand(const std::string& text, const std::string& opt) { return LightShorthand(text, opt).read(); }
-
 TermView parseTermView(const std::string& text, const std::string& where) {
     const std::string prefix = where.empty() ? std::string() : where + ": ";
     TermView t;
@@ -970,12 +786,10 @@ void checkCoefficients(const Material& m, const std::string& where) {
             throw InputError(where + name + ": must be between " + formatNumber(lo) + " and " + formatNumber(hi) + " (got " +
                              formatNumber(v) + ")");
     };
-    check("ka", m.ka, kCoefficientRange.lo, kCoefficientRange.hi);
-    check("kd", m.kd, kCoefficientRange.lo, kCoefficientRange.hi);
-    check("ks", m.ks, kCoefficientRange.lo, kCoefficientRange.hi);
-    check("ke", m.ke, kExponentRange.lo, kExponentRange.hi);
-    check("mirror", m.mirror, kUnitRange.lo, kUnitRange.hi);
-    check("transmission", m.transmission, kUnitRange.lo, kUnitRange.hi);
+    for (Param id : {Param::Ka, Param::Kd, Param::Ks, Param::Ke, Param::Mirror, Param::Transmission}) {
+        const Parameter& p = parameter(id);
+        check(p.name, materialValue(p, m), float(p.range.lo), float(p.range.hi));
+    }
 }
 
 EnvironmentSpec parseEnvironment(const std::string& text, const std::string& baseDir, const std::string& where) {

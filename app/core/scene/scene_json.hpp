@@ -24,19 +24,10 @@ Scene sceneForModel(const std::string& modelPath);
 // written relative to `saveDir` (the folder the JSON will be saved in).
 std::string sceneToJson(const Scene& scene, const std::string& saveDir);
 
-// Parses the command line's mesh shorthand: "uvsphere[:slices[:stacks]]", "icosphere[:subdivisions]",
-// "torus[:major_segments[:minor_segments]]", "cube", "plane[:subdivisions]", or a .gltf/.glb path.
-MeshSpec parseMeshShorthand(const std::string& text, const std::string& optionName);
-
-// Parses the command line's light shorthand, TYPE:X,Y,Z[:KEY=VALUE]...:
-//   point:X,Y,Z        a point light at (X, Y, Z)
-//   directional:X,Y,Z  a directional light travelling along (X, Y, Z)
-//   area:X,Y,Z         an area light centred at (X, Y, Z)
-// and the keys color=R,G,B  intensity=I  attenuation=none|inverse-square  range=R (point, area)
-// normal=X,Y,Z  size=W,H  samples=NXxNY  two-sided (area). E.g.
-//   area:0,3,0:size=1.6,1.6:samples=8x8:intensity=9:attenuation=inverse-square
-// Values are checked against the scene format's ranges; errors are InputErrors "<optionName>: ...".
-Light parseLightShorthand(const std::string& text, const std::string& optionName);
+// One light or one mesh as a scene file writes it ("lights"[i], "mesh"), read and checked as the scene
+// reader does; `label` starts the messages. The web page's panel edits lights and meshes as JSON.
+Light lightFromJson(const std::string& text, const std::string& label);
+MeshSpec meshFromJson(const std::string& text, const std::string& label);
 
 // Validation shared with the command line; each throws InputError "<where>: <what>".
 // "all" | "ambient" | "diffuse" | "specular" | "light:N" (0 <= N < kMaxLights) | "unlit". Throws

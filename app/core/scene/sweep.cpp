@@ -2,6 +2,7 @@
 
 #include "core/base/error.hpp"
 #include "core/base/message.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/image/text.hpp"
 
@@ -12,19 +13,28 @@
 namespace shadelab {
 namespace {
 
+// A number swept: a parameter of the table (core/scene/parameters.hpp), or the first object's
+// tessellation, which sets whichever of its mesh's parameters tessellate it (applySweep).
 struct NumericParameter {
     const char* name;
     double lo, hi;
     bool integer;
+    const Parameter* row;  // null for "tessellation"
 };
-const NumericParameter kNumeric[] = {
-    {"ke", kExponentRange.lo, kExponentRange.hi, false},
-    {"ks", kCoefficientRange.lo, kCoefficientRange.hi, false},
-    {"kd", kCoefficientRange.lo, kCoefficientRange.hi, false},
-    {"ka", kCoefficientRange.lo, kCoefficientRange.hi, false},
-    {"intensity", 0.0, 1e9, false},
-    {"tessellation", 1.0, double(kUvSphereSlicesRange.hi), true},
-    {"ior", kIorRange.lo, kIorRange.hi, false}};
+NumericParameter swept(Param id) {
+    const Parameter& p = parameter(id);
+    return {p.name, p.range.lo, p.range.hi, p.decimals == 0, &p};
+}
+const NumericParameter kNumeric[] = {swept(Param::Ke),        swept(Param::Ks),
+                                     swept(Param::Kd),        swept(Param::Ka),
+                                     swept(Param::Intensity), {"tessellation", 1.0, double(kUvSphereSlicesRange.hi), true, nullptr},
+                                     swept(Param::Ior)};
+
+const NumericParameter* numericNamed(const std::string& name) {
+    for (const NumericParameter& p : kNumeric)
+        if (name == p.name) return &p;
+    return nullptr;
+}
 
 // Sets `field` to the value `v` names in `names`; false when it names none.
 template <typename E, std::size_t N>
@@ -82,7 +92,9 @@ Sweep parseSweep(const std::string& text, const std::string& flag) {
                 throw InputError(flag + ": " + s.parameter + ": \"" + quoteInput(v) + "\" is not a number");
             if (p.integer && x != std::floor(x))
                 throw InputError(flag + ": " + s.parameter + ": \"" + quoteInput(v) + "\" is not an integer");
-            if (x < p.lo || x > p.hi) {
+            // A number is applied as a float: compared as one with the range (0.2 is kIorRange's 0.2f).
+            const double applied = p.integer ? x : double(float(x));
+            if (applied < p.lo || applied > p.hi) {
                 std::ostringstream range;
                 range << p.lo << ".." << p.hi;
                 throw InputError(flag + ": " + s.parameter + ": " + v + " is out of range (" + range.str() + ")");
@@ -115,15 +127,14 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
     const std::string& v = sweep.values.at(index);
     const std::string& p = sweep.parameter;
     const auto x = float(number(v));
-    if (p == "ke" || p == "ks" || p == "kd" || p == "ka") {
-        for (SceneObject& o : scene.objects) {
-            float& target = p == "ke" ? o.material.ke : p == "ks" ? o.material.ks : p == "kd" ? o.material.kd : o.material.ka;
-            target = x;
-        }
-    } else if (p == "intensity") {
-        for (Light& l : scene.lights) l.intensity = x;
-    } else if (p == "ior") {
-        scene.ior = x;
+    const NumericParameter* numeric = numericNamed(p);
+    if (numeric && numeric->row) {
+        const ParameterField& field = numeric->row->field;
+        if (field.material)
+            for (SceneObject& o : scene.objects) *field.material(o.material) = x;
+        if (field.light)
+            for (Light& l : scene.lights) *field.light(l) = x;
+        if (field.scene) *field.scene(scene) = x;
     } else if (p == "tessellation") {
         if (scene.objects.empty()) throw InputError(flag + ": tessellation: the scene has no object");
         MeshSpec& m = scene.objects[0].mesh;
@@ -157,10 +168,11 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
 }
 
 std::string sweepLabel(const Sweep& sweep, std::size_t index) {
-    const std::string name = sweep.parameter == "ke" ? "k_e" : sweep.parameter == "ks" ? "k_s"
-                             : sweep.parameter == "kd" ? "k_d" : sweep.parameter == "ka" ? "k_a"
-                             : sweep.parameter == "specular_normalization" ? "norm" : sweep.parameter == "tessellation" ? "tess"
-                                                                                                                        : sweep.parameter;
+    const NumericParameter* numeric = numericNamed(sweep.parameter);
+    const std::string name = numeric && numeric->row                        ? numeric->row->symbol
+                             : sweep.parameter == "specular_normalization" ? "norm"
+                             : sweep.parameter == "tessellation"           ? "tess"
+                                                                           : sweep.parameter;
     return name + "=" + sweep.values.at(index);
 }
 

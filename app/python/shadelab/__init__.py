@@ -21,7 +21,7 @@ import os
 from . import _shadelab
 from ._shadelab import InputError, ShaderError
 
-__all__ = ["render", "probe", "plot", "compare", "video", "Renderer", "InputError", "ShaderError",
+__all__ = ["render", "probe", "plot", "compare", "video", "parameters", "Renderer", "InputError", "ShaderError",
            "read_png", "write_png", "to_png", "data_path", "has_video", "__version__"]
 InputError.__module__ = ShaderError.__module__ = "shadelab"
 __version__ = _shadelab.version
@@ -154,6 +154,27 @@ def plot(kind, scene=None, *, size=None, **options):
     return _shadelab.plot(_call(scene, size, options, ["--plot", str(kind)]))
 
 
+def parameters():
+    """The lecture's parameters as the program declares them, once (core/scene/parameters.hpp): a list of
+    dicts with name (the scene file's), option (the command line's, "" for none), symbol ("k_e"), label,
+    section (the panel's), range, slider and scale (the panel's slider), default (None where it differs
+    per component) and help. The keyword argument that sets one is its option's name: ke=128 is --ke 128."""
+    return _shadelab.parameters()
+
+
+def _parameters_help():
+    """render()'s list of the parameters that keyword arguments set, made from parameters()."""
+    lines = ["", "", "    The lecture's parameters as keyword arguments (shadelab.parameters() has them all):"]
+    for p in parameters():
+        if not p["option"]:
+            continue
+        keyword = p["option"][2:].replace("-", "_")
+        default = "" if p["default"] is None else ", default %g" % p["default"]
+        lines.append("      %s (%s, %g..%g%s): %s" % (keyword, p["symbol"], p["range"][0], p["range"][1], default,
+                                                    p["help"]))
+    return "\n".join(lines)
+
+
 class Comparison:
     """What compare() found. `matches`: within max_diff, mean_diff and max_diff_pixels (and of one size);
     `max` (/255) and `mean`: the per-channel differences as --reference measures them; `differing_pixels`:
@@ -210,3 +231,6 @@ def video(path, scene=None, *, size=None, **options):
     if isinstance(scene, dict):
         raise InputError("video: the scene as a path to its JSON file (a dict is taken by render, probe and plot)")
     _shadelab.video(_call(scene, size, options), os.fspath(path))
+
+
+render.__doc__ += _parameters_help()

@@ -19,12 +19,12 @@
 namespace shadelab {
 
 // What a run does, decided once by parseOptions from the options given (main.cpp acts on it).
-// In order of precedence: the run is the first of those the options given ask for (cli/option_table.hpp,
+// In order of precedence: the run is the first of those the options given ask for (options/option_table.hpp,
 // OptionRules::mode).
 enum class RunMode {
     Help,            // --help: print usage()
     Version,         // --version
-    TestSuite,       // --test DIR: every DIR/*.json against its reference (cli/test_suite.hpp)
+    TestSuite,       // --test DIR: every DIR/*.json against its reference (run/test_suite.hpp)
     PlaylistImages,  // --playlist DIR --output OUT/: one PNG per preset
     PlaylistViewer,  // --playlist DIR: the viewer stepping through the presets
     Info,            // --info: what was loaded
@@ -50,7 +50,7 @@ struct Options {
     bool captions = false;                  // --captions: --output PNGs get a strip with the title and caption
     bool formula = false;                   // --formula: the lecture's formula over the view (viewer: key E)
     bool intersection = false;              // --intersection: with --probe, the intersection diagram (viewer: key I)
-    // --reference REF.png: the --output image compared with REF.png (cli/reference.hpp); the thresholds,
+    // --reference REF.png: the --output image compared with REF.png (run/reference.hpp); the thresholds,
     // what a missing reference does and where the amplified difference goes. Unset: the defaults
     // (core/image/image.hpp, ImageTolerance); each is refused without --reference.
     std::optional<std::string> reference;
@@ -58,7 +58,7 @@ struct Options {
     std::optional<int> maxDiff;             // --max-diff D (0..255)
     std::optional<float> meanDiff;          // --mean-diff M (0..255)
     std::optional<std::string> diffOutput;  // --diff-output DIFF.png
-    // --test DIR: a folder of scenes, each compared with its reference (cli/test_suite.hpp): where the
+    // --test DIR: a folder of scenes, each compared with its reference (run/test_suite.hpp): where the
     // references are (default DIR), the reports, and whether the failing references are rewritten.
     // --max-diff and --mean-diff apply to every scene; the others are refused without --test.
     std::optional<std::string> testDir;
@@ -135,7 +135,7 @@ struct Options {
     RunMode mode = RunMode::Viewer;          // from all of the above (parseOptions)
 };
 
-// Reads the arguments through the option table (cli/option_table.hpp), checks the options against each
+// Reads the arguments through the option table (options/option_table.hpp), checks the options against each
 // other and decides the run mode. Throws InputError "--flag: what is wrong" for unknown flags, missing
 // or malformed values and options that do not go together.
 Options parseOptions(const std::vector<std::string>& args);

@@ -1,5 +1,5 @@
-// What every run mode that loads a scene's models shares (program.hpp).
-#include "cli/program.hpp"
+// What every run mode that loads a scene's models shares (session.hpp).
+#include "run/session.hpp"
 
 #include "core/base/message.hpp"
 

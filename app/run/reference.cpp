@@ -1,4 +1,4 @@
-#include "cli/reference.hpp"
+#include "run/reference.hpp"
 
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"

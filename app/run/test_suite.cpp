@@ -1,7 +1,7 @@
-#include "cli/test_suite.hpp"
+#include "run/test_suite.hpp"
 
-#include "cli/reference.hpp"
-#include "cli/test_report.hpp"
+#include "run/reference.hpp"
+#include "run/test_report.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/message.hpp"

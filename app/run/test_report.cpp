@@ -1,6 +1,6 @@
-#include "cli/test_report.hpp"
+#include "run/test_report.hpp"
 
-#include "cli/reference.hpp"
+#include "run/reference.hpp"
 #include "core/base/message.hpp"
 #include "core/scene/scene_limits.hpp"
 

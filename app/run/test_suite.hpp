@@ -7,9 +7,9 @@
 // masks) over the command line's. Reading the references, comparing and encoding PNGs run on other
 // threads while the next scene renders. A case that cannot be compared (unreadable scene, missing or
 // malformed reference, a shader that does not compile, a scene over the memory budget) fails and the run
-// goes on; cli/test_report.hpp says how the results are told (stdout, --junit, --report, --artifacts).
+// goes on; run/test_report.hpp says how the results are told (stdout, --junit, --report, --artifacts).
 // --update rewrites the references of the failing cases that have a render.
-#include "cli/options.hpp"
+#include "options/options.hpp"
 #include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
 

@@ -1,8 +1,8 @@
-// The run modes that render without a window (program.hpp): one frame, a sweep sheet, a probed frame,
+// The run modes that render without a window (session.hpp): one frame, a sweep sheet, a probed frame,
 // a benchmark, a playlist's images, a video. Built where a headless context is (SHADELAB_OSMESA or SHADELAB_EGL).
-#include "cli/program.hpp"
-#include "cli/reference.hpp"
-#include "cli/test_suite.hpp"
+#include "run/session.hpp"
+#include "run/reference.hpp"
+#include "run/test_suite.hpp"
 #include "core/base/file_io.hpp"
 #include "core/figures/formula_image.hpp"
 #include "core/geometry/camera.hpp"
@@ -138,7 +138,7 @@ int runProbeImage(const RunContext& run, Scene scene) {
     return 0;
 }
 
-// --output, with --reference: compared with it (cli/reference.hpp), which is read before the render.
+// --output, with --reference: compared with it (run/reference.hpp), which is read before the render.
 int runImage(const RunContext& run, Scene scene) {
     const Options& options = run.options;
     const std::optional<Image> reference = readReference(options);

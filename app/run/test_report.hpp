@@ -1,5 +1,5 @@
 #pragma once
-// What a `--test DIR` run found (cli/test_suite.hpp runs it) and how it is told: a line per failing case
+// What a `--test DIR` run found (run/test_suite.hpp runs it) and how it is told: a line per failing case
 // and a summary on stdout, JUnit XML (--junit) and one self-contained HTML page (--report). GL-free, so
 // the writers are unit-tested without a context (tests/unit/test_report_test.cpp).
 //

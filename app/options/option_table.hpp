@@ -15,8 +15,11 @@
 // more code around either library than the ~60 lines of parsing this table needs, plus a build
 // dependency (for the libFuzzer build too). The table keeps what a library would give: one
 // declaration per option, --help and the README's table generated from it.
-#include "cli/options.hpp"
+#include "options/options.hpp"
+#include "core/scene/panel_sections.hpp"
 #include "core/scene/scene_limits.hpp"
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -71,11 +74,14 @@ struct OptionSpec {
     OptionGroup group;
     Bounds bounds;            // the range its number (or numbers) must be in, when it has one
     std::string (*names)();   // the values it takes when they are names ("flat | gouraud | phong"), else null
-    const char* sets;         // the scene-file field it overrides ("ior", "objects[].material.ka"); "" for none
+    std::string sets;         // the scene-file field it overrides ("ior", "objects[].material.ka"); "" for none
     const char* help;         // one paragraph; "{range}" and "{names}" stand for the two above
     // Reads the value (empty for a switch) into the options; throws InputError "--name: ...".
     void (*apply)(Options& options, const OptionSpec& self, const std::string& value);
     OptionRules rules = {};   // which options it goes with, and the run it asks for
+    // The panel section where the viewer and the web page show its control; a parameter's option takes
+    // its parameter's (core/scene/parameters.hpp). None: no control (or one the panel places itself).
+    std::optional<PanelSection> section = std::nullopt;
 };
 
 // Every option, in the order --help and the README list them.
@@ -83,6 +89,9 @@ const OptionSpec* optionsBegin();
 const OptionSpec* optionsEnd();
 // The option called `name` ("--output") or with that alias ("-o"); null when there is none.
 const OptionSpec* findOption(const std::string& name);
+
+// Where the option's control sits: its row's section, else its parameter's; none for the others.
+std::optional<PanelSection> optionSection(const OptionSpec& spec);
 
 // The help text with {range} ("1..10") and {names} filled in.
 std::string optionHelp(const OptionSpec& spec);

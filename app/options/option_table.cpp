@@ -1,15 +1,17 @@
-#include "cli/option_table.hpp"
+#include "options/option_table.hpp"
 
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/scene/memory_budget.hpp"
 #include "core/base/message.hpp"
 #include "core/scene/panel_sections.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/figures/plot_image.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/view_names.hpp"
+#include "options/shorthand.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -98,12 +100,23 @@ template <bool Options::*Field>
 void setTrue(Options& o, const OptionSpec&, const std::string&) {
     o.*Field = true;
 }
-// --ka, --kd, --ks, --ke: a number of every object's material, its range checked with the scene's
-// (applyOverrides: checkCoefficients).
+using ApplyOption = void (*)(Options& options, const OptionSpec& self, const std::string& value);
+
+// The row of an option that sets a parameter of the table (core/scene/parameters.hpp): its name, range
+// and help are the parameter's; `sets` the scene-file field it overrides.
+OptionSpec parameterOption(Param id, const char* argument, std::string sets, ApplyOption apply, OptionRules rules = {}) {
+    const Parameter& p = parameter(id);
+    return {p.option, "", argument, OptionGroup::General, Bounds{p.range.lo, p.range.hi, true}, nullptr, std::move(sets),
+            p.help, apply, std::move(rules)};
+}
+std::string materialField(Param id) { return std::string("objects[].material.") + parameter(id).name; }
+
+// --ka, --kd, --ks, --ke, --mirror, --transmission: a number of every object's material, its range
+// checked with the scene's (applyOverrides: checkCoefficients).
 template <std::optional<float> Options::*Field>
-OptionSpec materialOption(const char* name, const char* field, const Range<float>& range, const char* help) {
-    return {name, "", "X", OptionGroup::General, bounds(range), nullptr, field, help,
-            [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = parseFloat(self.name, v); }};
+OptionSpec materialOption(Param id) {
+    return parameterOption(id, "X", materialField(id),
+                           [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = parseFloat(self.name, v); });
 }
 // "R,G,B", each channel in the option's range.
 glm::vec3 colorIn(const OptionSpec& spec, const std::string& v) {
@@ -116,9 +129,9 @@ glm::vec3 colorIn(const OptionSpec& spec, const std::string& v) {
     return {channels[0], channels[1], channels[2]};
 }
 template <std::optional<glm::vec3> Options::*Field>
-OptionSpec colorOption(const char* name, const char* field, const char* help) {
-    return {name, "", "R,G,B", OptionGroup::General, bounds(kColorRange), nullptr, field, help,
-            [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = colorIn(self, v); }};
+OptionSpec colorOption(Param id, std::string field) {
+    return parameterOption(id, "R,G,B", std::move(field),
+                           [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = colorIn(self, v); });
 }
 template <std::optional<std::string> Options::*Field>
 void setPath(Options& o, const OptionSpec&, const std::string& v) {
@@ -180,7 +193,7 @@ const OptionSpec kOptions[] = {
      "symbols; with `--probe`, each term's value at that pixel; over each pane, where its mode evaluates the "
      "formula. The viewer starts with it on (key E), in a band above the view; with `--output` it is drawn into the PNG",
      setTrue<&Options::formula>,
-     {"draws over a frame (the viewer's or --output's)", {{"--sweep"}, {"--benchmark"}, {"--plot"}, {"--info"}}}},
+     {"draws over a frame (the viewer's or --output's)", {{"--sweep"}, {"--benchmark"}, {"--plot"}, {"--info"}}}, PanelSection::Overlays},
     // Issue 30, the intersection diagram.
     {"--intersection", "", "", G::General, kNoBounds, nullptr, "",
      "with `--probe` and `--output`: the lecture's \"At the Intersection\" drawn at the probed point into the PNG: "
@@ -291,35 +304,40 @@ const OptionSpec kOptions[] = {
      kNeedsTest},
     {"--shading", "", "MODE", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "shading",
      "shading mode (single layout): {names}",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); },
+     {}, PanelSection::Shading},
     {"--layout", "", "LAYOUT", G::General, kNoBounds, [] { return namesList(kLayoutNames, " | "); }, "layout",
      "{names}: compare is three equal panes flat | gouraud | phong, one camera; diff is A | B | |A - B| x factor "
      "(see *Lecture tools*)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.layout = choice(self.name, v, kLayoutNames); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.layout = choice(self.name, v, kLayoutNames); },
+     {}, PanelSection::Shading},
     {"--diff", "", "A,B", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "diff.a, diff.b",
      "the two shading modes of the diff layout (default gouraud,phong), each {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          const auto ab = pairOf(self.name, v, ',', "two shading modes A,B, e.g. gouraud,phong");
          o.diffA = choice(self.name, ab.first, kShadingModeNames);
          o.diffB = choice(self.name, ab.second, kShadingModeNames);
-     }},
-    {"--diff-factor", "", "X", G::General, bounds(kDiffFactorRange), nullptr, "diff.factor",
-     "layout diff: |A - B| is multiplied by X ({range}, default {diff-factor})",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.diffFactor = floatIn(self, v); }},
+     },
+     {}, PanelSection::Shading},
+    parameterOption(Param::DiffFactor, "X", "diff.factor",
+                    [](Options& o, const OptionSpec& self, const std::string& v) { o.diffFactor = floatIn(self, v); }),
     {"--reflection", "", "MODEL", G::General, kNoBounds, [] { return namesList(kReflectionModelNames, " | "); },
      "reflection", "the specular lobe: {names}",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          o.reflection = choice(self.name, v, kReflectionModelNames);
-     }},
+     },
+     {}, PanelSection::Shading},
     {"--specular-normalization", "", "NORM", G::General, kNoBounds,
      [] { return namesList(kSpecularNormalizationNames, " | "); }, "specular_normalization",
      "{names}: energy-normalised lobes ((k_e+2)/2pi, (k_e+8)/8pi; diffuse 1/pi; see *Lecture tools*)",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          o.specularNormalization = choice(self.name, v, kSpecularNormalizationNames);
-     }},
+     },
+     {}, PanelSection::Shading},
     {"--fresnel", "", "MODE", G::General, kNoBounds, [] { return namesList(kFresnelModeNames, " | "); }, "fresnel",
      "{names}: the specular term weighted by the Fresnel reflectance at V.H",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.fresnel = choice(self.name, v, kFresnelModeNames); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.fresnel = choice(self.name, v, kFresnelModeNames); },
+     {}, PanelSection::Shading},
     {"--output-encoding", "", "ENC", G::General, kNoBounds, [] { return namesList(kOutputEncodingNames, " | "); },
      "output_encoding",
      "{names}: how the clamped linear L is written (default: srgb for a scene that draws a glTF model, whose "
@@ -327,44 +345,34 @@ const OptionSpec kOptions[] = {
      "drawn*)",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          o.outputEncoding = choice(self.name, v, kOutputEncodingNames);
-     }},
-    {"--ior", "", "X", G::General, bounds(kIorRange), nullptr, "ior",
-     "relative index of refraction eta2/eta1 for `--fresnel` and for glass's refraction ({range}, default 1.5): "
-     "from air into the material; below 1 the light comes from inside it (total internal reflection past the "
-     "critical angle)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.ior = floatIn(self, v); }},
+     },
+     {}, PanelSection::Shading},
+    parameterOption(Param::Ior, "X", parameter(Param::Ior).name,
+                    [](Options& o, const OptionSpec& self, const std::string& v) { o.ior = floatIn(self, v); }),
     {"--show", "", "TERM", G::General, kNoBounds, [] { return namesList(kShowTermNames, " | "); },
      "show", "draw one addend of the formula alone: {names}",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.show = parseTermView(v, self.name); }},
-    materialOption<&Options::ka>("--ka", "objects[].material.ka", kCoefficientRange, "ambient weight ({range}) of every object"),
-    materialOption<&Options::kd>("--kd", "objects[].material.kd", kCoefficientRange, "diffuse weight ({range}) of every object"),
-    materialOption<&Options::ks>("--ks", "objects[].material.ks", kCoefficientRange, "specular weight ({range}) of every object"),
-    materialOption<&Options::ke>("--ke", "objects[].material.ke", kExponentRange, "specular exponent ({range}) of every object"),
-    {"--anisotropy", "", "KT,KB", G::General, bounds(kExponentRange), nullptr, "objects[].material.anisotropy",
-     "anisotropic (brushed-metal) highlights on every object: Ashikhmin and Shirley's exponent, k_t along the "
-     "surface's tangent and k_b along its bitangent ({range} each) instead of k_e; k_t = k_b = k_e is Blinn-Phong. "
-     "Needs `--reflection blinn-phong` (see *What is drawn*)",
-     [](Options& o, const OptionSpec& self, const std::string& v) {
-         const auto kb = pairOf(self.name, v, ',', "KT,KB, two exponents, e.g. 8,256");
-         o.anisotropy = glm::vec2(floatIn(self, kb.first), floatIn(self, kb.second));
-     }},
-    materialOption<&Options::mirror>("--mirror", "objects[].material.mirror", kUnitRange,
-                                     "k_r ({range}) of every object: the mirror term k_r F env(R) added after the "
-                                     "lecture's sum (needs `--environment`; F by `--fresnel`, 1 with none)"),
-    materialOption<&Options::transmission>("--transmission", "objects[].material.transmission", kUnitRange,
-                                           "k_t ({range}) of every object: glass, k_t (1 - F) env(T) with T refracted "
-                                           "by Snell's law at the surface (`--ior`; needs `--environment`)"),
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.show = parseTermView(v, self.name); },
+     {}, PanelSection::Shading},
+    materialOption<&Options::ka>(Param::Ka),
+    materialOption<&Options::kd>(Param::Kd),
+    materialOption<&Options::ks>(Param::Ks),
+    materialOption<&Options::ke>(Param::Ke),
+    parameterOption(Param::Anisotropy, "KT,KB", materialField(Param::Anisotropy),
+                    [](Options& o, const OptionSpec& self, const std::string& v) {
+                        const auto kb = pairOf(self.name, v, ',', "KT,KB, two exponents, e.g. 8,256");
+                        o.anisotropy = glm::vec2(floatIn(self, kb.first), floatIn(self, kb.second));
+                    }),
+    materialOption<&Options::mirror>(Param::Mirror),
+    materialOption<&Options::transmission>(Param::Transmission),
     {"--environment", "", "ENV", G::General, kNoBounds, [] { return namesList(kEnvironmentNames, " | "); }, "environment",
      "what mirrors and glass reflect and refract, drawn as the background: {names} (room: coloured walls and a "
      "checker floor; sky: a gradient with a sun), or an equirectangular FILE.png or FILE.hdr (see *What is drawn*)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.environment = parseEnvironment(v, "", self.name); }},
-    colorOption<&Options::color>("--color", "objects[].material.color",
-                                 "C, the diffuse and ambient colour of every object, linear RGB ({range} each); "
-                                 "replaces a glTF model's base colours"),
-    colorOption<&Options::specularColor>("--specular-color", "objects[].material.specular_color",
-                                         "S, the highlight's colour of every object, linear RGB ({range} each)"),
-    colorOption<&Options::ambient>("--ambient", "ambient", "A, the ambient light, linear RGB ({range} each)"),
-    colorOption<&Options::background>("--background", "background", "the background, linear RGB ({range} each)"),
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.environment = parseEnvironment(v, "", self.name); },
+     {}, PanelSection::Background},
+    colorOption<&Options::color>(Param::Color, materialField(Param::Color)),
+    colorOption<&Options::specularColor>(Param::SpecularColor, materialField(Param::SpecularColor)),
+    colorOption<&Options::ambient>(Param::Ambient, parameter(Param::Ambient).name),
+    colorOption<&Options::background>(Param::Background, parameter(Param::Background).name),
     {"--size", "", "WxH", G::General, bounds(kImageSideRange), nullptr, "size",
      "image size in pixels, {range} per side, e.g. 1280x720",
      [](Options& o, const OptionSpec& self, const std::string& v) {
@@ -374,7 +382,8 @@ const OptionSpec kOptions[] = {
          checkImageSize(w, h, self.name);
          o.width = w;
          o.height = h;
-     }},
+     },
+     {}, PanelSection::Camera},
     {"--mesh", "", "SPEC", G::General, kNoBounds, nullptr, "objects[0].mesh",
      "replace the first object's mesh: `uvsphere[:slices[:stacks]]`, `icosphere[:n]`, `torus[:major[:minor]]`, "
      "`cube`, `plane[:n]`, or a `.gltf`/`.glb` file",
@@ -392,13 +401,13 @@ const OptionSpec kOptions[] = {
          addAtMost(o.lights, parseLightShorthand(v, self.name), std::size_t(self.bounds.hi), tooMany);
      }},
     {"--shadows", "", "", G::General, kNoBounds, nullptr, "shadows", "shadows (occlusion toward every light) on",
-     [](Options& o, const OptionSpec&, const std::string&) { o.shadows = true; }},
+     [](Options& o, const OptionSpec&, const std::string&) { o.shadows = true; }, {}, PanelSection::Shadows},
     {"--no-shadows", "", "", G::General, kNoBounds, nullptr, "shadows", "shadows off",
      [](Options& o, const OptionSpec&, const std::string&) { o.shadows = false; }},
     {"--no-textures", "", "", G::General, kNoBounds, nullptr, "textures",
      "glTF models without their base colour textures and vertex colours: C is each material's base colour factor "
      "(see *What is drawn*)",
-     setTrue<&Options::noTextures>},
+     setTrue<&Options::noTextures>, {}, PanelSection::Material},
     {"--sweep", "", "PARAM=V1,V2,...", G::General, kNoBounds, nullptr, "",
      "with `--output`: a contact sheet, one labelled tile (of `--size`) per value; a second `--sweep` gives rows. "
      "PARAM: `ke`, `ks`, `kd`, `ka`, `intensity` (every light), `tessellation` (first mesh), `ior`, `shading`, "
@@ -462,15 +471,14 @@ const OptionSpec kOptions[] = {
        {"--benchmark", nullptr, "--plot: draws one plot: not with --sweep or --benchmark"}},
       {{{"--output"}, "writes a PNG: give --output FILE.png"}},
       RunMode::Plot, RunMode::Plot}},
-    {"--incidence", "", "DEG", G::General, bounds(kIncidenceDegRange), nullptr, "",
-     "the lobe, lobe3d and brdf-slice plots' angle between the incoming light I and N ({range}, default 45)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.incidenceDeg = floatIn(self, v, " degrees"); },
-     plotSetting("--incidence: sets up the plots: use it with --plot, or in the viewer")},
+    parameterOption(Param::Incidence, "DEG", "",
+                    [](Options& o, const OptionSpec& self, const std::string& v) { o.incidenceDeg = floatIn(self, v, " degrees"); },
+                    plotSetting("--incidence: sets up the plots: use it with --plot, or in the viewer")),
     {"--from-inside", "", "", G::General, kNoBounds, nullptr, "",
      "the Fresnel plot from inside the material (eta1 = `--ior`, eta2 = 1): total internal reflection past the "
      "critical angle",
      setTrue<&Options::fromInside>,
-     plotSetting("--from-inside: sets up the plots: use it with --plot, or in the viewer")},
+     plotSetting("--from-inside: sets up the plots: use it with --plot, or in the viewer"), PanelSection::Plots},
     {"--probe", "", "X,Y", G::General, Bounds{0, kImageSideRange.hi - 1, true}, nullptr, "",
      "with `--output`: also print on stdout, as JSON, every term of the formula at pixel X,Y (top-left origin, "
      "any layout) the way that pixel's mode evaluates it (see *Pixel probe*); without `--output`: open the "
@@ -508,7 +516,8 @@ const OptionSpec kOptions[] = {
      "`--benchmark` default to 1, pixel-exact with the golden images; the viewer to 4 (on a software renderer "
      "such as llvmpipe only the still view is anti-aliased: moving frames are drawn without, see "
      "bench/README.md), a scripted `--frames` run to 1",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.msaa = choice(self.name, v, kMsaaNames); }},
+     [](Options& o, const OptionSpec& self, const std::string& v) { o.msaa = choice(self.name, v, kMsaaNames); },
+     {}, PanelSection::Shading},
     {"--camera", "", "N", G::General, Bounds{0, 100000, true}, nullptr, "",
      "look through the glTF model's camera N (`--info` lists them, in the order the drawn scene reaches them) "
      "instead of shadelab's framing; orthographic cameras are refused (the views are perspective)",
@@ -612,10 +621,17 @@ std::string optionHelp(const OptionSpec& spec) {
     fill("{max-diff}", formatNumber(ImageTolerance{}.maxDiff));
     fill("{mean-diff}", formatNumber(ImageTolerance{}.meanDiff));
     fill("{diff-factor}", formatNumber(DiffSettings{}.factor));
+    if (const Parameter* p = parameterOfOption(spec.name)) fill("{default}", defaultText(*p));
     fill("{max-animations}", std::to_string(kMaxAnimations));
     fill("{animation-seconds}", formatNumber(kDefaultAnimationSeconds));
     fill("{fps}", std::to_string(kDefaultVideoFps));
     return text;
+}
+
+std::optional<PanelSection> optionSection(const OptionSpec& spec) {
+    if (spec.section) return spec.section;
+    if (const Parameter* p = parameterOfOption(spec.name)) return p->section;
+    return std::nullopt;
 }
 
 std::string optionSynopsis(const OptionSpec& spec) {

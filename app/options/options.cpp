@@ -1,6 +1,6 @@
-#include "cli/options.hpp"
+#include "options/options.hpp"
 
-#include "cli/option_table.hpp"
+#include "options/option_table.hpp"
 #include "core/ui/controls.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
@@ -300,7 +300,7 @@ std::string optionsMarkdown() {
     for (const OptionSpec* s = optionsBegin(); s != optionsEnd(); ++s) {
         std::string values = s->names ? s->names() : "";
         if (s->bounds.given && !s->names) values = rangeText(Range<double>{s->bounds.lo, s->bounds.hi});
-        const std::string field = *s->sets ? "`" + std::string(s->sets) + "`" : "";
+        const std::string field = !s->sets.empty() ? "`" + s->sets + "`" : "";
         out += "| `" + cell(optionSynopsis(*s)) + "` | " + cell(values) + " | " + field + " | " +
                cell(optionHelp(*s)) + (s->group == OptionGroup::Viewer ? " (viewer only)" : "") + " |\n";
     }
