@@ -27,9 +27,13 @@ import test_web  # noqa: E402  (the browser's options and the page's readiness, 
 
 FRAME_TIMES = """
 const n = arguments[0], warm = 3;
+const Module = window.shadelab.module;
+// The program's WebGL2 context: getContext gives the canvas's existing one (index.js keeps its GLctx
+// to itself, -sMODULARIZE).
+const GLctx = document.getElementById('canvas').getContext('webgl2');
 const finish = () => {
   // A 1x1 read waits for the frame to be drawn (gl.finish alone need not, in Chromium).
-  if (typeof GLctx !== 'undefined') GLctx.readPixels(0, 0, 1, 1, GLctx.RGBA, GLctx.UNSIGNED_BYTE, new Uint8Array(4));
+  if (GLctx) GLctx.readPixels(0, 0, 1, 1, GLctx.RGBA, GLctx.UNSIGNED_BYTE, new Uint8Array(4));
   else Module.ccall('sl_read_pixels', 'string', [], []);
 };
 const times = [];
@@ -40,7 +44,7 @@ for (let i = 0; i < warm + n; ++i) {
   finish();
   if (i >= warm) times.push(performance.now() - t);
 }
-return {times: times, finisher: typeof GLctx !== 'undefined' ? 'GLctx.readPixels 1x1' : 'sl_read_pixels'};
+return {times: times, finisher: GLctx ? 'GLctx.readPixels 1x1' : 'sl_read_pixels'};
 """
 
 

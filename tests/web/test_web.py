@@ -12,13 +12,16 @@ a second one); the page is loaded from file:// except in HttpServer, which serve
 
 Two kinds of tests:
 
-- Api*: the program's exported functions (Module.ccall: sl_apply, sl_read_pixels, ...). They run on
-  any page that loads index.js, the placeholder panel included.
+- Api*: the program's exported functions (shadelab.module.ccall: sl_apply, sl_read_pixels, ...; the
+  program is a factory, -sMODULARIZE, so there is no global Module: the page hands its instance out
+  as window.shadelab.module).
 - HttpServer: one parity check over http://127.0.0.1; Screenshots: the page at 1920x1080 and at a 2x
   device scale, opened with ?preset=6&layout=compare (so they need the panel's preset= too).
 - Panel*: the panel's contract (window.shadelab, the named form elements, #next, #message, the keys,
-  the URL). Until app/web/panel.js offers it they FAIL, each with a line saying what is missing; they
-  are never skipped.
+  the URL). Until the page (app/web/src/) offers it they FAIL, each with a line saying what is
+  missing; they are never skipped.
+- SourceSize: the page's JavaScript in small parts (tests/web/js_size.py: functions of at most 40
+  lines, files of at most 400).
 
 Parity tolerance. The page draws with WebGL2 on SwiftShader (through ANGLE), `shadelab --output`
 with Mesa's llvmpipe. Both rasterise by the same rules, so the pictures agree except where the two
@@ -290,9 +293,10 @@ def wait_for(driver, script, what, timeout=30):
         time.sleep(0.05)
 
 
-# The program has run main() once Module.ccall exists and sl_gl_info answers without an error.
-PROGRAM_READY = ("return typeof Module !== 'undefined' && Module.calledRun === true && "
-                 "typeof Module.ccall === 'function'")
+# The program (the page's emscripten module instance, window.shadelab.module) has run main() once its
+# ccall exists.
+PROGRAM_READY = ("const m = window.shadelab && window.shadelab.module; "
+                 "return !!m && m.calledRun === true && typeof m.ccall === 'function'")
 
 
 def load_page(driver, query="", url=None):
@@ -305,7 +309,7 @@ def load_page(driver, query="", url=None):
 
 def ccall(name, types=(), args=(), driver=None):
     text = (driver or DRIVER).execute_script(
-        "return Module.ccall(arguments[0], 'string', arguments[1], arguments[2]);", name, list(types), list(args))
+        "return window.shadelab.module.ccall(arguments[0], 'string', arguments[1], arguments[2]);", name, list(types), list(args))
     return json.loads(text)
 
 
@@ -314,6 +318,7 @@ def apply(args, driver=None):
 
 
 READ_PIXELS = """
+const Module = window.shadelab.module;
 const r = JSON.parse(Module.ccall('sl_read_pixels', 'string', [], []));
 if (r.error) return r;
 const p = Module.ccall('sl_frame_data', 'number', [], []);
@@ -336,7 +341,7 @@ def write_to_page(path, data, driver=None):
     (driver or DRIVER).execute_script(
         "const b = atob(arguments[1]); const a = new Uint8Array(b.length);"
         "for (let i = 0; i < b.length; ++i) a[i] = b.charCodeAt(i);"
-        "Module.FS.writeFile(arguments[0], a);", path, base64.b64encode(data).decode())
+        "window.shadelab.module.FS.writeFile(arguments[0], a);", path, base64.b64encode(data).decode())
 
 
 def native(args, output):
@@ -610,10 +615,10 @@ class Screenshots(PageTest):
             driver.quit()
 
 
-# --- Panel: the HTML panel's contract (app/web/panel.js) -----------------------------------------
+# --- Panel: the HTML panel's contract (app/web/src/) -----------------------------------------
 
-PANEL_MISSING = ("the panel's contract is not there: window.shadelab is undefined (app/web/panel.js is still "
-                 "the placeholder?); issue 29: window.shadelab = {ready, state(), apply(), readPixels(), "
+PANEL_MISSING = ("the panel's contract is not there: window.shadelab is undefined (app/web/src/start.js "
+                 "sets it); issue 29: window.shadelab = {ready, state(), apply(), readPixels(), "
                  "describe (sl_describe's object, or a function returning it), frames, lastError}")
 
 
@@ -952,6 +957,42 @@ class PanelUrl(PanelTest):
         self.assertEqual(again, pixels)
         self.assertEqual(DRIVER.execute_script("const c = document.getElementById('canvas'); return [c.width, c.height];"),
                          [int(v) for v in SIZE.split("x")])
+
+
+# --- SourceSize: the page's JavaScript in small parts (issue 40) ---------------------------------
+
+class SourceSize(unittest.TestCase):
+    """tests/web/js_size.py over app/web/src: functions of at most 40 lines, files of at most 400."""
+
+    def setUp(self):
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import js_size
+        self.js_size = js_size
+
+    def test_page_sources(self):
+        problems, longest = self.js_size.check([os.path.join(ROOT, "app", "web", "src")])
+        self.assertEqual(problems, [], "\n".join(problems))
+        self.assertIsNotNone(longest, "no function found in app/web/src")
+
+    def test_the_check_fails(self):
+        """A 41-line function, one nested in a method and a 401-line file are each caught."""
+        body = "".join("  x += %d;\n" % i for i in range(39))
+        cases = {"long.js": ("function long(x) {\n" + body + "}\n", ["long is 41 lines"]),
+                 "nested.js": ("const o = {\n  update() {\n    const f = (a) => {\n" + body + "    };\n  },\n};\n",
+                               ["f => is 41 lines", "update is 43 lines"]),
+                 "big.js": ("// a line\n" * 401, ["401 lines (at most 400 a file)"])}
+        for name, (text, said) in cases.items():
+            path = os.path.join(WORK or tempfile.gettempdir(), name)
+            with open(path, "w") as f:
+                f.write(text)
+            problems, _ = self.js_size.check([path])
+            self.assertEqual(len(problems), len(said), "%s: %s" % (name, problems))
+            for p, s in zip(problems, said):
+                self.assertIn(s, p)
+        short = os.path.join(WORK or tempfile.gettempdir(), "short.js")
+        with open(short, "w") as f:
+            f.write("function short(x) {\n" + body[:-len("  x += 38;\n")] + "}\n")
+        self.assertEqual(self.js_size.check([short])[0], [])
 
 
 # --- the runner ---------------------------------------------------------------------------------
