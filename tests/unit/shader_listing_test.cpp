@@ -37,9 +37,10 @@ GlslToken tokenOf(const GlslLine& line, const std::string& text) {
 // The slide's formula first, then the mode's stages, then what the program adds.
 TEST(ShaderListing, EachModeShowsTheLectureFirstThenItsStagesAndTheLightingInclude) {
     EXPECT_EQ(shaderFilesOf(ShadingMode::Flat),
-              (std::vector<std::string>{"lecture.glsl", "flat.vert", "flat.frag", "lighting.glsl"}));
+              (std::vector<std::string>{"lecture.glsl", "flat.vert", "flat.frag", "vertex_shading.glsl", "lighting.glsl"}));
     EXPECT_EQ(shaderFilesOf(ShadingMode::Gouraud),
-              (std::vector<std::string>{"lecture.glsl", "gouraud.vert", "gouraud.frag", "lighting.glsl"}));
+              (std::vector<std::string>{"lecture.glsl", "gouraud.vert", "gouraud.frag", "vertex_shading.glsl",
+                                        "lighting.glsl"}));
     EXPECT_EQ(shaderFilesOf(ShadingMode::Phong),
               (std::vector<std::string>{"lecture.glsl", "phong.vert", "phong.frag", "lighting.glsl"}));
     for (ShadingMode m : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
