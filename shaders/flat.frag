@@ -1,19 +1,11 @@
-#include "object_color.glsl"
+// Flat shading's fragments: each takes its triangle's colour from flat.vert as it is (`flat`).
+#define SL_ONE_PER_TRIANGLE 1
+#include "vertex_shading.glsl"
 
-#if SL_TEXTURED
-flat in vec3 v_termsOfC;
-flat in vec3 v_specular;
-#else
-flat in vec3 v_color;
-#endif
 out vec4 o_color;
 
 void main() {
-    if (cutOut()) discard;
-#if SL_TEXTURED
-    vec3 color = combineTerms(v_termsOfC, v_specular);
-#else
-    vec3 color = v_color;
-#endif
-    o_color = vec4(encodeOutput(color), outputAlpha());
+    if (cutOut()) discard;                           // glTF's alpha MASK: not there
+    vec3 L = shadedColor();                          // the triangle's L (times the texel where C varies)
+    o_color = vec4(encodeOutput(L), outputAlpha());  // L is clamped already: encoded
 }

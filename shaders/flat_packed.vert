@@ -8,7 +8,7 @@
 // normal y plus SL_FLAT_NORMAL_Z_NEGATIVE where its z is negative (z itself comes from the unit length).
 #include "shared_defs.glsl"
 
-#define SL_FLAT_PACKED 1
+#define SL_FLAT_PACKED 1  // flat_inputs.glsl: these declarations instead of its three attributes
 layout(location = SL_ATTRIB_POSITION) in vec4 a_posCentroidXObject;
 layout(location = SL_ATTRIB_CENTROID) in vec4 a_centroidYZNormalXYObject;
 vec3 a_posObject, a_centroidObject, a_faceNrmObject;  // what flat.vert reads, unpacked below

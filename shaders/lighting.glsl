@@ -13,7 +13,8 @@
 //   - mirror and glass: k_r F env(R) + k_t (1 - F) env(T) added after the sum (mirrorAndGlass(),
 //     SL_ENVIRONMENT);
 //   - "show" keeps one term of the sum (termsShown()); E is the light a glTF material gives off
-//     (shaders/object_color.glsl); a textured flat or Gouraud surface splits the sum (shadeLectureTermsOfC).
+//     (shaders/object_color.glsl); a textured flat or Gouraud surface splits the sum (shadeLectureTermsOfC,
+//     shaders/vertex_shading.glsl).
 //
 // Mirrors shadeTerms() in app/core/shading/lighting.cpp, which the tests compare against. The values
 // (the material, A, L_l, the eye and the lights' places) come from shaders/values_from_blocks.glsl,
@@ -100,7 +101,8 @@ float fresnelExact(float cosVH) {  // unpolarised (R_par + R_perp) / 2; no total
 // H nears N, where spec_l is 1 whatever k is). k_t = k_b = k_e gives Blinn-Phong's lobe exactly.
 //
 // The tangent where the point is shaded: the vertex's (gouraud.vert), the triangle's (flat.vert, the
-// same attribute: FlatMesh::tangents), interpolated (phong.vert passes v_tanWorld to phong.frag).
+// same attribute: FlatMesh::tangents), interpolated (phong.vert passes v_tanWorld to phong.frag,
+// tangent.glsl).
 #ifdef SL_VERTEX_STAGE
 layout(location = SL_ATTRIB_TANGENT) in vec4 a_tanObject;  // xyz the tangent, w the handedness
 vec3 tangentToWorld(vec3 tanObject);                       // shaders/instancing.glsl
@@ -288,7 +290,8 @@ vec3 shadeMaterial(Material m, vec3 P, vec3 N) {
 // (progressive Phong sums these over passes and clamps the mean).
 vec3 shade(vec3 P, vec3 N, vec3 texel) { return shadeMaterial(objectMaterial(texel), P, N) + mirrorAndGlass(P, N); }
 
-// The lecture's L, clamped to [0, 1]: linear RGB (flat and Gouraud, per triangle or vertex).
+// The lecture's L, clamped to [0, 1]: linear RGB (flat and Gouraud, per triangle or vertex, through
+// shaders/vertex_shading.glsl's shadeAndPass).
 vec3 shadeLecture(vec3 P, vec3 N) { return clamp(shade(P, N, vec3(1.0)), 0.0, 1.0); }
 
 // The formula in two parts, for flat and Gouraud shading of a textured surface: they evaluate it per

@@ -14,8 +14,8 @@
 // Alpha: the same product of the base colour factor's, the texel's and COLOR_0's alphas (objectAlpha).
 // E: emissiveFactor x strength (u_emissive) times the emissive texture at its own coordinates
 // (objectEmission), added to the lecture's sum: L = E + k_a A C + sum ... (shaders/lighting.glsl).
-// And, in the fragment stage, the colour a fragment writes (fragmentColor) and glTF's double-sided
-// surfaces (facingNormal).
+// And the colour a fragment writes (fragmentColor) and glTF's double-sided surfaces (facingNormal:
+// per fragment in the fragment stage, per triangle in the vertex stage).
 #include "specialisation.glsl"
 #include "uniforms.glsl"
 #include "encoding.glsl"
@@ -49,7 +49,7 @@ void passObjectColor() {
     v_emissiveTexcoord = a_emissiveTexcoord;
 #endif
 }
-// E varies per fragment here: the fragment stage adds it (flat.frag, gouraud.frag), not this stage's sum.
+// E varies per fragment here: the fragment stage adds it (combineTerms), not this stage's sum.
 vec3 objectEmission() { return vec3(0.0); }
 #elif SL_TEXTURED
 in vec2 v_texcoord;
@@ -78,7 +78,7 @@ vec3 shownEmission() {
 
 #ifndef SL_VERTEX_STAGE
 // Flat and Gouraud with SL_TEXTURED: L = clamp(texel * termsOfC + specular + E, 0, 1), the two sums
-// from the vertex stage (shadeLectureTermsOfC, shadeLectureSpecular) and E, which varies per fragment.
+// from the vertex stage (shaders/vertex_shading.glsl) and E, which varies per fragment.
 vec3 combineTerms(vec3 termsOfC, vec3 specular) {
     return clamp(objectTexel() * termsOfC + specular + shownEmission(), 0.0, 1.0);
 }
@@ -95,5 +95,15 @@ vec3 facingNormal(vec3 N) { return SL_DOUBLE_SIDED == 1 && !gl_FrontFacing ? -N 
 vec4 fragmentColor(vec3 L) {
     if (SL_ACCUMULATE == 1) return vec4(L, 1.0);
     return vec4(encodeOutput(clamp(L, 0.0, 1.0)), outputAlpha());
+}
+#else
+// glTF's doubleSided for a whole triangle (flat.vert): the eye sees the triangle's back when it is
+// behind the triangle's plane through P (for a planar triangle, exactly what gl_FrontFacing says), and
+// the back is lit with N flipped; every other surface keeps N.
+vec3 facingNormal(vec3 N, vec3 P) {
+#if SL_DOUBLE_SIDED
+    if (dot(N, u_eyeWorld.xyz - P) < 0.0) return -N;
+#endif
+    return N;
 }
 #endif

@@ -45,9 +45,9 @@
 #endif
 // SL_DOUBLE_SIDED = 1: a draw of a glTF material with "doubleSided": true, drawn without back-face
 // culling. glTF's rule: the back of a surface is lit as a surface facing the other way, with its
-// normal flipped. Each mode flips where it knows which side the eye sees: phong.frag per fragment
-// (object_color.glsl, facingNormal), flat.vert per triangle, gouraud.vert evaluates both sides and
-// gouraud.frag picks one.
+// normal flipped. Each mode flips where it knows which side the eye sees: phong.frag per fragment,
+// flat.vert per triangle (object_color.glsl, facingNormal); Gouraud's vertex stage evaluates both
+// sides and its fragments pick one (vertex_shading.glsl).
 // SL_ANISOTROPY = 1: a draw of an anisotropic material under Blinn-Phong (Ashikhmin and Shirley's
 // exponent, lighting.glsl): its vertices carry a tangent (SL_ATTRIB_TANGENT). Only such draws get the
 // define, and their own vertex arrays: every other draw compiles to the programs it always did.

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <sstream>
 #include <string>
 
 using namespace shadelab;
@@ -36,9 +37,10 @@ GlslToken tokenOf(const GlslLine& line, const std::string& text) {
 // The slide's formula first, then the mode's stages, then what the program adds.
 TEST(ShaderListing, EachModeShowsTheLectureFirstThenItsStagesAndTheLightingInclude) {
     EXPECT_EQ(shaderFilesOf(ShadingMode::Flat),
-              (std::vector<std::string>{"lecture.glsl", "flat.vert", "flat.frag", "lighting.glsl"}));
+              (std::vector<std::string>{"lecture.glsl", "flat.vert", "flat.frag", "vertex_shading.glsl", "lighting.glsl"}));
     EXPECT_EQ(shaderFilesOf(ShadingMode::Gouraud),
-              (std::vector<std::string>{"lecture.glsl", "gouraud.vert", "gouraud.frag", "lighting.glsl"}));
+              (std::vector<std::string>{"lecture.glsl", "gouraud.vert", "gouraud.frag", "vertex_shading.glsl",
+                                        "lighting.glsl"}));
     EXPECT_EQ(shaderFilesOf(ShadingMode::Phong),
               (std::vector<std::string>{"lecture.glsl", "phong.vert", "phong.frag", "lighting.glsl"}));
     for (ShadingMode m : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
@@ -143,4 +145,28 @@ TEST(ShaderListing, TheLectureFileIsTheSlide) {
     EXPECT_LE(std::count(phong.begin(), phong.end(), '\n'), 20);
     EXPECT_EQ(phong.find("#if"), std::string::npos);
     EXPECT_NE(phong.find("shade("), std::string::npos);
+}
+
+// Issue 40: every mode's files read like phong.frag, where the lecture's sum is evaluated and nothing
+// else. A variant's differences (textured, double-sided, anisotropic, packed, instanced) are decided in
+// named helpers (vertex_shading.glsl, object_color.glsl, tangent.glsl, ...), so no preprocessor
+// conditional sits in a mode's file, and each still fits a slide.
+TEST(ShaderListing, EveryModeFileIsASlide) {
+    for (const char* file : {"flat.vert", "flat.frag", "gouraud.vert", "gouraud.frag", "phong.vert", "phong.frag"}) {
+        const std::string text = shaderText(file);
+        EXPECT_LE(std::count(text.begin(), text.end(), '\n'), 20) << file;
+        std::istringstream lines(text);
+        int number = 0;
+        for (std::string line; std::getline(lines, line);) {
+            ++number;
+            std::size_t at = line.find_first_not_of(" \t");
+            if (at == std::string::npos || line[at] != '#') continue;
+            at = line.find_first_not_of(" \t", at + 1);
+            const std::string directive = line.substr(at, line.find_first_of(" \t(", at) - at);
+            for (const char* conditional : {"if", "ifdef", "ifndef", "elif", "else", "endif"})
+                EXPECT_NE(directive, conditional) << file << ":" << number << ": " << line;
+        }
+    }
+    EXPECT_NE(shaderText("flat.vert").find("shadeAndPass("), std::string::npos);
+    EXPECT_NE(shaderText("gouraud.vert").find("shadeAndPass("), std::string::npos);
 }

@@ -96,9 +96,11 @@ std::vector<GlslSpan> highlight(const std::string& line, bool& inComment) {
 
 std::vector<std::string> shaderFilesOf(ShadingMode mode) {
     // The lecture's formula first (shaders/lecture.glsl: the slide as one function), then the mode's
-    // two stages, then what this program adds around the formula (shaders/lighting.glsl).
+    // two stages, for flat and Gouraud how their vertex stage hands its shade() to the fragments
+    // (shaders/vertex_shading.glsl), then what this program adds around the formula (shaders/lighting.glsl).
     const std::string name = toString(mode);
-    return {"lecture.glsl", name + ".vert", name + ".frag", "lighting.glsl"};
+    if (mode == ShadingMode::Phong) return {"lecture.glsl", name + ".vert", name + ".frag", "lighting.glsl"};
+    return {"lecture.glsl", name + ".vert", name + ".frag", "vertex_shading.glsl", "lighting.glsl"};
 }
 
 Rgba8 glslTokenColor(GlslToken token) {

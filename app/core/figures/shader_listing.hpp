@@ -12,7 +12,8 @@
 
 namespace shadelab {
 
-// The files a mode runs: its vertex stage, its fragment stage and the shared lighting include.
+// The files a mode runs: its vertex stage, its fragment stage (and, for flat and Gouraud, the include
+// that hands the vertex stage's colour to the fragments) and the shared lighting include.
 std::vector<std::string> shaderFilesOf(ShadingMode mode);
 
 enum class GlslToken { Plain, Keyword, Type, Builtin, Number, Comment, Preprocessor };
