@@ -186,7 +186,7 @@ const OptionSpec kOptions[] = {
      {nullptr,
       {{"--sweep", nullptr, "--captions: adds a title strip to --output images (not to sweep sheets); give --output"}},
       {{{"--output"}, "adds a title strip to --output images (not to sweep sheets); give --output"}}}},
-    // Issue 18, the formula overlay.
+    // The formula overlay.
     {"--formula", "", "", G::General, kNoBounds, nullptr, "",
      "the lecture's formula over the bottom of the view, for the scene's reflection model, normalisation and "
      "Fresnel: the term `--show` isolates highlighted, the others dimmed; k_a, k_d, k_s, k_e's values under their "
@@ -194,7 +194,7 @@ const OptionSpec kOptions[] = {
      "formula. The viewer starts with it on (key E), in a band above the view; with `--output` it is drawn into the PNG",
      setTrue<&Options::formula>,
      {"draws over a frame (the viewer's or --output's)", {{"--sweep"}, {"--benchmark"}, {"--plot"}, {"--info"}}}, PanelSection::Overlays},
-    // Issue 30, the intersection diagram.
+    // The intersection diagram.
     {"--intersection", "", "", G::General, kNoBounds, nullptr, "",
      "with `--probe` and `--output`: the lecture's \"At the Intersection\" drawn at the probed point into the PNG: "
      "arrows I, N, R and T (Snell's law at the surface, `--ior`), theta_i, theta_t, eta_i, eta_t and the Fresnel "

@@ -63,7 +63,7 @@ public:
     // ShaderError.
     void preparePrograms(const Scene& scene);
     // Moving frames (the viewer on a software rasterizer while the view is dragged, a slider held or
-    // an animation plays; issue 31): while on, the shadows of point, spot and directional lights take
+    // an animation plays): while on, the shadows of point, spot and directional lights take
     // one shadow-map lookup per light (SL_SHADOW_PCF compiled as 0, its own programs) instead of the
     // scene's (2 pcf + 1)^2, about half of a frame with three shadowed point lights on llvmpipe.
     // The shadow maps are the scene's either way; off (the default) draws the scene as it is.

@@ -11,7 +11,7 @@ struct ImFont;
 namespace shadelab {
 
 // The formula (key E, --formula) in a band of its own between the caption and the 3D view, so it
-// never covers the model (issue 31: in a 1200x800 window it covered the sphere): the formula centred,
+// never covers the model (in a 1200x800 window it once covered the sphere): the formula centred,
 // and below it, above each pane, the line that says where that pane's mode evaluates it.
 // `material`: whose k the formula shows (the probed surface's when `probe` hits, else this one);
 // `viewWidth`: the view's width in ImGui units; `framebufferScale` converts the panes' pixels to them.

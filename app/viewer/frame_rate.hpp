@@ -1,5 +1,5 @@
 #pragma once
-// The status strip's frame time (issue 31, item 8): the mean of the frames drawn in the last second
+// The status strip's frame time: the mean of the frames drawn in the last second
 // (at most kMaxFrames of them), so it says what moving the view costs now; with none drawn in that
 // second the view is idle (render on demand) and the strip says so instead of an old frame's time.
 #include <chrono>

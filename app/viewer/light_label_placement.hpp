@@ -1,8 +1,8 @@
 #pragma once
 // Where a light's label goes over the view (panel.cpp, drawLightLabels), GL- and ImGui-free so it can be
-// tested: off the models (issue 31, item 5: "0 point" over all three spheres) and clear of the boxes
+// tested: off the models (a label once read "0 point" over all three spheres) and clear of the boxes
 // already taken in the pane (the pane labels above, the labels placed before, a border arrow's head), so
-// no two labels touch (issue 31: at 2x the labels of presets 18 and 19 ran into their arrow's head).
+// no two labels touch (at 2x the labels of presets 18 and 19 once ran into their arrow's head).
 // Units are the view's (ImGui's), y down.
 #include <glm/vec2.hpp>
 

@@ -43,7 +43,7 @@ bool colorEdit(const char* label, glm::vec3& color) {
 }
 
 // While the widget just drawn is dragged (or typed into), its value for the large readout over the
-// view ("k_e = 37.2", issue 31): the panel's numbers are too small for a hall.
+// view ("k_e = 37.2"): the panel's numbers are too small for a hall.
 void readoutWhileActive(std::string& readout, const char* name, float value) {
     if (ImGui::IsItemActive()) readout = std::string(name) + " = " + formulaNumber(value);
 }
@@ -256,7 +256,7 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, c
     ImGui::Spacing();
     scrollHereFor(kPanelPlots[1], scrollTo);
     plotWidget("##fresnel", scenePlot(PlotKind::Fresnel, scene, material, plots), width * 0.95f);
-    // The BRDF as a function (issue 30): the 3-D lobe from a fixed view, and the heat maps (about 32 000
+    // The BRDF as a function: the 3-D lobe from a fixed view, and the heat maps (about 32 000
     // evaluations; two rows of them with anisotropy).
     ImGui::Spacing();
     scrollHereFor(kPanelPlots[2], scrollTo);

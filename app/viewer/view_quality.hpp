@@ -1,6 +1,6 @@
 #pragma once
 // How each frame's 3D view is drawn: anti-aliased (MSAA) where it pays, and on a software rasterizer
-// smaller while it moves (issue 31, item 12). On a GPU every frame is anti-aliased; on a software
+// smaller while it moves. On a GPU every frame is anti-aliased; on a software
 // rasterizer (4x costs several times a frame on llvmpipe) only a still view, a captured one and the
 // last; while the view is dragged, a slider held or an animation plays, the scene is drawn into a
 // framebuffer movingScale() of the view's size per axis and magnified into it, the scale following the

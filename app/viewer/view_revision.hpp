@@ -1,5 +1,5 @@
 #pragma once
-// "The view changed", from one place (issue 28, part 2): every input the 3D view's image is drawn from,
+// "The view changed", from one place: every input the 3D view's image is drawn from,
 // as revision counters and sizes, in ViewInputs; ViewRevision turns them into one counter that moves
 // when any of them does. Whatever must restart when the view changes (a progressive sum) keeps that
 // one number, not its own list of inputs. GL-free.

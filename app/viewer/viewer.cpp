@@ -38,7 +38,7 @@ namespace {
 // The viewer draws its meshes every frame: reordering them for the driver's vertex cache once, at
 // upload, pays for itself within a few frames (Renderer::MeshOrder). It draws the programs the Shader
 // view lists (phong.vert and phong.frag, not the interpolated-inputs variant; flat.vert, not the
-// packed one), so F5 after an edit of those files changes the picture (bench/README.md, issue 28:
+// packed one), so F5 after an edit of those files changes the picture (bench/README.md:
 // what that costs a coarse mesh's Phong frame).
 std::unique_ptr<Renderer> makeRenderer(const ShaderLibrary& shaders) {
     RendererOptions options;
@@ -54,7 +54,7 @@ constexpr float kPanelEms = 30.0f;
 constexpr float kFontPixels = 16.0f;
 // The status strip above the view, in font heights.
 constexpr float kStripEms = 1.5f;
-// The text over the view (issue 31, item 2) with the presentation setting: this share of the window's
+// The text over the view with the presentation setting: this share of the window's
 // height (26 px of 1080; the caption 1.25 times it, 3% of the height; the formula's main line too,
 // its values as large as its symbols), never smaller than the panel's text.
 constexpr float kViewTextShare = 0.024f;

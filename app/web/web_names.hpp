@@ -1,6 +1,6 @@
 #pragma once
 // The key table's keys and commands (core/ui/controls.hpp) by the names the page uses: a key as the
-// browser's KeyboardEvent.key names it, a command as panel.js carries it out.
+// browser's KeyboardEvent.key names it, a command as the page (web/src/keys.js) carries it out.
 #include "core/ui/controls.hpp"
 
 namespace shadelab {

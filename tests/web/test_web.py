@@ -45,6 +45,7 @@ k_e 32 -> 40, the light moved by 0.3 and Gouraud for Phong each fail).
 import argparse
 import base64
 import json
+import math
 import os
 import shutil
 import socket
@@ -719,6 +720,80 @@ class PanelContract(PanelTest):
         ke = float(self.option("ke"))
         self.assertGreater(ke, 1000, "k_e slider at its end (log scale up to 10000): --ke %s" % ke)
         self.assertIn("ke", self.query())
+
+
+def native_parameters():
+    """The parameter table of the native build (its Python module, beside --shadelab), or None."""
+    folder = os.path.join(os.path.dirname(os.path.abspath(ARGS.shadelab)), "python")
+    if not os.path.isdir(os.path.join(folder, "shadelab")):
+        return None
+    code = "import json, shadelab; print(json.dumps(shadelab.parameters()))"
+    run = subprocess.run(["/usr/bin/python3", "-c", code], env=dict(os.environ, PYTHONPATH=folder),
+                         capture_output=True, text=True)
+    return json.loads(run.stdout) if run.returncode == 0 else None
+
+
+class PanelParameters(PanelTest):
+    """The page's controls read the program's parameter table (core/scene/parameters.hpp), the one the
+    desktop panel's sliders read: labels, ranges, slider ranges and scales, sections; lights and meshes
+    are written as options by the program (sl_light_option, sl_mesh_option)."""
+
+    def describe(self):
+        return DRIVER.execute_script("const d = window.shadelab.describe; return typeof d === 'function' ? d() : d;")
+
+    def test_the_table_is_the_native_one(self):
+        self.open()
+        native = native_parameters()
+        if native is None:
+            self.skipTest("no Python module beside %s to read the native table from" % ARGS.shadelab)
+        page = self.describe()["parameters"]
+        keys = ("name", "option", "symbol", "label", "section", "slider", "scale")
+        self.assertEqual([{k: p[k] for k in keys} for p in page], [{k: list(p[k]) if isinstance(p[k], tuple) else p[k]
+                                                                   for k in keys} for p in native])
+
+    def test_sliders_labels_and_sections_are_the_tables(self):
+        self.open("panel-sections=shading,material,plots,camera,background")
+        options = [o for o in self.describe()["options"] if o.get("parameter") and o.get("section")]
+        self.assertGreaterEqual(len(options), 12)
+        shown = DRIVER.execute_script("""
+            return arguments[0].map(n => {
+              const box = document.querySelector('#panel [name="' + n + '"]');
+              if (!box) return null;
+              const row = box.closest('.row'), slider = row.querySelector('input[type=range]');
+              return {section: box.closest('details').dataset.section, label: row.querySelector('label').textContent.trim(),
+                      min: box.min, max: box.max, type: box.type,
+                      slider: slider ? [parseFloat(slider.min), parseFloat(slider.max)] : null};
+            });""", [o["name"][2:] for o in options])
+        for o, e in zip(options, shown):
+            p, name = o["parameter"], o["name"]
+            self.assertIsNotNone(e, name + ": no control")
+            self.assertEqual(e["section"], p["section"], name)
+            self.assertIn(p["label"], e["label"], name)
+            if e["type"] != "number":
+                continue  # a colour picker
+            self.assertEqual([float(e["min"]), float(e["max"])], p["range"], name)
+            slider = [math.log10(x) for x in p["slider"]] if p["scale"] == "log" else p["slider"]
+            if name != "--anisotropy":
+                self.assertEqual(len(e["slider"]), 2, name)
+                for got, want in zip(e["slider"], slider):
+                    self.assertAlmostEqual(got, want, places=6, msg=name)
+
+    def test_lights_and_meshes_are_written_by_the_program(self):
+        self.open("preset=6&size=" + SIZE + "&panel-sections=lights,mesh")
+        DRIVER.execute_script("""
+            const box = document.querySelector('fieldset[data-light="0"] [data-part=intensity]');
+            box.value = '2.5'; box.dispatchEvent(new Event('change', {bubbles: true}));""")
+        wait_for(DRIVER, "return window.shadelab.state().includes('--light')", "--light after an intensity change")
+        light = self.option("light")
+        self.assertIn(":intensity=2.5", light)
+        scene = DRIVER.execute_script("return window.shadelab.apply(window.shadelab.state()).scene.lights[0];")
+        self.assertEqual(scene["intensity"], 2.5)
+        DRIVER.execute_script("""
+            const type = document.querySelector('#section-mesh select:not([name])');
+            type.value = 'torus'; type.dispatchEvent(new Event('change', {bubbles: true}));""")
+        wait_for(DRIVER, "return window.shadelab.state().includes('--mesh')", "--mesh after a mesh type")
+        torus = [p for p in self.describe()["parameters"] if p.get("mesh") == "torus"]
+        self.assertEqual(self.option("mesh"), "torus:%d:%d" % (torus[0]["default"], torus[1]["default"]))
 
 
 class PanelPlaylist(PanelTest):

@@ -1,4 +1,4 @@
-// The BRDF as a function (issue 30, part 3): the 3-D lobe and the heat maps of the isotropic
+// The BRDF as a function: the 3-D lobe and the heat maps of the isotropic
 // parameterisation, both from core/shading's brdf() (see plot.hpp).
 #include "core/figures/plot.hpp"
 #include "core/figures/plot_parts.hpp"

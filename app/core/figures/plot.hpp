@@ -1,11 +1,11 @@
 #pragma once
-// The lecture's two plots, GL-free (issue 6):
+// The lecture's plots, GL-free:
 //  - the specular lobe in the plane of incidence: spec as a function of the view direction V, for
 //    Phong and Blinn-Phong at the scene's k_e, with the incoming direction I, the normal N and the
 //    mirror direction R marked;
 //  - the Fresnel reflectance over the angle of incidence: R_par, R_perp, their average (unpolarised
 //    light) and Schlick's approximation, with the critical angle marked when eta1 > eta2;
-//  - the BRDF as a function (issue 30): f_r(omega_i -> omega_o) for one light direction as a 3-D polar
+//  - the BRDF as a function: f_r(omega_i -> omega_o) for one light direction as a 3-D polar
 //    surface over the hemisphere (lobe3d), and heat maps of the isotropic BRDF's parameterisation
 //    f_r(delta_phi; theta_i -> theta_o) (brdf-slice). Their f_r is core/shading's brdf().
 // The values come from core/shading/lighting (specularTerm, fresnelExact, fresnelSchlick), so the plots show
@@ -118,7 +118,7 @@ Plot lobePlot(const LightingEnvironment& env, float ke, float incidenceDeg);
 // R_par, R_perp, their average and Schlick for light going from eta1 into eta2.
 Plot fresnelPlot(float eta1, float eta2);
 
-// ---- The BRDF plots (issue 30, part 3)
+// ---- The BRDF plots
 //
 // Both work in the surface's own frame: N = +y, the tangent T = +x (phi = 0; where k_t applies) and the
 // bitangent B = N x T = -z (k_b). A direction at (theta, phi) is (sin theta cos phi, cos theta, -sin theta sin phi).

@@ -56,7 +56,7 @@ CompareResult compareImages(const Image& actual, const Image& expected, int pixe
 //   another shading mode (phong -> gouraud; diff's A) max 48-255, mean 0.13 - 9.9
 // A one-step k_e change moves no channel more than the two backends do, so the mean is what tells
 // them apart: 0.002 is 8x the largest llvmpipe mean; it catches k_e + 1 on every lecture preset up to
-// k_e 64, not always from k_e ~100 up (issue 32's measurements: docs/ci.md, "What the defaults catch";
+// k_e 64, not always from k_e ~100 up (measured: docs/ci.md, "What the defaults catch";
 // 0.0001 catches them up to 256, but textured models differ more between the backends). The max
 // of 4 lets a 1/255 flicker through layout diff's x4 pane, twice the largest measured, and still fails
 // every mode change; OSMesa against EGL differs by 1/255 at a handful of pixels (cli_test.cpp).

@@ -1,6 +1,6 @@
 #pragma once
 // Animations: `--animate light-orbit`, `--animate camera-orbit:8`, `--animate ke=1..1000:log:4`, several
-// at once. GL-free: parsing the specs and the scene at a time t, which the headless video (cli/run_video.cpp)
+// at once. GL-free: parsing the specs and the scene at a time t, which the headless video (run/run_headless.cpp)
 // renders frame by frame. A ramp's parameters and how a value is set on a scene are the sweep's
 // (core/scene/sweep.hpp): a ramp is a sweep whose value moves with time.
 #include "core/scene/scene.hpp"

@@ -1,5 +1,7 @@
-// The panel's controls, generated from the option table (sl_describe().options), and the small kit
-// they are made with (el, labelled, fmt, the colour conversions).
+// The panel's controls, generated from the option table (sl_describe().options): a parameter's option
+// (k_a ... k_e, the ior, the incidence, the colours) shows its parameter's label, slider range and
+// scale, decimals and default from the program's parameter table (core/scene/parameters.hpp), the
+// desktop panel's; and the small kit they are made with (el, labelled, fmt, the colour conversions).
 //
 // Hand-written, not a widget library (lil-gui and the like): each control is made from the option
 // table's row with its exact name (name="ke", which the tests and the link use), its label, its help
@@ -43,13 +45,25 @@ export function rgbOf(hexText) {
   return [1, 3, 5].map((i) => parseInt(hexText.substr(i, 2), 16) / 255);
 }
 
-// An option's choices ("flat | gouraud | phong"), and its default as its help text says it.
+// An option's choices ("flat | gouraud | phong").
 export function namesOf(o) {
   return (o.names || "").split(/\s*(?:\||,|\bor\b)\s*/).filter((n) => n);
 }
-export function defaultFromHelp(o) {
-  const m = /default ([-\w.]+)/.exec(o.help || "");
-  return m ? m[1] : "";
+// How a number control's slider maps its travel (the parameter's slider range and scale; an option
+// without a parameter: its range, linear) and how many decimals a value gets.
+export function sliderOf(o) {
+  const p = o.parameter;
+  const [lo, hi] = p ? p.slider : o.range;
+  const log = !!p && p.scale === "log";
+  return {
+    lo, hi, log, decimals: p ? p.decimals : 3,
+    to: (v) => (log ? Math.log10(Math.max(lo, v)) : v),
+    from: (t) => (log ? Math.pow(10, t) : t),
+  };
+}
+function sliderInput(label, s) {
+  const [a, b] = [s.to(s.lo), s.to(s.hi)];
+  return el("input", { type: "range", "aria-label": label + (s.log ? " (logarithmic slider)" : " (slider)"), min: a, max: b, step: (b - a) / 1000 });
 }
 
 // Slider changes are applied once a frame, however fast the input events come.
@@ -80,31 +94,24 @@ function choiceControl(o, names, fallback) {
   });
   return labelled(name, select, o.help);
 }
-// A number of the table's range: a slider (logarithmic over a range of a hundredfold or more, as
-// k_e's) and a number box. `sliderRange` narrows the slider where the table's is too wide to aim
-// in (k_a, k_d, k_s: the desktop panel's 0..1); the number box takes the whole range.
-export function numberControl(o, fallback, sliderRange) {
-  const name = o.name.slice(2);
+// A number of the option's range: a slider over the parameter's slider range (logarithmic for k_e)
+// and a number box that takes the whole range. Unset, it shows the parameter's default.
+export function numberControl(o) {
+  const name = o.name.slice(2), p = o.parameter;
   const [lo, hi] = o.range;
-  const [slo, shi] = sliderRange || [lo, hi];
-  const log = slo > 0 && shi / slo >= 100;
-  const integer = /^(N|DEG)$/.test(o.argument) && name !== "incidence";
-  const toSlider = (v) => (log ? Math.log10(Math.max(slo, v)) : v);
-  const fromSlider = (t) => (log ? Math.pow(10, t) : t);
-  const slider = el("input", {
-    type: "range", "aria-label": name + (log ? " (logarithmic slider)" : " (slider)"),
-    min: toSlider(slo), max: toSlider(shi), step: log ? (Math.log10(shi) - Math.log10(slo)) / 1000 : (shi - slo) / 1000,
-  });
+  const s = sliderOf(o);
+  const slider = sliderInput(name, s);
   const box = el("input", { type: "number", name, min: lo, max: hi, step: "any", class: "number" });
   slider.addEventListener("input", () => {
-    let v = fromSlider(parseFloat(slider.value));
-    v = log ? +v.toPrecision(3) : +v.toFixed(integer ? 0 : 3);
+    let v = s.from(parseFloat(slider.value));
+    v = s.log ? +v.toPrecision(3) : +v.toFixed(s.decimals);
     box.value = fmt(v);
     scheduleOverride(name, fmt(v));
   });
   box.addEventListener("change", () => setOverride(name, box.value === "" ? null : box.value.trim()));
-  page.controls.push({ update: () => showNumber(slider, box, toSlider(slo), toSlider, shownValue(name, fallback)) });
-  const row = labelled(name, box, o.help);
+  const fallback = p && p.default !== undefined ? p.default : undefined;
+  page.controls.push({ update: () => showNumber(slider, box, s.to(s.lo), s.to, shownValue(name, fallback)) });
+  const row = labelled(p ? p.label : name, box, o.help);
   row.classList.add("number-row");
   row.append(slider);
   return row;
@@ -157,19 +164,14 @@ export function optionControl(name) {
     }
     case "show": return choiceControl(o, namesOf(o));  // light:N filled per scene in refreshPanel
     case "msaa": return choiceControl(o, namesOf(o), "4");  // web_app.cpp draws with 4 unless --msaa
-    case "ka": case "kd": case "ks": return numberControl(o, undefined, [0, 1]);
     case "anisotropy": return anisotropyControl(o);
-    case "color": return colourControl(o, "C colour");
-    case "specular-color": return colourControl(o, "S colour");
-    case "ambient": return colourControl(o, "A ambient");
-    case "background": return colourControl(o, "background");
-    case "incidence": return numberControl(o, defaultFromHelp(o));
     case "shadows":
       return switchControl(o, () => page.result.scene.shadows === true, (on) => setOverride(on ? "shadows" : "no-shadows", true));
     case "size": return sizeControl(o);
   }
-  if (o.names && o.argument) return choiceControl(o, namesOf(o), defaultFromHelp(o));
-  if (o.range && o.argument) return numberControl(o, defaultFromHelp(o));
+  if (o.parameter && o.parameter.components === 3) return colourControl(o);
+  if (o.names && o.argument) return choiceControl(o, namesOf(o), "");
+  if (o.range && o.argument) return numberControl(o);
   if (!o.argument) return simpleSwitch(o);
   return null;
 }
@@ -178,12 +180,10 @@ export function optionControl(name) {
 // bitangent), as the desktop panel's. Off is no override: the scene's own (usually none). The
 // lobe is Blinn-Phong's (the option needs --reflection blinn-phong): switched on, it asks for it.
 function anisotropyControl(o) {
-  const [lo, hi] = o.range;
-  const toSlider = (v) => Math.log10(Math.max(lo, v)), fromSlider = (t) => +Math.pow(10, t).toPrecision(3);
+  const s = sliderOf(o), toSlider = s.to, fromSlider = (t) => +s.from(t).toPrecision(3), lo = s.lo;
   const on = el("input", { type: "checkbox", "aria-label": "anisotropy on" });
   const box = el("input", { type: "text", name: "anisotropy", class: "text", spellcheck: "false", placeholder: "KT,KB e.g. 8,256" });
-  const sliders = ["k_t (tangent)", "k_b (bitangent)"].map((label) =>
-    el("input", { type: "range", "aria-label": label + " (logarithmic slider)", min: toSlider(lo), max: toSlider(hi), step: (toSlider(hi) - toSlider(lo)) / 1000 }));
+  const sliders = o.parameter.parts.map((label) => sliderInput(label, s));
   on.addEventListener("change", () => setAnisotropy(on.checked ? [8, 256] : null));
   box.addEventListener("change", () => setAnisotropy(box.value.trim() ? box.value.trim().split(",").map(parseFloat) : null));
   sliders.forEach((slider, i) => slider.addEventListener("input", () => {
@@ -200,7 +200,7 @@ function anisotropyControl(o) {
     },
   });
   box.id = newId();
-  const row = el("div", { class: "row number-row" }, el("label", { for: box.id, title: o.help }, on, " anisotropy"), box);
+  const row = el("div", { class: "row number-row" }, el("label", { for: box.id, title: o.help }, on, " " + o.parameter.label), box);
   for (const slider of sliders) row.append(slider);
   return row;
 }
@@ -221,7 +221,7 @@ function setAnisotropy(pair) {
 
 // An "R,G,B" option (--color, --specular-color, --ambient, --background): a colour picker whose
 // value is the scene's until it is changed. The picker's 8 bits a channel are written as 0..1.
-function colourControl(o, label) {
+function colourControl(o) {
   const name = o.name.slice(2);
   const c = el("input", { type: "color", name });
   c.addEventListener("input", () => scheduleOverride(name, rgbOf(c.value).map((x) => fmt(+x.toFixed(3))).join(",")));
@@ -232,5 +232,5 @@ function colourControl(o, label) {
       if (Array.isArray(v)) c.value = hex(v);
     },
   });
-  return labelled(label, c, o.help);
+  return labelled(o.parameter.label, c, o.help);
 }

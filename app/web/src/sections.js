@@ -10,16 +10,12 @@ import { openFiles } from "./media.js";
 
 const $ = (selector) => document.querySelector(selector);
 
-// Which option sits in which section is the page's choice (the table has no section column).
-export const SECTION_OPTIONS = {
-  shading: ["layout", "shading", "diff", "diff-factor", "reflection", "specular-normalization", "fresnel", "ior", "show", "output-encoding", "msaa"],
-  material: ["ka", "kd", "ks", "ke", "anisotropy", "mirror", "transmission", "color", "specular-color", "no-textures"],
-  plots: ["incidence", "from-inside"],
-  shadows: ["shadows"],
-  overlays: ["formula"],
-  camera: ["size"],
-  background: ["environment", "background", "ambient"],
-};
+// The options whose controls sit in a section, in the option table's order: the table says where
+// (each row's section, or its parameter's: sl_describe().options[i].section).
+export function sectionOptions(section) {
+  return page.D.options.filter((o) => o.section === section).map((o) => o.name.slice(2));
+}
+// The page's own choice: a laptop's panel has room for these two open (the desktop opens more).
 export const OPEN_BY_DEFAULT = new Set(["shading", "material"]);
 
 export function buildPanel() {
@@ -50,7 +46,7 @@ function buildSections() {
     const body = el("div", { class: "body" });
     details.append(body);
     page.sectionBodies[name] = body;
-    for (const option of SECTION_OPTIONS[name] || []) {
+    for (const option of sectionOptions(name)) {
       const row = optionControl(option);
       if (row) body.append(row);
     }
@@ -133,17 +129,12 @@ export function toggleOverlay(name, on) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// --mesh: the procedural meshes with their tessellation, composed into the shorthand.
+// --mesh: the procedural meshes with their tessellation (the parameter table's mesh rows). The
+// program writes a mesh given as the scene's JSON as its --mesh shorthand (sl_mesh_option).
 export function meshSpecOf(m) {
   if (!m) return "";
-  switch (m.type) {
-    case "uvsphere": return "uvsphere:" + m.slices + ":" + m.stacks;
-    case "icosphere": return "icosphere:" + m.subdivisions;
-    case "torus": return "torus:" + m.major_segments + ":" + m.minor_segments;
-    case "plane": return "plane:" + m.subdivisions;
-    case "gltf": return m.path || "";
-    default: return m.type;
-  }
+  const r = callJson("sl_mesh_option", ["string"], [JSON.stringify(m)]);
+  return r.error ? "" : r.option;
 }
 export function meshSection() {
   const o = page.optionByName.get("mesh"), D = page.D;
@@ -153,8 +144,11 @@ export function meshSection() {
   const params = el("div", { class: "params" });
   text.addEventListener("change", () => setOverride("mesh", text.value.trim() || null));
   const compose = () => {
-    const values = [...params.querySelectorAll("input")].map((i) => i.value);
-    setOverride("mesh", [type.value].concat(values).join(":"));
+    const mesh = { type: type.value };
+    for (const i of params.querySelectorAll("input")) mesh[i.dataset.name] = Number(i.value);
+    const r = callJson("sl_mesh_option", ["string"], [JSON.stringify(mesh)]);
+    if (r.error) return showError(r.error);
+    setOverride("mesh", r.option);
   };
   type.addEventListener("change", () => {
     meshParams(params, D.meshes.find((m) => m.name === type.value), null, compose);
@@ -163,14 +157,14 @@ export function meshSection() {
   page.controls.push({ update: () => showMesh(o, text, type, params, compose) });
   return el("div", {}, labelled("mesh", text, o.help), labelled("type", type, "the first object's mesh"), params);
 }
-// One number box per parameter of the mesh type (the scene's value, else a middling one).
+// One number box per parameter of the mesh type (the scene's value, else the parameter's default).
 function meshParams(params, mesh, scene, compose) {
   params.textContent = "";
   for (const p of mesh.parameters) {
-    const current = scene && scene[p.name] !== undefined ? scene[p.name] : Math.min(p.range[1], Math.max(p.range[0], p.name === "stacks" ? 16 : p.name === "subdivisions" ? 3 : 32));
-    const box = el("input", { type: "number", min: p.range[0], max: p.range[1], step: 1, value: current, class: "number" });
+    const current = scene && scene[p.name] !== undefined ? scene[p.name] : p.default;
+    const box = el("input", { type: "number", min: p.range[0], max: p.range[1], step: 1, value: current, class: "number", "data-name": p.name });
     box.addEventListener("change", compose);
-    params.append(labelled(p.name.replace("_", " "), box, p.name + " (" + p.range[0] + ".." + p.range[1] + ")"));
+    params.append(labelled(p.label, box, p.help + " (" + p.range[0] + ".." + p.range[1] + ")"));
   }
 }
 function showMesh(o, text, type, params, compose) {
@@ -188,28 +182,13 @@ function showMesh(o, text, type, params, compose) {
 
 // ---------------------------------------------------------------------------------------------
 // --light: one group per light (kind, position or direction, colour, intensity, attenuation);
-// a change replaces every light with the groups' shorthands, as repeated --light options.
+// a change replaces every light with the groups' shorthands, as repeated --light options. The
+// program writes a light given as the scene's JSON as its --light shorthand (sl_light_option); a
+// light it refuses (a value out of range) is said in the message line and left out.
 export function lightSpec(l) {
-  const v = fmtList;
-  let s = l.type + ":" + v(l.type === "directional" ? l.direction : l.position);
-  if (l.color) s += ":color=" + v(l.color);
-  if (l.intensity !== undefined) s += ":intensity=" + fmt(l.intensity);
-  if (l.type !== "directional") {
-    if (l.attenuation) s += ":attenuation=" + l.attenuation;
-    if (l.range) s += ":range=" + fmt(l.range);
-  }
-  if (l.type === "area") {
-    if (l.normal) s += ":normal=" + v(l.normal);
-    if (l.size) s += ":size=" + v(l.size);
-    if (l.samples) s += ":samples=" + l.samples[0] + "x" + l.samples[1];
-    if (l.two_sided) s += ":two-sided";
-  }
-  if (l.type === "spot") {
-    if (l.direction) s += ":direction=" + v(l.direction);
-    if (l.outer_cone_deg !== undefined) s += ":outer=" + fmt(l.outer_cone_deg);
-    if (l.inner_cone_deg !== undefined) s += ":inner=" + fmt(l.inner_cone_deg);
-  }
-  return s;
+  const r = callJson("sl_light_option", ["string"], [JSON.stringify(l)]);
+  if (r.error) showError(r.error);
+  return r.error ? "" : r.option;
 }
 const sceneLights = () => (page.result && page.result.scene.lights) || [];
 const lightSpecs = () => sceneLights().map(lightSpec);
@@ -222,7 +201,7 @@ export function lightsSection() {
   add.addEventListener("click", () => {
     const specs = lightSpecs();
     if (specs.length >= max) return note("at most " + max + " lights", 4);
-    replaceLights(specs.concat(["point:-3,4,3"]));
+    replaceLights(specs.concat([lightSpec({ type: "point", position: [-3, 4, 3] })]));
   });
   const build = () => {
     list.textContent = "";
@@ -240,7 +219,7 @@ function lightGroup(o, l, i) {
     mutate(copy[i]);
     const all = lightSpecs();
     all[i] = lightSpec(copy[i]);
-    replaceLights(all);
+    if (all[i]) replaceLights(all);
   };
   group.append(...lightParts(l, change));
   const spec = el("input", { type: "text", name: "light", class: "text mono", value: lightSpec(l), spellcheck: "false" });
@@ -275,13 +254,17 @@ function lightParts(l, change) {
   }
   return rows;
 }
-// A light made another kind: a directional one points where the light was, and back.
+// A light made another kind keeps its colour, intensity and falloff; a directional one points where
+// the light was, and back. What only the old kind has (a spot's cones, an area's size) is dropped.
 function changeKind(x, type) {
   const from = x.type;
-  x.type = type;
-  if (x.type === "directional") x.direction = x.direction || (x.position || [3, 4, 5]).map((c) => -c);
-  if (from === "directional" && !x.position) x.position = x.direction.map((c) => -c);
-  if (x.type !== "spot" && x.type !== "directional") delete x.direction;
+  const keep = { type, color: x.color, intensity: x.intensity };
+  if (type === "directional") keep.direction = x.direction || (x.position || [3, 4, 5]).map((c) => -c);
+  else keep.position = from === "directional" ? x.direction.map((c) => -c) : x.position;
+  if (type === "spot" && x.direction) keep.direction = x.direction;
+  if (type !== "directional" && from !== "directional") Object.assign(keep, { attenuation: x.attenuation, range: x.range });
+  for (const k of Object.keys(x)) delete x[k];
+  for (const [k, v] of Object.entries(keep)) if (v !== undefined) x[k] = v;
 }
 
 // ---------------------------------------------------------------------------------------------
