@@ -257,3 +257,18 @@ def test_video_is_what_the_program_writes(tmp_path):
     status, _, err = cli(*words, "--output", str(tmp_path / "cli.gif"))
     assert status == 0, err
     assert (tmp_path / "py.gif").read_bytes() == (tmp_path / "cli.gif").read_bytes()
+
+
+def test_parameters_are_the_programs_table():
+    """shadelab.parameters() is the program's parameter table: each option's range is the one the program
+    refuses past (its message names it), and render()'s help lists the keyword that sets it."""
+    rows = {p["name"]: p for p in shadelab.parameters()}
+    ke = rows["ke"]
+    assert (ke["option"], ke["symbol"], ke["scale"], ke["default"]) == ("--ke", "k_e", "log", 32.0)
+    for p in rows.values():
+        assert p["slider"][0] >= p["range"][0] and p["slider"][1] <= p["range"][1], p["name"]
+        if not p["option"] or p["name"] in ("color", "specular_color", "ambient", "background", "anisotropy"):
+            continue
+        status, _, err = cli("--" + p["option"][2:], repr(p["range"][1] * 2 + 1), "--info")
+        assert status == 2 and p["option"] in err, (p["name"], err)
+        assert "      %s (" % p["option"][2:].replace("-", "_") in shadelab.render.__doc__, p["name"]
