@@ -114,9 +114,7 @@ EglContext::EglContext(int width, int height) {
 }
 
 EglContext::~EglContext() {
-    framebuffer_.reset();
-    color_.reset();
-    depth_.reset();
+    frame_ = OffscreenTarget();
     const EglApi& egl = api();
     if (context_) {
         egl.makeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -128,24 +126,7 @@ EglContext::~EglContext() {
 GLADloadfunc EglContext::getProcAddress() const { return &loadGlFunction; }
 
 void EglContext::resize(int width, int height) {
-    GLuint ids[3] = {0, 0, 0};
-    glGenFramebuffers(1, &ids[0]);
-    glGenRenderbuffers(2, &ids[1]);
-    framebuffer_ = gl::Framebuffer(ids[0]);
-    color_ = gl::Renderbuffer(ids[1]);
-    depth_ = gl::Renderbuffer(ids[2]);
-    glBindRenderbuffer(GL_RENDERBUFFER, color_.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("EGL: the " + std::to_string(width) + "x" + std::to_string(height) +
-                                 " framebuffer is incomplete");
-    width_ = width;
-    height_ = height;
+    frame_.ensure(width, height, 0, "EGL");
 }
 
 }  // namespace shadelab

@@ -1,8 +1,8 @@
 #pragma once
-// A headless OpenGL 3.3 core context through EGL, drawing into an FBO. libEGL is dlopen'ed (like
-// OSMesa, and for the same reason: no GL provider in the executable's link map).
+// A headless OpenGL 3.3 core context through EGL, drawing into an FBO (an OffscreenTarget). libEGL is
+// dlopen'ed (like OSMesa, and for the same reason: no GL provider in the executable's link map).
 #include "headless/headless_context.hpp"
-#include "render/gl_handles.hpp"
+#include "render/offscreen_target.hpp"
 
 namespace shadelab {
 
@@ -12,16 +12,14 @@ public:
     EglContext(int width, int height);
     ~EglContext() override;
     GLADloadfunc getProcAddress() const override;
-    RenderTarget target() const override { return RenderTarget{framebuffer_.get(), width_, height_}; }
+    RenderTarget target() const override { return frame_.target(); }
     void resize(int width, int height) override;
     const char* backendName() const override { return "egl"; }
 
 private:
     void* display_ = nullptr;
     void* context_ = nullptr;
-    gl::Framebuffer framebuffer_;
-    gl::Renderbuffer color_, depth_;
-    int width_ = 0, height_ = 0;
+    OffscreenTarget frame_;  // released before the context
 };
 
 }  // namespace shadelab

@@ -1,6 +1,8 @@
 #pragma once
 // Move-only owners of GL object names. Each deletes its object when it goes out of scope, so the
-// renderer never leaks programs or buffers when a scene is replaced.
+// renderer never leaks programs or buffers when a scene is replaced. The make*() creators below are
+// shadelab's only glGen* calls: every buffer, vertex array, texture, framebuffer and renderbuffer is
+// owned by a handle from the moment its name exists (programs and shaders come from glCreate*).
 #include <glad/gl.h>
 
 #include <utility>
@@ -50,6 +52,7 @@ using Framebuffer = Handle<deleteFramebuffer>;
 using Renderbuffer = Handle<deleteRenderbuffer>;
 using Texture = Handle<deleteTexture>;
 
+// A new name of each kind, owned by its handle; the object itself is made by its first bind.
 inline Buffer makeBuffer() {
     GLuint id = 0;
     glGenBuffers(1, &id);
@@ -59,6 +62,21 @@ inline VertexArray makeVertexArray() {
     GLuint id = 0;
     glGenVertexArrays(1, &id);
     return VertexArray(id);
+}
+inline Texture makeTexture() {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    return Texture(id);
+}
+inline Framebuffer makeFramebuffer() {
+    GLuint id = 0;
+    glGenFramebuffers(1, &id);
+    return Framebuffer(id);
+}
+inline Renderbuffer makeRenderbuffer() {
+    GLuint id = 0;
+    glGenRenderbuffers(1, &id);
+    return Renderbuffer(id);
 }
 
 }  // namespace shadelab::gl

@@ -6,10 +6,8 @@
 namespace shadelab {
 
 gl::Texture makeImageTexture(GLint internalFormat, GLenum format, GLenum type, int width, int height) {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    gl::Texture t(id);
-    glBindTexture(GL_TEXTURE_2D, id);
+    gl::Texture t = gl::makeTexture();
+    glBindTexture(GL_TEXTURE_2D, t.get());
     glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -18,10 +16,8 @@ gl::Texture makeImageTexture(GLint internalFormat, GLenum format, GLenum type, i
 }
 
 gl::Framebuffer makeFramebuffer(GLuint color, GLuint depth, const char* what) {
-    GLuint id = 0;
-    glGenFramebuffers(1, &id);
-    gl::Framebuffer f(id);
-    glBindFramebuffer(GL_FRAMEBUFFER, id);
+    gl::Framebuffer f = gl::makeFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, f.get());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
     if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)

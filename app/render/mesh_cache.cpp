@@ -269,10 +269,8 @@ GLuint MeshCache::texture(std::size_t object, int slot) {
     if (slot < 0 || std::size_t(slot) >= o.textures.size()) {
         if (!whiteTexture_) {
             const unsigned char white[4] = {255, 255, 255, 255};
-            GLuint id = 0;
-            glGenTextures(1, &id);
-            whiteTexture_ = gl::Texture(id);
-            glBindTexture(GL_TEXTURE_2D, id);
+            whiteTexture_ = gl::makeTexture();
+            glBindTexture(GL_TEXTURE_2D, whiteTexture_.get());
             glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -283,10 +281,8 @@ GLuint MeshCache::texture(std::size_t object, int slot) {
     if (t) return t.get();
     const std::shared_ptr<const TextureImage> image = std::move(o.images[std::size_t(slot)]);
     if (!image) throw std::logic_error("mesh cache: a texture that was released before it was uploaded");
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    t = gl::Texture(id);
-    glBindTexture(GL_TEXTURE_2D, id);
+    t = gl::makeTexture();
+    glBindTexture(GL_TEXTURE_2D, t.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     // glTF's base colours are sRGB-encoded: an sRGB texture decodes them to linear values when sampled.
     glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE,

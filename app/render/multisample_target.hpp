@@ -1,10 +1,10 @@
 #pragma once
-// Multisample anti-aliasing as a render target: a multisampled framebuffer (RGBA8 colour, 24-bit
+// Multisample anti-aliasing as a render target: a multisampled OffscreenTarget (RGBA8 colour, 24-bit
 // depth) that a frame is drawn into and then resolved into the real target. Per frame:
 //   RenderTarget t = msaa.begin(view, samples);  // `view` itself when samples <= 1 (no MSAA)
 //   renderer.render(scene, t); overlays.render(scene, t, ...);
 //   msaa.resolveInto(view);                      // a blit; nothing to do when t was `view`
-#include "render/gl_handles.hpp"
+#include "render/offscreen_target.hpp"
 #include "render/render_target.hpp"
 
 namespace shadelab {
@@ -20,18 +20,12 @@ public:
     // the sizes must match). Does nothing when begin() returned its destination.
     void resolveInto(const RenderTarget& destination) const;
 
-    bool active() const { return bool(framebuffer_); }
+    bool active() const { return bool(target_); }
     // Samples per pixel the driver gave (it may round up what was asked); 0 when not active.
-    int samples() const { return actualSamples_; }
+    int samples() const { return target_.samples(); }
 
 private:
-    void create(int width, int height, int samples);
-    void release();
-
-    gl::Framebuffer framebuffer_;
-    gl::Renderbuffer color_, depth_;
-    int width_ = 0, height_ = 0;
-    int requestedSamples_ = 0, actualSamples_ = 0;
+    OffscreenTarget target_;
 };
 
 // Whether `framebuffer` has sample buffers: it cannot be read (glReadPixels, glCopyTexSubImage2D)

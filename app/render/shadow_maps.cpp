@@ -56,9 +56,7 @@ void beginDepthPass(float bias) {
 void ShadowMaps::prepareTargets(const Scene& scene, std::size_t count, const ShaderLibrary& shaders) {
     if (!solid_.program) {
         solid_ = depthProgram(shaders, {});
-        GLuint fbo = 0;
-        glGenFramebuffers(1, &fbo);
-        framebuffer_ = gl::Framebuffer(fbo);
+        framebuffer_ = gl::makeFramebuffer();
     }
     layout_ = shadowLayout(scene.lights, count);
     GLint maxLayers = 256;
@@ -138,12 +136,10 @@ void ShadowMaps::drawDepth(const DepthDraw& d, const glm::mat4& clipFromWorld, G
 void ShadowMaps::LayerArray::allocate(int newSize, int newLayers) {
     if (newLayers == 0) newSize = newLayers = 1;  // an unused array still needs a texture to bind
     if (texture && size == newSize && layers == newLayers) return;
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    texture = gl::Texture(id);
+    texture = gl::makeTexture();
     size = newSize;
     layers = newLayers;
-    glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, texture.get());
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, size, size, layers, 0, GL_DEPTH_COMPONENT,
                  GL_UNSIGNED_INT, nullptr);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);

@@ -63,7 +63,8 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, float scale) : scale_(scale) {
 }
 
 ImGuiLayer::~ImGuiLayer() {
-    if (cacheFramebuffer_) glDeleteFramebuffers(1, &cacheFramebuffer_), glDeleteTextures(1, &cacheColor_);
+    cacheFramebuffer_.reset();
+    cacheColor_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -239,13 +240,13 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
     if (left <= 0 || left >= width || height <= 0) return false;
     const std::uint64_t hash = hashLists(windows);
     if (width != cacheWidth_ || height != cacheHeight_ || !cacheFramebuffer_) {
-        if (cacheFramebuffer_) glDeleteFramebuffers(1, &cacheFramebuffer_), glDeleteTextures(1, &cacheColor_);
-        glGenTextures(1, &cacheColor_);
-        glBindTexture(GL_TEXTURE_2D, cacheColor_);
+        cacheFramebuffer_.reset();
+        cacheColor_ = gl::makeTexture();
+        glBindTexture(GL_TEXTURE_2D, cacheColor_.get());
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glGenFramebuffers(1, &cacheFramebuffer_);
-        glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cacheColor_, 0);
+        cacheFramebuffer_ = gl::makeFramebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_.get());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cacheColor_.get(), 0);
         const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (!complete) return false;
@@ -254,7 +255,7 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
         for (std::uint64_t& h : stampHash_) h = 0;  // a new size: no copy is in the back buffer
     }
     if (hash != hash_) {
-        glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_);
+        glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_.get());
         glDisable(GL_SCISSOR_TEST);
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -263,7 +264,7 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
         hash_ = hash;
     }
     if (backBufferKept_ && panelAlreadyThere(hash, width)) return true;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_.get());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glDisable(GL_SCISSOR_TEST);
     glBlitFramebuffer(left, 0, width, height, left, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);

@@ -2,6 +2,7 @@
 // Dear ImGui for one GLFW window: the context, the GLFW and OpenGL 3 backends, and a TrueType font
 // (DejaVu Sans, with Greek, sub- and superscripts) rasterised at the UI's scale. Created after the
 // window's context is current; destroyed before it.
+#include "render/gl_handles.hpp"
 #include "viewer/glfw_window.hpp"
 
 #include <cstdint>
@@ -67,7 +68,8 @@ private:
     bool panelFromCache(const std::vector<ImDrawList*>& windows, int left, int width, int height);
     std::uint64_t hash_ = 0;
     int cacheWidth_ = 0, cacheHeight_ = 0;
-    unsigned cacheFramebuffer_ = 0, cacheColor_ = 0;
+    gl::Framebuffer cacheFramebuffer_;  // draws into cacheColor_, a texture of the framebuffer's size
+    gl::Texture cacheColor_;
     bool backBufferKept_ = false;
     std::uint64_t stampHash_[8] = {};  // the panel hash copied with stamp k (0: none)
     int nextStamp_ = 0;

@@ -1,7 +1,7 @@
 #pragma once
-// The framebuffer a reduced moving frame is drawn into (ViewQuality): RGBA8 colour and 24-bit depth
-// of the reduced size, then magnified into the view (GL_LINEAR). Kept while the size stays.
-#include "render/gl_handles.hpp"
+// The framebuffer a reduced moving frame is drawn into (ViewQuality): an OffscreenTarget (RGBA8 colour,
+// 24-bit depth) of the reduced size, then magnified into the view (GL_LINEAR). Kept while the size stays.
+#include "render/offscreen_target.hpp"
 #include "render/render_target.hpp"
 
 namespace shadelab {
@@ -15,9 +15,7 @@ public:
     void magnifyInto(const RenderTarget& view) const;
 
 private:
-    gl::Framebuffer framebuffer_;
-    gl::Renderbuffer color_, depth_;
-    int width_ = 0, height_ = 0;
+    OffscreenTarget target_;
 };
 
 }  // namespace shadelab

@@ -1,5 +1,5 @@
 // The web page's program: the renderer on the page's WebGL2 canvas, driven by the page (app/web/
-// shell.html, panel.js) through the functions below. The page keeps the state as a command line
+// index.html, panel.js) through the functions below. The page keeps the state as a command line
 // (the panel's fields are named like the options, and so are the link's parameters); sl_apply()
 // reads it with the same parser as `shadelab`, so a page and `shadelab ... --output` given the same
 // options draw the same scene. The camera (orbit, pan, zoom, F, R) is the program's, as in the
@@ -28,8 +28,8 @@
 #include "core/scene/panel_sections.hpp"
 #include "core/scene/parameters.hpp"
 #include "core/ui/view_names.hpp"
-#include "render/image_pass.hpp"
 #include "render/multisample_target.hpp"
+#include "render/offscreen_target.hpp"
 #include "render/overlay_renderer.hpp"
 #include "render/readback.hpp"
 #include "render/renderer.hpp"
@@ -82,9 +82,7 @@ struct WebApp {
     // The frame is drawn into a framebuffer of its own (RGBA8, like the headless context's) and then
     // copied onto the canvas: ES 3.0 resolves a multisampled frame only into the same format, and the
     // canvas's is the browser's choice.
-    gl::Texture viewColor, viewDepth;
-    gl::Framebuffer viewFramebuffer;
-    int viewWidth = 0, viewHeight = 0;
+    OffscreenTarget view;
     // Sampled area lights refine over frames, as in the desktop viewer (Renderer::renderProgressive):
     // what the sum was started for, and whether it is complete.
     std::array<std::uint64_t, 5> progressiveFrom{};
@@ -311,11 +309,8 @@ void drawFormula(const Scene& scene, const RenderTarget& target) {
         panes.push_back({float(p.x), float(p.y), float(p.width), float(p.height), p.mode, p.difference});
     drawFormulaOverlay(image, in, panes);
     if (!a.formulaTexture) {
-        GLuint id = 0;
-        glGenTextures(1, &id);
-        a.formulaTexture = gl::Texture(id);
-        glGenFramebuffers(1, &id);
-        a.formulaFramebuffer = gl::Framebuffer(id);
+        a.formulaTexture = gl::makeTexture();
+        a.formulaFramebuffer = gl::makeFramebuffer();
     }
     glBindTexture(GL_TEXTURE_2D, a.formulaTexture.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -329,15 +324,7 @@ void drawFormula(const Scene& scene, const RenderTarget& target) {
 }
 
 RenderTarget viewTarget(int width, int height) {
-    WebApp& a = app();
-    if (!a.viewFramebuffer || a.viewWidth != width || a.viewHeight != height) {
-        a.viewFramebuffer = gl::Framebuffer();
-        a.viewColor = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
-        a.viewDepth = makeImageTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width, height);
-        a.viewFramebuffer = makeFramebuffer(a.viewColor.get(), a.viewDepth.get(), "the page's view");
-        a.viewWidth = width, a.viewHeight = height;
-    }
-    return RenderTarget{a.viewFramebuffer.get(), width, height};
+    return app().view.ensure(width, height, 0, "the page's view");
 }
 
 // The scene into `target`: in one go, or with sampled area lights one pass of the progressive sum a

@@ -4,6 +4,7 @@
 #include "gl/gl_test_support.hpp"
 #include "headless/headless_context.hpp"
 #include "render/gpu_blocks.hpp"
+#include "render/offscreen_target.hpp"
 #include "render/program.hpp"
 #include "render/renderer.hpp"
 #include "headless/headless.hpp"
@@ -266,8 +267,8 @@ TEST_F(GlContext, CompileErrorsNameProgramStageFileAndLine) {
     std::filesystem::remove_all(dir);
 }
 
-// The renderer draws into whatever framebuffer it is handed: a second FBO gives the same pixels as the
-// context's own target (OSMesa's default framebuffer, or EGL's FBO).
+// The renderer draws into whatever framebuffer it is handed: a second FBO (an OffscreenTarget) gives the
+// same pixels as the context's own target (OSMesa's default framebuffer, or EGL's FBO).
 TEST_F(GlContext, RendersIntoAnyFramebufferWithoutGlErrors) {
     Scene scene;
     scene.width = 64;
@@ -281,26 +282,16 @@ TEST_F(GlContext, RendersIntoAnyFramebufferWithoutGlErrors) {
     renderer.render(scene, context_->target());
     const Image viaDefault = readPixels(context_->target());
 
-    GLuint fbo = 0, color = 0, depth = 0;
-    glGenFramebuffers(1, &fbo);
-    glGenRenderbuffers(1, &color);
-    glGenRenderbuffers(1, &depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 64, 64);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, 64, 64);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    const OffscreenTarget fbo(64, 64, 0, "the test's framebuffer");
     ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-    renderer.render(scene, RenderTarget{fbo, 64, 64});
-    const Image viaFbo = readPixels(RenderTarget{fbo, 64, 64});
+    EXPECT_EQ(fbo.target().width, 64);
+    EXPECT_EQ(fbo.target().height, 64);
+    EXPECT_EQ(fbo.samples(), 0);
+    renderer.render(scene, fbo.target());
+    const Image viaFbo = readPixels(fbo.target());
     EXPECT_EQ(compareImages(viaFbo, viaDefault).maxDiff, 0);
     EXPECT_GT(compareImages(viaFbo, test::filled(64, 64)).differingPixels, 1000u) << "rendered nothing";
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteRenderbuffers(1, &color);
-    glDeleteRenderbuffers(1, &depth);
 }
 
 // --benchmark's JSON lines: a driver's name is its own text, quotes and backslashes included (it was
