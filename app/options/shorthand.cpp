@@ -267,7 +267,7 @@ std::string keyUnlessDefault(const char* key, const T& value, const T& unset, co
 }  // namespace
 
 std::string meshShorthand(const MeshSpec& m) {
-    const std::string type = toString(m.type);
+    std::string type = toString(m.type);
     switch (m.type) {
     case MeshSpec::Type::UvSphere: return type + ":" + std::to_string(m.slices) + ":" + std::to_string(m.stacks);
     case MeshSpec::Type::IcoSphere: return type + ":" + std::to_string(m.subdivisions);

@@ -78,5 +78,8 @@ inline Renderbuffer makeRenderbuffer() {
     glGenRenderbuffers(1, &id);
     return Renderbuffer(id);
 }
+// The mip levels of the 2D texture bound, made from its level 0 (glGenerateMipmap: beside the creators,
+// so that every glGen* call of the project is in this file).
+inline void generateMipmaps() { glGenerateMipmap(GL_TEXTURE_2D); }
 
 }  // namespace shadelab::gl

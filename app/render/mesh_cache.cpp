@@ -291,7 +291,7 @@ GLuint MeshCache::texture(std::size_t object, int slot) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, image->wrapT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, image->magFilter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, image->minFilter);
-    if (image->minFilter != GL_NEAREST && image->minFilter != GL_LINEAR) glGenerateMipmap(GL_TEXTURE_2D);
+    if (image->minFilter != GL_NEAREST && image->minFilter != GL_LINEAR) gl::generateMipmaps();
     checkGl(("texture upload (" + image->name + ")").c_str());
     return t.get();
 }
