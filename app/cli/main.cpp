@@ -32,7 +32,8 @@ int runPlot(const Options& options, const Scene& scene) {
     const std::optional<Image> reference = readReference(options);
     const Image image = plotImage(options, scene);
     const int status = writeOutputAndCompare(options, image, reference, scene.diff.factor);
-    if (options.verbose) std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
+    if (options.verbose)
+        std::cerr << "shadelab: wrote " << *options.output << " (" << toString(*options.plot) << " plot)\n";
     return status;
 }
 
@@ -62,8 +63,9 @@ int runHeadless(const Options& options) {
                        : options.mode == RunMode::ProbeImage ? "--probe"
                        : options.mode == RunMode::Benchmark  ? "--benchmark"
                                                              : "--output";
-    throw InputError(std::string(flag) + ": this shadelab was built without a headless GL context (CMake options "
-                                         "SHADELAB_OSMESA, SHADELAB_EGL)");
+    throw InputError(std::string(flag) +
+                     ": this shadelab was built without a headless GL context (CMake options "
+                     "SHADELAB_OSMESA, SHADELAB_EGL)");
 }
 #endif
 
@@ -71,8 +73,9 @@ int runHeadless(const Options& options) {
 int runViewer(const Options& options) { return runViewerMode(options); }
 #else
 int runViewer(const Options&) {
-    throw InputError("this shadelab was built without the viewer (CMake option SHADELAB_VIEWER): give "
-                     "--output FILE.png for a picture");
+    throw InputError(
+        "this shadelab was built without the viewer (CMake option SHADELAB_VIEWER): give "
+        "--output FILE.png for a picture");
 }
 #endif
 
@@ -89,7 +92,8 @@ int run(const std::vector<std::string>& args) {
     }
 #if SHADELAB_HAVE_HEADLESS && !SHADELAB_HAVE_VIDEO  // (without a context, runHeadless says that is missing)
     if (options.mode == RunMode::Video)
-        throw InputError("--output: " + *options.output + ": this shadelab was built without video encoding (CMake "
+        throw InputError("--output: " + *options.output +
+                         ": this shadelab was built without video encoding (CMake "
                          "option SHADELAB_VIDEO: FFmpeg's libavcodec, libavformat, libswscale)");
 #endif
     if (options.output && !options.playlist) checkOutputPath(*options.output, "--output");

@@ -44,8 +44,9 @@ const EglApi& api() {
     static const EglApi loaded;
     if (!loaded.getProcAddress || !loaded.getPlatformDisplay || !loaded.initialize || !loaded.createContext ||
         !loaded.makeCurrent)
-        throw std::runtime_error("EGL headless rendering needs libEGL.so.1 with EGL_EXT_platform_base "
-                                 "(Debian packages libegl1 and libegl-mesa0)");
+        throw std::runtime_error(
+            "EGL headless rendering needs libEGL.so.1 with EGL_EXT_platform_base "
+            "(Debian packages libegl1 and libegl-mesa0)");
     return loaded;
 }
 
@@ -82,7 +83,8 @@ EglContext::EglContext(int width, int height) {
         deviceCount = 0;
     auto firstDevice = [&](bool hardwareOnly) {
         for (EGLint i = 0; i < deviceCount; ++i) {
-            const char* extensions = egl.queryDeviceString ? egl.queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
+            const char* extensions =
+                egl.queryDeviceString ? egl.queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
             if (hardwareOnly && hasExtension(extensions, "EGL_MESA_device_software")) continue;
             const EGLDisplay d = egl.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
             if (initialised(d)) return d;
@@ -103,8 +105,9 @@ EglContext::EglContext(int width, int height) {
     if (!egl.bindApi(EGL_OPENGL_API)) throw std::runtime_error(eglError("eglBindAPI(OpenGL)"));
     // No config and no surface (EGL_KHR_no_config_context, EGL_KHR_surfaceless_context): the
     // renderer draws into the FBO made below.
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attribs[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     context_ = egl.createContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
     if (!context_) throw std::runtime_error(eglError("eglCreateContext (OpenGL 3.3 core)"));
     if (!egl.makeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
@@ -125,8 +128,6 @@ EglContext::~EglContext() {
 
 GLADloadfunc EglContext::getProcAddress() const { return &loadGlFunction; }
 
-void EglContext::resize(int width, int height) {
-    frame_.ensure(width, height, 0, "EGL");
-}
+void EglContext::resize(int width, int height) { frame_.ensure(width, height, 0, "EGL"); }
 
 }  // namespace shadelab

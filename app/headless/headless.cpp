@@ -257,8 +257,8 @@ std::vector<BenchmarkResult> benchmarkHeadless(const Scene& scene, std::shared_p
                 // The viewer while the view is dragged: the camera orbits, so every frame restarts
                 // the sum and draws its first pass; the shadow maps stay valid.
                 const glm::vec3 offset = scene.camera.eye - scene.camera.target;
-                s.camera.eye = scene.camera.target + glm::vec3(glm::rotate(glm::mat4(1.0f), turn, scene.camera.up) *
-                                                              glm::vec4(offset, 0.0f));
+                s.camera.eye = scene.camera.target +
+                               glm::vec3(glm::rotate(glm::mat4(1.0f), turn, scene.camera.up) * glm::vec4(offset, 0.0f));
             } else {
                 for (SceneObject& o : s.objects)
                     o.transform.rotationDeg.y = scene.objects.front().transform.rotationDeg.y + glm::degrees(turn);

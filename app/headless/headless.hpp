@@ -1,9 +1,9 @@
 #pragma once
 // Headless rendering: one frame to an image, or a timed run of frames, on a headless context (OSMesa or
 // EGL, headless/headless_context.hpp).
+#include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene.hpp"
-#include "core/geometry/scene_geometry.hpp"
 #include "core/scene/sweep.hpp"
 #include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
@@ -32,8 +32,8 @@ Image renderHeadless(const Scene& scene, std::shared_ptr<const SceneGeometry> ge
 // start-up time. The CPU copy of the geometry is released once uploaded.
 struct HeadlessFrame {
     Image image;
-    Scene scene;                      // as drawn (with the framed camera)
-    std::vector<GltfInfo> gltfInfo;   // per object, as buildSceneGeometry() reported it
+    Scene scene;                     // as drawn (with the framed camera)
+    std::vector<GltfInfo> gltfInfo;  // per object, as buildSceneGeometry() reported it
     std::size_t triangles = 0;
 };
 HeadlessFrame renderSceneHeadless(Scene scene, const ShaderLibrary& shaders, HeadlessBackend backend,
@@ -117,7 +117,7 @@ struct BenchmarkResult {
     int frames = 0;
     std::size_t triangles = 0;  // per frame, all panes
     int width = 0, height = 0;
-    int msaa = 1;               // samples per pixel the driver gave (1: no MSAA)
+    int msaa = 1;  // samples per pixel the driver gave (1: no MSAA)
     double medianMs = 0, p95Ms = 0, minMs = 0, maxMs = 0;
     std::string glRenderer;
     std::string backend;

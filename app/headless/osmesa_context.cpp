@@ -24,7 +24,8 @@ const OsMesaApi& api() {
         void* lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
         if (!lib) lib = dlopen("libOSMesa.so", RTLD_NOW | RTLD_LOCAL);
         if (!lib) return a;
-        a.createContextAttribs = reinterpret_cast<decltype(a.createContextAttribs)>(dlsym(lib, "OSMesaCreateContextAttribs"));
+        a.createContextAttribs =
+            reinterpret_cast<decltype(a.createContextAttribs)>(dlsym(lib, "OSMesaCreateContextAttribs"));
         a.makeCurrent = reinterpret_cast<decltype(a.makeCurrent)>(dlsym(lib, "OSMesaMakeCurrent"));
         a.destroyContext = reinterpret_cast<decltype(a.destroyContext)>(dlsym(lib, "OSMesaDestroyContext"));
         a.getProcAddress = reinterpret_cast<decltype(a.getProcAddress)>(dlsym(lib, "OSMesaGetProcAddress"));
@@ -35,9 +36,7 @@ const OsMesaApi& api() {
     return loaded;
 }
 
-GLADapiproc loadGlFunction(const char* name) {
-    return reinterpret_cast<GLADapiproc>(api().getProcAddress(name));
-}
+GLADapiproc loadGlFunction(const char* name) { return reinterpret_cast<GLADapiproc>(api().getProcAddress(name)); }
 
 }  // namespace
 

@@ -2,12 +2,12 @@
 
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
-#include "core/scene/memory_budget.hpp"
 #include "core/base/message.hpp"
-#include "core/scene/panel_sections.hpp"
-#include "core/scene/parameters.hpp"
 #include "core/figures/plot_image.hpp"
 #include "core/image/image.hpp"
+#include "core/scene/memory_budget.hpp"
+#include "core/scene/panel_sections.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/view_names.hpp"
@@ -34,7 +34,8 @@ float parseFloat(const std::string& flag, const std::string& v) {
 int parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
     char* end = nullptr;
     const long x = std::strtol(v.c_str(), &end, 10);
-    if (v.empty() || end != v.c_str() + v.size()) throw InputError(flag + ": \"" + quoteInput(v) + "\" is not an integer");
+    if (v.empty() || end != v.c_str() + v.size())
+        throw InputError(flag + ": \"" + quoteInput(v) + "\" is not an integer");
     if (x < lo || x > hi)
         throw InputError(flag + ": " + v + " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
     return int(x);
@@ -44,8 +45,8 @@ int parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
 float floatIn(const OptionSpec& spec, const std::string& v, const char* unit = "") {
     const float x = parseFloat(spec.name, v);
     if (!(x >= spec.bounds.lo && x <= spec.bounds.hi))
-        throw InputError(std::string(spec.name) + ": must be " + betweenText(Range<double>{spec.bounds.lo, spec.bounds.hi}) +
-                         unit + " (got " + v + ")");
+        throw InputError(std::string(spec.name) + ": must be " +
+                         betweenText(Range<double>{spec.bounds.lo, spec.bounds.hi}) + unit + " (got " + v + ")");
     return x;
 }
 
@@ -86,8 +87,7 @@ void addAtMost(std::vector<T>& list, T item, std::size_t most, const std::string
 std::pair<std::string, std::string> pairOf(const std::string& flag, const std::string& v, char separator,
                                            const char* expected) {
     const std::size_t at = v.find(separator);
-    if (at == std::string::npos)
-        throw InputError(flag + ": expected " + expected + " (got \"" + quoteInput(v) + "\")");
+    if (at == std::string::npos) throw InputError(flag + ": expected " + expected + " (got \"" + quoteInput(v) + "\")");
     return {v.substr(0, at), v.substr(at + 1)};
 }
 
@@ -104,10 +104,11 @@ using ApplyOption = void (*)(Options& options, const OptionSpec& self, const std
 
 // The row of an option that sets a parameter of the table (core/scene/parameters.hpp): its name, range
 // and help are the parameter's; `sets` the scene-file field it overrides.
-OptionSpec parameterOption(Param id, const char* argument, std::string sets, ApplyOption apply, OptionRules rules = {}) {
+OptionSpec parameterOption(Param id, const char* argument, std::string sets, ApplyOption apply,
+                           OptionRules rules = {}) {
     const Parameter& p = parameter(id);
-    return {p.option, "", argument, OptionGroup::General, Bounds{p.range.lo, p.range.hi, true}, nullptr, std::move(sets),
-            p.help, apply, std::move(rules)};
+    return {p.option,        "",     argument, OptionGroup::General, Bounds{p.range.lo, p.range.hi, true}, nullptr,
+            std::move(sets), p.help, apply,    std::move(rules)};
 }
 std::string materialField(Param id) { return std::string("objects[].material.") + parameter(id).name; }
 
@@ -115,8 +116,9 @@ std::string materialField(Param id) { return std::string("objects[].material.") 
 // checked with the scene's (applyOverrides: checkCoefficients).
 template <std::optional<float> Options::*Field>
 OptionSpec materialOption(Param id) {
-    return parameterOption(id, "X", materialField(id),
-                           [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = parseFloat(self.name, v); });
+    return parameterOption(id, "X", materialField(id), [](Options& o, const OptionSpec& self, const std::string& v) {
+        o.*Field = parseFloat(self.name, v);
+    });
 }
 // "R,G,B", each channel in the option's range.
 glm::vec3 colorIn(const OptionSpec& spec, const std::string& v) {
@@ -125,13 +127,15 @@ glm::vec3 colorIn(const OptionSpec& spec, const std::string& v) {
     for (std::string item; std::getline(list, item, ',');) channels.push_back(floatIn(spec, item));
     if (channels.size() != 3 || v.back() == ',')
         throw InputError(std::string(spec.name) + ": expected R,G,B, three numbers " +
-                         betweenText(Range<double>{spec.bounds.lo, spec.bounds.hi}) + " (got \"" + quoteInput(v) + "\")");
+                         betweenText(Range<double>{spec.bounds.lo, spec.bounds.hi}) + " (got \"" + quoteInput(v) +
+                         "\")");
     return {channels[0], channels[1], channels[2]};
 }
 template <std::optional<glm::vec3> Options::*Field>
 OptionSpec colorOption(Param id, std::string field) {
-    return parameterOption(id, "R,G,B", std::move(field),
-                           [](Options& o, const OptionSpec& self, const std::string& v) { o.*Field = colorIn(self, v); });
+    return parameterOption(id, "R,G,B", std::move(field), [](Options& o, const OptionSpec& self, const std::string& v) {
+        o.*Field = colorIn(self, v);
+    });
 }
 template <std::optional<std::string> Options::*Field>
 void setPath(Options& o, const OptionSpec&, const std::string& v) {
@@ -148,7 +152,8 @@ constexpr const char* kNeedsReferenceOrTest =
 const OptionRules kNeedsTest{nullptr, {}, {{{"--test"}, "belongs to a folder of screenshot tests: give --test DIR"}}};
 // --fps, --duration, --dither: the video's settings.
 const OptionRules kVideoSetting{
-    nullptr, {},
+    nullptr,
+    {},
     {{{"--animate"}, "sets up the --animate video: give --animate SPEC and --output FILE.gif|.mp4|.webm"},
      {{"--output"}, "sets up the video: give --output FILE.gif, .mp4 or .webm"}}};
 // --incidence, --from-inside: the plots' settings, which a render (--output, --benchmark) has no use for.
@@ -157,12 +162,16 @@ OptionRules plotSetting(const char* refusal) {
 }
 
 // Each row: name, alias, argument, group, range, names, scene field, help, apply, rules (what it goes with).
+// (a table, read row by row: clang-format leaves it as written)
+// clang-format off
 const OptionSpec kOptions[] = {
     {"--output", "-o", "FILE.png", G::General, kNoBounds, nullptr, "",
      "render one frame offscreen (OSMesa or EGL, no display needed) and write it atomically; with `--animate`, "
      "a video: `.gif`, `.mp4` (H.264) or `.webm` (VP9)",
      setPath<&Options::output>,
-     {nullptr, {{kViewerOptions, nullptr, "--output: {viewer} are for the viewer, which --output/--benchmark do not open"}}, {}, RunMode::Image, RunMode::Image}},
+     {nullptr,
+      {{kViewerOptions, nullptr, "--output: {viewer} are for the viewer, which --output/--benchmark do not open"}},
+      {}, RunMode::Image, RunMode::Image}},
     {"--playlist", "", "DIR", G::General, kNoBounds, nullptr, "",
      "the lecture presets: every `DIR/*.json` in file-name order (see *Lecture presets and the playlist*); a bare "
      "name that is no folder here (`lecture`) is the scene folder of that name beside the program; the "
@@ -191,9 +200,11 @@ const OptionSpec kOptions[] = {
      "the lecture's formula over the bottom of the view, for the scene's reflection model, normalisation and "
      "Fresnel: the term `--show` isolates highlighted, the others dimmed; k_a, k_d, k_s, k_e's values under their "
      "symbols; with `--probe`, each term's value at that pixel; over each pane, where its mode evaluates the "
-     "formula. The viewer starts with it on (key E), in a band above the view; with `--output` it is drawn into the PNG",
+     "formula. The viewer starts with it on (key E), in a band above the view; with `--output` it is drawn into the "
+     "PNG",
      setTrue<&Options::formula>,
-     {"draws over a frame (the viewer's or --output's)", {{"--sweep"}, {"--benchmark"}, {"--plot"}, {"--info"}}}, PanelSection::Overlays},
+     {"draws over a frame (the viewer's or --output's)", {{"--sweep"}, {"--benchmark"}, {"--plot"}, {"--info"}}},
+     PanelSection::Overlays},
     // The intersection diagram.
     {"--intersection", "", "", G::General, kNoBounds, nullptr, "",
      "with `--probe` and `--output`: the lecture's \"At the Intersection\" drawn at the probed point into the PNG: "
@@ -210,7 +221,8 @@ const OptionSpec kOptions[] = {
      {"compares one --output image (a frame or a --plot)",
       {{"--playlist"}, {"--sweep"}, {"--probe"}, {"--benchmark"}, {"--info"}},
       {{{"--output"}, "compares the --output image with it: give --output FILE.png"}}}},
-    {"--reference-missing", "", "ACTION", G::General, kNoBounds, [] { return namesList(kMissingReferenceNames, " | "); },
+    {"--reference-missing", "", "ACTION", G::General, kNoBounds,
+     [] { return namesList(kMissingReferenceNames, " | "); },
      "", "what a `--reference` that does not exist does: {names}: fail (the default: one line, exit status 2, "
      "nothing written) or write it from this render (exit status 0, and says so)",
      [](Options& o, const OptionSpec& self, const std::string& v) {
@@ -304,7 +316,9 @@ const OptionSpec kOptions[] = {
      kNeedsTest},
     {"--shading", "", "MODE", G::General, kNoBounds, [] { return namesList(kShadingModeNames, " | "); }, "shading",
      "shading mode (single layout): {names}",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.shading = choice(self.name, v, kShadingModeNames); },
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.shading = choice(self.name, v, kShadingModeNames);
+     },
      {}, PanelSection::Shading},
     {"--layout", "", "LAYOUT", G::General, kNoBounds, [] { return namesList(kLayoutNames, " | "); }, "layout",
      "{names}: compare is three equal panes flat | gouraud | phong, one camera; diff is A | B | |A - B| x factor "
@@ -336,7 +350,9 @@ const OptionSpec kOptions[] = {
      {}, PanelSection::Shading},
     {"--fresnel", "", "MODE", G::General, kNoBounds, [] { return namesList(kFresnelModeNames, " | "); }, "fresnel",
      "{names}: the specular term weighted by the Fresnel reflectance at V.H",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.fresnel = choice(self.name, v, kFresnelModeNames); },
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.fresnel = choice(self.name, v, kFresnelModeNames);
+     },
      {}, PanelSection::Shading},
     {"--output-encoding", "", "ENC", G::General, kNoBounds, [] { return namesList(kOutputEncodingNames, " | "); },
      "output_encoding",
@@ -364,10 +380,13 @@ const OptionSpec kOptions[] = {
                     }),
     materialOption<&Options::mirror>(Param::Mirror),
     materialOption<&Options::transmission>(Param::Transmission),
-    {"--environment", "", "ENV", G::General, kNoBounds, [] { return namesList(kEnvironmentNames, " | "); }, "environment",
+    {"--environment", "", "ENV", G::General, kNoBounds, [] { return namesList(kEnvironmentNames, " | "); },
+     "environment",
      "what mirrors and glass reflect and refract, drawn as the background: {names} (room: coloured walls and a "
      "checker floor; sky: a gradient with a sun), or an equirectangular FILE.png or FILE.hdr (see *What is drawn*)",
-     [](Options& o, const OptionSpec& self, const std::string& v) { o.environment = parseEnvironment(v, "", self.name); },
+     [](Options& o, const OptionSpec& self, const std::string& v) {
+         o.environment = parseEnvironment(v, "", self.name);
+     },
      {}, PanelSection::Background},
     colorOption<&Options::color>(Param::Color, materialField(Param::Color)),
     colorOption<&Options::specularColor>(Param::SpecularColor, materialField(Param::SpecularColor)),
@@ -426,7 +445,8 @@ const OptionSpec kOptions[] = {
     // Animations and videos (core/scene/animation.hpp, video/video_encoder.hpp; checked in options.cpp).
     {"--animate", "", "SPEC", G::General, kNoBounds, nullptr, "",
      "with `--output FILE.gif|.mp4|.webm`: render an animation to a video; without, the viewer plays it (Space "
-     "pauses; with `--playlist` on every preset, from its start at each slide, capped at the display's refresh). Repeatable (at most {max-animations}, "
+     "pauses; with `--playlist` on every preset, from its start at each slide, capped at the display's refresh). "
+     "Repeatable (at most {max-animations}, "
      "all at once). SPEC: `light-orbit[:SECONDS]` (the first light circles the camera's target at its height), "
      "`camera-orbit[:SECONDS]` (a turntable about the target and the up axis), or a ramp `PARAM=A..B[:log][:SECONDS]` "
      "of any `--sweep` parameter from A to B (`:log`: equal ratios, e.g. `ke=1..1000:log`; names switch half way). "
@@ -463,7 +483,8 @@ const OptionSpec kOptions[] = {
      "unless `--size` ({plot-sizes}): lobe = Phong and Blinn-Phong spec in the plane of incidence for "
      "k_e; fresnel = R_par, R_perp, their average and Schlick over the angle of incidence; lobe3d = the BRDF "
      "f_r(omega_i -> omega_o) for the light at `--incidence` as a 3-D polar surface over the hemisphere; brdf-slice = "
-     "heat maps of f_r over (theta_i, theta_o) in the plane of incidence and over (delta_phi, theta_o) at `--incidence` "
+     "heat maps of f_r over (theta_i, theta_o) in the plane of incidence and over (delta_phi, theta_o) at "
+     "`--incidence` "
      "(with `--anisotropy`, at phi_i = 0 and 90 deg) (see *Plots*)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.plot = choice(self.name, v, kPlotKindNames); },
      {nullptr,
@@ -472,7 +493,9 @@ const OptionSpec kOptions[] = {
       {{{"--output"}, "writes a PNG: give --output FILE.png"}},
       RunMode::Plot, RunMode::Plot}},
     parameterOption(Param::Incidence, "DEG", "",
-                    [](Options& o, const OptionSpec& self, const std::string& v) { o.incidenceDeg = floatIn(self, v, " degrees"); },
+                    [](Options& o, const OptionSpec& self, const std::string& v) {
+                        o.incidenceDeg = floatIn(self, v, " degrees");
+                    },
                     plotSetting("--incidence: sets up the plots: use it with --plot, or in the viewer")),
     {"--from-inside", "", "", G::General, kNoBounds, nullptr, "",
      "the Fresnel plot from inside the material (eta1 = `--ior`, eta2 = 1): total internal reflection past the "
@@ -494,7 +517,9 @@ const OptionSpec kOptions[] = {
      "render N frames ({range}) offscreen per shading mode, print one JSON line per mode (frames, triangles, "
      "size, shading, median and p95 ms)",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.benchmarkFrames = intIn(self, v); },
-     {nullptr, {{kViewerOptions, nullptr, "--benchmark: {viewer} are for the viewer, which --output/--benchmark do not open"}},
+     {nullptr,
+      {{kViewerOptions, nullptr,
+        "--benchmark: {viewer} are for the viewer, which --output/--benchmark do not open"}},
       {}, RunMode::Benchmark, RunMode::Benchmark}},
     {"--progressive", "", "S", G::General, bounds(kProgressiveStrideRange), nullptr, "",
      "area lights in the viewer: every S-th sample per axis a frame, S x S frames to the full image ({range}; "
@@ -502,7 +527,8 @@ const OptionSpec kOptions[] = {
      "orbits",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.progressiveStride = intIn(self, v); },
      {nullptr,
-      {{"--output", nullptr, "--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark"}}}},
+      {{"--output", nullptr,
+        "--progressive: --output always renders every area-light sample; it is for the viewer and --benchmark"}}}},
     {"--backend", "", "NAME", G::General, kNoBounds, [] { return namesList(kBackendNames, " | "); }, "",
      "the headless OpenGL context for `--output`/`--benchmark`: {names}: OSMesa, EGL (surfaceless or a GPU's "
      "EGL device, drawing into an FBO), or the first that works, OSMesa first (default)",
@@ -528,7 +554,8 @@ const OptionSpec kOptions[] = {
      "estimated to need more is refused with one line saying how much",
      [](Options& o, const OptionSpec& self, const std::string& v) {
          const auto bytes = parseByteSize(v);
-         if (!bytes) throw InputError(std::string(self.name) + ": \"" + quoteInput(v) + "\" is not a size (e.g. 2G, 512M)");
+         if (!bytes)
+             throw InputError(std::string(self.name) + ": \"" + quoteInput(v) + "\" is not a size (e.g. 2G, 512M)");
          if (*bytes < (std::uint64_t(64) << 20)) throw InputError(std::string(self.name) + ": at least 64M");
          o.maxMemory = *bytes;
      }},
@@ -582,7 +609,8 @@ const OptionSpec kOptions[] = {
      [](Options& o, const OptionSpec& self, const std::string& v) { o.selectLight = intIn(self, v); }},
     {"--ui-scale", "", "S", G::Viewer, bounds(kUiScaleRange), nullptr, "",
      "panel and HUD S times larger ({range}, on top of the monitor's content scale; the text over the view, "
-     "captions and labels, is at least 2.4% of the window's height whatever S is); Ctrl+= / Ctrl+- / Ctrl+0 in the viewer",
+     "captions and labels, is at least 2.4% of the window's height whatever S is); Ctrl+= / Ctrl+- / Ctrl+0 in the "
+     "viewer",
      [](Options& o, const OptionSpec& self, const std::string& v) { o.uiScale = floatIn(self, v); }},
     {"--fullscreen", "", "", G::Viewer, kNoBounds, nullptr, "", "cover the whole monitor (F11 toggles)",
      setTrue<&Options::fullscreen>},
@@ -594,6 +622,7 @@ const OptionSpec kOptions[] = {
      "(`$XDG_CONFIG_HOME/shadelab/viewer.json`)",
      setTrue<&Options::resetLayout>},
 };
+// clang-format on
 
 }  // namespace
 

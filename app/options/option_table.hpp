@@ -15,9 +15,9 @@
 // more code around either library than the ~60 lines of parsing this table needs, plus a build
 // dependency (for the libFuzzer build too). The table keeps what a library would give: one
 // declaration per option, --help and the README's table generated from it.
-#include "options/options.hpp"
 #include "core/scene/panel_sections.hpp"
 #include "core/scene/scene_limits.hpp"
+#include "options/options.hpp"
 
 #include <optional>
 
@@ -46,10 +46,10 @@ constexpr Bounds bounds(const Range<T>& r) {
 // An option another cannot go with. The refusal names the row's option: "--test: " + the row's
 // OptionRules::does + "; not with " + (shownAs or other), or `message` as it stands when given.
 struct Conflict {
-    const char* other;               // "--sweep"; kViewerOptions: any option of the viewer's group
-    const char* shownAs = nullptr;   // how the refusal names it, when not by `other`
-    const char* message = nullptr;   // the whole refusal ("{viewer}": the viewer's options, listed)
-    const char* unless = nullptr;    // no conflict when this option is given too
+    const char* other;              // "--sweep"; kViewerOptions: any option of the viewer's group
+    const char* shownAs = nullptr;  // how the refusal names it, when not by `other`
+    const char* message = nullptr;  // the whole refusal ("{viewer}": the viewer's options, listed)
+    const char* unless = nullptr;   // no conflict when this option is given too
 };
 inline constexpr const char* kViewerOptions = "the viewer's options";
 // Options one of which must be given too: refused with "NAME: " + text.
@@ -58,7 +58,7 @@ struct Need {
     const char* text;
 };
 struct OptionRules {
-    const char* does = nullptr;          // what the option does, before "; not with OTHER"
+    const char* does = nullptr;            // what the option does, before "; not with OTHER"
     std::vector<Conflict> conflicts = {};  // checked in this order, every option's before any `needs`
     std::vector<Need> needs = {};
     // The run it asks for, alone and with --output; the run is the first in RunMode's order of the
@@ -68,17 +68,17 @@ struct OptionRules {
 };
 
 struct OptionSpec {
-    const char* name;         // "--ior"
-    const char* alias;        // "-o", or ""
-    const char* argument;     // "X", "FILE.png"; "" for a switch (which takes no value)
+    const char* name;      // "--ior"
+    const char* alias;     // "-o", or ""
+    const char* argument;  // "X", "FILE.png"; "" for a switch (which takes no value)
     OptionGroup group;
-    Bounds bounds;            // the range its number (or numbers) must be in, when it has one
-    std::string (*names)();   // the values it takes when they are names ("flat | gouraud | phong"), else null
-    std::string sets;         // the scene-file field it overrides ("ior", "objects[].material.ka"); "" for none
-    const char* help;         // one paragraph; "{range}" and "{names}" stand for the two above
+    Bounds bounds;           // the range its number (or numbers) must be in, when it has one
+    std::string (*names)();  // the values it takes when they are names ("flat | gouraud | phong"), else null
+    std::string sets;        // the scene-file field it overrides ("ior", "objects[].material.ka"); "" for none
+    const char* help;        // one paragraph; "{range}" and "{names}" stand for the two above
     // Reads the value (empty for a switch) into the options; throws InputError "--name: ...".
     void (*apply)(Options& options, const OptionSpec& self, const std::string& value);
-    OptionRules rules = {};   // which options it goes with, and the run it asks for
+    OptionRules rules = {};  // which options it goes with, and the run it asks for
     // The panel section where the viewer and the web page show its control; a parameter's option takes
     // its parameter's (core/scene/parameters.hpp). None: no control (or one the panel places itself).
     std::optional<PanelSection> section = std::nullopt;

@@ -1,11 +1,11 @@
 #include "options/options.hpp"
 
-#include "options/option_table.hpp"
-#include "core/ui/controls.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/figures/plot_image.hpp"
 #include "core/scene/scene_json.hpp"
+#include "core/ui/controls.hpp"
+#include "options/option_table.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -40,7 +40,9 @@ std::string groupNames(OptionGroup group) {
 // option given in the table's order, the first option it refuses; then the first it needs and lacks
 // (so "--test DIR --reference R" names what --test refuses rather than what --reference lacks).
 void checkRules(const std::vector<const OptionSpec*>& given) {
-    const auto isSet = [&](const OptionSpec* spec) { return std::find(given.begin(), given.end(), spec) != given.end(); };
+    const auto isSet = [&](const OptionSpec* spec) {
+        return std::find(given.begin(), given.end(), spec) != given.end();
+    };
     for (const OptionSpec* spec = optionsBegin(); spec != optionsEnd(); ++spec) {
         if (!isSet(spec)) continue;
         for (const Conflict& c : spec->rules.conflicts) {
@@ -56,14 +58,16 @@ void checkRules(const std::vector<const OptionSpec*>& given) {
     }
     for (const OptionSpec* spec = optionsBegin(); spec != optionsEnd(); ++spec)
         for (const Need& n : spec->rules.needs)
-            if (isSet(spec) && std::none_of(n.anyOf.begin(), n.anyOf.end(), [&](const char* o) { return isGiven(given, o); }))
+            if (isSet(spec) &&
+                std::none_of(n.anyOf.begin(), n.anyOf.end(), [&](const char* o) { return isGiven(given, o); }))
                 throw InputError(std::string(spec->name) + ": " + n.text);
 }
 
 // The run the options ask for: the first in RunMode's order of those the options given ask for.
 RunMode runMode(const Options& o, const std::vector<const OptionSpec*>& given) {
     RunMode mode = RunMode::Viewer;
-    for (const OptionSpec* spec : given) mode = std::min(mode, o.output ? spec->rules.modeWithOutput : spec->rules.mode);
+    for (const OptionSpec* spec : given)
+        mode = std::min(mode, o.output ? spec->rules.modeWithOutput : spec->rules.mode);
     return mode;
 }
 
@@ -95,7 +99,8 @@ const FileEnding kFileEndings[] = {
 
 void checkFileNames(const Options& o) {
     if (o.output && !o.playlist && !hasExtension(*o.output, ".png") && !isVideoPath(*o.output))
-        throw InputError("--output: " + *o.output + ": only .png output is supported (and .gif, .mp4, .webm with --animate)");
+        throw InputError("--output: " + *o.output +
+                         ": only .png output is supported (and .gif, .mp4, .webm with --animate)");
     for (const FileEnding& f : kFileEndings)
         if (const std::optional<std::string>& file = o.*f.file; file && !hasExtension(*file, f.ending))
             throw InputError(std::string(f.flag) + ": " + *file + ": " + f.refusal);
@@ -112,21 +117,25 @@ void checkPlotSize(const Options& o) {
 void checkAnimation(const Options& o) {
     const bool video = o.output && !o.playlist && isVideoPath(*o.output);
     if (o.animations.empty()) {
-        if (video) throw InputError("--output: " + *o.output + ": a video needs --animate SPEC (e.g. --animate light-orbit)");
+        if (video)
+            throw InputError("--output: " + *o.output + ": a video needs --animate SPEC (e.g. --animate light-orbit)");
         return;
     }
     // With --playlist the viewer plays the animation on every preset; a video is of one scene.
     if (o.playlist && o.output)
-        throw InputError("--animate: with --playlist the viewer plays it on every preset; a video (--output) is of one "
-                         "scene: give that preset's file instead of --playlist");
+        throw InputError(
+            "--animate: with --playlist the viewer plays it on every preset; a video (--output) is of one "
+            "scene: give that preset's file instead of --playlist");
     if (!o.output) {  // the viewer plays it
         for (const Animation& a : o.animations)
             if (a.parameter == "tessellation")
-                throw InputError("--animate: " + a.text + ": a tessellation ramp is for videos (--output); the "
+                throw InputError("--animate: " + a.text +
+                                 ": a tessellation ramp is for videos (--output); the "
                                  "viewer would rebuild the mesh every frame");
         return;
     }
-    if (!video) throw InputError("--animate: writes a video: give --output FILE.gif, .mp4 or .webm (not " + *o.output + ")");
+    if (!video)
+        throw InputError("--animate: writes a video: give --output FILE.gif, .mp4 or .webm (not " + *o.output + ")");
     if (o.dither && !hasExtension(*o.output, ".gif"))
         throw InputError("--dither: dithers a GIF's palette; " + *o.output + " is not a .gif");
 }
@@ -291,7 +300,8 @@ Without --output (or --benchmark) it opens the interactive viewer.
 )" + optionLines(OptionGroup::General) +
            "\nViewer (the window; its keys and mouse are listed below, in its panel under \"Keys\" and by F1):\n" +
            optionLines(OptionGroup::Viewer) +
-           "\nBad input (a file, a field, a flag) prints one line and exits with status 2.\n\nViewer keys and mouse:\n" +
+           "\nBad input (a file, a field, a flag) prints one line and exits with status 2.\n\nViewer keys and "
+           "mouse:\n" +
            controlsText();
 }
 
@@ -301,8 +311,8 @@ std::string optionsMarkdown() {
         std::string values = s->names ? s->names() : "";
         if (s->bounds.given && !s->names) values = rangeText(Range<double>{s->bounds.lo, s->bounds.hi});
         const std::string field = !s->sets.empty() ? "`" + s->sets + "`" : "";
-        out += "| `" + cell(optionSynopsis(*s)) + "` | " + cell(values) + " | " + field + " | " +
-               cell(optionHelp(*s)) + (s->group == OptionGroup::Viewer ? " (viewer only)" : "") + " |\n";
+        out += "| `" + cell(optionSynopsis(*s)) + "` | " + cell(values) + " | " + field + " | " + cell(optionHelp(*s)) +
+               (s->group == OptionGroup::Viewer ? " (viewer only)" : "") + " |\n";
     }
     return out;
 }

@@ -37,7 +37,8 @@ MeshSpec parseMeshShorthand(const std::string& text, const std::string& opt) {
             used = 0;
         }
         if (used != p.size() || p.empty()) throw InputError(opt + ": \"" + quoteInput(p) + "\" is not an integer");
-        if (v < range.lo || v > range.hi) throw InputError(opt + ": " + p + " is out of range (" + rangeText(range) + ")");
+        if (v < range.lo || v > range.hi)
+            throw InputError(opt + ": " + p + " is out of range (" + rangeText(range) + ")");
         out = static_cast<int>(v);
     };
     const std::string& kind = parts[0];
@@ -118,7 +119,8 @@ private:
             const float x = std::strtof(item.c_str(), &end);
             if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
                 fail(key + ": \"" + quoteInput(item) + "\" is not a number");
-            if (x < lo || x > hi) fail(key + ": " + item + " is out of range (" + formatNumber(lo) + ".." + formatNumber(hi) + ")");
+            if (x < lo || x > hi)
+                fail(key + ": " + item + " is out of range (" + formatNumber(lo) + ".." + formatNumber(hi) + ")");
             out.push_back(x);
         }
         if (out.size() != count || (!v.empty() && v.back() == sep))
@@ -143,7 +145,8 @@ private:
     void readTypeAndPlace(const std::string& type, const std::string& xyz) {
         const std::optional<LightType> lightType = valueNamed(kLightTypeNames, type);
         if (!lightType)
-            fail("unknown light type \"" + quoteInput(type) + "\" (expected " + namesList(kLightTypeNames, ", ", " or ") + ")");
+            fail("unknown light type \"" + quoteInput(type) + "\" (expected " +
+                 namesList(kLightTypeNames, ", ", " or ") + ")");
         l_.type = *lightType;
         const glm::vec3 where = vec3Of(type, xyz, kCoordinateRange.lo, kCoordinateRange.hi);
         if (l_.type == LightType::Directional) {
@@ -194,7 +197,8 @@ private:
             l_.size = {wh[0], wh[1]};
         } else if (key == "samples") {
             const std::vector<float> n = numbers(key, value, 2, 'x', 1, kAreaSamplesPerSideRange.hi);
-            if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1])) fail("samples: expected NXxNY integers, e.g. 8x8");
+            if (n[0] != std::floor(n[0]) || n[1] != std::floor(n[1]))
+                fail("samples: expected NXxNY integers, e.g. 8x8");
             l_.samples = {int(n[0]), int(n[1])};
         } else {
             return false;
@@ -271,7 +275,8 @@ std::string meshShorthand(const MeshSpec& m) {
     switch (m.type) {
     case MeshSpec::Type::UvSphere: return type + ":" + std::to_string(m.slices) + ":" + std::to_string(m.stacks);
     case MeshSpec::Type::IcoSphere: return type + ":" + std::to_string(m.subdivisions);
-    case MeshSpec::Type::Torus: return type + ":" + std::to_string(m.majorSegments) + ":" + std::to_string(m.minorSegments);
+    case MeshSpec::Type::Torus:
+        return type + ":" + std::to_string(m.majorSegments) + ":" + std::to_string(m.minorSegments);
     case MeshSpec::Type::Plane: return type + ":" + std::to_string(m.planeSubdivisions);
     case MeshSpec::Type::Cube: return type;
     case MeshSpec::Type::Gltf: break;

@@ -4,7 +4,8 @@
 #ifndef NOMINMAX
 #define NOMINMAX
 #endif
-#include <windows.h>
+#include <windows.h>  // first: the others below rely on its definitions
+
 #include <fcntl.h>
 #include <io.h>
 #include <process.h>
@@ -66,7 +67,8 @@ void installTempCleanup() {
             if (old != SIG_DFL && old != SIG_ERR) std::signal(sig, old);
 #else
             struct sigaction old {};
-            if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) std::signal(sig, removeTempFilesAndDie);
+            if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL)
+                std::signal(sig, removeTempFilesAndDie);
 #endif
         }
     });
@@ -103,7 +105,8 @@ const char* const kTempTemplate = ".shadelab-XXXXXX";
 
 fs::path randomTempName(const fs::path& dir, std::mt19937& random) {
     std::string name = kTempTemplate;
-    for (std::size_t i = name.size() - 6; i < name.size(); ++i) name[i] = "abcdefghijklmnopqrstuvwxyz0123456789"[random() % 36];
+    for (std::size_t i = name.size() - 6; i < name.size(); ++i)
+        name[i] = "abcdefghijklmnopqrstuvwxyz0123456789"[random() % 36];
     return dir / name;
 }
 
@@ -178,11 +181,13 @@ namespace {
 // The system's wording of a Win32 error code ("Access is denied").
 std::string win32Reason(DWORD code) {
     char* text = nullptr;
-    const DWORD n = FormatMessageA(FORMAT_MESSAGE_ALLOCATE_BUFFER | FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
-                                   nullptr, code, 0, reinterpret_cast<char*>(&text), 0, nullptr);
+    const DWORD n =
+        FormatMessageA(FORMAT_MESSAGE_ALLOCATE_BUFFER | FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
+                       nullptr, code, 0, reinterpret_cast<char*>(&text), 0, nullptr);
     std::string out = n && text ? std::string(text, n) : "Windows error " + std::to_string(code);
     if (text) LocalFree(text);
-    while (!out.empty() && (out.back() == '\n' || out.back() == '\r' || out.back() == '.' || out.back() == ' ')) out.pop_back();
+    while (!out.empty() && (out.back() == '\n' || out.back() == '\r' || out.back() == '.' || out.back() == ' '))
+        out.pop_back();
     return out;
 }
 
@@ -272,7 +277,7 @@ std::optional<std::string> writeUnnamed(const fs::path& path, const fs::path& di
 #ifdef O_TMPFILE
     char self[64];
     if (::access("/proc/self/fd", X_OK) != 0) return std::nullopt;  // linkat below names the file through /proc
-    if (std::getenv("SHADELAB_NO_TMPFILE")) return std::nullopt;     // tests: the named-temporary path, as elsewhere
+    if (std::getenv("SHADELAB_NO_TMPFILE")) return std::nullopt;    // tests: the named-temporary path, as elsewhere
     const int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);  // 0666 less the umask
     if (fd < 0) return std::nullopt;
     std::FILE* f = fdopen(fd, "wb");

@@ -4,9 +4,6 @@
 // CLI's; frames are drawn as `shadelab --output` draws them, on one headless context kept by a
 // Renderer on a thread of its own (a GL context is current on one thread), with the GIL released.
 // Bad input raises shadelab.InputError (a ValueError) with the CLI's one-line message.
-#include "options/options.hpp"
-#include "run/session.hpp"
-#include "run/reference.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/message.hpp"
@@ -18,7 +15,10 @@
 #include "core/scene/parameters.hpp"
 #include "core/scene/scene_json.hpp"
 #include "headless/headless.hpp"
+#include "options/options.hpp"
 #include "render/shader_library.hpp"
+#include "run/reference.hpp"
+#include "run/session.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -54,8 +54,9 @@ Options parseCall(const Call& call, const std::string& output) {
     std::vector<std::string> args = call.args;
     for (const std::string& a : args)
         if (a == "--output" || a == "-o" || a.rfind("--output=", 0) == 0)
-            throw InputError("--output: not taken from Python: render, probe and plot return what they make, and "
-                             "video takes its file as the first argument");
+            throw InputError(
+                "--output: not taken from Python: render, probe and plot return what they make, and "
+                "video takes its file as the first argument");
     args.push_back("--output");
     args.push_back(output);
     Options options = parseOptions(args);
@@ -92,15 +93,19 @@ py::array_t<std::uint8_t> toArray(const Image& image) {
 Image fromArray(const py::array& array, const char* what) {
     if (!py::isinstance<py::array_t<std::uint8_t>>(array) || array.ndim() != 3 ||
         (array.shape(2) != 3 && array.shape(2) != 4))
-        throw InputError(std::string(what) + ": an H x W x 3 or H x W x 4 array of uint8 (as shadelab.render returns), "
-                                             "not " + std::string(py::str(array.dtype())) + " of shape " +
-                         std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim()))))));
+        throw InputError(std::string(what) +
+                         ": an H x W x 3 or H x W x 4 array of uint8 (as shadelab.render returns), "
+                         "not " +
+                         std::string(py::str(array.dtype())) + " of shape " +
+                         std::string(py::str(py::tuple(
+                             py::cast(std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim()))))));
     const auto pixels = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(array);
     const int h = int(array.shape(0)), w = int(array.shape(1)), c = int(array.shape(2));
     Image image(w, h);
     const std::uint8_t* src = pixels.data();
     for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
-        for (int k = 0; k < 4; ++k) image.rgba[4 * i + std::size_t(k)] = k < c ? src[std::size_t(c) * i + std::size_t(k)] : 255;
+        for (int k = 0; k < 4; ++k)
+            image.rgba[4 * i + std::size_t(k)] = k < c ? src[std::size_t(c) * i + std::size_t(k)] : 255;
     }
     return image;
 }
@@ -179,17 +184,21 @@ public:
 private:
     Image frame(const Call& call) {
         const Options options = parseCall(call, "shadelab.png");
-        if (options.mode != RunMode::Image && options.mode != RunMode::ProbeImage && options.mode != RunMode::SweepSheet)
+        if (options.mode != RunMode::Image && options.mode != RunMode::ProbeImage &&
+            options.mode != RunMode::SweepSheet)
             refuseMode(options, "render");
         Scene scene = sceneOf(call, options);
         if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
         const std::string shaderDir = options.shaderDir.empty() ? defaultShaderDir_ : options.shaderDir;
         if (options.mode == RunMode::SweepSheet) {
             // A sheet is drawn on a context of its own, on a thread of its own (this one's stays current).
-            return std::async(std::launch::async, [&] {
-                return renderSweepHeadless(scene, options.sweeps, ShaderLibrary(shaderDir), headlessBackend(options),
-                                           "--sweep", headlessMsaa(options));
-            }).get();
+            return std::async(std::launch::async,
+                              [&] {
+                                  return renderSweepHeadless(scene, options.sweeps, ShaderLibrary(shaderDir),
+                                                             headlessBackend(options), "--sweep",
+                                                             headlessMsaa(options));
+                              })
+                .get();
         }
         if (!gl_) gl_ = std::make_unique<GlThread>();
         return gl_->call([&] {
@@ -203,8 +212,8 @@ private:
             Image image = session_->render(scene, headlessMsaa(options));
             if (!options.probe) return finishedFrame(options, std::move(image), scene, scene.title);
             const auto geometry = session_->geometry();
-            const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
-                                                 options.probe->y);
+            const ProbeResult probe =
+                probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x, options.probe->y);
             return finishedFrame(options, std::move(image), scene, scene.title, &probe);
         });
     }
@@ -224,8 +233,8 @@ std::string probe(const Call& call) {
     Scene scene = sceneOf(call, options);
     checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
     const auto geometry = loadGeometry(options, scene);
-    const ProbeResult result = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
-                                          options.probe->y);
+    const ProbeResult result =
+        probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x, options.probe->y);
     return probeToJson(scene, result);
 }
 
@@ -264,9 +273,10 @@ py::dict compare(const py::array& actualArray, const py::array& referenceArray, 
     result["max_diff"] = tolerance.maxDiff;
     result["mean_diff"] = tolerance.meanDiff;
     result["differing_pixels"] = r.differingPixels;
-    result["max_diff_pixels"] = tolerance.maxDiffPixels ? py::object(py::int_(*tolerance.maxDiffPixels)) : py::object(py::none());
+    result["max_diff_pixels"] =
+        tolerance.maxDiffPixels ? py::object(py::int_(*tolerance.maxDiffPixels)) : py::object(py::none());
     result["message"] = r.sizeMatches ? describe(r, tolerance)
-                                       : "size " + sizeText(actual) + ", the reference's " + sizeText(reference);
+                                      : "size " + sizeText(actual) + ", the reference's " + sizeText(reference);
     result["difference"] = difference ? py::object(toArray(*difference)) : py::object(py::none());
     return result;
 }
@@ -300,9 +310,8 @@ PYBIND11_MODULE(_shadelab, m) {
             inputError(oneLine(e.what()).c_str());
         }
     });
-    py::class_<Call>(m, "Call")
-        .def(py::init<std::vector<std::string>, std::optional<std::string>, std::string>(), py::arg("args"),
-             py::arg("scene_json") = py::none(), py::arg("base_dir") = "");
+    py::class_<Call>(m, "Call").def(py::init<std::vector<std::string>, std::optional<std::string>, std::string>(),
+                                    py::arg("args"), py::arg("scene_json") = py::none(), py::arg("base_dir") = "");
     py::class_<PyRenderer>(m, "Renderer")
         .def(py::init<std::string>(), py::arg("shader_dir") = "")
         .def("render", &PyRenderer::render)
@@ -320,7 +329,8 @@ PYBIND11_MODULE(_shadelab, m) {
             row["range"] = py::make_tuple(p->range.lo, p->range.hi);
             row["slider"] = py::make_tuple(p->slider.lo, p->slider.hi);
             row["scale"] = p->scale == SliderScale::Log ? "log" : "linear";
-            row["default"] = std::isnan(p->defaultValue) ? py::object(py::none()) : py::object(py::float_(p->defaultValue));
+            row["default"] =
+                std::isnan(p->defaultValue) ? py::object(py::none()) : py::object(py::float_(p->defaultValue));
             row["help"] = parameterHelp(*p);
             rows.append(row);
         }

@@ -59,8 +59,8 @@ void DifferencePass::copySources(const Pane& a, const Pane& b, const RenderTarge
     }
 #endif
     for (std::size_t k = 0; k < 2; ++k) {
-        blitColor(from, sources[k]->x, target.height - sources[k]->y - sources[k]->height,
-                  sourceFbos_[k].get(), 0, 0, width_, height_);
+        blitColor(from, sources[k]->x, target.height - sources[k]->y - sources[k]->height, sourceFbos_[k].get(), 0, 0,
+                  width_, height_);
         glActiveTexture(GLenum(GL_TEXTURE0 + k));
         glBindTexture(GL_TEXTURE_2D, sources_[k].get());
     }

@@ -56,8 +56,10 @@ void EnvironmentPass::drawBackground(const Scene& scene, const Pane& pane, const
     const float aspect = float(pane.width) / float(pane.height);
     const glm::mat4 worldFromClip = glm::inverse(clipFromView(scene.camera, aspect) * viewFromWorld(scene.camera));
     glUseProgram(program.get());
-    glUniformMatrix4fv(glGetUniformLocation(program.get(), "u_worldFromClip"), 1, GL_FALSE, glm::value_ptr(worldFromClip));
-    glUniform3f(glGetUniformLocation(program.get(), "u_eyeWorld"), scene.camera.eye.x, scene.camera.eye.y, scene.camera.eye.z);
+    glUniformMatrix4fv(glGetUniformLocation(program.get(), "u_worldFromClip"), 1, GL_FALSE,
+                       glm::value_ptr(worldFromClip));
+    glUniform3f(glGetUniformLocation(program.get(), "u_eyeWorld"), scene.camera.eye.x, scene.camera.eye.y,
+                scene.camera.eye.z);
     glUniform4f(glGetUniformLocation(program.get(), "u_paneRect"), float(pane.x), float(originY), float(pane.width),
                 float(pane.height));
     glDepthMask(GL_FALSE);

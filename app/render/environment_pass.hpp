@@ -23,8 +23,9 @@ public:
     // An image environment's texture uploaded (once per image) and bound on SL_TEXTURE_ENVIRONMENT;
     // nothing for the procedural ones. InputError when the image is larger than this GL's textures.
     void bindTexture(const Scene& scene);
-    // The background of `pane` (the viewport is set here). `uncoveredOnly`: only where the depth buffer holds the far plane (after progressive
-    // sampling's resolve, which leaves the surfaces' depth); else over the whole pane, depth untouched.
+    // The background of `pane` (the viewport is set here). `uncoveredOnly`: only where the depth buffer holds the far
+    // plane (after progressive sampling's resolve, which leaves the surfaces' depth); else over the whole pane, depth
+    // untouched.
     void drawBackground(const Scene& scene, const Pane& pane, const RenderTarget& target, const ShaderLibrary& shaders,
                         bool uncoveredOnly);
 

@@ -20,8 +20,8 @@ struct LightGpu {
     float shadowClipFromWorld[16];
     float shadowU[4];
     float shadowV[4];
-    float shadow[4];       // texel world size, depth = y - z / distance, tan(half fov)
-    float spot[4];         // spot: unit axis, cos outer
+    float shadow[4];  // texel world size, depth = y - z / distance, tan(half fov)
+    float spot[4];    // spot: unit axis, cos outer
 };
 static_assert(offsetof(LightGpu, falloff) == 48, "std140 offset");
 static_assert(offsetof(LightGpu, shadowClipFromWorld) == 112, "std140 offset");
@@ -54,10 +54,10 @@ struct ObjectBlock {
     float color[4];
     float specularColor[4];
     float coefficients[4];  // ka, kd, ks, ke
-    float emissive[4];                       // E's factor
-    float alphaCutoff[4];                    // MASK's cutoff
-    float anisotropy[4];                     // k_t, k_b (SL_ANISOTROPY)
-    float mirrorGlass[4];                    // k_r, k_t (SL_ENVIRONMENT)
+    float emissive[4];      // E's factor
+    float alphaCutoff[4];   // MASK's cutoff
+    float anisotropy[4];    // k_t, k_b (SL_ANISOTROPY)
+    float mirrorGlass[4];   // k_r, k_t (SL_ENVIRONMENT)
 };
 static_assert(offsetof(ObjectBlock, normalWorldFromObject) == 64, "std140 offset");
 static_assert(offsetof(ObjectBlock, color) == 128, "std140 offset");

@@ -33,7 +33,8 @@ void MeshCache::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
     objects_.clear();
     if (!geometry_) return;
     objects_.reserve(geometry_->meshes.size());
-    for (std::size_t o = 0; o < geometry_->meshes.size(); ++o) objects_.push_back(describe(drawnMesh(o), geometry_->meshes[o]));
+    for (std::size_t o = 0; o < geometry_->meshes.size(); ++o)
+        objects_.push_back(describe(drawnMesh(o), geometry_->meshes[o]));
 }
 
 MeshCache::ObjectMesh MeshCache::describe(const Mesh& mesh, const Mesh& baked) {
@@ -86,13 +87,15 @@ void MeshCache::bindInstances(std::size_t object, const InstanceGroup& group) {
     glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
     for (GLuint c = 0; c < 4; ++c) {
         const std::size_t offset = std::size_t(group.first) * sizeof(glm::mat4) + c * sizeof(glm::vec4);
-        glVertexAttribPointer(SL_ATTRIB_INSTANCE + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4), reinterpret_cast<void*>(offset));
+        glVertexAttribPointer(SL_ATTRIB_INSTANCE + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4),
+                              reinterpret_cast<void*>(offset));
         glVertexAttribDivisor(SL_ATTRIB_INSTANCE + c, 1);
         glEnableVertexAttribArray(SL_ATTRIB_INSTANCE + c);
     }
 }
 
-void MeshCache::uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures, const std::vector<char>& tangents) {
+void MeshCache::uploadAndRelease(const std::vector<ShadingMode>& modes, bool textures,
+                                 const std::vector<char>& tangents) {
     for (ShadingMode mode : modes)
         for (std::size_t o = 0; o < objects_.size(); ++o) {
             gpuMesh(o, mode);
@@ -182,7 +185,8 @@ InterleavedVertices flatVertices(const FlatMesh& flat, bool tangents) {
     interleave(out, flat.positions.size(), tangents ? 13 : 9, {flat.texcoords, flat.colors, flat.emissiveTexcoords},
                [&](float* v, std::size_t i) {
                    const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
-                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y, v[8] = n.z;
+                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y,
+                   v[8] = n.z;
                    if (tangents) writeTangent(v + 9, flat.tangents, i);
                });
     return out;
@@ -195,16 +199,18 @@ InterleavedVertices flatVertices(const FlatMesh& flat, bool tangents) {
 InterleavedVertices packedFlatVertices(const FlatMesh& flat) {
     InterleavedVertices out;
     out.layout = {{SL_ATTRIB_POSITION, 4}, {SL_ATTRIB_CENTROID, 4}};
-    interleave(out, flat.positions.size(), 8, {flat.texcoords, flat.colors, flat.emissiveTexcoords}, [&](float* v, std::size_t i) {
-        const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
-        v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
-        v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
-    });
+    interleave(out, flat.positions.size(), 8, {flat.texcoords, flat.colors, flat.emissiveTexcoords},
+               [&](float* v, std::size_t i) {
+                   const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
+                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
+                   v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
+               });
     return out;
 }
 
 // A vertex array of `vertices` (freed once uploaded) and `indices`, into `g`.
-void uploadVertexArray(MeshCache::GpuMesh& g, InterleavedVertices&& vertices, const std::vector<std::uint32_t>& indices) {
+void uploadVertexArray(MeshCache::GpuMesh& g, InterleavedVertices&& vertices,
+                       const std::vector<std::uint32_t>& indices) {
     g.vao = gl::makeVertexArray();
     g.indices = gl::makeBuffer();
     glBindVertexArray(g.vao.get());
@@ -248,14 +254,17 @@ const MeshCache::GpuMesh& MeshCache::gpuMesh(std::size_t object, ShadingMode mod
     std::array<GpuMesh, 4>& gpu = objects_[object].gpu;
     GpuMesh& g = gpu[(flat ? 1 : 0) + (tangents ? 2 : 0)];
     if (g.vao) return g;
-    if (!geometry_) throw std::logic_error("mesh cache: a shading mode that was not uploaded before the CPU geometry was released");
+    if (!geometry_)
+        throw std::logic_error("mesh cache: a shading mode that was not uploaded before the CPU geometry was released");
     const Mesh& mesh = uploadSource(object);
     if (flat) {
-        const FlatMesh flatMesh =
-            options_.meshOrder == RendererOptions::MeshOrder::VertexCache ? makeOrderedFlatMesh(mesh) : makeFlatMesh(mesh);
-        uploadVertexArray(g,
-                          options_.packedFlatVertices && !tangents ? packedFlatVertices(flatMesh) : flatVertices(flatMesh, tangents),
-                          flatMesh.indices);
+        const FlatMesh flatMesh = options_.meshOrder == RendererOptions::MeshOrder::VertexCache
+                                      ? makeOrderedFlatMesh(mesh)
+                                      : makeFlatMesh(mesh);
+        uploadVertexArray(
+            g,
+            options_.packedFlatVertices && !tangents ? packedFlatVertices(flatMesh) : flatVertices(flatMesh, tangents),
+            flatMesh.indices);
     } else {
         uploadVertexArray(g, smoothVertices(mesh, tangents), mesh.indices);
     }

@@ -4,8 +4,8 @@
 // provoking vertex per triangle with its centroid and face normal, FlatMesh), uploaded on first use
 // in the order RendererOptions::meshOrder asks; its GPU instances (EXT_mesh_gpu_instancing) split by
 // handedness; and its base colour textures. GL-free work (ordering, flat meshes) is in core.
-#include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "core/scene/scene.hpp"
 #include "render/cpu/shadow_projection.hpp"
 #include "render/gl_handles.hpp"
 #include "render/renderer_options.hpp"
@@ -33,8 +33,12 @@ public:
     const std::vector<MeshPart>& parts(std::size_t object) const { return objects_[object].parts; }
     const Aabb& box(std::size_t object) const { return objects_[object].box; }  // object space, every instance
     std::size_t triangles(std::size_t object) const { return objects_[object].triangles; }
-    bool variesColor(std::size_t object) const { return objects_[object].variesColor; }  // texture coordinates and colours
-    bool hasEmissiveTexture(std::size_t object) const { return objects_[object].emissiveTexture; }  // and emissive coordinates
+    bool variesColor(std::size_t object) const {
+        return objects_[object].variesColor;
+    }  // texture coordinates and colours
+    bool hasEmissiveTexture(std::size_t object) const {
+        return objects_[object].emissiveTexture;
+    }  // and emissive coordinates
     // A blended part's bounds in object space (of the vertices it draws once; an instanced part's before
     // its instances), for the back-to-front order; empty for other parts.
     const Aabb& partBox(std::size_t object, std::size_t part) const { return objects_[object].partBoxes[part]; }
@@ -57,7 +61,9 @@ public:
         GLsizei first = 0, count = 0;
         bool mirrored = false;
     };
-    const std::vector<InstanceGroup>& instanceGroups(std::size_t object) const { return objects_[object].instanceGroups; }
+    const std::vector<InstanceGroup>& instanceGroups(std::size_t object) const {
+        return objects_[object].instanceGroups;
+    }
     const glm::mat4& instance(std::size_t object, std::size_t i) const { return objects_[object].instances[i]; }
     // Points the bound vertex array's SL_ATTRIB_INSTANCE attributes at the group's transforms.
     void bindInstances(std::size_t object, const InstanceGroup& group);
@@ -75,16 +81,16 @@ private:
 
     // Everything the cache keeps of one object.
     struct ObjectMesh {
-        std::vector<MeshPart> parts;          // its parts (one for a plain mesh)
-        std::array<GpuMesh, 4> gpu;           // [smooth, flat, smooth + tangents, flat + tangents]
-        Mesh ordered;                         // with VertexCache: until both its uploads are done
-        Aabb box;                             // object space, every instance (the baked mesh's)
-        std::size_t triangles = 0;            // the baked mesh's
+        std::vector<MeshPart> parts;  // its parts (one for a plain mesh)
+        std::array<GpuMesh, 4> gpu;   // [smooth, flat, smooth + tangents, flat + tangents]
+        Mesh ordered;                 // with VertexCache: until both its uploads are done
+        Aabb box;                     // object space, every instance (the baked mesh's)
+        std::size_t triangles = 0;    // the baked mesh's
         bool variesColor = false, emissiveTexture = false;
-        std::vector<Aabb> partBoxes;          // per part: a blended one's bounds, else empty
+        std::vector<Aabb> partBoxes;  // per part: a blended one's bounds, else empty
         std::vector<InstanceGroup> instanceGroups;
-        std::vector<glm::mat4> instances;     // (the shadow pass draws them one by one)
-        gl::Buffer instanceBuffer;            // mat4 each, made on the first instanced draw
+        std::vector<glm::mat4> instances;  // (the shadow pass draws them one by one)
+        gl::Buffer instanceBuffer;         // mat4 each, made on the first instanced draw
         // Its base colour images until uploaded, and the textures made of them.
         std::vector<std::shared_ptr<const TextureImage>> images;
         std::vector<gl::Texture> textures;

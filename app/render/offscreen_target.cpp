@@ -9,10 +9,8 @@ namespace {
 gl::Renderbuffer makeStorage(GLenum format, int width, int height, int samples) {
     gl::Renderbuffer r = gl::makeRenderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, r.get());
-    if (samples > 0)
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
-    else
-        glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    if (samples > 0) glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+    else glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
     return r;
 }
 

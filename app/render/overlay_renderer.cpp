@@ -1,8 +1,8 @@
 #include "render/overlay_renderer.hpp"
 
 #include "core/geometry/camera.hpp"
-#include "core/shading/lighting.hpp"
 #include "core/geometry/mesh.hpp"
+#include "core/shading/lighting.hpp"
 #include "render/gpu_blocks.hpp"
 #include "render/program.hpp"
 
@@ -128,8 +128,8 @@ void pushSpotCone(std::vector<float>& data, const Light& light, const Camera& ca
 void pushAreaOutline(std::vector<float>& data, const Light& light, const Camera& cam) {
     const glm::vec3 at = light.position;
     const AreaFrame f = areaFrame(light);
-    const glm::vec3 c[4] = {at - 0.5f * f.u - 0.5f * f.v, at + 0.5f * f.u - 0.5f * f.v,
-                            at + 0.5f * f.u + 0.5f * f.v, at - 0.5f * f.u + 0.5f * f.v};
+    const glm::vec3 c[4] = {at - 0.5f * f.u - 0.5f * f.v, at + 0.5f * f.u - 0.5f * f.v, at + 0.5f * f.u + 0.5f * f.v,
+                            at - 0.5f * f.u + 0.5f * f.v};
     for (int k = 0; k < 4; ++k) {
         pushVertex(data, c[k]);
         pushVertex(data, c[(k + 1) % 4]);
@@ -191,9 +191,11 @@ OverlayRenderer::OverlayRenderer(const ShaderLibrary& shaders)
     : thin_(lineProgram(buildProgram("overlay", shaders))),
 #if SHADELAB_GLES
       // WebGL2 has no geometry shaders: overlay lines are one pixel wide there (docs/web.md).
-      wide_(lineProgram(buildProgram("overlay", shaders))) {}
+      wide_(lineProgram(buildProgram("overlay", shaders))) {
+}
 #else
-      wide_(lineProgram(buildProgram("overlay", shaders, {}, "", "overlay_wide"))) {}
+      wide_(lineProgram(buildProgram("overlay", shaders, {}, "", "overlay_wide"))) {
+}
 #endif
 
 void OverlayRenderer::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
@@ -247,9 +249,10 @@ void OverlayRenderer::drawObjectLines(const Scene& scene, const OverlayOptions& 
     uniforms_.bindObject(o);
     const glm::vec3 s = glm::abs(scene.objects[o].transform.scale);
     const float normalLength = options.normalScale * objectRadius_[o] * std::max({s.x, s.y, s.z});
-    const std::pair<bool, LineKind> kinds[] = {
-        {options.wireframe, Edges}, {options.vertexNormals, VertexNormals}, {options.faceNormals, FaceNormals},
-        {options.tangents, Tangents}};
+    const std::pair<bool, LineKind> kinds[] = {{options.wireframe, Edges},
+                                               {options.vertexNormals, VertexNormals},
+                                               {options.faceNormals, FaceNormals},
+                                               {options.tangents, Tangents}};
     for (const auto& [enabled, kind] : kinds) {
         if (!enabled) continue;
         // Wireframe: light grey, half covering; vertex normals cyan; face normals yellow (the
@@ -297,7 +300,8 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
         for (std::size_t o = 0; o < objects; ++o) drawObjectLines(scene, options, o);
         if (options.lightMarkers) drawLights(scene, objects);
         const int marked = options.sampleMarkersLight;
-        if (marked >= 0 && std::size_t(marked) < scene.lights.size() && scene.lights[std::size_t(marked)].type == LightType::Area)
+        if (marked >= 0 && std::size_t(marked) < scene.lights.size() &&
+            scene.lights[std::size_t(marked)].type == LightType::Area)
             drawAreaSamples(scene, scene.lights[std::size_t(marked)], objects);
         if (!arrows.empty()) drawArrows(scene, pane, int(p), arrows, objects);
     }
@@ -309,9 +313,9 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
 
 void OverlayRenderer::drawLights(const Scene& scene, std::size_t identityObject) {
     // A three-axis cross at each point light (a spot light: with its axis and outer cone); for a
-    // directional light a cross up-light of the target and a line along the direction the light travels; for an area light its rectangle, normal and
-    // sample positions around the cross at its centre. Sizes follow the distance to the eye, so a
-    // marker stays the same size on screen wherever the light is.
+    // directional light a cross up-light of the target and a line along the direction the light travels; for an area
+    // light its rectangle, normal and sample positions around the cross at its centre. Sizes follow the distance to the
+    // eye, so a marker stays the same size on screen wherever the light is.
     std::vector<float> data;
     std::vector<std::pair<GLint, glm::vec4>> draws;  // first vertex, colour
     const Camera& cam = scene.camera;
@@ -331,8 +335,8 @@ void OverlayRenderer::drawLights(const Scene& scene, std::size_t identityObject)
     drawWorldLines(data, draws, identityObject);
 }
 
-void OverlayRenderer::drawWorldLines(const std::vector<float>& data, const std::vector<std::pair<GLint, glm::vec4>>& runs,
-                                     std::size_t identityObject) {
+void OverlayRenderer::drawWorldLines(const std::vector<float>& data,
+                                     const std::vector<std::pair<GLint, glm::vec4>>& runs, std::size_t identityObject) {
     if (runs.empty()) return;
     upload(worldLines_.vao, worldLines_.vertices, data, GL_STREAM_DRAW);
     uniforms_.bindObject(identityObject);
@@ -421,7 +425,8 @@ void OverlayRenderer::drawArrows(const Scene& scene, const Pane& pane, int paneI
         const glm::vec3 dir = d / length;
         // `side` is across the arrow as seen from the eye; `lift` completes the frame.
         glm::vec3 side = glm::cross(dir, cam.eye - a.fromWorld);
-        if (glm::length(side) < 1e-6f) side = glm::cross(dir, std::fabs(dir.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0));
+        if (glm::length(side) < 1e-6f)
+            side = glm::cross(dir, std::fabs(dir.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0));
         side = glm::normalize(side);
         const glm::vec3 lift = glm::cross(side, dir);
         // Core-profile lines are one pixel wide: three side by side make a shaft that reads on a projector.

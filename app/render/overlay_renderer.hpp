@@ -3,8 +3,8 @@
 // short lines, and markers at the lights. Kept out of Renderer so the shading programs and their images
 // (which the golden tests pin) are untouched; it draws with its own program (shaders/overlay.*) and its
 // own uniform buffer, into the same target and pane layout, testing against the depth Renderer left.
-#include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "core/scene/scene.hpp"
 #include "core/ui/view_names.hpp"
 #include "render/gl_handles.hpp"
 #include "render/renderer.hpp"
@@ -25,7 +25,7 @@ struct OverlayOptions {
     bool wireframe = false;
     bool vertexNormals = false;
     bool faceNormals = false;
-    bool tangents = false;      // each vertex's tangent T (Mesh::tangents: anisotropic reflection's), as long as a normal
+    bool tangents = false;  // each vertex's tangent T (Mesh::tangents: anisotropic reflection's), as long as a normal
     bool lightMarkers = false;
     float normalScale = 0.12f;  // normal line length as a share of each object's bounding radius
     // Pixels wide: light markers, sample markers and arrows (the probe's N, I, V, R, H); normals get
@@ -35,7 +35,9 @@ struct OverlayOptions {
     // nx x ny sample positions are marked: the light selected in the viewer's panel.
     int sampleMarkersLight = -1;
     float lineWidth = 1.0f;
-    bool any() const { return wireframe || vertexNormals || faceNormals || tangents || lightMarkers || sampleMarkersLight >= 0; }
+    bool any() const {
+        return wireframe || vertexNormals || faceNormals || tangents || lightMarkers || sampleMarkersLight >= 0;
+    }
     // The switch of an overlay the command line and the panel name (core/ui/view_names.hpp).
     bool& shown(Overlay overlay) {
         switch (overlay) {

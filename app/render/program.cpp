@@ -22,7 +22,8 @@ gl::Shader compileStage(GLenum stage, const std::string& programName, const std:
                                                          : "SL_FRAGMENT_STAGE 1");
     ExpandedGlsl src;
     try {
-        src = expandGlsl(file, [&](const std::string& n) { return library.load(n); }, stageDefines);
+        src = expandGlsl(
+            file, [&](const std::string& n) { return library.load(n); }, stageDefines);
     } catch (const std::exception& e) {
         throw ShaderError("program " + programName + ": " + e.what());
     }
@@ -36,21 +37,21 @@ gl::Shader compileStage(GLenum stage, const std::string& programName, const std:
     if (!ok) {
         std::vector<char> log(size_t(logLength > 1 ? logLength : 1), '\0');
         glGetShaderInfoLog(shader.get(), GLsizei(log.size()), nullptr, log.data());
-        const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : stage == GL_GEOMETRY_SHADER ? "geometry" : "fragment";
-        throw ShaderError("program " + programName + ", " + stageName +
-                          " stage (" + file + ", " + kGlslVersionName + ") failed to compile:\n" +
-                          locateGlslLog(log.data(), src.files));
+        const char* stageName = stage == GL_VERTEX_SHADER     ? "vertex"
+                                : stage == GL_GEOMETRY_SHADER ? "geometry"
+                                                              : "fragment";
+        throw ShaderError("program " + programName + ", " + stageName + " stage (" + file + ", " + kGlslVersionName +
+                          ") failed to compile:\n" + locateGlslLog(log.data(), src.files));
     }
     return shader;
 }
 
 }  // namespace
 
-gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
-                         const std::vector<std::string>& defines, const std::string& vertexName,
-                         const std::string& geometryName) {
-    gl::Shader vs = compileStage(GL_VERTEX_SHADER, name, (vertexName.empty() ? name : vertexName) + ".vert", library,
-                                 defines);
+gl::Program buildProgram(const std::string& name, const ShaderLibrary& library, const std::vector<std::string>& defines,
+                         const std::string& vertexName, const std::string& geometryName) {
+    gl::Shader vs =
+        compileStage(GL_VERTEX_SHADER, name, (vertexName.empty() ? name : vertexName) + ".vert", library, defines);
     gl::Shader gs;
     if (!geometryName.empty()) gs = compileStage(GL_GEOMETRY_SHADER, name, geometryName + ".geom", library, defines);
     gl::Shader fs = compileStage(GL_FRAGMENT_SHADER, name, name + ".frag", library, defines);
@@ -84,7 +85,8 @@ gl::Program buildProgram(const std::string& name, const ShaderLibrary& library,
                                                     {"u_baseColorTexture", SL_TEXTURE_BASE_COLOR},
                                                     {"u_emissiveTexture", SL_TEXTURE_EMISSIVE}};
     for (const auto& [sampler, unit] : samplers)
-        if (const GLint location = glGetUniformLocation(program.get(), sampler); location >= 0) glUniform1i(location, unit);
+        if (const GLint location = glGetUniformLocation(program.get(), sampler); location >= 0)
+            glUniform1i(location, unit);
     glUseProgram(GLuint(previous));
     return program;
 }
@@ -93,7 +95,7 @@ void checkGl(const char* where) {
     const GLenum e = glGetError();
     if (e == GL_OUT_OF_MEMORY)  // the request was too big for this GL: an input error, like the budget's
         throw GlOutOfMemory(std::string("the GL ran out of memory in ") + where +
-                         " (ask for less: a smaller --size, fewer shadowed lights or smaller shadow maps)");
+                            " (ask for less: a smaller --size, fewer shadowed lights or smaller shadow maps)");
     if (e != GL_NO_ERROR) {
         char code[16];
         std::snprintf(code, sizeof code, "0x%04x", e);

@@ -1,7 +1,7 @@
 #pragma once
 // Compiling and linking one GLSL program from files in a ShaderLibrary. Errors are ShaderErrors whose
 // message names the program, the stage, and the file and line of each driver message.
-#include "core/base/error.hpp"   // ShaderError
+#include "core/base/error.hpp"  // ShaderError
 #include "render/gl_handles.hpp"
 #include "render/shader_library.hpp"
 

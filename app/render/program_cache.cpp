@@ -18,7 +18,8 @@ struct SharedDefine {
     int value;
     const char* name;
 };
-#define SL_SHARED_DEFINE(name) SharedDefine{name, #name}
+#define SL_SHARED_DEFINE(name) \
+    SharedDefine { name, #name }
 
 // Each scene value's constant: one row per value, the scene's enum beside the shaders' name.
 template <typename E>
@@ -30,8 +31,9 @@ constexpr DefineOf<LightType> kLightKinds[] = {{LightType::Point, SL_SHARED_DEFI
 constexpr SharedDefine kAttenuations[] = {SL_SHARED_DEFINE(SL_ATTENUATION_NONE),
                                           SL_SHARED_DEFINE(SL_ATTENUATION_INVERSE_SQUARE),
                                           SL_SHARED_DEFINE(SL_ATTENUATION_INVERSE_SQUARE_RANGE)};
-constexpr DefineOf<ReflectionModel> kReflections[] = {{ReflectionModel::Phong, SL_SHARED_DEFINE(SL_REFLECTION_PHONG)},
-                                                      {ReflectionModel::BlinnPhong, SL_SHARED_DEFINE(SL_REFLECTION_BLINN_PHONG)}};
+constexpr DefineOf<ReflectionModel> kReflections[] = {
+    {ReflectionModel::Phong, SL_SHARED_DEFINE(SL_REFLECTION_PHONG)},
+    {ReflectionModel::BlinnPhong, SL_SHARED_DEFINE(SL_REFLECTION_BLINN_PHONG)}};
 constexpr DefineOf<OutputEncoding> kEncodings[] = {{OutputEncoding::Linear, SL_SHARED_DEFINE(SL_ENCODING_LINEAR)},
                                                    {OutputEncoding::Srgb, SL_SHARED_DEFINE(SL_ENCODING_SRGB)}};
 constexpr DefineOf<SpecularNormalization> kNormalizations[] = {
@@ -40,13 +42,11 @@ constexpr DefineOf<SpecularNormalization> kNormalizations[] = {
 constexpr DefineOf<FresnelMode> kFresnels[] = {{FresnelMode::None, SL_SHARED_DEFINE(SL_FRESNEL_NONE)},
                                                {FresnelMode::Schlick, SL_SHARED_DEFINE(SL_FRESNEL_SCHLICK)},
                                                {FresnelMode::Exact, SL_SHARED_DEFINE(SL_FRESNEL_EXACT)}};
-constexpr DefineOf<ShowTerm> kShowTerms[] = {{ShowTerm::All, SL_SHARED_DEFINE(SL_SHOW_ALL)},
-                                             {ShowTerm::Ambient, SL_SHARED_DEFINE(SL_SHOW_AMBIENT)},
-                                             {ShowTerm::Diffuse, SL_SHARED_DEFINE(SL_SHOW_DIFFUSE)},
-                                             {ShowTerm::Specular, SL_SHARED_DEFINE(SL_SHOW_SPECULAR)},
-                                             {ShowTerm::Light, SL_SHARED_DEFINE(SL_SHOW_LIGHT)},
-                                             {ShowTerm::Unlit, SL_SHARED_DEFINE(SL_SHOW_UNLIT)},
-                                             {ShowTerm::Emissive, SL_SHARED_DEFINE(SL_SHOW_EMISSIVE)}};
+constexpr DefineOf<ShowTerm> kShowTerms[] = {
+    {ShowTerm::All, SL_SHARED_DEFINE(SL_SHOW_ALL)},          {ShowTerm::Ambient, SL_SHARED_DEFINE(SL_SHOW_AMBIENT)},
+    {ShowTerm::Diffuse, SL_SHARED_DEFINE(SL_SHOW_DIFFUSE)},  {ShowTerm::Specular, SL_SHARED_DEFINE(SL_SHOW_SPECULAR)},
+    {ShowTerm::Light, SL_SHARED_DEFINE(SL_SHOW_LIGHT)},      {ShowTerm::Unlit, SL_SHARED_DEFINE(SL_SHOW_UNLIT)},
+    {ShowTerm::Emissive, SL_SHARED_DEFINE(SL_SHOW_EMISSIVE)}};
 constexpr SharedDefine kAlphaModes[] = {SL_SHARED_DEFINE(SL_ALPHA_OPAQUE), SL_SHARED_DEFINE(SL_ALPHA_MASK),
                                         SL_SHARED_DEFINE(SL_ALPHA_BLEND)};
 #undef SL_SHARED_DEFINE
@@ -115,7 +115,8 @@ std::vector<std::string> programDefines(const Scene& s) {
         d.push_back("SL_SHADOWS 1");
         d.push_back("SL_SHADOW_PCF " + std::to_string(s.shadows.pcf));
         std::string layers;
-        for (int first : shadowLayout(s.lights, count).firstLayer) layers += (layers.empty() ? "" : ", ") + std::to_string(first);
+        for (int first : shadowLayout(s.lights, count).firstLayer)
+            layers += (layers.empty() ? "" : ", ") + std::to_string(first);
         d.push_back("SL_SHADOW_LAYERS " + layers);
     }
     return d;
@@ -136,7 +137,8 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     if (variant.emissive && variant.emissiveTexture && variant.textured) defines.push_back("SL_EMISSIVE_TEXTURE 1");
     if (variant.doubleSided) defines.push_back("SL_DOUBLE_SIDED 1");
     if (variant.anisotropic) defines.push_back("SL_ANISOTROPY 1");
-    if (variant.environment != SL_ENVIRONMENT_NONE) defines.push_back("SL_ENVIRONMENT " + std::to_string(variant.environment));
+    if (variant.environment != SL_ENVIRONMENT_NONE)
+        defines.push_back("SL_ENVIRONMENT " + std::to_string(variant.environment));
     if (variant.singleShadowTap)
         for (std::string& d : defines)
             if (d.rfind("SL_SHADOW_PCF ", 0) == 0) d = "SL_SHADOW_PCF 0";
@@ -145,7 +147,8 @@ GLuint ProgramCache::get(ShadingMode mode, const Scene& scene, const Variant& va
     const bool interpolated = variant.interpolatedInputs && mode == ShadingMode::Phong && !variant.anisotropic &&
                               variant.environment == SL_ENVIRONMENT_NONE;
     const std::string name = interpolated ? std::string("phong_interpolated") : toString(mode);
-    const std::string vertex = mode == ShadingMode::Flat && packedFlatVertices_ && !variant.anisotropic ? "flat_packed" : name;
+    const std::string vertex =
+        mode == ShadingMode::Flat && packedFlatVertices_ && !variant.anisotropic ? "flat_packed" : name;
     std::string key = vertex;
     for (const std::string& d : defines) key += ";" + d;
     gl::Program& p = programs_[key];

@@ -15,9 +15,9 @@ namespace shadelab {
 class ProgramCache {
 public:
     // The switches of one draw: a progressive pass (SL_ACCUMULATE), Phong's interpolated inputs
-    // (the program phong_interpolated instead of phong), a colour that varies over the surface (SL_TEXTURED), GPU instances
-    // (SL_INSTANCED), a double-sided glTF material (SL_DOUBLE_SIDED: not culled, the back lit with
-    // its normal flipped; single-sided draws get the programs they had before it existed).
+    // (the program phong_interpolated instead of phong), a colour that varies over the surface (SL_TEXTURED), GPU
+    // instances (SL_INSTANCED), a double-sided glTF material (SL_DOUBLE_SIDED: not culled, the back lit with its normal
+    // flipped; single-sided draws get the programs they had before it existed).
     struct Variant {
         bool accumulate = false, interpolatedInputs = false, textured = false, instanced = false;
         bool doubleSided = false;  // SL_DOUBLE_SIDED: a back face lit with its normal flipped

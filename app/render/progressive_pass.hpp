@@ -52,12 +52,12 @@ private:
     GLuint resolveProgram(OutputEncoding encoding, const ShaderLibrary& shaders);
 
     gl::Framebuffer sumFbo_;
-    gl::Texture sumColor_, depth_;         // RGBA32F, DEPTH24
+    gl::Texture sumColor_, depth_;  // RGBA32F, DEPTH24
     int width_ = 0, height_ = 0;
     glm::ivec2 stride_{0};
-    std::vector<glm::ivec2> order_;        // each pass's first sample
+    std::vector<glm::ivec2> order_;  // each pass's first sample
     int done_ = 0;
-    std::array<gl::Program, 2> resolve_;   // by output encoding (linear, sRGB)
+    std::array<gl::Program, 2> resolve_;  // by output encoding (linear, sRGB)
     FullscreenTriangle fullscreen_;
 };
 

@@ -33,8 +33,9 @@ void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
 // A program variant as a number, for the per-pane lookup in drawPane.
 unsigned variantKey(const ProgramCache::Variant& v) {
     return unsigned(v.accumulate) | unsigned(v.interpolatedInputs) << 1 | unsigned(v.textured) << 2 |
-           unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 | unsigned(v.emissiveTexture) << 7 |
-           unsigned(v.doubleSided) << 8 | unsigned(v.anisotropic) << 9 | unsigned(v.environment) << 10 | unsigned(v.singleShadowTap) << 13;
+           unsigned(v.instanced) << 3 | unsigned(v.alphaMode) << 4 | unsigned(v.emissive) << 6 |
+           unsigned(v.emissiveTexture) << 7 | unsigned(v.doubleSided) << 8 | unsigned(v.anisotropic) << 9 |
+           unsigned(v.environment) << 10 | unsigned(v.singleShadowTap) << 13;
 }
 
 void bindTexture(int unit, GLuint texture) {
@@ -46,7 +47,8 @@ void bindTexture(int unit, GLuint texture) {
 // Whether an object's draws are anisotropic (SL_ANISOTROPY and vertex arrays with tangents): its
 // material asks for it and the lobe is Blinn-Phong's (core/shading/lighting.hpp, anisotropicLobe).
 bool anisotropicObject(const Scene& s, std::size_t object) {
-    return object < s.objects.size() && s.objects[object].material.anisotropic && s.reflection == ReflectionModel::BlinnPhong;
+    return object < s.objects.size() && s.objects[object].material.anisotropic &&
+           s.reflection == ReflectionModel::BlinnPhong;
 }
 
 // SL_ENVIRONMENT_* for an object's draws: mirror and glass (k_r or k_t) in a scene with an environment
@@ -150,7 +152,8 @@ void Renderer::uploadAndReleaseCpuGeometry(const Scene& scene) {
     std::vector<ShadingMode> modes;
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, 1, 1, scene.diff)) modes.push_back(pane.mode);
     std::vector<char> tangents(meshes_.objects(), 0);
-    for (std::size_t o = 0; o < tangents.size() && o < scene.objects.size(); ++o) tangents[o] = anisotropicObject(scene, o);
+    for (std::size_t o = 0; o < tangents.size() && o < scene.objects.size(); ++o)
+        tangents[o] = anisotropicObject(scene, o);
     meshes_.uploadAndRelease(modes, scene.textures, tangents);
 }
 
@@ -178,7 +181,8 @@ void Renderer::preparePrograms(const Scene& scene) {
         v.anisotropic = anisotropicObject(scene, o);
         v.environment = environmentObject(scene, o);
         if (!v.anisotropic && v.environment == SL_ENVIRONMENT_NONE) continue;
-        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) programs_.get(mode, scene, v);
+        for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+            programs_.get(mode, scene, v);
     }
 }
 
@@ -196,8 +200,7 @@ void Renderer::drawTriangles(GLsizei firstIndex, GLsizei indexCount) {
                        offset(std::size_t(firstIndex) + done));
         GLsync submitted = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         if (previous) {
-            while (glClientWaitSync(previous, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000u) == GL_TIMEOUT_EXPIRED) {
-            }
+            while (glClientWaitSync(previous, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000u) == GL_TIMEOUT_EXPIRED) {}
             glDeleteSync(previous);
         } else {
             glFlush();  // start the first chunk while the second is submitted
@@ -232,8 +235,13 @@ Renderer::Draw Renderer::partDraw(const Scene& scene, std::size_t o, std::size_t
     const Material& m = scene.objects[o].material;
     const MeshPart& part = meshes_.parts(o)[p];
     const bool textured = meshes_.variesColor(o) && scene.textures && !m.colorSet;
-    Draw d{o, GLsizei(part.firstIndex), GLsizei(part.indexCount),
-           (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor, textured, textured ? part.texture : -1, -1};
+    Draw d{o,
+           GLsizei(part.firstIndex),
+           GLsizei(part.indexCount),
+           (m.colorSet || !part.hasBaseColor) ? m.color : part.baseColor,
+           textured,
+           textured ? part.texture : -1,
+           -1};
     d.doubleSided = part.doubleSided;  // the surface's, whatever colour it is drawn in
     if (m.colorSet) return d;
     d.alpha = part.baseAlpha;
@@ -246,7 +254,8 @@ Renderer::Draw Renderer::partDraw(const Scene& scene, std::size_t o, std::size_t
         if (d.alpha < d.alphaCutoff) d.count = 0;
     }
     d.emissive = part.emissive;
-    if (textured && part.emissive != glm::vec3(0.0f) && meshes_.hasEmissiveTexture(o)) d.emissiveTexture = part.emissiveTexture;
+    if (textured && part.emissive != glm::vec3(0.0f) && meshes_.hasEmissiveTexture(o))
+        d.emissiveTexture = part.emissiveTexture;
     return d;
 }
 
@@ -328,8 +337,8 @@ void Renderer::stageUniforms(const Scene& scene, const std::vector<Pane>& panes,
         uniforms_->setFrame(p, b);
     }
     for (std::size_t d = 0; d < draws.size(); ++d)
-        uniforms_->setObject(d, objectBlock(scene.objects[draws[d].object], draws[d].color, draws[d].alpha, draws[d].emissive,
-                                            draws[d].alphaCutoff));
+        uniforms_->setObject(d, objectBlock(scene.objects[draws[d].object], draws[d].color, draws[d].alpha,
+                                            draws[d].emissive, draws[d].alphaCutoff));
     uniforms_->upload();
 }
 
@@ -385,8 +394,9 @@ ProgramCache::Variant Renderer::drawVariant(const Scene& scene, const Draw& draw
                                             bool interpolatedInputs) const {
     ProgramCache::Variant v{accumulate, interpolatedInputs, draw.textured, draw.instances >= 0, draw.doubleSided};
     // A progressive pass sums its samples: blended parts are drawn in it as if opaque.
-    v.alphaMode = draw.alphaMode == AlphaMode::Mask ? SL_ALPHA_MASK
-                  : draw.alphaMode == AlphaMode::Blend && !accumulate ? SL_ALPHA_BLEND : SL_ALPHA_OPAQUE;
+    v.alphaMode = draw.alphaMode == AlphaMode::Mask                   ? SL_ALPHA_MASK
+                  : draw.alphaMode == AlphaMode::Blend && !accumulate ? SL_ALPHA_BLEND
+                                                                      : SL_ALPHA_OPAQUE;
     v.emissive = draw.emissive != glm::vec3(0.0f);
     v.emissiveTexture = draw.emissiveTexture >= 0;
     v.anisotropic = anisotropicObject(scene, draw.object);

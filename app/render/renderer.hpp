@@ -5,9 +5,9 @@
 // A frame's passes are its parts: ShadowMaps, the scene's panes (drawPanes), DifferencePass and, in
 // the viewer, ProgressivePass; readPixels() (render/readback.hpp) reads the frame back.
 #include "core/geometry/camera.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/scene.hpp"
-#include "core/geometry/scene_geometry.hpp"
 #include "render/difference_pass.hpp"
 #include "render/environment_pass.hpp"
 #include "render/gl_handles.hpp"
@@ -88,18 +88,18 @@ private:
                    const AreaSamplePass* pass, bool add);
     struct Draw {  // one object part, or one group of its instances
         std::size_t object;
-        GLsizei first, count;  // indices
-        glm::vec3 color;       // C
-        bool textured;         // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
-        int texture;           // the part's slot in Mesh::textures, or -1
-        int instances;         // SL_INSTANCED: index into meshes_.instanceGroups(object); -1: drawn once
-        bool doubleSided = false;              // SL_DOUBLE_SIDED: the part's glTF material is double-sided, drawn without culling
+        GLsizei first, count;      // indices
+        glm::vec3 color;           // C
+        bool textured;             // SL_TEXTURED: C varies (the part's texture, or white, times the vertex colours)
+        int texture;               // the part's slot in Mesh::textures, or -1
+        int instances;             // SL_INSTANCED: index into meshes_.instanceGroups(object); -1: drawn once
+        bool doubleSided = false;  // SL_DOUBLE_SIDED: the part's glTF material is double-sided, drawn without culling
         // What a glTF material adds (shaders/object_color.glsl; none where the scene sets the colour).
-        float alpha = 1.0f;                    // the base colour factor's alpha
+        float alpha = 1.0f;  // the base colour factor's alpha
         AlphaMode alphaMode = AlphaMode::Opaque;
         float alphaCutoff = 0.5f;
-        glm::vec3 emissive{0.0f};              // E's factor; 0: no SL_EMISSIVE
-        int emissiveTexture = -1;              // its slot in Mesh::textures (textured draws), or -1
+        glm::vec3 emissive{0.0f};  // E's factor; 0: no SL_EMISSIVE
+        int emissiveTexture = -1;  // its slot in Mesh::textures (textured draws), or -1
     };
     // The Draw for part `p` of object `o` (without its instances).
     Draw partDraw(const Scene& scene, std::size_t o, std::size_t p) const;
@@ -113,8 +113,10 @@ private:
     // drawPane's steps: which objects take interpolated inputs in the pane, each draw's program variant,
     // and one draw's textures, object block and triangles.
     std::vector<char> paneInputs(const Scene& scene, const Pane& pane) const;
-    ProgramCache::Variant drawVariant(const Scene& scene, const Draw& draw, bool accumulate, bool interpolatedInputs) const;
-    void drawMesh(const Scene& scene, const Draw& draw, std::size_t d, ShadingMode mode, const ProgramCache::Variant& v);
+    ProgramCache::Variant drawVariant(const Scene& scene, const Draw& draw, bool accumulate,
+                                      bool interpolatedInputs) const;
+    void drawMesh(const Scene& scene, const Draw& draw, std::size_t d, ShadingMode mode,
+                  const ProgramCache::Variant& v);
 
     const RendererOptions options_;
     // PhongInputs::Auto may pick the interpolated-inputs variant: not on llvmpipe's 128-bit path
@@ -130,10 +132,10 @@ private:
     MeshCache meshes_;
     ShadowMaps shadowMaps_;
     std::unique_ptr<UniformStager> uniforms_;  // made once the GL is loaded
-    DifferencePass difference_;                 // layout diff's third pane, after the others
-    EnvironmentPass environment_;               // the environment's texture and background
-    ProgressivePass progressive_;               // renderProgressive()'s sum and its resolve
-    bool movingFrames_ = false;                 // setMovingFrames()
+    DifferencePass difference_;                // layout diff's third pane, after the others
+    EnvironmentPass environment_;              // the environment's texture and background
+    ProgressivePass progressive_;              // renderProgressive()'s sum and its resolve
+    bool movingFrames_ = false;                // setMovingFrames()
 };
 
 }  // namespace shadelab

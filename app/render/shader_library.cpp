@@ -36,7 +36,8 @@ std::string defaultShaderFolder() {
     // folder's checkout (build/shadelab -> shaders/), or a build folder's own share/shadelab/shaders.
     // Nothing of the build machine is compiled in.
     std::error_code ec;
-    for (const std::filesystem::path& dir : dataFoldersBesideProgram(platform::executablePath(), "shaders", "shaders")) {
+    for (const std::filesystem::path& dir :
+         dataFoldersBesideProgram(platform::executablePath(), "shaders", "shaders")) {
         if (std::filesystem::is_regular_file(dir / "lighting.glsl", ec))
             return std::filesystem::weakly_canonical(dir, ec).string();
     }

@@ -63,8 +63,8 @@ void ShadowMaps::prepareTargets(const Scene& scene, std::size_t count, const Sha
     glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
     if (std::max(layout_.layers, layout_.areaLayers) > maxLayers)
         throw GlOutOfMemory("shadows: the lights need " + std::to_string(std::max(layout_.layers, layout_.areaLayers)) +
-                            " shadow-map layers in one texture array; this GL has at most " + std::to_string(maxLayers) +
-                            " (fewer area-light samples or shadowed lights)");
+                            " shadow-map layers in one texture array; this GL has at most " +
+                            std::to_string(maxLayers) + " (fewer area-light samples or shadowed lights)");
     maps_.allocate(scene.shadows.mapSize, layout_.layers);
     areaMaps_.allocate(scene.shadows.areaMapSize, layout_.areaLayers);
     projections_.resize(count);
@@ -107,7 +107,8 @@ void ShadowMaps::render(const Scene& scene, const std::vector<DepthDraw>& draws,
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-ShadowMaps::DepthProgram ShadowMaps::depthProgram(const ShaderLibrary& shaders, const std::vector<std::string>& defines) {
+ShadowMaps::DepthProgram ShadowMaps::depthProgram(const ShaderLibrary& shaders,
+                                                  const std::vector<std::string>& defines) {
     ShadowMaps::DepthProgram p;
     p.program = buildProgram("shadow_depth", shaders, defines);
     p.clipFromObject = glGetUniformLocation(p.program.get(), "u_shadowClipFromObject");
@@ -130,7 +131,8 @@ void ShadowMaps::drawDepth(const DepthDraw& d, const glm::mat4& clipFromWorld, G
         glActiveTexture(GL_TEXTURE0);
     }
     glBindVertexArray(d.vao);
-    glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT, reinterpret_cast<void*>(std::size_t(d.first) * sizeof(std::uint32_t)));
+    glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
+                   reinterpret_cast<void*>(std::size_t(d.first) * sizeof(std::uint32_t)));
 }
 
 void ShadowMaps::LayerArray::allocate(int newSize, int newLayers) {
@@ -167,9 +169,9 @@ void ShadowMaps::fillBlock(const Scene& scene, gpu::FrameBlock& b) const {
         const ShadowProjection& p = projections_[l];
         gpu::LightGpu& g = b.lights[l];
         g.falloff[2] = p.size > 0 ? 1.0f / float(p.size) : 0.0f;
-        const glm::mat4& clip = p.clipFromWorld.empty() ? glm::mat4(1.0f)
+        const glm::mat4& clip = p.clipFromWorld.empty()                   ? glm::mat4(1.0f)
                                 : scene.lights[l].type == LightType::Area ? p.centreClipFromWorld
-                                                                           : p.clipFromWorld.front();
+                                                                          : p.clipFromWorld.front();
         std::memcpy(g.shadowClipFromWorld, glm::value_ptr(clip), sizeof g.shadowClipFromWorld);
         copy4(g.shadowU, p.uClip);
         copy4(g.shadowV, p.vClip);

@@ -41,8 +41,8 @@ void UniformStager::bindFrame(std::size_t index) const {
 }
 
 void UniformStager::bindObject(std::size_t index) const {
-    glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, buffer_.get(), GLintptr(objectsOffset_ + index * objectStride_),
-                      sizeof(gpu::ObjectBlock));
+    glBindBufferRange(GL_UNIFORM_BUFFER, SL_BINDING_OBJECT, buffer_.get(),
+                      GLintptr(objectsOffset_ + index * objectStride_), sizeof(gpu::ObjectBlock));
 }
 
 }  // namespace shadelab

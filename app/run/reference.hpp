@@ -3,8 +3,8 @@
 // tests in a user's CI. Exit status 0 when they match, 1 when they differ (or their sizes do), 2 when
 // the reference is missing or not a PNG; one line on stdout says which, with the numbers. GL-free: the
 // run modes (main.cpp's plot, run_headless.cpp's frame) call it around their render.
-#include "options/options.hpp"
 #include "core/image/image.hpp"
+#include "options/options.hpp"
 
 #include <optional>
 #include <string>

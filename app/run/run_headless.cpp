@@ -1,20 +1,20 @@
 // The run modes that render without a window (session.hpp): one frame, a sweep sheet, a probed frame,
 // a benchmark, a playlist's images, a video. Built where a headless context is (SHADELAB_OSMESA or SHADELAB_EGL).
-#include "run/session.hpp"
-#include "run/reference.hpp"
-#include "run/test_suite.hpp"
 #include "core/base/file_io.hpp"
 #include "core/figures/formula_image.hpp"
+#include "core/figures/intersection_image.hpp"
 #include "core/geometry/camera.hpp"
+#include "core/geometry/ray_cast.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/probe/probe.hpp"
-#include "core/figures/intersection_image.hpp"
-#include "core/geometry/ray_cast.hpp"
 #include "core/scene/playlist.hpp"
 #include "headless/headless.hpp"
 #include "headless/headless_context.hpp"
 #include "render/shader_library.hpp"
+#include "run/reference.hpp"
+#include "run/session.hpp"
+#include "run/test_suite.hpp"
 #if SHADELAB_HAVE_VIDEO
 #include "core/scene/animation.hpp"
 #include "video/video_encoder.hpp"
@@ -42,7 +42,9 @@ Image finishedFrame(const Options& options, Image image, const Scene& scene, con
                     const ProbeResult* probe) {
     if (options.formula) {
         const bool hit = probe && !probe->miss;
-        const Material material = hit ? probe->material : scene.objects.empty() ? Material{} : scene.objects[0].material;
+        const Material material = hit                     ? probe->material
+                                  : scene.objects.empty() ? Material{}
+                                                          : scene.objects[0].material;
         FormulaInput in = formulaInput(scene, material);
         if (hit) in.probed = probedTerms(*probe), in.probedAt = probedPlace(*probe);
         std::vector<FormulaPane> panes;
@@ -57,7 +59,9 @@ namespace {
 
 struct Stopwatch {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    double ms() const { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
+    double ms() const {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
 };
 
 // What a run needs beside the options: where the GLSL comes from and which headless context.
@@ -79,10 +83,13 @@ int runPlaylistImages(const RunContext& run) {
     std::vector<Image> frames(presets.size());
     std::uint64_t kept = 0;  // every frame's pixels (a caption strip adds a little)
     for (const Scene& s : scenes) kept += 4 * std::uint64_t(s.width) * std::uint64_t(s.height);
-    renderScenesHeadless(scenes, run.shaders, run.backend, [&](std::size_t i, Image image) {
-        const Preset& p = presets[i];
-        frames[i] = finishedFrame(options, std::move(image), scenes[i], presetTitle(p));
-    }, headlessMsaa(options), [kept](std::size_t) { return kept; });
+    renderScenesHeadless(
+        scenes, run.shaders, run.backend,
+        [&](std::size_t i, Image image) {
+            const Preset& p = presets[i];
+            frames[i] = finishedFrame(options, std::move(image), scenes[i], presetTitle(p));
+        },
+        headlessMsaa(options), [kept](std::size_t) { return kept; });
     createOutputFolder(*options.output, "--output");
     for (std::size_t i = 0; i < presets.size(); ++i) {
         const std::string path = (std::filesystem::path(*options.output) / (presets[i].name + ".png")).string();
@@ -95,7 +102,8 @@ int runPlaylistImages(const RunContext& run) {
 int runSweepSheet(const RunContext& run, const Scene& scene) {
     const Options& options = run.options;
     const Stopwatch clock;
-    const Image sheet = renderSweepHeadless(scene, options.sweeps, run.shaders, run.backend, "--sweep", headlessMsaa(options));
+    const Image sheet =
+        renderSweepHeadless(scene, options.sweeps, run.shaders, run.backend, "--sweep", headlessMsaa(options));
     writePng(*options.output, sheet);
     if (options.verbose)
         std::cerr << "shadelab: wrote " << *options.output << " (" << sheet.width << "x" << sheet.height << ", "
@@ -116,8 +124,10 @@ std::optional<IntersectionPoint> intersectionPoint(const Scene& scene, const Pro
     IntersectionPoint at;
     at.posWorld = probe.posWorld;
     at.nrmWorld = n;
-    at.clipFromWorld = clipFromView(scene.camera, float(pane.width) / float(std::max(pane.height, 1))) * viewFromWorld(scene.camera);
-    at.paneX = float(pane.x), at.paneY = float(pane.y), at.paneWidth = float(pane.width), at.paneHeight = float(pane.height);
+    at.clipFromWorld =
+        clipFromView(scene.camera, float(pane.width) / float(std::max(pane.height, 1))) * viewFromWorld(scene.camera);
+    at.paneX = float(pane.x), at.paneY = float(pane.y), at.paneWidth = float(pane.width),
+    at.paneHeight = float(pane.height);
     return at;
 }
 
@@ -126,12 +136,15 @@ std::optional<IntersectionPoint> intersectionPoint(const Scene& scene, const Pro
 int runProbeImage(const RunContext& run, Scene scene) {
     const Options& options = run.options;
     const auto geometry = loadGeometry(options, scene);
-    const ProbeResult probe = probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x,
-                                         options.probe->y);
+    const ProbeResult probe =
+        probePixel(scene, *geometry, SceneRayCaster(scene, *geometry), options.probe->x, options.probe->y);
     Image frame = renderHeadless(scene, geometry, run.shaders, run.backend, headlessMsaa(options));
     if (options.intersection) {
-        if (const std::optional<IntersectionPoint> at = intersectionPoint(scene, probe)) drawIntersectionDiagram(frame, scene, *at);
-        else std::cerr << "shadelab: --intersection: pixel " << probe.x << "," << probe.y << " shows no surface; no diagram\n";
+        if (const std::optional<IntersectionPoint> at = intersectionPoint(scene, probe))
+            drawIntersectionDiagram(frame, scene, *at);
+        else
+            std::cerr << "shadelab: --intersection: pixel " << probe.x << "," << probe.y
+                      << " shows no surface; no diagram\n";
     }
     writePng(*options.output, finishedFrame(options, std::move(frame), scene, scene.title, &probe));
     std::cout << probeToJson(scene, probe) << std::endl;
@@ -146,9 +159,9 @@ int runImage(const RunContext& run, Scene scene) {
     const HeadlessFrame frame = renderSceneHeadless(std::move(scene), run.shaders, run.backend, headlessMsaa(options));
     report(options, frame.scene, frame.gltfInfo, frame.triangles);
     const double renderedMs = clock.ms();
-    const int status = writeOutputAndCompare(
-        options, finishedFrame(options, frame.image, frame.scene, frame.scene.title),
-        reference, frame.scene.diff.factor);
+    const int status =
+        writeOutputAndCompare(options, finishedFrame(options, frame.image, frame.scene, frame.scene.title), reference,
+                              frame.scene.diff.factor);
     if (options.verbose)
         std::cerr << "shadelab: wrote " << *options.output << " (geometry, context and render " << renderedMs
                   << " ms, PNG and comparison " << clock.ms() - renderedMs << " ms)\n";
@@ -187,14 +200,13 @@ int runVideo(const RunContext& run, const Scene& scene) {
     settings.fps = fps;
     settings.dither = options.dither;
     writeVideo(*options.output, scene.width, scene.height, settings, [&](VideoEncoder& encoder) {
-        renderFramesHeadless(scene, std::size_t(frames), sceneAt, run.shaders, run.backend,
-                             [&encoder](std::size_t, const Image& frame) { encoder.addFrame(frame); },
-                             options.msaa.value_or(1));
+        renderFramesHeadless(
+            scene, std::size_t(frames), sceneAt, run.shaders, run.backend,
+            [&encoder](std::size_t, const Image& frame) { encoder.addFrame(frame); }, options.msaa.value_or(1));
     });
     if (options.verbose)
         std::cerr << "shadelab: wrote " << *options.output << " (" << frames << " frames of " << scene.width << "x"
-                  << scene.height << " at " << fps << " fps, "
-                  << clock.ms() / 1000.0 << " s)\n";
+                  << scene.height << " at " << fps << " fps, " << clock.ms() / 1000.0 << " s)\n";
     return 0;
 }
 #endif
@@ -204,7 +216,8 @@ int runVideo(const RunContext& run, const Scene& scene) {
 int runHeadlessMode(const Options& options) {
     const RunContext run{options, ShaderLibrary(shaderFolder(options.shaderDir)), headlessBackend(options)};
     if (options.mode == RunMode::PlaylistImages) return runPlaylistImages(run);
-    if (options.mode == RunMode::TestSuite) return runTestSuite(options, run.shaders, run.backend, headlessMsaa(options));
+    if (options.mode == RunMode::TestSuite)
+        return runTestSuite(options, run.shaders, run.backend, headlessMsaa(options));
     Scene scene = sceneFromOptions(options);
     if (options.probe) checkProbePixel(scene, options.probe->x, options.probe->y, "--probe");
     switch (options.mode) {

@@ -11,7 +11,8 @@ void report(const Options& options, const Scene& drawn, const std::vector<GltfIn
     for (std::size_t i = 0; i < gltfInfo.size(); ++i) {
         const GltfInfo& info = gltfInfo[i];
         const std::string& path = drawn.objects[i].mesh.resolvedPath;
-        for (const std::string& w : info.warnings) std::cerr << oneLine("shadelab: warning: " + path + ": " + w) << "\n";
+        for (const std::string& w : info.warnings)
+            std::cerr << oneLine("shadelab: warning: " + path + ": " + w) << "\n";
         if (options.verbose && drawn.objects[i].mesh.type == MeshSpec::Type::Gltf) {
             std::cerr << "shadelab: " << path << ": " << info.triangles << " triangles, " << info.generatedNormals
                       << " generated normals";

@@ -1,8 +1,8 @@
 #include "run/test_report.hpp"
 
-#include "run/reference.hpp"
 #include "core/base/message.hpp"
 #include "core/scene/scene_limits.hpp"
+#include "run/reference.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -70,24 +70,27 @@ std::size_t countStill(const TestRun& run, CaseOutcome outcome) {
 }  // namespace
 
 std::string caseLine(const TestRun& run, const TestCase& c) {
-    return oneLine("shadelab: --test " + run.dir + ": " + c.name + ": " + outcomeWord(c.outcome) + ": " + caseMessage(c),
-                   2000);
+    return oneLine(
+        "shadelab: --test " + run.dir + ": " + c.name + ": " + outcomeWord(c.outcome) + ": " + caseMessage(c), 2000);
 }
 
 std::string summaryLine(const TestRun& run) {
     const std::size_t differs = countStill(run, CaseOutcome::Differs), errors = countStill(run, CaseOutcome::Error);
-    const std::size_t written = std::size_t(std::count_if(run.cases.begin(), run.cases.end(),
-                                                          [](const TestCase& c) { return c.updated; }));
+    const std::size_t written =
+        std::size_t(std::count_if(run.cases.begin(), run.cases.end(), [](const TestCase& c) { return c.updated; }));
     const auto still = [](CaseOutcome o) { return [o](const TestCase& c) { return c.outcome == o && !c.updated; }; };
     std::string line = "shadelab: --test " + run.dir + (run.shard.empty() ? "" : " (shard " + run.shard + ")") + ": " +
                        std::to_string(run.cases.size()) + " scene" + (run.cases.size() == 1 ? "" : "s") + ", " +
                        std::to_string(countOf(run, CaseOutcome::Match)) + " match";
-    if (written) line += ", " + std::to_string(written) + " written (" +
-                         namesOf(run, [](const TestCase& c) { return c.updated; }) + ")";
-    if (differs) line += ", " + std::to_string(differs) + " differ" + (differs == 1 ? "s" : "") + " (" +
-                         namesOf(run, still(CaseOutcome::Differs)) + ")";
-    if (errors) line += ", " + std::to_string(errors) + " error" + (errors == 1 ? "" : "s") + " (" +
-                        namesOf(run, still(CaseOutcome::Error)) + ")";
+    if (written)
+        line += ", " + std::to_string(written) + " written (" +
+                namesOf(run, [](const TestCase& c) { return c.updated; }) + ")";
+    if (differs)
+        line += ", " + std::to_string(differs) + " differ" + (differs == 1 ? "s" : "") + " (" +
+                namesOf(run, still(CaseOutcome::Differs)) + ")";
+    if (errors)
+        line += ", " + std::to_string(errors) + " error" + (errors == 1 ? "" : "s") + " (" +
+                namesOf(run, still(CaseOutcome::Error)) + ")";
     // A broken shader fails every case that uses it: its located error once, here, not once per case.
     std::set<std::string> shaderErrors;
     for (const TestCase& c : run.cases)
@@ -149,7 +152,8 @@ std::string junitXml(const TestRun& run) {
     if (ec || dir.filename().empty()) dir = fs::path(run.dir).lexically_normal();
     if (dir.filename().empty()) dir = dir.parent_path();
     const std::string classname = "shadelab." + dir.filename().string();
-    const std::string suite = "shadelab --test " + shownPath(run.dir) + (run.shard.empty() ? "" : " --shard " + run.shard);
+    const std::string suite =
+        "shadelab --test " + shownPath(run.dir) + (run.shard.empty() ? "" : " --shard " + run.shard);
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadelab --test\" " << counts << " time=\""
       << time << "\">\n  <testsuite name=\"" << xmlEscaped(suite) << "\" " << counts << " skipped=\"0\" time=\"" << time
@@ -185,7 +189,8 @@ std::string junitXml(const TestRun& run) {
 
 float differenceFactorFor(int maxDiff) { return maxDiff > 0 ? 255.0f / float(maxDiff) : 1.0f; }
 
-Image differenceForReport(const Image& actual, const Image& reference, float factor, const std::vector<glm::ivec4>& masks) {
+Image differenceForReport(const Image& actual, const Image& reference, float factor,
+                          const std::vector<glm::ivec4>& masks) {
     Image d = amplifiedDifference(actual, reference, factor);
     // Hatched: diagonal grey stripes, 3 pixels of 8, over each masked rectangle (clipped to the image).
     for (const glm::ivec4& m : masks)
@@ -237,16 +242,17 @@ std::string dataImage(const std::string& png, const std::string& caption, const 
         for (std::size_t k = 0; k < 4; ++k) v = v << 8 | static_cast<unsigned char>(png[at + k]);
         return v;
     };
-    return "<figure onclick=\"this.classList.toggle('full')\"><figcaption>" + xmlEscaped(caption) + "</figcaption><img alt=\"" + xmlEscaped(alt) + "\" width=\"" +
-           std::to_string(be32(16)) + "\" height=\"" + std::to_string(be32(20)) + "\" src=\"data:image/png;base64," +
-           base64(png) + "\"></figure>";
+    return "<figure onclick=\"this.classList.toggle('full')\"><figcaption>" + xmlEscaped(caption) +
+           "</figcaption><img alt=\"" + xmlEscaped(alt) + "\" width=\"" + std::to_string(be32(16)) + "\" height=\"" +
+           std::to_string(be32(20)) + "\" src=\"data:image/png;base64," + base64(png) + "\"></figure>";
 }
 
 std::string failingCase(const TestCase& c) {
     std::string h = std::string("<section class=\"case") + (c.outcome == CaseOutcome::Error ? " error" : "") +
                     "\" id=\"" + xmlEscaped(c.name) + "\"><h2>" + xmlEscaped(c.name) + ": " +
                     (c.outcome == CaseOutcome::Differs ? "differs" : "error") + "</h2>\n<div class=\"message\">" +
-                    xmlEscaped(c.message) + (c.updated ? "\n--update: the reference was rewritten from this render" : "") +
+                    xmlEscaped(c.message) +
+                    (c.updated ? "\n--update: the reference was rewritten from this render" : "") +
                     "</div>\n<div class=\"meta\">scene " + xmlEscaped(c.scenePath) + " &middot; reference " +
                     xmlEscaped(c.referencePath) + "</div>\n<div class=\"images\">";
     h += dataImage(c.referencePng, "reference", c.name + " reference");
@@ -265,19 +271,20 @@ std::string failingCase(const TestCase& c) {
 
 std::string htmlReport(const TestRun& run) {
     const std::size_t failing = run.cases.size() - countOf(run, CaseOutcome::Match);
-    const std::string title = "shadelab --test " + run.dir + (run.shard.empty() ? "" : " --shard " + run.shard) + ": " +
-                              (!run.runError.empty() ? std::string("OpenGL cannot start")
-                               : failing ? std::to_string(failing) + " of " + std::to_string(run.cases.size()) + " failing"
-                                         : "all " + std::to_string(run.cases.size()) + " match");
+    const std::string title =
+        "shadelab --test " + run.dir + (run.shard.empty() ? "" : " --shard " + run.shard) + ": " +
+        (!run.runError.empty() ? std::string("OpenGL cannot start")
+         : failing             ? std::to_string(failing) + " of " + std::to_string(run.cases.size()) + " failing"
+                               : "all " + std::to_string(run.cases.size()) + " match");
     std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + xmlEscaped(title) +
                     "</title><style>" + kStyle + "</style></head><body>\n<h1>" + xmlEscaped(title) + "</h1>\n";
     h += "<p class=\"meta\">scenes " + xmlEscaped(run.dir) + " &middot; references " + xmlEscaped(run.referencesDir) +
          (run.shaderDir.empty() ? "" : " &middot; shaders " + xmlEscaped(run.shaderDir)) + " &middot; limits: max " +
-         std::to_string(run.tolerance.maxDiff) + "/255, mean " + formatNumber(run.tolerance.meanDiff) + "/255 &middot; " +
-         seconds(run.seconds) + " s</p>\n";
+         std::to_string(run.tolerance.maxDiff) + "/255, mean " + formatNumber(run.tolerance.meanDiff) +
+         "/255 &middot; " + seconds(run.seconds) + " s</p>\n";
     if (!run.runError.empty())
-        return h + "<p class=\"verdict bad\">" + xmlEscaped("no scene was rendered: OpenGL cannot start: " + run.runError) +
-               "</p>\n</body></html>\n";
+        return h + "<p class=\"verdict bad\">" +
+               xmlEscaped("no scene was rendered: OpenGL cannot start: " + run.runError) + "</p>\n</body></html>\n";
     h += std::string("<p class=\"verdict ") + (failing ? "bad" : "ok") + "\">" +
          xmlEscaped(summaryLine(run).substr(std::string("shadelab: ").size())) + "</p>\n";
     for (const TestCase& c : run.cases)

@@ -42,13 +42,13 @@ struct TestCase {
 };
 
 struct TestRun {
-    std::string dir;             // --test DIR as given
-    std::string referencesDir;   // --references DIR2, or DIR
-    std::string shaderDir;       // --shader-dir, empty when not given
-    std::string shard;           // --shard K/N as given, empty when not given
+    std::string dir;            // --test DIR as given
+    std::string referencesDir;  // --references DIR2, or DIR
+    std::string shaderDir;      // --shader-dir, empty when not given
+    std::string shard;          // --shard K/N as given, empty when not given
     ImageTolerance tolerance;
-    std::vector<TestCase> cases; // in name order
-    double seconds = 0;          // the whole run, wall-clock
+    std::vector<TestCase> cases;  // in name order
+    double seconds = 0;           // the whole run, wall-clock
     // Set when the run could not start at all (OpenGL cannot start): the reason. JUnit then holds one
     // error case saying so, the page says so, and no case was run.
     std::string runError;
@@ -82,7 +82,8 @@ std::string htmlReport(const TestRun& run);
 // The difference image of a comparison, as the page and --artifacts show it: per channel
 // |render - reference| x `factor` (255 / the largest difference: that one at full brightness), the
 // masked rectangles hatched grey.
-Image differenceForReport(const Image& actual, const Image& reference, float factor, const std::vector<glm::ivec4>& masks);
+Image differenceForReport(const Image& actual, const Image& reference, float factor,
+                          const std::vector<glm::ivec4>& masks);
 // The factor that brings a largest difference of `maxDiff` /255 to 255 (1 when nothing differs).
 float differenceFactorFor(int maxDiff);
 

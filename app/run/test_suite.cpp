@@ -1,12 +1,12 @@
 #include "run/test_suite.hpp"
 
-#include "run/reference.hpp"
-#include "run/test_report.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/message.hpp"
 #include "core/scene/playlist.hpp"
 #include "headless/headless.hpp"
+#include "run/reference.hpp"
+#include "run/test_report.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -50,7 +50,8 @@ std::vector<std::string> filesUnder(const fs::path& dir, const char* extension) 
 std::vector<std::string> sceneFiles(const std::string& dir) {
     std::error_code ec;
     if (!fs::exists(dir, ec)) throw InputError("--test: " + dir + ": no such folder");
-    if (!fs::is_directory(dir, ec)) throw InputError("--test: " + dir + ": not a folder (--test takes a folder of scene files)");
+    if (!fs::is_directory(dir, ec))
+        throw InputError("--test: " + dir + ": not a folder (--test takes a folder of scene files)");
     std::vector<std::string> files = filesUnder(dir, ".json");
     if (files.empty()) throw InputError("--test: " + dir + ": no scene files (*.json) in the folder or its subfolders");
     return files;
@@ -97,8 +98,8 @@ std::vector<std::string> selectedNames(const std::vector<std::string>& names, co
     }
     for (std::size_t f = 0; f < options.filters.size(); ++f)
         if (!used[f])
-            throw InputError("--filter: \"" + quoteInput(options.filters[f]) + "\" matches no case of " + *options.testDir +
-                             " (--list names them)");
+            throw InputError("--filter: \"" + quoteInput(options.filters[f]) + "\" matches no case of " +
+                             *options.testDir + " (--list names them)");
     return picked;
 }
 
@@ -147,7 +148,8 @@ void warnAboutOrphans(const TestRun& run, const std::vector<std::string>& sceneN
     for (const std::string& png : filesUnder(run.referencesDir, ".png")) {
         if (scenes.count(withoutExtension(png, 4))) continue;
         // --artifacts inside the references: its own files are no references.
-        const fs::path inArtifacts = fs::weakly_canonical(fs::path(run.referencesDir) / png, ec).lexically_relative(artifacts);
+        const fs::path inArtifacts =
+            fs::weakly_canonical(fs::path(run.referencesDir) / png, ec).lexically_relative(artifacts);
         if (!artifacts.empty() && !inArtifacts.empty() && *inArtifacts.begin() != "..") continue;
         orphans.push_back(png);
     }
@@ -161,7 +163,8 @@ void warnAboutOrphans(const TestRun& run, const std::vector<std::string>& sceneN
 }
 
 // `image` masked: the masks' pixels taken from `reference`, so they add no difference.
-Image masked(const Image& image, const Image& reference, const std::vector<glm::ivec4>& masks, std::size_t& maskedPixels) {
+Image masked(const Image& image, const Image& reference, const std::vector<glm::ivec4>& masks,
+             std::size_t& maskedPixels) {
     Image out = image;
     std::vector<bool> hidden(std::size_t(image.width) * std::size_t(image.height), false);
     for (const glm::ivec4& m : masks)
@@ -275,9 +278,8 @@ void renderAndCompare(TestRun& run, std::vector<Scene>& scenes, const std::vecto
         TestCase& c = run.cases[caseOfScene[i]];
         c.seconds = secondsSince(last);
         const std::uint64_t bytes = image.rgba.size();
-        pending.push_back({std::async(std::launch::async, [&c, &options, image = std::move(image)] {
-                               compareCase(c, image, options);
-                           }),
+        pending.push_back({std::async(std::launch::async,
+                                      [&c, &options, image = std::move(image)] { compareCase(c, image, options); }),
                            bytes});
         pendingBytes += bytes;
         // Before the next scene is drawn: what waits fits what its budget check counted.
@@ -333,11 +335,13 @@ int runTestSuite(const Options& options, const ShaderLibrary& shaders, HeadlessB
     std::error_code ec;
     if (options.referencesDir && !fs::is_directory(run.referencesDir, ec)) {
         // --update makes a new folder of references; without, a missing one is a mistyped name.
-        if (!options.update) throw InputError("--references: " + run.referencesDir + ": no such folder (--update creates it)");
+        if (!options.update)
+            throw InputError("--references: " + run.referencesDir + ": no such folder (--update creates it)");
         if (!fs::create_directories(run.referencesDir, ec) && ec)
             throw InputError("--references: " + run.referencesDir + ": cannot create the folder: " + ec.message());
     }
-    if (options.artifacts && !fs::is_directory(*options.artifacts, ec) && !fs::create_directories(*options.artifacts, ec) && ec)
+    if (options.artifacts && !fs::is_directory(*options.artifacts, ec) &&
+        !fs::create_directories(*options.artifacts, ec) && ec)
         throw InputError("--artifacts: " + *options.artifacts + ": cannot create the folder: " + ec.message());
     warnAboutOrphans(run, names, options);
     std::vector<Scene> scenes;
@@ -359,8 +363,10 @@ int runTestSuite(const Options& options, const ShaderLibrary& shaders, HeadlessB
     for (const TestCase& c : run.cases) {
         if (c.outcome == CaseOutcome::Match) continue;
         std::cout << caseLine(run, c) << "\n";
-        if (c.updated) std::cout << oneLine("shadelab: --test " + run.dir + ": " + c.name + ": --update: wrote " +
-                                            c.referencePath + " from this render") << "\n";
+        if (c.updated)
+            std::cout << oneLine("shadelab: --test " + run.dir + ": " + c.name + ": --update: wrote " +
+                                 c.referencePath + " from this render")
+                      << "\n";
         allWell = allWell && c.updated;
     }
     writeReports(run, options);

@@ -9,8 +9,8 @@
 // malformed reference, a shader that does not compile, a scene over the memory budget) fails and the run
 // goes on; run/test_report.hpp says how the results are told (stdout, --junit, --report, --artifacts).
 // --update rewrites the references of the failing cases that have a render.
-#include "options/options.hpp"
 #include "headless/headless_context.hpp"
+#include "options/options.hpp"
 #include "render/shader_library.hpp"
 
 namespace shadelab {

@@ -22,7 +22,8 @@ Box measured(const std::vector<Key>& colours, std::size_t begin, std::size_t end
     Box box{begin, end};
     for (int c = 0; c < 3; ++c) {
         int lo = 255, hi = 0;
-        for (std::size_t i = begin; i < end; ++i) lo = std::min(lo, channel(colours[i], c)), hi = std::max(hi, channel(colours[i], c));
+        for (std::size_t i = begin; i < end; ++i)
+            lo = std::min(lo, channel(colours[i], c)), hi = std::max(hi, channel(colours[i], c));
         if (hi - lo > box.extent) box.extent = hi - lo, box.widest = c;
     }
     return box;
@@ -39,8 +40,8 @@ std::vector<Box> medianCut(std::vector<Key>& colours) {
         const Box box = *widest;
         const int c = box.widest;
         const std::size_t middle = box.begin + (box.end - box.begin) / 2;
-        std::nth_element(colours.begin() + long(box.begin), colours.begin() + long(middle), colours.begin() + long(box.end),
-                         [c](Key a, Key b) { return channel(a, c) < channel(b, c); });
+        std::nth_element(colours.begin() + long(box.begin), colours.begin() + long(middle),
+                         colours.begin() + long(box.end), [c](Key a, Key b) { return channel(a, c) < channel(b, c); });
         *widest = measured(colours, box.begin, middle);
         boxes.push_back(measured(colours, middle, box.end));
     }
@@ -73,7 +74,8 @@ void ditherInto(const Image& frame, PalettedImage& out) {
             for (int c = 0; c < 3; ++c) want[c] = std::clamp(p[c] + row[(x + 1) * 3 + c] / 16, 0, 255);
             const Key key = Key(want[0]) << 16 | Key(want[1]) << 8 | Key(want[2]);
             auto found = cache.find(key);
-            if (found == cache.end()) found = cache.emplace(key, std::uint8_t(nearest(out.palette, want[0], want[1], want[2]))).first;
+            if (found == cache.end())
+                found = cache.emplace(key, std::uint8_t(nearest(out.palette, want[0], want[1], want[2]))).first;
             out.indices[std::size_t(y) * std::size_t(w) + std::size_t(x)] = found->second;
             for (int c = 0; c < 3; ++c) {
                 const int e = want[c] - out.palette[found->second][std::size_t(c)];

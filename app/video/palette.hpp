@@ -14,7 +14,7 @@ namespace shadelab {
 struct PalettedImage {
     int width = 0, height = 0;
     std::vector<std::array<std::uint8_t, 3>> palette;  // RGB, at most 256 entries, no two the same
-    std::vector<std::uint8_t> indices;                  // one per pixel, rows top to bottom
+    std::vector<std::uint8_t> indices;                 // one per pixel, rows top to bottom
 };
 
 // The frame's palette and each pixel's entry (alpha is ignored). Without `dither`, each pixel takes its

@@ -150,7 +150,8 @@ VideoEncoder::VideoEncoder(const std::string& file, VideoFormat format, int widt
     s.frame->format = s.codec->pix_fmt, s.frame->width = ew, s.frame->height = eh;
     check(av_frame_get_buffer(s.frame, 0), s.file);
     if (format != VideoFormat::Gif) {
-        s.toYuv = sws_getContext(ew, eh, AV_PIX_FMT_RGBA, ew, eh, AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr);
+        s.toYuv = sws_getContext(ew, eh, AV_PIX_FMT_RGBA, ew, eh, AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr,
+                                 nullptr);
         if (!s.toYuv) throw std::runtime_error(s.file + ": no RGBA to yuv420p conversion");
         // Full-range RGB in, BT.709 limited-range YUV out, as the stream says.
         sws_setColorspaceDetails(s.toYuv, sws_getCoefficients(SWS_CS_ITU709), 1, sws_getCoefficients(SWS_CS_ITU709), 0,

@@ -26,8 +26,11 @@ Band layoutBand(const Scene& scene, const Material& material, const ProbeResult*
                 const FormulaBandStyle& style) {
     ImFont* font = style.font ? style.font : ImGui::GetFont();
     const float textSize = style.textSize > 0.0f ? style.textSize : ImGui::GetFontSize();
-    Band b{{}, TextMetrics{[font](const std::string& s, float size) { return font->CalcTextSizeA(size, FLT_MAX, 0.0f, s.c_str()).x; },
-                           font->Ascent / font->FontSize}};
+    Band b{{},
+           TextMetrics{[font](const std::string& s, float size) {
+                           return font->CalcTextSizeA(size, FLT_MAX, 0.0f, s.c_str()).x;
+                       },
+                       font->Ascent / font->FontSize}};
     const bool hit = probe && !probe->miss;
     FormulaInput in = formulaInput(scene, hit ? probe->material : material);
     if (hit) in.probed = probedTerms(*probe), in.probedAt = probedPlace(*probe);
@@ -35,8 +38,8 @@ Band layoutBand(const Scene& scene, const Material& material, const ProbeResult*
     std::vector<FormulaPane> panes;
     const float scale = style.framebufferScale;
     for (const Pane& p : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff))
-        panes.push_back({float(p.x) / scale, float(p.y) / scale, float(p.width) / scale, float(p.height) / scale, p.mode,
-                         p.difference});
+        panes.push_back({float(p.x) / scale, float(p.y) / scale, float(p.width) / scale, float(p.height) / scale,
+                         p.mode, p.difference});
     b.overlay = layoutFormulaOverlay(in, viewWidth, 0.0f, panes, textSize, b.metrics);
     const float margin = 0.5f * textSize;
     b.overlay.y = margin;
@@ -64,7 +67,8 @@ void drawFormulaBand(const Scene& scene, const Material& material, const ProbeRe
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const ImU32 backing = IM_COL32(0, 0, 0, kFormulaBackingAlpha);
     draw->PushClipRect(ImVec2(band.x, band.y), ImVec2(band.x + band.width, band.y + band.height), true);
-    draw->AddRectFilled(ImVec2(band.x, band.y), ImVec2(band.x + band.width, band.y + band.height), IM_COL32(24, 24, 30, 255));
+    draw->AddRectFilled(ImVec2(band.x, band.y), ImVec2(band.x + band.width, band.y + band.height),
+                        IM_COL32(24, 24, 30, 255));
     for (const FormulaNote& n : o.notes) {
         const ImVec2 at(band.x + n.x, band.y + n.y);
         draw->AddRectFilled(ImVec2(at.x - n.pad, at.y - n.pad), ImVec2(at.x + n.width + n.pad, at.y + n.size + n.pad),

@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace shadelab {
@@ -26,11 +26,12 @@ constexpr float kFontPixels = 16.0f;
 
 // Latin with Latin-1 (·, ², ×), Greek, punctuation (–, …, ′), super- and subscripts (ᵢ, ₁, ₂),
 // arrows and mathematical operators (≤, ∑, ∠).
-const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E,
-                                0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070,
+                                0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
 
 // The formula overlay's characters only (Latin-1 with ·, Σ, −, ∥, ⊥): its font is large.
-const ImWchar kFormulaGlyphRanges[] = {0x0020, 0x00FF, 0x03A3, 0x03A3, 0x2212, 0x2212, 0x2225, 0x2225, 0x22A5, 0x22A5, 0};
+const ImWchar kFormulaGlyphRanges[] = {0x0020, 0x00FF, 0x03A3, 0x03A3, 0x2212, 0x2212,
+                                       0x2225, 0x2225, 0x22A5, 0x22A5, 0};
 
 // The backend derives the modifiers from KeysDown in its key callback; a held Ctrl counts too.
 void updateModifiers(ImGuiIO& io) {
@@ -90,7 +91,8 @@ void ImGuiLayer::buildFonts() {
     }
     if (mono) viewMonoFont_ = io.Fonts->AddFontFromFileTTF(kMonoFontPath, viewText_, &config, kGlyphRanges);
     if (!trueType_) {
-        std::fprintf(stderr, "shadelab: %s not found (Debian: fonts-dejavu-core): using ImGui's bitmap font\n", kFontPath);
+        std::fprintf(stderr, "shadelab: %s not found (Debian: fonts-dejavu-core): using ImGui's bitmap font\n",
+                     kFontPath);
         ImFontConfig fallback;
         fallback.SizePixels = std::round(13.0f * scale_);
         io.Fonts->AddFontDefault(&fallback);
@@ -251,7 +253,7 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (!complete) return false;
         cacheWidth_ = width, cacheHeight_ = height;
-        hash_ = ~hash;  // not drawn yet
+        hash_ = ~hash;                              // not drawn yet
         for (std::uint64_t& h : stampHash_) h = 0;  // a new size: no copy is in the back buffer
     }
     if (hash != hash_) {

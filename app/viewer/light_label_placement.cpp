@@ -19,11 +19,13 @@ bool rectOnModel(const LightLabelArea& a, const LabelRect& r) {
 bool rectClear(const LightLabelArea& a, const LabelRect& r, float gap) {
     if (rectOnModel(a, r)) return false;
     for (const LabelRect& t : a.taken)
-        if (r.lo.x < t.hi.x + gap && t.lo.x < r.hi.x + gap && r.lo.y < t.hi.y + gap && t.lo.y < r.hi.y + gap) return false;
+        if (r.lo.x < t.hi.x + gap && t.lo.x < r.hi.x + gap && r.lo.y < t.hi.y + gap && t.lo.y < r.hi.y + gap)
+            return false;
     return true;
 }
 
-LabelPlacement placeLightLabel(const LightLabelArea& a, glm::vec2 at, float gap, glm::vec2 size, float pad, float step) {
+LabelPlacement placeLightLabel(const LightLabelArea& a, glm::vec2 at, float gap, glm::vec2 size, float pad,
+                               float step) {
     // The text's top-left corner kept inside the area, as panel.cpp's labelBox does.
     const auto inside = [&](glm::vec2 p) {
         return glm::vec2(std::max(std::min(p.x, a.hi.x - size.x - pad), a.lo.x + pad),
@@ -32,10 +34,14 @@ LabelPlacement placeLightLabel(const LightLabelArea& a, glm::vec2 at, float gap,
     const float separation = kLabelSeparation * size.y;
     const auto clear = [&](glm::vec2 p) { return rectClear(a, LabelRect{p - pad, p + size + pad}, separation); };
     // Right, left, above, below; then the corners: below right, below left, above right, above left.
-    const glm::vec2 beside[] = {{at.x + gap, at.y - size.y * 0.5f}, {at.x - gap - size.x, at.y - size.y * 0.5f},
-                                {at.x - size.x * 0.5f, at.y - gap - size.y}, {at.x - size.x * 0.5f, at.y + gap},
-                                {at.x + gap, at.y + gap},          {at.x - gap - size.x, at.y + gap},
-                                {at.x + gap, at.y - gap - size.y}, {at.x - gap - size.x, at.y - gap - size.y}};
+    const glm::vec2 beside[] = {{at.x + gap, at.y - size.y * 0.5f},
+                                {at.x - gap - size.x, at.y - size.y * 0.5f},
+                                {at.x - size.x * 0.5f, at.y - gap - size.y},
+                                {at.x - size.x * 0.5f, at.y + gap},
+                                {at.x + gap, at.y + gap},
+                                {at.x - gap - size.x, at.y + gap},
+                                {at.x + gap, at.y - gap - size.y},
+                                {at.x - gap - size.x, at.y - gap - size.y}};
     for (const glm::vec2& p : beside)
         if (clear(inside(p))) return {inside(p), false};
     // Out from the nearest model's centre (up when the marker is at it; straight down from the area's

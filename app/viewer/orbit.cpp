@@ -42,7 +42,8 @@ void zoomCamera(Camera& c, float wheelSteps, float minDistance, float maxDistanc
     const glm::vec3 offset = c.eye - c.target;
     const float dist = glm::length(offset);
     if (dist <= 0.0f) return;
-    const float newDist = std::clamp(dist * std::pow(0.9f, wheelSteps), minDistance, std::max(minDistance, maxDistance));
+    const float newDist =
+        std::clamp(dist * std::pow(0.9f, wheelSteps), minDistance, std::max(minDistance, maxDistance));
     c.eye = c.target + offset * (newDist / dist);
 }
 

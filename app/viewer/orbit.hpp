@@ -12,8 +12,8 @@
 namespace shadelab {
 
 // Turns the eye around the target: `yawRad` about the camera's up vector (positive moves the eye to
-// its right), `pitchRad` about its right vector (positive moves the eye up). Pitch stops 1 degree short of the up vector, where the
-// look-at frame would flip.
+// its right), `pitchRad` about its right vector (positive moves the eye up). Pitch stops 1 degree short of the up
+// vector, where the look-at frame would flip.
 void orbitCamera(Camera& camera, float yawRad, float pitchRad);
 
 // Moves eye and target together in the view plane so the point under the cursor follows it: `dx`, `dy`

@@ -3,21 +3,21 @@
 #include "core/figures/formula.hpp"
 #include "core/figures/plot.hpp"
 #include "core/geometry/camera.hpp"
-#include "core/ui/controls.hpp"
 #include "core/scene/panel_sections.hpp"
 #include "core/scene/parameters.hpp"
 #include "core/scene/scene_names.hpp"
+#include "core/ui/controls.hpp"
 #include "core/ui/view_names.hpp"
 #include "viewer/light_label_placement.hpp"
 #include "viewer/plot_view.hpp"
 #include "viewer/probe_view.hpp"
 #include "viewer/shader_view.hpp"
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 #include <imgui.h>
 #include <imgui_internal.h>
 #include <imgui_stdlib.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -124,8 +124,8 @@ bool dragCoordinates(const char* label, glm::vec3& v, float speed, const char* f
 bool dragNonZero(const char* label, glm::vec3& v, float speed, bool perComponent) {
     glm::vec3 edited = v;
     if (!dragCoordinates(label, edited, speed, "%.3f")) return false;
-    const bool zero = perComponent ? glm::any(glm::lessThan(glm::abs(edited), glm::vec3(1e-3f)))
-                                   : glm::length(edited) < 1e-3f;
+    const bool zero =
+        perComponent ? glm::any(glm::lessThan(glm::abs(edited), glm::vec3(1e-3f))) : glm::length(edited) < 1e-3f;
     if (zero) return false;
     v = edited;
     return true;
@@ -140,8 +140,9 @@ bool cameraValid(const Camera& c) {
 void iorSlider(Scene& scene) { parameterSlider(Param::Ior, scene.ior); }
 
 void sectionShading(Scene& scene) {
-    radioRow("Shading", scene.shading,
-             {{"flat (1)", ShadingMode::Flat}, {"gouraud (2)", ShadingMode::Gouraud}, {"phong (3)", ShadingMode::Phong}});
+    radioRow(
+        "Shading", scene.shading,
+        {{"flat (1)", ShadingMode::Flat}, {"gouraud (2)", ShadingMode::Gouraud}, {"phong (3)", ShadingMode::Phong}});
     bool compare = scene.layout == Layout::Compare;
     if (ImGui::Checkbox("compare: flat | gouraud | phong  (C)", &compare))
         scene.layout = compare ? Layout::Compare : Layout::Single;
@@ -156,7 +157,8 @@ void sectionShading(Scene& scene) {
         ImGui::PopItemWidth();
         parameterSlider(Param::DiffFactor, scene.diff.factor);
     }
-    radioRow("Reflection", scene.reflection, {{"Phong", ReflectionModel::Phong}, {"Blinn-Phong", ReflectionModel::BlinnPhong}});
+    radioRow("Reflection", scene.reflection,
+             {{"Phong", ReflectionModel::Phong}, {"Blinn-Phong", ReflectionModel::BlinnPhong}});
     static const char* const kEncodings[] = {"linear", "sRGB"};
     combo("output encoding", scene.outputEncoding, kEncodings);
     // Beyond the heuristic model (core/shading/lighting.hpp): each switch recompiles the programs once.
@@ -166,7 +168,8 @@ void sectionShading(Scene& scene) {
     combo("Fresnel", scene.fresnel, kFresnel);
     if (scene.fresnel != FresnelMode::None) iorSlider(scene);
     // Term isolation: each addend of the formula alone.
-    static const char* const kTerms[] = {"all", "ambient", "diffuse", "specular", "one light", "unlit C", "emissive E"};  // by ShowTerm
+    static const char* const kTerms[] = {"all",       "ambient", "diffuse",   "specular",
+                                         "one light", "unlit C", "emissive E"};  // by ShowTerm
     static_assert(std::size(kTerms) == std::size(kShowTermNames), "a label for every ShowTerm");
     combo("show", scene.show.term, kTerms);
     if (scene.show.term == ShowTerm::Light) {
@@ -215,7 +218,8 @@ std::optional<ProbedLobe> probedLobe(const Scene& scene, const ProbeResult* prob
     std::vector<int> candidates;
     if (selectedLight >= 0 && selectedLight < int(e.lights.size())) candidates.push_back(selectedLight);
     for (int k = 0; k < int(e.lights.size()); ++k) candidates.push_back(k);
-    const TangentFrame* frame = e.anisotropic && anisotropicLobe(probe->material, lightingEnvironment(scene)) ? &e.frame : nullptr;
+    const TangentFrame* frame =
+        e.anisotropic && anisotropicLobe(probe->material, lightingEnvironment(scene)) ? &e.frame : nullptr;
     for (int k : candidates) {
         std::optional<LobeIncidence> li =
             lobeIncidenceAt(e.nrmWorld, e.lights[std::size_t(k)].towardLight, e.viewWorld, frame);
@@ -237,8 +241,8 @@ void scrollHereFor(const char* plot, std::string& scrollTo) {
     scrollTo.clear();
 }
 
-void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, const ProbeResult* probe, int selectedLight,
-                  std::string& scrollTo) {
+void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, const ProbeResult* probe,
+                  int selectedLight, std::string& scrollTo) {
     static_assert(
         [] {
             for (std::size_t i = 0; i < std::size(kPanelPlots); ++i)
@@ -262,12 +266,14 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, c
     scrollHereFor(kPanelPlots[2], scrollTo);
     const std::optional<ProbedLobe> probed = probedLobe(scene, probe, selectedLight);
     if (probed) {
-        ImGui::TextWrapped("3-D lobe: the probed point's own N, I (light %d) and V; Esc clears the probe.", probed->light);
+        ImGui::TextWrapped("3-D lobe: the probed point's own N, I (light %d) and V; Esc clears the probe.",
+                           probed->light);
     } else if (probe && !probe->miss) {
         ImGui::TextWrapped("3-D lobe: every light is behind the probed point; the incidence above is drawn.");
     }
     plots.probed = probed ? std::optional<LobeIncidence>(probed->incidence) : std::nullopt;
-    plotWidget("##lobe3d", scenePlot(PlotKind::Lobe3d, scene, probed ? probed->material : material, plots), width * 0.9f);
+    plotWidget("##lobe3d", scenePlot(PlotKind::Lobe3d, scene, probed ? probed->material : material, plots),
+               width * 0.9f);
     plots.probed.reset();
     // Dragging the 3-D lobe turns it (the widget holds the mouse, so the scene's camera stays put);
     // a double click goes back to the PNG's view.
@@ -280,7 +286,8 @@ void sectionPlots(Scene& scene, const Material& material, PlotSettings& plots, c
     ImGui::Spacing();
     const bool twoRows = anisotropicLobe(material, lightingEnvironment(scene));
     scrollHereFor(kPanelPlots[3], scrollTo);
-    plotWidget("##brdf-slice", scenePlot(PlotKind::BrdfSlice, scene, material, plots), width * (twoRows ? 1.0f : 0.65f));
+    plotWidget("##brdf-slice", scenePlot(PlotKind::BrdfSlice, scene, material, plots),
+               width * (twoRows ? 1.0f : 0.65f));
 }
 
 void sectionMesh(MeshSpec& m, Transform& t, std::size_t triangles, bool& textures) {
@@ -358,17 +365,15 @@ void spotLightFields(Light& l) {
 // One light's fields in its open tree node: type, where it is, what its type adds, colour, intensity, falloff.
 void lightFields(Light& l, std::string& readout) {
     combo("type", l.type, kLightTypeNames);
-    if (l.type == LightType::Directional)
-        dragNonZero("direction", l.direction, 0.02f, false);
-    else
-        dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
+    if (l.type == LightType::Directional) dragNonZero("direction", l.direction, 0.02f, false);
+    else dragCoordinates(l.type == LightType::Area ? "centre" : "position", l.position, 0.05f, "%.2f");
     if (l.type == LightType::Area) areaLightFields(l);
     if (l.type == LightType::Spot) spotLightFields(l);
     colorEdit("colour", l.color);
     // A drag, not a slider: intensities span many orders of magnitude (the slider range is its limits).
     const Parameter& intensity = parameter(Param::Intensity);
-    ImGui::DragFloat(intensity.label, &l.intensity, 0.01f, float(intensity.slider.lo), float(intensity.slider.hi), "%.3f",
-                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat(intensity.label, &l.intensity, 0.01f, float(intensity.slider.lo), float(intensity.slider.hi),
+                     "%.3f", ImGuiSliderFlags_AlwaysClamp);
     readoutWhileActive(readout, intensity.symbol, l.intensity);
     if (l.type != LightType::Directional) {
         combo("attenuation", l.attenuation, kAttenuationNames);
@@ -467,7 +472,8 @@ void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
         items.push_back(labels[i].c_str());
         if (status.msaa >= samples[i]) choice = int(i);
     }
-    if (ImGui::Combo("anti-aliasing", &choice, items.data(), int(items.size()))) requests.msaa = samples[std::size_t(choice)];
+    if (ImGui::Combo("anti-aliasing", &choice, items.data(), int(items.size())))
+        requests.msaa = samples[std::size_t(choice)];
     requests.toggleFullscreen |= ImGui::Button("fullscreen (F11)");
     if (!status.trueTypeFont) ImGui::TextWrapped("DejaVu Sans not found (Debian: fonts-dejavu-core): bitmap font");
 }
@@ -480,7 +486,8 @@ void sectionCamera(Camera& c, int modelCamera, const PanelStatus& status, PanelR
         if (ImGui::BeginCombo("camera", current.c_str())) {
             if (ImGui::Selectable("shadelab's framing", modelCamera < 0)) requests.modelCamera = -1;
             for (std::size_t i = 0; i < status.modelCameras.size(); ++i)
-                if (ImGui::Selectable((status.modelCameras[i] + "##" + std::to_string(i)).c_str(), int(i) == modelCamera))
+                if (ImGui::Selectable((status.modelCameras[i] + "##" + std::to_string(i)).c_str(),
+                                      int(i) == modelCamera))
                     requests.modelCamera = int(i);
             ImGui::EndCombo();
         }
@@ -499,9 +506,11 @@ void sectionCamera(Camera& c, int modelCamera, const PanelStatus& status, PanelR
 
 // The widest label a widget in the panel has (measured in the current font, so it holds at any scale).
 float longestLabelWidth() {
-    static const char* const kLongLabels[] = {"lobe normalisation", "normal bias (texels)", "depth bias (slope)",
-                                              "samples (nx, ny)", "range (0: none)", "output encoding",
-                                              "major segments", "rotation (deg)", "anti-aliasing", "ior \u03b7\u2082/\u03b7\u2081",
+    static const char* const kLongLabels[] = {"lobe normalisation", "normal bias (texels)",
+                                              "depth bias (slope)", "samples (nx, ny)",
+                                              "range (0: none)",    "output encoding",
+                                              "major segments",     "rotation (deg)",
+                                              "anti-aliasing",      "ior \u03b7\u2082/\u03b7\u2081",
                                               "k_e exponent"};
     float width = 0.0f;
     for (const char* label : kLongLabels) width = std::max(width, ImGui::CalcTextSize(label).x);
@@ -522,7 +531,8 @@ void sectionFile(ViewSettings& s, const PanelStatus& status, PanelRequests& requ
         ImGui::Text("animation: %s", status.animation.c_str());
     }
     if (!status.lastScreenshot.empty()) ImGui::TextWrapped("screenshot: %s", status.lastScreenshot.c_str());
-    requests.toggleRecording |= ImGui::Button(status.recording ? "stop recording (Ctrl+R)" : "record the view (Ctrl+R)");
+    requests.toggleRecording |=
+        ImGui::Button(status.recording ? "stop recording (Ctrl+R)" : "record the view (Ctrl+R)");
     if (!status.lastRecording.empty()) ImGui::TextWrapped("recording: %s", status.lastRecording.c_str());
     requests.reloadShaders |= ImGui::Button("reload shaders (F5)");
     ImGui::TextDisabled("Drop a .json, .gltf or .glb on the window to open it.");
@@ -599,7 +609,8 @@ bool section(ViewSettings& settings, const char* title, PanelSection id, bool de
         const auto& open = *settings.startSections;
         ImGui::SetNextItemOpen(std::find(open.begin(), open.end(), name) != open.end(), ImGuiCond_Always);
     }
-    const bool open = ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
+    const bool open =
+        ImGui::CollapsingHeader(title, defaultOpen ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
     if (open) settings.openSections.push_back(name);
     return open;
 }
@@ -620,20 +631,23 @@ void sceneSections(Scene& scene, ViewSettings& settings, const PanelStatus& stat
                      settings.scrollToPlot);
     // S opens or closes it, and brings it into view.
     if (settings.openShader) ImGui::SetNextItemOpen(*settings.openShader, ImGuiCond_Always);
-    if (section(settings, "Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader, false)) {
+    if (section(settings, "Shader: the GLSL of the pane's mode (S: large over the view)", PanelSection::Shader,
+                false)) {
         if (settings.openShader) ImGui::SetScrollHereY(0.0f);
         sectionShader(scene, settings, status, probe);
     }
     settings.openShader.reset();
     if (object && section(settings, "Mesh", PanelSection::Mesh, true))
         sectionMesh(object->mesh, object->transform, status.objectTriangles, scene.textures);
-    if (section(settings, "Lights", PanelSection::Lights, true)) sectionLights(scene, settings.selectedLight, settings.readout);
+    if (section(settings, "Lights", PanelSection::Lights, true))
+        sectionLights(scene, settings.selectedLight, settings.readout);
     if (section(settings, "Shadows", PanelSection::Shadows, true)) sectionShadows(scene.shadows);
     if (section(settings, "Overlays", PanelSection::Overlays, true)) {
         sectionOverlays(settings);
         sectionDisplay(status, requests);
     }
-    if (section(settings, "Camera", PanelSection::Camera, false)) sectionCamera(scene.camera, scene.modelCamera, status, requests);
+    if (section(settings, "Camera", PanelSection::Camera, false))
+        sectionCamera(scene.camera, scene.modelCamera, status, requests);
     if (section(settings, "Background", PanelSection::Background, false))
         colorEdit(parameter(Param::Background).label, scene.background);
     if (section(settings, "File", PanelSection::File, true)) sectionFile(settings, status, requests);
@@ -661,7 +675,8 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     settings.startSections.reset();
     // ImGui marks every edit a widget makes (MarkItemEdited, this frame's flag); the light buttons
     // change the list.
-    requests.sceneEdited = ImGui::GetCurrentContext()->ActiveIdHasBeenEditedThisFrame || scene.lights.size() != lightsBefore;
+    requests.sceneEdited =
+        ImGui::GetCurrentContext()->ActiveIdHasBeenEditedThisFrame || scene.lights.size() != lightsBefore;
     ImGui::PopItemWidth();
     ImGui::End();
     return requests;
@@ -711,7 +726,9 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
     const std::string difference = "|" + shadingName(scene.diff.a) + " \u2212 " + shadingName(scene.diff.b) + "|",
                       factor = "\u00d7 " + std::to_string(int(std::lround(scene.diff.factor)));
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
-    const auto textWidth = [](const std::string& s, float size) { return ImGui::GetFont()->CalcTextSizeA(size, 1e9f, 0.0f, s.c_str()).x; };
+    const auto textWidth = [](const std::string& s, float size) {
+        return ImGui::GetFont()->CalcTextSizeA(size, 1e9f, 0.0f, s.c_str()).x;
+    };
     // One line where it fits the pane, else the mode above the lobe (the difference above its factor).
     const auto labelLines = [&](const Pane& pane, float size, float width) -> std::vector<std::string> {
         const std::string first = pane.difference ? difference : shadingName(pane.mode) + " shading";
@@ -739,8 +756,8 @@ float drawPaneLabels(const Scene& scene, const UiRect& view, float framebufferSc
         draw->PushClipRect(lo, hi, true);
         for (const std::string& line : lines) {
             const float w = ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, line.c_str()).x;
-            labelBox(draw, fontSize, ImVec2(std::round(x0 + (width - w) * 0.5f), std::round(y)), line, IM_COL32(255, 255, 255, 240),
-                     lo, hi);
+            labelBox(draw, fontSize, ImVec2(std::round(x0 + (width - w) * 0.5f), std::round(y)), line,
+                     IM_COL32(255, 255, 255, 240), lo, hi);
             bottom = std::max(bottom, y + fontSize + pad);
             y += fontSize + pad * 2.5f;
         }
@@ -787,7 +804,8 @@ void drawCaption(const Scene& scene, const std::string& counter, const CaptionLa
     const std::string title = lectureNotation(scene.title), caption = lectureNotation(scene.caption);
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     ImFont* font = ImGui::GetFont();
-    const float counterWidth = counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;
+    const float counterWidth =
+        counter.empty() ? 0.0f : font->CalcTextSizeA(l.captionSize, 1e9f, 0.0f, counter.c_str()).x + l.pad;
     const float wrap = std::max(band.width - 2.0f * l.pad - counterWidth, 1.0f);
     const ImVec2 lo(band.x, band.y), hi(band.x + band.width, band.y + band.height);
     draw->PushClipRect(lo, hi, true);
@@ -818,7 +836,10 @@ std::string statusStripText(const PanelStatus& status, float width,
     const std::string animation =
         status.animation.empty() ? "" : (status.playing ? "playing " : "paused at ") + status.animation;
     // In the order shown; the ones that may be left out where there is no room, the first first.
-    struct Part { std::string text; int dropOrder; };
+    struct Part {
+        std::string text;
+        int dropOrder;
+    };
     std::vector<Part> parts = {{timing, 0},
                                {std::to_string(status.frameTriangles) + " triangles", 2},
                                {status.glRenderer, 1},
@@ -843,9 +864,8 @@ void drawStatusStrip(const PanelStatus& status, const UiRect& strip) {
     draw->PushClipRect(lo, hi, true);
     draw->AddRectFilled(lo, hi, IM_COL32(16, 16, 20, 255));
     const float margin = ImGui::GetFontSize() * 0.5f;
-    const std::string text = statusStripText(status, strip.width - 2.0f * margin, [](const std::string& t) {
-        return ImGui::CalcTextSize(t.c_str()).x;
-    });
+    const std::string text = statusStripText(status, strip.width - 2.0f * margin,
+                                             [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
     const float pad = (strip.height - ImGui::GetFontSize()) * 0.5f;
     draw->AddText(ImVec2(std::round(strip.x + margin), std::round(strip.y + pad)), IM_COL32(200, 200, 200, 255),
                   text.c_str());
@@ -858,7 +878,8 @@ void drawMessage(const PanelStatus& status, const UiRect& view) {
     const float font = ImGui::GetFontSize() * 1.1f, pad = font * 0.5f;
     const float wrap = std::max(view.width * 0.8f, 100.0f);
     const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, wrap, status.message.c_str());
-    const ImVec2 pos(std::round(view.x + (view.width - size.x) * 0.5f), std::round(view.y + view.height - size.y - 3 * pad));
+    const ImVec2 pos(std::round(view.x + (view.width - size.x) * 0.5f),
+                     std::round(view.y + view.height - size.y - 3 * pad));
     draw->AddRectFilled(ImVec2(pos.x - pad, pos.y - pad), ImVec2(pos.x + size.x + pad, pos.y + size.y + pad),
                         status.isError ? IM_COL32(120, 20, 20, 235) : IM_COL32(20, 20, 24, 220), pad * 0.5f);
     draw->AddText(ImGui::GetFont(), font, pos, IM_COL32(255, 255, 255, 255), status.message.c_str(), nullptr, wrap);
@@ -870,9 +891,10 @@ void drawHelpOverlay(const UiRect& view) {
     ImGui::SetNextWindowBgAlpha(0.92f);
     ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(view.width * 0.95f, view.height * 0.95f));
     // No title or resizing, but a scrollbar where the view is too small for every row at this scale.
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
     if (ImGui::Begin("##help", nullptr, flags)) {
         ImGui::TextUnformatted("Keys and mouse  (F1 or ? closes this)");
         ImGui::Separator();
@@ -890,7 +912,9 @@ void drawHelpOverlay(const UiRect& view) {
     ImGui::End();
 }
 
-glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) { return lightHandle(scene.lights[light], scene.camera); }
+glm::vec3 lightHandleWorld(const Scene& scene, std::size_t light) {
+    return lightHandle(scene.lights[light], scene.camera);
+}
 
 int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float radiusPixels) {
     int best = -1;
@@ -926,7 +950,9 @@ UiRect placeLabel(const LightLabelStyle& s, const LightLabelArea& a, ImVec2 at, 
         const LabelRect box = place.box(size, pad);
         const ImVec2 near(std::clamp(at.x, box.lo.x, box.hi.x), std::clamp(at.y, box.lo.y, box.hi.y));
         const float dx = near.x - at.x, dy = near.y - at.y, d = std::hypot(dx, dy);
-        if (d > s.ring) s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour, 1.0f + s.thick * 0.4f);
+        if (d > s.ring)
+            s.draw->AddLine(ImVec2(at.x + dx / d * s.ring, at.y + dy / d * s.ring), near, colour,
+                            1.0f + s.thick * 0.4f);
     }
     return labelBox(s.draw, s.font, imVec(place.text), label, colour, imVec(a.lo), imVec(a.hi));
 }
@@ -941,7 +967,8 @@ UiRect drawDirectionArrow(const LightLabelStyle& s, const LightLabelArea& a, ImV
     const ImVec2 u(d.x / len, d.y / len), n(-u.y, u.x);
     const float head = s.font * 0.7f;
     s.draw->AddTriangleFilled(to, ImVec2(to.x - u.x * head + n.x * head * 0.5f, to.y - u.y * head + n.y * head * 0.5f),
-                              ImVec2(to.x - u.x * head - n.x * head * 0.5f, to.y - u.y * head - n.y * head * 0.5f), colour);
+                              ImVec2(to.x - u.x * head - n.x * head * 0.5f, to.y - u.y * head - n.y * head * 0.5f),
+                              colour);
     return placeLabel(s, a, from, s.ring, label, colour);
 }
 
@@ -986,14 +1013,16 @@ UiRect drawBorderArrow(const LightLabelStyle& s, const LightLabelArea& a, ImVec2
     pos.y = std::max(std::min(pos.y, a.hi.y - size.y - pad), a.lo.y + pad);
     // The label keeps clear of the arrow's head too (pushed along the border, it ran into it).
     LightLabelArea withHead = a;
-    const LabelRect headBox{glm::min(vec(tip), glm::min(vec(c1), vec(c2))), glm::max(vec(tip), glm::max(vec(c1), vec(c2)))};
+    const LabelRect headBox{glm::min(vec(tip), glm::min(vec(c1), vec(c2))),
+                            glm::max(vec(tip), glm::max(vec(c1), vec(c2)))};
     withHead.taken.push_back(headBox);
     const float separation = kLabelSeparation * s.font;
     if (rectClear(withHead, LabelRect{vec(pos) - pad, vec(pos) + vec(size) + pad}, separation))
         return labelBox(s.draw, s.font, pos, label, colour, imVec(a.lo), imVec(a.hi));
     // A model, a label or the head itself is there: beside the head, clear of its box.
     const glm::vec2 half = (headBox.hi - headBox.lo) * 0.5f;
-    return placeLabel(s, withHead, imVec(headBox.lo + half), std::max(half.x, half.y) + pad + 2.0f * separation, label, colour);
+    return placeLabel(s, withHead, imVec(headBox.lo + half), std::max(half.x, half.y) + pad + 2.0f * separation, label,
+                      colour);
 }
 
 // Each model's disc in the view's units (the view's top-left at `origin`): its bounding sphere's centre
@@ -1028,7 +1057,8 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
     const LightLabelStyle style{ImGui::GetBackgroundDrawList(), font, std::max(3.0f, font * 0.2f), font * 0.6f};
     for (const Pane& pane : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff)) {
         const float x0 = view.x + float(pane.x) / framebufferScale, paneTop = view.y + float(pane.y) / framebufferScale;
-        const float x1 = x0 + float(pane.width) / framebufferScale, y1 = paneTop + float(pane.height) / framebufferScale;
+        const float x1 = x0 + float(pane.width) / framebufferScale,
+                    y1 = paneTop + float(pane.height) / framebufferScale;
         // Labels and border arrows stay below the pane labels (`top`).
         const float y0 = std::min(std::max(paneTop, top), y1);
         style.draw->PushClipRect(ImVec2(x0, paneTop), ImVec2(x1, y1), true);
@@ -1039,7 +1069,9 @@ std::vector<UiRect> drawLightLabels(const Scene& scene, const UiRect& view, floa
             area.taken.push_back({glm::vec2(r.x, r.y), glm::vec2(r.x + r.width, r.y + r.height)});
         };
         // projectToImage gives image pixels of the whole view (the pane's offset included).
-        auto toUi = [&](const glm::vec3& p) { return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale); };
+        auto toUi = [&](const glm::vec3& p) {
+            return ImVec2(view.x + p.x / framebufferScale, view.y + p.y / framebufferScale);
+        };
         area.models = modelDiscs(scene, pane, models, glm::vec2(view.x, view.y), framebufferScale);
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& l = scene.lights[i];

@@ -5,9 +5,9 @@
 // viewer carries out, so file and GL work never happens inside a widget.
 #include "core/figures/plot.hpp"
 #include "core/geometry/camera.hpp"
+#include "core/geometry/scene_geometry.hpp"
 #include "core/probe/probe.hpp"
 #include "core/scene/scene.hpp"
-#include "core/geometry/scene_geometry.hpp"
 #include "render/overlay_renderer.hpp"
 
 #include <functional>
@@ -22,21 +22,22 @@ namespace shadelab {
 // View state that is not part of the scene (and so is not saved with it).
 struct ViewSettings {
     OverlayOptions overlays;
-    bool showPanel = true;         // Tab
-    bool paneLabels = true;        // "flat" / "gouraud" / "phong" over each pane
-    bool showHud = true;           // frame time, FPS, triangles, GL renderer
-    bool showCaption = true;       // a scene's title and caption in a band above the 3D view
-    bool lightLabels = true;       // L: each light's marker, number and kind drawn over the view
-    bool showIntersection = false; // I, --intersection: the intersection diagram at the probe (viewer/probe_arrows.hpp)
-    bool showFormula = false;      // E, --formula: the lecture's formula over the view (viewer/formula_view.hpp)
-    bool readoutWhenHidden = true; // Tab keeps the frame-time strip (a switch in the Overlays section)
+    bool showPanel = true;    // Tab
+    bool paneLabels = true;   // "flat" / "gouraud" / "phong" over each pane
+    bool showHud = true;      // frame time, FPS, triangles, GL renderer
+    bool showCaption = true;  // a scene's title and caption in a band above the 3D view
+    bool lightLabels = true;  // L: each light's marker, number and kind drawn over the view
+    bool showIntersection =
+        false;                 // I, --intersection: the intersection diagram at the probe (viewer/probe_arrows.hpp)
+    bool showFormula = false;  // E, --formula: the lecture's formula over the view (viewer/formula_view.hpp)
+    bool readoutWhenHidden = true;  // Tab keeps the frame-time strip (a switch in the Overlays section)
     // The text over the view (caption, labels, formula, messages) sized from the window's height for
     // a lecture hall, whatever the panel's UI scale (a switch in the Overlays section); off: the panel's.
     bool presentationText = true;
-    std::string readout;           // this frame's live value ("k_e = 37.2") of a slider being dragged
-    std::string scenePath;         // the Save / Load field
-    int selectedObject = 0;        // whose material, mesh and transform the panel shows
-    PlotSettings plots;            // the Plots section's incidence angle and side of the surface
+    std::string readout;     // this frame's live value ("k_e = 37.2") of a slider being dragged
+    std::string scenePath;   // the Save / Load field
+    int selectedObject = 0;  // whose material, mesh and transform the panel shows
+    PlotSettings plots;      // the Plots section's incidence angle and side of the surface
     // --panel-sections: on the first frame, exactly these sections (kPanelSections names) are opened.
     std::optional<std::vector<std::string>> startSections;
     std::vector<std::string> openSections;  // those open in the last frame (remembered between sessions)
@@ -58,9 +59,9 @@ struct ViewSettings {
 
 // What the panel shows besides the scene.
 struct PanelStatus {
-    std::string message;           // last action's result or error
+    std::string message;  // last action's result or error
     bool isError = false;
-    std::string lastScreenshot;    // path of the last 3D-view screenshot
+    std::string lastScreenshot;  // path of the last 3D-view screenshot
     std::string glRenderer;
     std::size_t frameTriangles = 0;   // drawn per frame, all panes
     std::size_t objectTriangles = 0;  // of the selected object's mesh
@@ -70,22 +71,22 @@ struct PanelStatus {
     std::vector<std::string> presetTitles;
     int currentPreset = 0;
     bool scrollToPreset = false;
-    double frameMs = 0.0;             // the mean own time (no waiting for input) of the last second's frames; 0: none
-    bool idle = false;                // nothing more is drawn after this frame until an event (render on demand)
-    float movingScale = 1.0f;         // a moving frame drawn smaller (software GL): its share of the view per axis
-    float uiScale = 1.0f;             // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
-    int msaa = 1;                     // anti-aliasing samples of the view (1: off)
+    double frameMs = 0.0;      // the mean own time (no waiting for input) of the last second's frames; 0: none
+    bool idle = false;         // nothing more is drawn after this frame until an event (render on demand)
+    float movingScale = 1.0f;  // a moving frame drawn smaller (software GL): its share of the view per axis
+    float uiScale = 1.0f;      // --ui-scale / Ctrl+= / Ctrl+-, shown in the Overlays section
+    int msaa = 1;              // anti-aliasing samples of the view (1: off)
     bool trueTypeFont = true;
     std::vector<std::string> modelCameras;  // the first glTF model's cameras (GltfInfo::cameras), by name
     // The Shader section: each GLSL file's text as the programs were (re)built from it, by file name,
     // and the last failed reload's message (empty after a good one).
     std::map<std::string, std::string> shaderSources;
     std::string shaderError;
-    std::string animation;            // --animate: "1.25 s of 4.00 s"; empty without animations
-    std::string readout;              // the large readout over the view this frame ("k_e = 37.2")
+    std::string animation;  // --animate: "1.25 s of 4.00 s"; empty without animations
+    std::string readout;    // the large readout over the view this frame ("k_e = 37.2")
     bool playing = false;
-    bool recording = false;           // Ctrl+R: the view is being recorded
-    std::string lastRecording;        // path of the last saved recording
+    bool recording = false;     // Ctrl+R: the view is being recorded
+    std::string lastRecording;  // path of the last saved recording
 };
 
 // Buttons pressed this frame.
@@ -93,15 +94,15 @@ struct PanelRequests {
     bool save = false, load = false, screenshot = false;
     bool resetCamera = false, frameModel = false, reloadShaders = false, quit = false;
     bool clearProbe = false;
-    int gotoPreset = -1;          // a preset clicked in the list, or the previous / next button
-    bool resetPreset = false;     // reload the current preset from its file
-    float uiScale = 0.0f;         // the UI-scale slider moved: the new scale (0: unchanged)
-    int msaa = 0;                 // anti-aliasing chosen: samples (1: off; 0: unchanged)
+    int gotoPreset = -1;       // a preset clicked in the list, or the previous / next button
+    bool resetPreset = false;  // reload the current preset from its file
+    float uiScale = 0.0f;      // the UI-scale slider moved: the new scale (0: unchanged)
+    int msaa = 0;              // anti-aliasing chosen: samples (1: off; 0: unchanged)
     bool toggleFullscreen = false;
-    bool togglePlay = false;      // the animation's play / pause button
-    bool toggleRecording = false; // the record / stop button (Ctrl+R)
-    int modelCamera = -2;         // a camera picked: the model's camera N, or -1 for shadelab's framing (-2: unchanged)
-    bool sceneEdited = false;     // a widget changed the scene (or the panel's own settings) this frame
+    bool togglePlay = false;       // the animation's play / pause button
+    bool toggleRecording = false;  // the record / stop button (Ctrl+R)
+    int modelCamera = -2;      // a camera picked: the model's camera N, or -1 for shadelab's framing (-2: unchanged)
+    bool sceneEdited = false;  // a widget changed the scene (or the panel's own settings) this frame
 };
 
 // A rectangle in ImGui's coordinates (window screen units, origin top-left).

@@ -13,7 +13,8 @@ bool sameTransform(const Transform& a, const Transform& b) {
 
 bool PlacedGeometry::same(const Scene& scene, const std::shared_ptr<const SceneGeometry>& geometry) const {
     bool same = remembered_ && geometry_.lock() == geometry && transforms_.size() == scene.objects.size();
-    for (std::size_t o = 0; same && o < scene.objects.size(); ++o) same = sameTransform(transforms_[o], scene.objects[o].transform);
+    for (std::size_t o = 0; same && o < scene.objects.size(); ++o)
+        same = sameTransform(transforms_[o], scene.objects[o].transform);
     return same;
 }
 
@@ -24,7 +25,8 @@ void PlacedGeometry::remember(const Scene& scene, const std::shared_ptr<const Sc
     for (const SceneObject& o : scene.objects) transforms_.push_back(o.transform);
 }
 
-const std::vector<BoundingSphere>& ModelSpheres::of(const Scene& scene, const std::shared_ptr<const SceneGeometry>& geometry) {
+const std::vector<BoundingSphere>& ModelSpheres::of(const Scene& scene,
+                                                    const std::shared_ptr<const SceneGeometry>& geometry) {
     if (from_.same(scene, geometry)) return spheres_;
     spheres_.clear();
     for (std::size_t o = 0; geometry && o < scene.objects.size() && o < geometry->meshes.size(); ++o) {

@@ -17,8 +17,9 @@ bool PlaylistNavigator::goTo(std::size_t index, SceneDocument& document) {
     Scene leaving = document.scene();
     const Camera leavingHome = document.homeCamera();
     const bool leavingFollowing = document.following();
-    if (target.live) document.restore(*target.live, target.home, target.following, target.preset.scene.width,
-                                       target.preset.scene.height);
+    if (target.live)
+        document.restore(*target.live, target.home, target.following, target.preset.scene.width,
+                         target.preset.scene.height);
     else document.replace(target.preset.scene);
     if (attached_ && index != current_) {
         entries_[current_].live = std::move(leaving);

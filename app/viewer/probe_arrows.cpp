@@ -51,8 +51,7 @@ std::vector<ProbeArrow> intersectionArrows(const Scene& scene, const ProbeResult
     arrows.push_back({OverlayArrow{p, p + length * t.reflectedDirection, kReflectedColor, pane},
                       "R = " + fixed("%.3f", num.r) + "  (R∥ " + fixed("%.3f", num.rParallel) + ", R⊥ " +
                           fixed("%.3f", num.rPerpendicular) + ")"});
-    if (t.totalInternal)
-        arrows.back().label += "   total internal reflection";
+    if (t.totalInternal) arrows.back().label += "   total internal reflection";
     else
         arrows.push_back({OverlayArrow{p, p + length * t.transmittedDirection, kRefractedColor, pane},
                           "T   θ_t = " + fixed("%.1f°", num.thetaTDeg) + "   η_t = " + fixed("%.2f", num.etaT) +
@@ -62,10 +61,12 @@ std::vector<ProbeArrow> intersectionArrows(const Scene& scene, const ProbeResult
 
 }  // namespace
 
-std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight, bool intersection) {
+std::vector<ProbeArrow> probeArrows(const Scene& scene, const ProbeResult& probe, int selectedLight,
+                                    bool intersection) {
     std::vector<ProbeArrow> arrows;
     if (probe.miss) return arrows;
-    if (intersection && !probe.modes.empty() && !probe.modes[0].evaluations.empty()) return intersectionArrows(scene, probe);
+    if (intersection && !probe.modes.empty() && !probe.modes[0].evaluations.empty())
+        return intersectionArrows(scene, probe);
     // Only in the probed pane: the other panes of a compare layout evaluate the formula elsewhere.
     const int pane = probe.pane;
     arrows.push_back({OverlayArrow{probe.posWorld, probe.posWorld, kMarkerColor, pane}, ""});

@@ -2,7 +2,8 @@
 
 namespace shadelab {
 
-ProbeState::Outcome ProbeState::set(const Scene& scene, const std::shared_ptr<const SceneGeometry>& geometry, int x, int y) {
+ProbeState::Outcome ProbeState::set(const Scene& scene, const std::shared_ptr<const SceneGeometry>& geometry, int x,
+                                    int y) {
     const std::string pixel = std::to_string(x) + "," + std::to_string(y);
     if (!geometry || x < 0 || y < 0 || x >= scene.width || y >= scene.height)
         return {false, true,
@@ -21,7 +22,8 @@ void ProbeState::evaluate(const Scene& scene, const std::shared_ptr<const SceneG
     if (!anchor_ || !geometry || !validAnchor(scene, *geometry, *anchor_)) return;
     // The ray caster is only needed for occlusion: without shadows, dragging a transform must not
     // rebuild it every frame.
-    result_ = probeAnchor(scene, *geometry, scene.shadows.enabled ? rayCaster(scene, geometry) : noTriangles_, *anchor_);
+    result_ =
+        probeAnchor(scene, *geometry, scene.shadows.enabled ? rayCaster(scene, geometry) : noTriangles_, *anchor_);
 }
 
 const SceneRayCaster& ProbeState::rayCaster(const Scene& scene, const std::shared_ptr<const SceneGeometry>& geometry) {

@@ -4,9 +4,9 @@
 #include "core/ui/view_names.hpp"
 #include "viewer/panel.hpp"
 
+#include <imgui.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
@@ -86,7 +86,8 @@ void evaluationTables(const Scene& scene, const ProbeEvaluation& e) {
     }
     if (ImGui::BeginTable("terms", 4, flags)) {
         ImGui::TableSetupColumn("term", ImGuiTableColumnFlags_WidthStretch, 2.0f);
-        for (const char* channel : {"R", "G", "B"}) ImGui::TableSetupColumn(channel, ImGuiTableColumnFlags_WidthStretch, 1.0f);
+        for (const char* channel : {"R", "G", "B"})
+            ImGui::TableSetupColumn(channel, ImGuiTableColumnFlags_WidthStretch, 1.0f);
         ImGui::TableHeadersRow();
         if (scene.emissiveModel || e.terms.emissive != glm::vec3(0.0f)) rgbRow("emission E", e.terms.emissive);
         rgbRow("ambient k_a A C", e.terms.ambient);
@@ -97,7 +98,8 @@ void evaluationTables(const Scene& scene, const ProbeEvaluation& e) {
             std::snprintf(label, sizeof label, "light %zu specular", l);
             rgbRow(label, e.lights[l].specular);
         }
-        rgbRow(scene.show.term == ShowTerm::All ? "sum" : ("sum (show " + toString(scene.show) + ")").c_str(), e.terms.shown);
+        rgbRow(scene.show.term == ShowTerm::All ? "sum" : ("sum (show " + toString(scene.show) + ")").c_str(),
+               e.terms.shown);
         rgbRow("clamped to [0, 1]", e.terms.total);
         ImGui::EndTable();
     }
@@ -125,7 +127,8 @@ void modeSection(const Scene& scene, const ProbeResult& probe, const ModeProbe& 
             std::snprintf(title, sizeof title, "corner %s (vertex %u), weight %.3f", kCorners[k], e.vertex,
                           double(probe.anchor.barycentric[int(k)]));
         else
-            std::snprintf(title, sizeof title, "%s", e.site == ProbeEvaluation::Site::Centroid ? "at the centroid" : "at the point");
+            std::snprintf(title, sizeof title, "%s",
+                          e.site == ProbeEvaluation::Site::Centroid ? "at the centroid" : "at the point");
         ImGui::PushID(int(k));
         const ImGuiTreeNodeFlags open = k == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0;
         if (ImGui::TreeNodeEx("evaluation", open, "%s", title)) {
@@ -158,10 +161,10 @@ struct Box {
 // inside the pane and clear of the labels already placed; else the place that overlaps them least.
 Box placeLabel(ImVec2 tip, ImVec2 size, const Box& pane, const std::vector<Box>& placed, float gap) {
     const float w = size.x, h = size.y;
-    const ImVec2 offsets[] = {{gap, -h - gap * 0.5f}, {gap, gap * 0.5f},     {-w - gap, -h - gap * 0.5f},
-                              {-w - gap, gap * 0.5f}, {-w * 0.5f, -h - gap * 2}, {-w * 0.5f, gap * 2},
-                              {gap * 3, -h * 0.5f},   {-w - gap * 3, -h * 0.5f}, {gap * 2, -h * 2 - gap},
-                              {gap * 2, h + gap},     {-w - gap * 2, -h * 2 - gap}, {-w - gap * 2, h + gap}};
+    const ImVec2 offsets[] = {
+        {gap, -h - gap * 0.5f},    {gap, gap * 0.5f},    {-w - gap, -h - gap * 0.5f},  {-w - gap, gap * 0.5f},
+        {-w * 0.5f, -h - gap * 2}, {-w * 0.5f, gap * 2}, {gap * 3, -h * 0.5f},         {-w - gap * 3, -h * 0.5f},
+        {gap * 2, -h * 2 - gap},   {gap * 2, h + gap},   {-w - gap * 2, -h * 2 - gap}, {-w - gap * 2, h + gap}};
     Box best{};
     float bestCost = 1e30f;
     for (const ImVec2& o : offsets) {
@@ -187,10 +190,12 @@ void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, 
     const std::vector<Pane> panes = layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff);
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const Pane& pane = panes[p];
-        const Box paneBox{view.x + float(pane.x) / framebufferScale + pad, view.y + float(pane.y) / framebufferScale + pad,
+        const Box paneBox{view.x + float(pane.x) / framebufferScale + pad,
+                          view.y + float(pane.y) / framebufferScale + pad,
                           view.x + float(pane.x + pane.width) / framebufferScale - pad,
                           view.y + float(pane.y + pane.height) / framebufferScale - pad};
-        draw->PushClipRect(ImVec2(paneBox.x0 - pad, paneBox.y0 - pad), ImVec2(paneBox.x1 + pad, paneBox.y1 + pad), true);
+        draw->PushClipRect(ImVec2(paneBox.x0 - pad, paneBox.y0 - pad), ImVec2(paneBox.x1 + pad, paneBox.y1 + pad),
+                           true);
         std::vector<Box> placed;
         for (const UiRect& r : avoid) placed.push_back(Box{r.x, r.y, r.x + r.width, r.y + r.height});
         const auto inside = [&](const glm::vec3& q) {
@@ -208,7 +213,9 @@ void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, 
                 float lo = 0.0f, hi = 1.0f;
                 for (int i = 0; i < 24; ++i) {
                     const float mid = 0.5f * (lo + hi);
-                    (inside(projectToImage(scene.camera, pane, glm::mix(a.arrow.fromWorld, a.arrow.toWorld, mid))) ? lo : hi) = mid;
+                    (inside(projectToImage(scene.camera, pane, glm::mix(a.arrow.fromWorld, a.arrow.toWorld, mid)))
+                         ? lo
+                         : hi) = mid;
                 }
                 tip = projectToImage(scene.camera, pane, glm::mix(a.arrow.fromWorld, a.arrow.toWorld, lo));
             }

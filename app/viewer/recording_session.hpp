@@ -19,7 +19,8 @@ public:
     using Say = std::function<void(const std::string& message, bool isError)>;
 
     // `newPath` names each new video (the viewer: a timestamped .mp4 in the working directory).
-    RecordingSession(std::function<std::string()> newPath, Say say) : newPath_(std::move(newPath)), say_(std::move(say)) {}
+    RecordingSession(std::function<std::string()> newPath, Say say)
+        : newPath_(std::move(newPath)), say_(std::move(say)) {}
 
     void toggle() { toggled_ = true; }
     bool active() const { return recorder_ != nullptr; }

@@ -1,8 +1,8 @@
 #include "viewer/scene_document.hpp"
 
-#include "core/geometry/camera.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
+#include "core/geometry/camera.hpp"
 #include "core/scene/scene_json.hpp"
 #include "viewer/orbit.hpp"
 
@@ -45,7 +45,8 @@ SceneDocument::SceneDocument(Scene scene, std::shared_ptr<const SceneGeometry> g
 
 bool SceneDocument::syncGeometry() {
     bool same = geometry_ && geometry_->specs.size() == scene_.objects.size();
-    for (std::size_t i = 0; same && i < scene_.objects.size(); ++i) same = scene_.objects[i].mesh == geometry_->specs[i];
+    for (std::size_t i = 0; same && i < scene_.objects.size(); ++i)
+        same = scene_.objects[i].mesh == geometry_->specs[i];
     if (same) return false;
     try {
         geometry_ = std::make_shared<const SceneGeometry>(buildSceneGeometry(scene_));
@@ -207,7 +208,8 @@ void SceneDocument::frameInsidePane(Camera& c, const BoundingSphere& b, float as
     Camera narrower = clearOfLabels(c, aspect);
     // Side by side panes: the lecture-hall margin (the model in 85% of the pane rather than 95%).
     if (multiPane())
-        narrower.fovYDeg = glm::degrees(2.0f * std::atan(std::tan(glm::radians(narrower.fovYDeg) / 2.0f) * kPaneFitMargin / kFitMargin));
+        narrower.fovYDeg = glm::degrees(
+            2.0f * std::atan(std::tan(glm::radians(narrower.fovYDeg) / 2.0f) * kPaneFitMargin / kFitMargin));
     frameCamera(narrower, b, aspect);
     narrower.fovYDeg = c.fovYDeg;
     c = narrower;

@@ -2,8 +2,8 @@
 // What the viewer shows, without any GL or window: the scene the panel edits, the geometry built from
 // it, and the camera `R` goes back to. Loading, saving and rebuilding are all-or-nothing: when one
 // throws, the document is as it was, so a bad file or a failing glTF never costs the room its scene.
-#include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "core/scene/scene.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -116,7 +116,7 @@ private:
     mutable BoundingSphere boundsCache_;
     mutable std::weak_ptr<const SceneGeometry> boundsGeometry_;
     mutable std::vector<glm::mat4> boundsTransforms_;
-    bool homeFits_ = true;     // the home camera shows the model's whole height (framesWholeModel)
+    bool homeFits_ = true;  // the home camera shows the model's whole height (framesWholeModel)
 };
 
 }  // namespace shadelab

@@ -1,8 +1,8 @@
 #include "viewer/shader_view.hpp"
 
 #include "core/figures/shader_listing.hpp"
-#include "core/ui/view_names.hpp"
 #include "core/geometry/camera.hpp"
+#include "core/ui/view_names.hpp"
 
 #include <imgui.h>
 
@@ -15,7 +15,9 @@
 namespace shadelab {
 namespace {
 
-ImVec4 imColor(Rgba8 c) { return ImVec4(float(c.r) / 255.0f, float(c.g) / 255.0f, float(c.b) / 255.0f, float(c.a) / 255.0f); }
+ImVec4 imColor(Rgba8 c) {
+    return ImVec4(float(c.r) / 255.0f, float(c.g) / 255.0f, float(c.b) / 255.0f, float(c.a) / 255.0f);
+}
 ImU32 imColor32(Rgba8 c, int alpha) { return IM_COL32(c.r, c.g, c.b, alpha); }
 
 // The panes that run a mode (not the diff layout's difference), and which one the section shows:
@@ -30,7 +32,8 @@ std::vector<Pane> shadedPanes(const Scene& scene) {
 ShadingMode chosenMode(const Scene& scene, ViewSettings& settings, const ProbeResult* probe) {
     const std::vector<Pane> panes = shadedPanes(scene);
     if (panes.empty()) return scene.shading;
-    if (settings.shaderPane < 0 && probe && probe->pane >= 0 && probe->pane < int(panes.size())) settings.shaderPane = probe->pane;
+    if (settings.shaderPane < 0 && probe && probe->pane >= 0 && probe->pane < int(panes.size()))
+        settings.shaderPane = probe->pane;
     settings.shaderPane = std::clamp(settings.shaderPane, 0, int(panes.size()) - 1);
     if (panes.size() > 1) {
         std::string items;
@@ -49,8 +52,9 @@ ImFont* monoFont() {
 
 void legend() {
     ImGui::TextUnformatted("terms:");
-    for (const auto& [name, term] : {std::pair{"ambient", FormulaTerm::Ambient}, std::pair{"diffuse", FormulaTerm::Diffuse},
-                                     std::pair{"specular", FormulaTerm::Specular}, std::pair{"emission E", FormulaTerm::Emissive}}) {
+    for (const auto& [name, term] :
+         {std::pair{"ambient", FormulaTerm::Ambient}, std::pair{"diffuse", FormulaTerm::Diffuse},
+          std::pair{"specular", FormulaTerm::Specular}, std::pair{"emission E", FormulaTerm::Emissive}}) {
         ImGui::SameLine();
         ImGui::TextColored(imColor(termColor(term)), "%s", name);
     }
@@ -76,7 +80,8 @@ void drawLine(const GlslLine& line, float width, int columns = 0) {
     }
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    const float h = ImGui::GetTextLineHeight(), all = h + (float(rows.size()) - 1.0f) * ImGui::GetTextLineHeightWithSpacing();
+    const float h = ImGui::GetTextLineHeight(),
+                all = h + (float(rows.size()) - 1.0f) * ImGui::GetTextLineHeightWithSpacing();
     if (!line.error.empty()) {
         draw->AddRectFilled(at, ImVec2(at.x + width, at.y + all), IM_COL32(150, 30, 30, 200));
     } else if (line.term != FormulaTerm::None) {
@@ -103,7 +108,8 @@ std::vector<std::string> shaderPaneChoices(const Scene& scene) {
     const std::vector<Pane> panes = shadedPanes(scene);
     std::vector<std::string> choices;
     if (panes.size() > 1)
-        for (std::size_t i = 0; i < panes.size(); ++i) choices.push_back(paneName(int(i)) + ": " + toString(panes[i].mode));
+        for (std::size_t i = 0; i < panes.size(); ++i)
+            choices.push_back(paneName(int(i)) + ": " + toString(panes[i].mode));
     return choices;
 }
 
@@ -143,9 +149,11 @@ void shaderListing(const Scene& scene, ViewSettings& settings, const PanelStatus
     const std::vector<GlslError> errors = glslErrors(status.shaderError);
     if (status.shaderError.empty()) settings.shaderErrorFile.clear();
     std::vector<std::string> files = shaderFilesOf(mode);
-    if (!settings.shaderErrorFile.empty() && std::find(files.begin(), files.end(), settings.shaderErrorFile) == files.end())
+    if (!settings.shaderErrorFile.empty() &&
+        std::find(files.begin(), files.end(), settings.shaderErrorFile) == files.end())
         files.push_back(settings.shaderErrorFile);
-    if (!status.shaderError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), "the last reload failed (F5 again after a fix):");
+    if (!status.shaderError.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), "the last reload failed (F5 again after a fix):");
     for (const GlslError& e : errors) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), "  %s", e.message.c_str());
     if (!ImGui::BeginTabBar("##glsl files")) return;
     // The error's tab is selected (ImGui shows it from the next frame) and its line scrolled to once
@@ -174,14 +182,16 @@ void shaderListing(const Scene& scene, ViewSettings& settings, const PanelStatus
                 if (scrollHere && line.number == scrollTo->second) ImGui::SetScrollHereY(0.3f);
                 drawLine(line, width, columns);
             }
-            if (scrollHere && (large || !settings.shaderOverView)) settings.shaderScrollTo.reset();  // the large one scrolls too
+            if (scrollHere && (large || !settings.shaderOverView))
+                settings.shaderScrollTo.reset();  // the large one scrolls too
             ImGui::EndChild();
             if (mono) ImGui::PopFont();
         }
         ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
-    if (scrollTo && std::find(files.begin(), files.end(), scrollTo->first) == files.end()) settings.shaderScrollTo.reset();
+    if (scrollTo && std::find(files.begin(), files.end(), scrollTo->first) == files.end())
+        settings.shaderScrollTo.reset();
 }
 
 }  // namespace

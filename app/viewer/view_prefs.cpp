@@ -1,8 +1,8 @@
 #include "viewer/view_prefs.hpp"
 
 #include "core/base/file_io.hpp"
-#include "core/ui/controls.hpp"
 #include "core/scene/panel_sections.hpp"
+#include "core/ui/controls.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -67,7 +67,9 @@ ViewPrefs loadViewPrefs(const std::string& path) {
 bool saveViewPrefs(const std::string& path, const ViewPrefs& p) {
     if (path.empty()) return false;
     nlohmann::json j;
-    if (p.window) j["window"] = {{"x", p.window->x}, {"y", p.window->y}, {"width", p.window->width}, {"height", p.window->height}};
+    if (p.window)
+        j["window"] = {
+            {"x", p.window->x}, {"y", p.window->y}, {"width", p.window->width}, {"height", p.window->height}};
     j["fullscreen"] = p.fullscreen;
     if (p.openSections) j["open_sections"] = *p.openSections;
     if (p.uiScale) j["ui_scale"] = *p.uiScale;

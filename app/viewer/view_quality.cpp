@@ -15,10 +15,10 @@ void ViewQuality::plan(const Frame& f) {
     const bool moving = softwareGl_ && !f.scripted && !f.capture && !f.last && (f.mouseDown || f.playing);
     if (moving && movingLastFrame_) {
         if (f.lastFrameMs > kMovingBudgetMs)
-            movingScale_ = std::max(kMinMovingScale,
-                                    movingScale_ * std::max(float(std::sqrt(kMovingBudgetMs / f.lastFrameMs)), 0.5f) * 0.95f);
-        else if (f.lastFrameMs < 0.5 * kMovingBudgetMs)
-            movingScale_ = std::min(1.0f, movingScale_ * 1.1f);
+            movingScale_ =
+                std::max(kMinMovingScale,
+                         movingScale_ * std::max(float(std::sqrt(kMovingBudgetMs / f.lastFrameMs)), 0.5f) * 0.95f);
+        else if (f.lastFrameMs < 0.5 * kMovingBudgetMs) movingScale_ = std::min(1.0f, movingScale_ * 1.1f);
     }
     movingLastFrame_ = moving;
     reducedThisFrame_ = moving && movingScale_ < 0.98f;

@@ -25,14 +25,15 @@ ViewRecorder::ViewRecorder(const std::string& path, int width, int height, int f
     : path_(path), width_(width), height_(height), fps_(fps) {
 #if SHADELAB_HAVE_VIDEO
     const std::filesystem::path target(path);
-    const std::string name = ".shadelab-recording-" + std::to_string(platform::processId()) + "-" +
-                             target.filename().string();
+    const std::string name =
+        ".shadelab-recording-" + std::to_string(platform::processId()) + "-" + target.filename().string();
     temporary_ = (target.parent_path() / name).string();
     VideoSettings settings;
     settings.fps = fps;
     encoder_.reset(new Encoder{VideoEncoder(temporary_, VideoFormat::Mp4, width, height, settings, path)});
 #else
-    throw InputError("recording needs video encoding: this shadelab was built without it (CMake option SHADELAB_VIDEO)");
+    throw InputError(
+        "recording needs video encoding: this shadelab was built without it (CMake option SHADELAB_VIDEO)");
 #endif
 }
 

@@ -15,7 +15,7 @@ struct ViewInputs {
     std::uint64_t renderer = 0;   // the renderer's generation: F5 built new programs
     std::uint64_t animation = 0;  // AnimationPlayback::step(): the frames a playing animation moved the scene
     std::uint64_t width = 0, height = 0;  // the render target's pixels (a resize, a reduced moving frame)
-    std::uint64_t moving = 0;     // 1: a moving frame (ViewQuality), drawn with fewer shadow samples
+    std::uint64_t moving = 0;             // 1: a moving frame (ViewQuality), drawn with fewer shadow samples
 
     auto tied() const { return std::tie(scene, geometry, renderer, animation, width, height, moving); }
 };

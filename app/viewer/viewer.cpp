@@ -1,13 +1,13 @@
 #include "viewer/viewer.hpp"
 
-#include "core/geometry/camera.hpp"
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
+#include "core/figures/plot.hpp"
+#include "core/figures/shader_listing.hpp"
+#include "core/geometry/camera.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/parameters.hpp"
 #include "core/scene/scene_json.hpp"
-#include "core/figures/plot.hpp"
-#include "core/figures/shader_listing.hpp"
 #include "core/ui/controls.hpp"
 #include "platform/platform.hpp"
 #include "viewer/formula_view.hpp"
@@ -18,8 +18,8 @@
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <glm/geometric.hpp>
 #include <imgui.h>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -227,7 +227,8 @@ bool Viewer::frame(bool last) {
     imgui_.setScale(window_.contentScale() * uiScale_);  // rebuilds the font only when it changed
     {
         const float panelText = std::round(kFontPixels * imgui_.scale()), windowText = windowTextSize();
-        imgui_.setViewTextSize(std::max(panelText, windowText), std::max(kFormulaSize * panelText, kFormulaOfViewText * windowText));
+        imgui_.setViewTextSize(std::max(panelText, windowText),
+                               std::max(kFormulaSize * panelText, kFormulaOfViewText * windowText));
     }
     imgui_.newFrame();
     const FrameLayout l = layout();
@@ -273,9 +274,9 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
     const Camera before = document_.scene().camera;
     PlacedGeometry placedBefore;
     placedBefore.remember(document_.scene(), document_.geometry());
-    const PanelRequests requests = settings_.showPanel ? drawPanel(document_.sceneForWidgets(), settings_, status_,
-                                                                   l.panel, probe_.result())
-                                                       : PanelRequests{};
+    const PanelRequests requests =
+        settings_.showPanel ? drawPanel(document_.sceneForWidgets(), settings_, status_, l.panel, probe_.result())
+                            : PanelRequests{};
     if (requests.sceneEdited) document_.markEdited();
     if (settings_.showPanel) status_.scrollToPreset = false, panelDrawn_ = true;  // the list has scrolled to it
     const Camera& after = document_.scene().camera;
@@ -292,7 +293,8 @@ float Viewer::followView(const FrameLayout& l) {
     drawPaneSeparators(document_.scene(), l.view, l.scale);
     ImGui::PushFont(imgui_.viewFont());
     const float labelSize = std::max(1.4f * ImGui::GetIO().Fonts->Fonts[0]->FontSize, 1.1f * l.windowText);
-    const float labelsBottom = settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale, labelSize) : l.view.y;
+    const float labelsBottom =
+        settings_.paneLabels ? drawPaneLabels(document_.scene(), l.view, l.scale, labelSize) : l.view.y;
     ImGui::PopFont();
     const auto panes = layoutPanes(document_.scene().layout, document_.scene().shading, document_.scene().width,
                                    document_.scene().height, document_.scene().diff);
@@ -308,16 +310,15 @@ float Viewer::followView(const FrameLayout& l) {
 std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
     ImGui::PushFont(imgui_.viewFont());
     const std::vector<UiRect> lightBoxes =
-        settings_.lightLabels ? drawLightLabels(shownScene(), l.view, l.scale,
-                                                settings_.selectedLight, labelsBottom,
+        settings_.lightLabels ? drawLightLabels(shownScene(), l.view, l.scale, settings_.selectedLight, labelsBottom,
                                                 modelSpheres_.of(document_.scene(), document_.geometry()))
                               : std::vector<UiRect>{};
     UiRect messageArea = l.view;
     if (l.formula.height > 0.0f) formulaBand(l, l.formula.width, true);
     if (l.captionText.height > 0.0f) {
-        const std::string counter = playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " +
-                                                             std::to_string(playlist_.size())
-                                                       : std::string();
+        const std::string counter =
+            playlist_.active() ? std::to_string(playlist_.current() + 1) + " / " + std::to_string(playlist_.size())
+                               : std::string();
         drawCaption(document_.scene(), counter, l.captionText, l.caption);
     }
     if (settings_.shaderOverView) {  // the message beside the shader view, not over its lines
@@ -331,15 +332,15 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
         const float size = l.viewText, r = 0.4f * size;
         const ImVec2 at(l.view.x + l.view.width - 3.5f * size, labelsBottom + 0.6f * size);
         ImDrawList* draw = ImGui::GetForegroundDrawList();
-        draw->AddRectFilled(ImVec2(at.x - 0.5f * size, at.y - 0.3f * size), ImVec2(at.x + 3.2f * size, at.y + 1.3f * size),
-                            IM_COL32(0, 0, 0, 170), 0.3f * size);
+        draw->AddRectFilled(ImVec2(at.x - 0.5f * size, at.y - 0.3f * size),
+                            ImVec2(at.x + 3.2f * size, at.y + 1.3f * size), IM_COL32(0, 0, 0, 170), 0.3f * size);
         draw->AddCircleFilled(ImVec2(at.x + r, at.y + 0.5f * size), r, IM_COL32(230, 30, 30, 255));
         draw->AddText(ImGui::GetFont(), size, ImVec2(at.x + 2.6f * r, at.y), IM_COL32(255, 255, 255, 255), "REC");
     }
     ImGui::PopFont();
     if (settings_.shaderOverView)
-        drawShaderOverView(shownScene(), settings_, status_, probe_.result(),
-                           l.view, imgui_.viewFont(), imgui_.viewMonoFont());
+        drawShaderOverView(shownScene(), settings_, status_, probe_.result(), l.view, imgui_.viewFont(),
+                           imgui_.viewMonoFont());
     if (showHelp_) drawHelpOverlay(l.view);
     return lightBoxes;
 }
@@ -356,8 +357,7 @@ std::string rampReadout(const Scene& scene, const std::vector<Animation>& animat
         const std::string name = std::string(p->symbol) + " = ";
         if (m && p->field.material) return name + formulaNumber(materialValue(*p, *m));
         if (p->field.scene) return name + formulaNumber(sceneValue(*p, scene));
-        if (p->field.light && !scene.lights.empty())
-            return name + formulaNumber(lightValue(*p, scene.lights[0]));
+        if (p->field.light && !scene.lights.empty()) return name + formulaNumber(lightValue(*p, scene.lights[0]));
     }
     return "";
 }
@@ -442,14 +442,16 @@ Viewer::FrameLayout Viewer::layout() const {
     window_.windowSize(windowWidth, windowHeight);
     l.scale = windowWidth > 0 ? float(l.framebufferWidth) / float(windowWidth) : 1.0f;
     const float ems = ImGui::GetFontSize();  // ImGui units; follows content and UI scale
-    const int panelPixels = settings_.showPanel ? std::min(int(std::lround(kPanelEms * ems * l.scale)), l.framebufferWidth / 2) : 0;
+    const int panelPixels =
+        settings_.showPanel ? std::min(int(std::lround(kPanelEms * ems * l.scale)), l.framebufferWidth / 2) : 0;
     l.viewWidth = l.framebufferWidth - panelPixels;
     const float viewUnits = float(l.viewWidth) / l.scale;
     // From the top: the status strip, the caption band (at most a sixth of the window: a fifth of the view), the view.
     const bool strip = settings_.showHud && (settings_.showPanel || settings_.readoutWhenHidden);
     const float stripUnits = strip ? std::round(kStripEms * ems) : 0.0f;
     const float captionMax = std::floor((float(windowHeight) - stripUnits) / 6.0f);
-    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "", viewUnits, captionMax, 0, l.windowText)
+    l.captionText = settings_.showCaption ? layoutCaption(document_.scene(), playlist_.active() ? "00 / 00" : "",
+                                                          viewUnits, captionMax, 0, l.windowText)
                                           : CaptionLayout{};
     // With a playlist every preset's caption has the same text size, the smallest any of them needs
     // to fit, and the band is as high as the longest caption of the playlist takes at that size: the
@@ -466,11 +468,17 @@ Viewer::FrameLayout Viewer::layout() const {
         }
         float height = 0.0f;
         for (std::size_t i = 0; i < playlist_.size(); ++i)
-            height = std::max(height, layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, step, l.windowText).height);
-        l.captionText = layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, step, l.windowText);
+            height = std::max(height,
+                              layoutCaption(sceneOf(i), "00 / 00", viewUnits, captionMax, step, l.windowText).height);
+        l.captionText =
+            layoutCaption(sceneOf(playlist_.current()), "00 / 00", viewUnits, captionMax, step, l.windowText);
         if (height > 0.0f) {
             if (l.captionText.height <= 0.0f) {  // an empty band with the position, as the others
-                static const Scene blank = [] { Scene s; s.title = " "; return s; }();
+                static const Scene blank = [] {
+                    Scene s;
+                    s.title = " ";
+                    return s;
+                }();
                 l.captionText = layoutCaption(blank, "00 / 00", viewUnits, captionMax, step, l.windowText);
             }
             l.captionText.height = height;
@@ -554,7 +562,8 @@ void Viewer::dragLight(const FrameLayout& l) {
     const float depth = glm::dot(handle - c.eye, forward);
     glm::vec3 moved = handle;
     if (io.KeyShift) {
-        moved += forward * (-io.MouseDelta.y * l.scale / float(std::max(pane.height, 1)) * 2.0f * std::max(depth, 1e-3f));
+        moved +=
+            forward * (-io.MouseDelta.y * l.scale / float(std::max(pane.height, 1)) * 2.0f * std::max(depth, 1e-3f));
     } else {
         const glm::vec2 pixel((io.MousePos.x - l.view.x) * l.scale, (io.MousePos.y - l.view.y) * l.scale);
         const glm::vec3 ray = pixelDirectionWorld(c, pane, pixel.x, pixel.y);
@@ -576,16 +585,26 @@ namespace {
 // The table's named keys (core/ui/controls.hpp) by GLFW's key codes.
 ViewerKey viewerKey(int glfwKey) {
     static constexpr std::pair<int, ViewerKey> kGlfwKeys[] = {
-        {GLFW_KEY_TAB, ViewerKey::Tab},           {GLFW_KEY_ESCAPE, ViewerKey::Escape},
-        {GLFW_KEY_BACKSPACE, ViewerKey::Backspace}, {GLFW_KEY_F1, ViewerKey::F1},
-        {GLFW_KEY_F5, ViewerKey::F5},             {GLFW_KEY_F11, ViewerKey::F11},
-        {GLFW_KEY_F12, ViewerKey::F12},           {GLFW_KEY_PAGE_DOWN, ViewerKey::PageDown},
-        {GLFW_KEY_PAGE_UP, ViewerKey::PageUp},    {GLFW_KEY_RIGHT, ViewerKey::Right},
-        {GLFW_KEY_LEFT, ViewerKey::Left},         {GLFW_KEY_HOME, ViewerKey::Home},
-        {GLFW_KEY_END, ViewerKey::End},           {GLFW_KEY_EQUAL, ViewerKey::Plus},
-        {GLFW_KEY_KP_ADD, ViewerKey::Plus},       {GLFW_KEY_MINUS, ViewerKey::Minus},
-        {GLFW_KEY_KP_SUBTRACT, ViewerKey::Minus}, {GLFW_KEY_0, ViewerKey::Zero},
-        {GLFW_KEY_KP_0, ViewerKey::Zero},         {GLFW_KEY_Q, ViewerKey::Q},
+        {GLFW_KEY_TAB, ViewerKey::Tab},
+        {GLFW_KEY_ESCAPE, ViewerKey::Escape},
+        {GLFW_KEY_BACKSPACE, ViewerKey::Backspace},
+        {GLFW_KEY_F1, ViewerKey::F1},
+        {GLFW_KEY_F5, ViewerKey::F5},
+        {GLFW_KEY_F11, ViewerKey::F11},
+        {GLFW_KEY_F12, ViewerKey::F12},
+        {GLFW_KEY_PAGE_DOWN, ViewerKey::PageDown},
+        {GLFW_KEY_PAGE_UP, ViewerKey::PageUp},
+        {GLFW_KEY_RIGHT, ViewerKey::Right},
+        {GLFW_KEY_LEFT, ViewerKey::Left},
+        {GLFW_KEY_HOME, ViewerKey::Home},
+        {GLFW_KEY_END, ViewerKey::End},
+        {GLFW_KEY_EQUAL, ViewerKey::Plus},
+        {GLFW_KEY_KP_ADD, ViewerKey::Plus},
+        {GLFW_KEY_MINUS, ViewerKey::Minus},
+        {GLFW_KEY_KP_SUBTRACT, ViewerKey::Minus},
+        {GLFW_KEY_0, ViewerKey::Zero},
+        {GLFW_KEY_KP_0, ViewerKey::Zero},
+        {GLFW_KEY_Q, ViewerKey::Q},
         {GLFW_KEY_R, ViewerKey::R},
     };
     for (const auto& [code, key] : kGlfwKeys)
@@ -597,7 +616,9 @@ ViewerKey viewerKey(int glfwKey) {
 // The keys of this frame, looked up in the key table (kControls, core/ui/controls.hpp).
 void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
     const ImGuiIO& io = ImGui::GetIO();
-    const auto binding = [](const KeyPress& k) { return keyBinding(viewerKey(k.key), (k.mods & GLFW_MOD_CONTROL) != 0); };
+    const auto binding = [](const KeyPress& k) {
+        return keyBinding(viewerKey(k.key), (k.mods & GLFW_MOD_CONTROL) != 0);
+    };
     // Page Down / Page Up (a presenter's remote) and Esc act over the panel too, unless text is typed;
     // a text field gives the keyboard back on Esc itself (ImGui), and nothing quits on Esc.
     for (const KeyPress& k : keys) {
@@ -622,7 +643,8 @@ void Viewer::runCommand(ViewerCommand command) {
     const auto toggle = [&](Layout layout) {
         const Layout now = document_.scene().layout;
         if (now != layout) layoutBeforeToggle_ = now;
-        scene().layout = now == layout ? (layoutBeforeToggle_ == layout ? Layout::Single : layoutBeforeToggle_) : layout;
+        scene().layout =
+            now == layout ? (layoutBeforeToggle_ == layout ? Layout::Single : layoutBeforeToggle_) : layout;
     };
     OverlayOptions& overlays = settings_.overlays;
     switch (command) {
@@ -641,8 +663,11 @@ void Viewer::runCommand(ViewerCommand command) {
     case ViewerCommand::ShaderSection: settings_.shaderOverView = !settings_.shaderOverView; break;
     case ViewerCommand::ResetCamera: document_.resetCamera(), cameraMoved(); break;
     case ViewerCommand::FrameModel: document_.frameModel(), cameraMoved(); break;
-    case ViewerCommand::NextPreset: case ViewerCommand::PreviousPreset: case ViewerCommand::FirstPreset:
-    case ViewerCommand::LastPreset: case ViewerCommand::ResetPreset: runPlaylistCommand(command); break;
+    case ViewerCommand::NextPreset:
+    case ViewerCommand::PreviousPreset:
+    case ViewerCommand::FirstPreset:
+    case ViewerCommand::LastPreset:
+    case ViewerCommand::ResetPreset: runPlaylistCommand(command); break;
     case ViewerCommand::UiLarger: setUiScale(uiScale_ * 1.25f); break;
     case ViewerCommand::UiSmaller: setUiScale(uiScale_ / 1.25f); break;
     case ViewerCommand::UiAsMonitor: setUiScale(1.0f); break;
@@ -676,10 +701,12 @@ void Viewer::runPlaylistCommand(ViewerCommand command) {
 void Viewer::advanceAnimation() {
     status_.animation.clear();
     if (!animation_.any()) return;
-    if (const auto error = animation_.advance(document_.scene(), std::chrono::steady_clock::now())) setStatus(*error, true);
+    if (const auto error = animation_.advance(document_.scene(), std::chrono::steady_clock::now()))
+        setStatus(*error, true);
     char text[96];
     const double t = animation_.shownSeconds(), loop = animation_.loopSeconds();
-    if (options_.frames > 0) std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);  // a scripted run: 1/30 s a frame
+    if (options_.frames > 0)
+        std::snprintf(text, sizeof text, "%.2f s of %.2f s", t, loop);  // a scripted run: 1/30 s a frame
     else std::snprintf(text, sizeof text, "%.2f s of %.2f s (at most %d frames/s)", t, loop, frameCapHz());
     status_.animation = text;
     status_.playing = animation_.playing();
@@ -796,14 +823,13 @@ void Viewer::openAsSlide(const ViewerStart& start, bool probeGiven, bool section
     }
     if ((start.panelSections || !start.plot.empty()) && !sectionsGiven) {
         settings_.startSections = start.panelSections.value_or(std::vector<std::string>{});
-        if (!start.plot.empty() && std::find(settings_.startSections->begin(), settings_.startSections->end(), "plots") ==
-                                       settings_.startSections->end())
+        if (!start.plot.empty() && std::find(settings_.startSections->begin(), settings_.startSections->end(),
+                                             "plots") == settings_.startSections->end())
             settings_.startSections->push_back("plots");
         settings_.scrollToPlot = start.plot;
         settings_.showPanel = true;  // the sections are the slide's figure
     }
 }
-
 
 // Mesh edits in the panel rebuild geometry here, once per change; every other frame only compares specs.
 void Viewer::uploadGeometryIfChanged() {
@@ -820,7 +846,8 @@ void Viewer::uploadGeometryIfChanged() {
     }
     status_.frameTriangles = geometry ? geometry->triangleCount() * scenePaneCount(document_.scene().layout) : 0;
     const auto selected = std::size_t(settings_.selectedObject);
-    status_.objectTriangles = geometry && selected < geometry->meshes.size() ? geometry->meshes[selected].triangleCount() : 0;
+    status_.objectTriangles =
+        geometry && selected < geometry->meshes.size() ? geometry->meshes[selected].triangleCount() : 0;
     status_.modelCameras.clear();
     for (std::size_t i = 0; geometry && i < geometry->gltfInfo.size(); ++i)
         if (!geometry->gltfInfo[i].cameras.empty()) {  // the first model's, as --camera N
@@ -834,7 +861,7 @@ void Viewer::uploadGeometryIfChanged() {
 // A capture or the last frame completes a progressive image first: a file never holds a partial one.
 Image Viewer::renderView(const FrameLayout& l, bool capture, bool last, const std::vector<OverlayArrow>& arrows) {
     if (l.viewWidth <= 0 || l.viewHeight <= 0) {  // minimised, or no room for the view
-        progressive_.abandon();                     // nothing to refine: the viewer may sleep
+        progressive_.abandon();                   // nothing to refine: the viewer may sleep
         return {};
     }
     const RenderTarget view{0, l.viewWidth, l.viewHeight};
@@ -902,7 +929,8 @@ void Viewer::renderScene(const RenderTarget& view, bool complete) {
         renderer_->render(scene, view);
         return;
     }
-    const ProgressiveSampling::Pass pass = progressive_.begin(viewRevision_.of(viewInputs(view)), samples, quality_.movingThisFrame());
+    const ProgressiveSampling::Pass pass =
+        progressive_.begin(viewRevision_.of(viewInputs(view)), samples, quality_.movingThisFrame());
     Renderer::ProgressiveStatus status = renderer_->renderProgressive(scene, view, pass.stride, pass.restart);
     const bool finishNow = complete && !status.complete();
     while (!status.complete() && finishNow) status = renderer_->renderProgressive(scene, view, pass.stride, false);
@@ -978,8 +1006,9 @@ void Viewer::reloadShaders() {
         overlays_ = std::move(overlays);
         ++rendererGeneration_;
         uploadedGeometry_ = document_.geometryRevision();
-        setStatus(options_.shaderDir.empty() ? "reloaded the built-in shaders (no shaders/ folder: start with --shader-dir DIR to edit them)"
-                                             : "reloaded shaders from " + options_.shaderDir,
+        setStatus(options_.shaderDir.empty()
+                      ? "reloaded the built-in shaders (no shaders/ folder: start with --shader-dir DIR to edit them)"
+                      : "reloaded shaders from " + options_.shaderDir,
                   false);
         status_.shaderError.clear();
     } catch (const std::exception& e) {
@@ -1004,7 +1033,8 @@ std::vector<OverlayArrow> Viewer::probeOverlays(const FrameLayout& l, const std:
     settings_.overlays.sampleMarkersLight = settings_.selectedLight;
     std::vector<OverlayArrow> arrows;
     if (!probe_.result()) return arrows;
-    const std::vector<ProbeArrow> labelled = probeArrows(scene, *probe_.result(), settings_.selectedLight, settings_.showIntersection);
+    const std::vector<ProbeArrow> labelled =
+        probeArrows(scene, *probe_.result(), settings_.selectedLight, settings_.showIntersection);
     ImGui::PushFont(imgui_.viewFont());
     drawProbeLabels(scene, labelled, l.view, l.scale, avoid);
     ImGui::PopFont();

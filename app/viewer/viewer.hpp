@@ -3,12 +3,12 @@
 // framebuffer, the teaching overlays, and a Dear ImGui panel that edits the scene live. One object owns
 // all of it; run() loops over frame(), which is the whole per-frame story:
 //   poll -> ImGui frame -> keys/mouse/drops -> panel -> apply requests -> renderer -> ImGui -> swap.
+#include "core/geometry/scene_geometry.hpp"
 #include "core/image/image.hpp"
 #include "core/scene/animation.hpp"
 #include "core/scene/playlist.hpp"
 #include "core/scene/scene.hpp"
 #include "core/ui/controls.hpp"
-#include "core/geometry/scene_geometry.hpp"
 #include "render/gl_handles.hpp"
 #include "render/multisample_target.hpp"
 #include "render/overlay_renderer.hpp"
@@ -44,18 +44,18 @@ namespace shadelab {
 
 // How the viewer is started; the last four make it scriptable (tests, README screenshot).
 struct ViewerOptions {
-    std::string shaderDir;            // --shader-dir: GLSL read from here when present ("reload shaders")
-    int frames = 0;                   // --frames N: quit after N frames; 0 runs until closed
+    std::string shaderDir;  // --shader-dir: GLSL read from here when present ("reload shaders")
+    int frames = 0;         // --frames N: quit after N frames; 0 runs until closed
     // Written on the last frame: the N-th with --frames, else the one in which the session ends.
-    std::string screenshotPath;       // --screenshot: the whole window, panel included
-    std::string viewScreenshotPath;   // --screenshot-view: the 3D view alone (what F12 saves)
-    std::string saveScenePath;        // --save-scene: the scene JSON (what "save scene" writes)
-    bool hidePanel = false;           // --hide-panel: start as if Tab had been pressed
-    OverlayOptions overlays;          // --overlays: which overlays start switched on
+    std::string screenshotPath;      // --screenshot: the whole window, panel included
+    std::string viewScreenshotPath;  // --screenshot-view: the 3D view alone (what F12 saves)
+    std::string saveScenePath;       // --save-scene: the scene JSON (what "save scene" writes)
+    bool hidePanel = false;          // --hide-panel: start as if Tab had been pressed
+    OverlayOptions overlays;         // --overlays: which overlays start switched on
     // --progressive S: with area lights, each frame evaluates every S-th sample per axis and the view
     // refines over S*S frames (Renderer::renderProgressive); 0 picks S from the measured frame time.
     int progressiveStride = 0;
-    PlotSettings plots;               // --incidence, --from-inside: the Plots section's starting controls
+    PlotSettings plots;  // --incidence, --from-inside: the Plots section's starting controls
     std::optional<std::vector<std::string>> panelSections;  // --panel-sections: exactly these open at start
     std::optional<glm::ivec2> probe;  // --probe X,Y: start with the pixel probe set at this 3D-view pixel
     int selectedLight = -1;           // --select-light N: start with light N selected in the panel
@@ -63,12 +63,12 @@ struct ViewerOptions {
     // is applied again when "reset preset" reloads one from its file (the command line's overrides).
     std::vector<Preset> playlist;
     SceneAdjust adjustPreset;
-    bool noLabels = false;            // --no-labels: pane and light labels start off
-    bool formula = false;             // --formula: start with the formula over the view (E)
-    bool intersection = false;        // --intersection: start with the intersection diagram at the probe (I)
-    bool resetLayout = false;         // --reset-layout: forget (and overwrite) the remembered layout
-    float uiScale = 0.0f;             // --ui-scale: on top of the monitor's content scale; 0: not given
-    bool fullscreen = false;          // --fullscreen (F11)
+    bool noLabels = false;      // --no-labels: pane and light labels start off
+    bool formula = false;       // --formula: start with the formula over the view (E)
+    bool intersection = false;  // --intersection: start with the intersection diagram at the probe (I)
+    bool resetLayout = false;   // --reset-layout: forget (and overwrite) the remembered layout
+    float uiScale = 0.0f;       // --ui-scale: on top of the monitor's content scale; 0: not given
+    bool fullscreen = false;    // --fullscreen (F11)
     // --msaa N: samples per pixel of the anti-aliased view; -1 (not given): 4 for a person, 1 for a
     // scripted run (--frames), whose 3D view then equals the headless image.
     int msaa = -1;
@@ -98,8 +98,8 @@ private:
     // ever covers what the camera frames.
     struct FrameLayout {
         int framebufferWidth = 0, framebufferHeight = 0;
-        int viewWidth = 0, viewHeight = 0;  // pixels; the 3D view is the bottom-left viewWidth x viewHeight
-        float scale = 1.0f;                 // framebuffer pixels per ImGui unit
+        int viewWidth = 0, viewHeight = 0;            // pixels; the 3D view is the bottom-left viewWidth x viewHeight
+        float scale = 1.0f;                           // framebuffer pixels per ImGui unit
         UiRect strip, caption, formula, view, panel;  // ImGui units; formula: E's band (0 high: none)
         CaptionLayout captionText;
         // The text over the view (ImGui units): the window-height size (0 with the presentation
@@ -158,7 +158,7 @@ private:
     std::string prefsPath_;
     ViewPrefs prefs_;
     void savePrefs();
-    GlfwWindow window_;   // before every GL user: the context outlives them
+    GlfwWindow window_;  // before every GL user: the context outlives them
     ImGuiLayer imgui_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<OverlayRenderer> overlays_;
@@ -170,20 +170,20 @@ private:
     ViewSettings settings_;
     PanelStatus status_;
     float uiScale_ = 1.0f;
-    bool showHelp_ = false;                     // F1 / ?: every key and mouse action over the view
-    bool panelDrawn_ = false;                   // the panel was shown at least once this session
+    bool showHelp_ = false;                               // F1 / ?: every key and mouse action over the view
+    bool panelDrawn_ = false;                             // the panel was shown at least once this session
     std::chrono::steady_clock::time_point messageUntil_;  // the status message shows over the view until then
-    bool messageShown_ = false;                 // ... and the last frame drew it
+    bool messageShown_ = false;                           // ... and the last frame drew it
     bool screenshotRequested_ = false;
     // The viewer's parts, each with its own state: when to draw (render on demand, the frame cap), how
     // (anti-aliased, reduced while moving), the progressive sum, --animate, the recording, the probe.
     FramePacing pacing_;
-    double frameMs_ = 0.0;                      // the last frame's own time (not the wait before it)
-    std::vector<double> frameTimes_;            // every frame's own time, for -v's median at the end
-    FrameRate frameRate_;                       // the status strip's mean of the last second's frames
+    double frameMs_ = 0.0;            // the last frame's own time (not the wait before it)
+    std::vector<double> frameTimes_;  // every frame's own time, for -v's median at the end
+    FrameRate frameRate_;             // the status strip's mean of the last second's frames
     ViewQuality quality_{1, false};
-    MultisampleTarget msaa_;                    // the anti-aliased frames' target
-    ReducedTarget reduced_;                     // the reduced moving frames' target
+    MultisampleTarget msaa_;  // the anti-aliased frames' target
+    ReducedTarget reduced_;   // the reduced moving frames' target
     // "The view changed" (view_revision.hpp): viewInputs() is the one list of what the image is drawn
     // from; a progressive sum restarts when its revision moves.
     ViewRevision viewRevision_;
@@ -191,7 +191,7 @@ private:
     ProgressiveSampling progressive_;
     AnimationPlayback animation_;
     void advanceAnimation();
-    const Scene& shownScene() const;            // the document's scene as --animate makes it this frame
+    const Scene& shownScene() const;  // the document's scene as --animate makes it this frame
     // The frame cap while an animation plays or a recording runs (FramePacing::capHz of the display's).
     int frameCapHz() const;
     void waitForRefresh();
@@ -206,7 +206,7 @@ private:
     std::optional<LightDrag> lightDrag_;
     void dragLight(const FrameLayout& layout);
     ProbeState probe_;
-    ModelSpheres modelSpheres_;                 // the light labels keep off them
+    ModelSpheres modelSpheres_;  // the light labels keep off them
 };
 
 }  // namespace shadelab

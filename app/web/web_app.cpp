@@ -7,9 +7,6 @@
 //
 // Every function returns at once; nothing blocks the browser. Strings go in as UTF-8 and come back
 // as JSON, valid until the next call.
-#include "options/option_table.hpp"
-#include "options/options.hpp"
-#include "options/shorthand.hpp"
 #include "core/base/error.hpp"
 #include "core/base/message.hpp"
 #include "core/figures/formula.hpp"
@@ -20,14 +17,17 @@
 #include "core/geometry/ray_cast.hpp"
 #include "core/geometry/scene_geometry.hpp"
 #include "core/probe/probe.hpp"
+#include "core/scene/panel_sections.hpp"
+#include "core/scene/parameters.hpp"
 #include "core/scene/playlist.hpp"
 #include "core/scene/scene_json.hpp"
 #include "core/scene/scene_limits.hpp"
 #include "core/scene/scene_names.hpp"
 #include "core/ui/controls.hpp"
-#include "core/scene/panel_sections.hpp"
-#include "core/scene/parameters.hpp"
 #include "core/ui/view_names.hpp"
+#include "options/option_table.hpp"
+#include "options/options.hpp"
+#include "options/shorthand.hpp"
 #include "render/multisample_target.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/overlay_renderer.hpp"
@@ -69,14 +69,14 @@ struct WebApp {
     MultisampleTarget msaa;
     std::unique_ptr<SceneDocument> document;
     Options options;
-    std::string input;                // options.input of the scene shown, to know when it changes
+    std::string input;  // options.input of the scene shown, to know when it changes
     std::uint64_t uploadedGeometry = ~std::uint64_t(0);
     int canvasWidth = 640, canvasHeight = 480;  // the canvas's pixels when --size does not pin them
-    bool pinned = false;              // --size: the canvas is the scene's size, the camera the scene's
+    bool pinned = false;                        // --size: the canvas is the scene's size, the camera the scene's
     std::optional<ProbeResult> probe;
-    std::string reply;                // the last JSON handed to the page
-    Image frame;                      // the last sl_read_pixels()
-    Image figure;                     // the last sl_plot()
+    std::string reply;                   // the last JSON handed to the page
+    Image frame;                         // the last sl_read_pixels()
+    Image figure;                        // the last sl_plot()
     gl::Framebuffer formulaFramebuffer;  // the formula overlay's pixels, blitted over the frame
     gl::Texture formulaTexture;
     // The frame is drawn into a framebuffer of its own (RGBA8, like the headless context's) and then
@@ -86,7 +86,7 @@ struct WebApp {
     // Sampled area lights refine over frames, as in the desktop viewer (Renderer::renderProgressive):
     // what the sum was started for, and whether it is complete.
     std::array<std::uint64_t, 5> progressiveFrom{};
-    std::uint64_t documents = 0;      // scenes loaded so far: a new one restarts the sum
+    std::uint64_t documents = 0;  // scenes loaded so far: a new one restarts the sum
     bool progressiveComplete = true;
     Renderer::ProgressiveStatus progress;
 };
@@ -150,7 +150,8 @@ json describeOptions() {
                    {"synopsis", optionSynopsis(*o)}};
         if (o->bounds.given) entry["range"] = {o->bounds.lo, o->bounds.hi};
         if (o->names) entry["names"] = o->names();
-        if (const std::optional<PanelSection> section = optionSection(*o)) entry["section"] = nameOf(kPanelSections, *section);
+        if (const std::optional<PanelSection> section = optionSection(*o))
+            entry["section"] = nameOf(kPanelSections, *section);
         if (const Parameter* p = parameterOfOption(o->name)) entry["parameter"] = describeParameter(*p);
         options.push_back(entry);
     }
@@ -181,7 +182,9 @@ json describePresets() {
     json presets = json::array();
     try {
         for (const Preset& p : loadPlaylist(kPresetFolder))
-            presets.push_back({{"path", p.path}, {"name", p.name}, {"title", lectureNotation(presetTitle(p))},
+            presets.push_back({{"path", p.path},
+                               {"name", p.name},
+                               {"title", lectureNotation(presetTitle(p))},
                                {"caption", lectureNotation(p.scene.caption)}});
     } catch (const std::exception& e) {
         std::fprintf(stderr, "shadelab: %s\n", oneLine(e.what()).c_str());
@@ -223,9 +226,14 @@ json describe() {
     json lightTypes = json::array(), attenuations = json::array();
     for (const auto& [name, type] : kLightTypeNames) lightTypes.push_back(name);
     for (const auto& [name, attenuation] : kAttenuationNames) attenuations.push_back(name);
-    return {{"options", describeOptions()}, {"parameters", describeParameters()}, {"controls", describeControls()},
+    return {{"options", describeOptions()},
+            {"parameters", describeParameters()},
+            {"controls", describeControls()},
             {"overlays", overlays},
-            {"presets", describePresets()}, {"sections", sections}, {"plots", plots}, {"meshes", describeMeshes()},
+            {"presets", describePresets()},
+            {"sections", sections},
+            {"plots", plots},
+            {"meshes", describeMeshes()},
             {"lights", {{"types", lightTypes}, {"attenuation", attenuations}, {"intensity", range(kIntensityRange)}}},
             {"version", SHADELAB_VERSION}};
 }
@@ -236,25 +244,36 @@ json describeScene() {
     const Scene& s = a.document->scene();
     json panes = json::array();
     for (const Pane& p : layoutPanes(s.layout, s.shading, s.width, s.height, s.diff))
-        panes.push_back({{"x", p.x}, {"y", p.y}, {"width", p.width}, {"height", p.height}, {"mode", toString(p.mode)},
+        panes.push_back({{"x", p.x},
+                         {"y", p.y},
+                         {"width", p.width},
+                         {"height", p.height},
+                         {"mode", toString(p.mode)},
                          {"difference", p.difference}});
     // What `shadelab` says on stderr as "warning: ..." (a model's texture that could not be read).
     json warnings = json::array();
     const SceneGeometry& geometry = *a.document->geometry();
     for (std::size_t i = 0; i < geometry.gltfInfo.size() && i < s.objects.size(); ++i)
-        for (const std::string& w : geometry.gltfInfo[i].warnings) warnings.push_back(oneLine(s.objects[i].mesh.path + ": " + w));
-    return {{"scene", json::parse(sceneToJson(s, "/"))}, {"title", lectureNotation(s.title)}, {"caption", lectureNotation(s.caption)},
-            {"width", s.width}, {"height", s.height}, {"pinned", a.pinned}, {"panes", panes}, {"warnings", warnings}};
+        for (const std::string& w : geometry.gltfInfo[i].warnings)
+            warnings.push_back(oneLine(s.objects[i].mesh.path + ": " + w));
+    return {{"scene", json::parse(sceneToJson(s, "/"))},
+            {"title", lectureNotation(s.title)},
+            {"caption", lectureNotation(s.caption)},
+            {"width", s.width},
+            {"height", s.height},
+            {"pinned", a.pinned},
+            {"panes", panes},
+            {"warnings", warnings}};
 }
 
 // Options the page cannot honour: anything that writes files or runs without the view.
 void refuseWhatThePageCannotDo(const Options& o) {
     if (o.mode == RunMode::Viewer) return;
-    const char* what = o.playlist ? "--playlist: the page's own playlist is the lecture's presets (preset=N)"
-                       : o.testDir ? "--test: screenshot tests run with the shadelab program, not in a browser"
+    const char* what = o.playlist          ? "--playlist: the page's own playlist is the lecture's presets (preset=N)"
+                       : o.testDir         ? "--test: screenshot tests run with the shadelab program, not in a browser"
                        : o.benchmarkFrames ? "--benchmark: not in a browser"
-                       : o.output ? "--output: a web page writes no files (use the screenshot button)"
-                                  : "this option is not in the web page";
+                       : o.output          ? "--output: a web page writes no files (use the screenshot button)"
+                                           : "this option is not in the web page";
     throw InputError(what);
 }
 
@@ -314,18 +333,18 @@ void drawFormula(const Scene& scene, const RenderTarget& target) {
     }
     glBindTexture(GL_TEXTURE_2D, a.formulaTexture.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 image.rgba.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, a.formulaFramebuffer.get());
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, a.formulaTexture.get(), 0);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer);
     // The image is top-down, GL's rows bottom-up: the blit flips it.
-    glBlitFramebuffer(0, 0, image.width, image.height, 0, image.height, image.width, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, image.width, image.height, 0, image.height, image.width, 0, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-RenderTarget viewTarget(int width, int height) {
-    return app().view.ensure(width, height, 0, "the page's view");
-}
+RenderTarget viewTarget(int width, int height) { return app().view.ensure(width, height, 0, "the page's view"); }
 
 // The scene into `target`: in one go, or with sampled area lights one pass of the progressive sum a
 // call (all of them when `complete`), so that a drag stays fluid and a still view converges to the
@@ -577,8 +596,8 @@ int main() {
     emscripten_webgl_init_context_attributes(&attributes);
     attributes.majorVersion = 2;
     attributes.minorVersion = 0;
-    attributes.alpha = false;       // the scene's background is opaque
-    attributes.antialias = false;   // --msaa's multisampled target does it, as on the desktop
+    attributes.alpha = false;      // the scene's background is opaque
+    attributes.antialias = false;  // --msaa's multisampled target does it, as on the desktop
     attributes.depth = true;
     attributes.premultipliedAlpha = false;
     attributes.preserveDrawingBuffer = true;  // the screenshot, the recorder and the tests read the canvas

@@ -48,7 +48,8 @@ bool hasExtension(const std::string& path, const std::string& ext) {
 
 bool hasModelExtension(const std::string& path) { return hasExtension(path, ".gltf") || hasExtension(path, ".glb"); }
 
-std::vector<fs::path> dataFoldersBesideProgram(const fs::path& program, const std::string& kind, const std::string& inCheckout) {
+std::vector<fs::path> dataFoldersBesideProgram(const fs::path& program, const std::string& kind,
+                                               const std::string& inCheckout) {
     if (program.empty()) return {};
     const fs::path bin = program.parent_path();
     return {bin / ".." / "share" / "shadelab" / kind, bin / ".." / inCheckout, bin / "share" / "shadelab" / kind};
@@ -69,7 +70,8 @@ void checkOutputFolder(const std::string& path, const std::string& option) {
     if (fs::is_directory(path, ec)) return;
     if (fs::exists(path, ec)) throw InputError(option + ": " + path + " is a file, not a folder");
     if (path.back() != '/' && path.back() != char(fs::path::preferred_separator))
-        throw InputError(option + ": " + path + ": names a folder here: an existing one, or end the name with / to have "
+        throw InputError(option + ": " + path +
+                         ": names a folder here: an existing one, or end the name with / to have "
                          "it created");
     const fs::path parent = fs::path(path).parent_path().parent_path();  // "a/b/" -> "a/b" -> "a"
     if (!parent.empty() && !fs::is_directory(parent, ec))

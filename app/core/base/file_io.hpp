@@ -25,8 +25,8 @@ bool hasExtension(const std::string& path, const std::string& ext);
 // need no build), and a build folder's own share/shadelab/KIND beside the program (the build stages
 // it, linked to the checkout), so a build folder anywhere finds what an install finds. None for an
 // empty `program` (its path unknown).
-std::vector<std::filesystem::path> dataFoldersBesideProgram(const std::filesystem::path& program, const std::string& kind,
-                                                            const std::string& inCheckout);
+std::vector<std::filesystem::path> dataFoldersBesideProgram(const std::filesystem::path& program,
+                                                            const std::string& kind, const std::string& inCheckout);
 
 // Checks, before any work is done, that `path` can become an output file: its folder exists and it is
 // not itself a folder. Throws InputError naming `option` and the path.

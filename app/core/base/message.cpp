@@ -76,7 +76,8 @@ std::string oneLine(std::string_view message, std::size_t limit) {
     std::size_t tailStart = line.size() - tail;
     while (tailStart < line.size() && (static_cast<unsigned char>(line[tailStart]) & 0xC0u) == 0x80u) ++tailStart;
     const std::string_view kept = cutAt(line, head);
-    return std::string(kept) + " [... " + std::to_string(tailStart - kept.size()) + " bytes ...] " + line.substr(tailStart);
+    return std::string(kept) + " [... " + std::to_string(tailStart - kept.size()) + " bytes ...] " +
+           line.substr(tailStart);
 }
 
 std::string joinedLines(std::string log) {

@@ -22,7 +22,8 @@ constexpr Rgba8 kMeridianColor{70, 140, 185, 255};
 // "Blinn-Phong k_e = 32", "anisotropic k_t = 8, k_b = 256": the lobe in use.
 std::string lobeName(const Material& m, const LightingEnvironment& env) {
     if (anisotropicLobe(m, env))
-        return "anisotropic Blinn-Phong k_t = " + shortNumber(m.anisotropy.x) + ", k_b = " + shortNumber(m.anisotropy.y);
+        return "anisotropic Blinn-Phong k_t = " + shortNumber(m.anisotropy.x) +
+               ", k_b = " + shortNumber(m.anisotropy.y);
     return std::string(env.model == ReflectionModel::Phong ? "Phong" : "Blinn-Phong") + " k_e = " + shortNumber(m.ke);
 }
 
@@ -38,9 +39,7 @@ glm::vec3 directionAt(float thetaDeg, float phiDeg) {
     return {std::sin(t) * std::cos(p), std::cos(t), -std::sin(t) * std::sin(p)};
 }
 
-TangentFrame plotTangentFrame() {
-    return TangentFrame{glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, -1.0f)};
-}
+TangentFrame plotTangentFrame() { return TangentFrame{glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, -1.0f)}; }
 
 // ---- The 3-D lobe
 
@@ -54,7 +53,8 @@ namespace {
 // Blinn-Phong's spans about twice that in V. The narrower exponent of an anisotropic lobe.
 float lobeHalfWidthDeg(const Material& m, const LightingEnvironment& env) {
     const float k = anisotropicLobe(m, env) ? std::min(m.anisotropy.x, m.anisotropy.y) : m.ke;
-    return std::min(60.0f, (env.model == ReflectionModel::Phong ? 1.0f : 2.0f) * glm::degrees(std::acos(std::pow(0.5f, 1.0f / std::max(k, 1e-3f)))));
+    return std::min(60.0f, (env.model == ReflectionModel::Phong ? 1.0f : 2.0f) *
+                               glm::degrees(std::acos(std::pow(0.5f, 1.0f / std::max(k, 1e-3f)))));
 }
 
 // The grid around R: d(alpha, beta) = cos alpha R + sin alpha (cos beta b1 + sin beta b2), b1 in the
@@ -178,7 +178,8 @@ LobeIncidence lobeIncidence(float incidenceDeg) {
     return li;
 }
 
-std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3& i, const glm::vec3& v, const TangentFrame* frame) {
+std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
+                                             const TangentFrame* frame) {
     if (glm::dot(n, i) <= 1e-4f) return std::nullopt;
     glm::vec3 t, b;
     if (frame) {
@@ -189,12 +190,15 @@ std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3
         if (glm::length(flat) > 1e-6f) {
             t = -glm::normalize(flat);
         } else {  // I along N: any T across N
-            t = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f)));
+            t = glm::normalize(
+                glm::cross(n, std::abs(n.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f)));
         }
         b = glm::cross(n, t);
     }
     // The plot's frame: T = +x, N = +y, B = -z.
-    auto local = [&](const glm::vec3& d) { return glm::normalize(glm::vec3(glm::dot(d, t), glm::dot(d, n), -glm::dot(d, b))); };
+    auto local = [&](const glm::vec3& d) {
+        return glm::normalize(glm::vec3(glm::dot(d, t), glm::dot(d, n), -glm::dot(d, b)));
+    };
     LobeIncidence li;
     li.toLight = local(i);
     li.toEye = local(v);
@@ -224,8 +228,8 @@ void setLobe3dHeader(Plot& p, const Material& m, const LightingEnvironment& env,
         const float phi = glm::degrees(std::atan2(-i.z, i.x));
         angles += ", phi_i = " + shortNumber(std::round((phi < 0.0f ? phi + 360.0f : phi) * 10.0f) / 10.0f) + " deg";
     }
-    p.title = "BRDF lobe f_r(omega_i -> omega_o)" + (incidence.where.empty() ? std::string() : " " + incidence.where) + ": " + angles +
-              ", " + lobeName(m, env);
+    p.title = "BRDF lobe f_r(omega_i -> omega_o)" + (incidence.where.empty() ? std::string() : " " + incidence.where) +
+              ": " + angles + ", " + lobeName(m, env);
     p.subtitle = "radius = f_r = k_d + k_s spec / (N.I) over the hemisphere of omega_o (k_d = " + shortNumber(m.kd) +
                  ", k_s = " + shortNumber(m.ks) + ")" + specularModifiers(env);
 }
@@ -238,12 +242,13 @@ void addSurfacePlane(Plot& p, float step, int circles, const LobeView& view) {
         std::vector<glm::vec3> circle;
         for (int d = 0; d <= 360; d += 4) circle.push_back(radius * directionAt(90.0f, float(d)));
         p.lines.push_back(line("grid", projected(circle, view), kPlotGrid));
-        p.labels.push_back(label(lobe3dProjection(radius * directionAt(90.0f, view.azimuthDeg - 30.0f), view), shortNumber(radius), {0.5f, 0.0f},
-                                 {0.0f, 0.2f}, kPlotAxis));
+        p.labels.push_back(label(lobe3dProjection(radius * directionAt(90.0f, view.azimuthDeg - 30.0f), view),
+                                 shortNumber(radius), {0.5f, 0.0f}, {0.0f, 0.2f}, kPlotAxis));
     }
     const float outer = step * float(circles);
     for (int d = 0; d < 360; d += 45) {
-        PlotPolyline spoke = line("grid", projected({glm::vec3(0.0f), outer * directionAt(90.0f, float(d))}, view), kPlotGrid);
+        PlotPolyline spoke =
+            line("grid", projected({glm::vec3(0.0f), outer * directionAt(90.0f, float(d))}, view), kPlotGrid);
         spoke.dashed = true;
         p.lines.push_back(std::move(spoke));
     }
@@ -256,9 +261,15 @@ void addLobeMesh(Plot& p, const LobeSurface& s, const LobeView& view) {
     for (const auto& ring : s.rings) p.lines.push_back(line("ring", projected(ring, view), kRingColor));
     if (!p.lines.empty()) {
         for (auto it = p.lines.begin(); it != p.lines.end(); ++it)
-            if (it->name == "meridian") { it->inLegend = true, it->name = "meridians through R"; break; }
+            if (it->name == "meridian") {
+                it->inLegend = true, it->name = "meridians through R";
+                break;
+            }
         for (auto it = p.lines.begin(); it != p.lines.end(); ++it)
-            if (it->name == "ring") { it->inLegend = true, it->name = "rings around R"; break; }
+            if (it->name == "ring") {
+                it->inLegend = true, it->name = "rings around R";
+                break;
+            }
     }
     PlotPolyline cut = line("in the plane of incidence", projected(s.planeOfIncidence, view), kYellow, 2.0f);
     cut.inLegend = true;
@@ -267,8 +278,8 @@ void addLobeMesh(Plot& p, const LobeSurface& s, const LobeView& view) {
 
 // N, omega_i (toward the light) and R from the point outward, as in the lobe plot; V when the eye is
 // known; T and B when the lobe is anisotropic.
-void addLobe3dArrows(Plot& p, const LobeSurface& s, const std::optional<glm::vec3>& toEye, bool anisotropic, float arrowLength,
-                     const LobeView& view) {
+void addLobe3dArrows(Plot& p, const LobeSurface& s, const std::optional<glm::vec3>& toEye, bool anisotropic,
+                     float arrowLength, const LobeView& view) {
     auto arrow = [&](const std::string& name, const glm::vec3& d, Rgba8 color, bool dashed, glm::vec2 align) {
         PlotPolyline a = line(name, projected({glm::vec3(0.0f), arrowLength * d}, view), color, 1.5f);
         a.arrow = true;
@@ -299,7 +310,8 @@ void fitToLines(Plot& p) {
 
 }  // namespace
 
-Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, const LobeIncidence& incidence, const LobeView& view) {
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, const LobeIncidence& incidence,
+                const LobeView& view) {
     const LobeSurface s = sampleLobeSurface(m, env, incidence.toLight);
     const float peak = s.peak > 1e-6f ? s.peak : 1.0f;
     const float step = niceStep(peak, 3);
@@ -339,18 +351,22 @@ BrdfSliceGrid sampleAzimuthSlice(const Material& m, const LightingEnvironment& e
     g.values.reserve(std::size_t(g.columns * g.rows));
     const glm::vec3 i = directionAt(thetaIDeg, phiIDeg);
     for (int row = 0; row < g.rows; ++row)
-        for (int c = 0; c < g.columns; ++c) g.values.push_back(fr(m, env, i, directionAt(0.5f + float(row), phiIDeg + 1.0f + 2.0f * float(c))));
+        for (int c = 0; c < g.columns; ++c)
+            g.values.push_back(fr(m, env, i, directionAt(0.5f + float(row), phiIDeg + 1.0f + 2.0f * float(c))));
     return g;
 }
 
 Rgba8 heatColor(float t) {
     // Viridis at nine stops (matplotlib's), linearly between them.
-    static const std::uint8_t kStops[9][3] = {{68, 1, 84},    {71, 44, 122},  {59, 81, 139},  {44, 113, 142}, {33, 145, 140},
-                                              {39, 173, 129}, {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
+    static const std::uint8_t kStops[9][3] = {{68, 1, 84},    {71, 44, 122},  {59, 81, 139},
+                                              {44, 113, 142}, {33, 145, 140}, {39, 173, 129},
+                                              {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
     const float x = std::clamp(t, 0.0f, 1.0f) * 8.0f;
     const int k = std::min(7, int(x));
     const float f = x - float(k);
-    auto mix = [&](int ch) { return std::uint8_t(std::lround(float(kStops[k][ch]) + (float(kStops[k + 1][ch]) - float(kStops[k][ch])) * f)); };
+    auto mix = [&](int ch) {
+        return std::uint8_t(std::lround(float(kStops[k][ch]) + (float(kStops[k + 1][ch]) - float(kStops[k][ch])) * f));
+    };
     return Rgba8{mix(0), mix(1), mix(2), 255};
 }
 
@@ -363,9 +379,7 @@ namespace {
 struct HeatScale {
     float lo = 0.1f, hi = 1.0f;
     bool clipped = false;
-    float t(float v) const {
-        return hi > lo ? std::log10(std::max(v, 1e-30f) / lo) / std::log10(hi / lo) : 1.0f;
-    }
+    float t(float v) const { return hi > lo ? std::log10(std::max(v, 1e-30f) / lo) / std::log10(hi / lo) : 1.0f; }
 };
 constexpr float kClipThetaIDeg = 80.0f;
 
@@ -412,9 +426,11 @@ void addHeatPanel(Plot& p, const BrdfSliceGrid& g, const HeatScale& scale, float
 void addIncidencePlaneAxes(Plot& p, float y0) {
     auto ax = [&](float thetaI) { return kAX0 + (kAX1 - kAX0) * thetaI / 90.0f; };
     auto ay = [&](float thetaO) { return y0 + (thetaO + 90.0f) / 180.0f; };
-    for (int d = 0; d <= 90; d += 30) p.labels.push_back(label({ax(float(d)), y0}, std::to_string(d), {0.5f, 0.0f}, {0.0f, 0.2f}, kPlotAxis));
+    for (int d = 0; d <= 90; d += 30)
+        p.labels.push_back(label({ax(float(d)), y0}, std::to_string(d), {0.5f, 0.0f}, {0.0f, 0.2f}, kPlotAxis));
     for (int d = -90; d <= 90; d += 45)
-        p.labels.push_back(label({kAX0, ay(float(d))}, std::to_string(std::abs(d)), {1.0f, 0.5f}, {-0.3f, 0.0f}, kPlotAxis));
+        p.labels.push_back(
+            label({kAX0, ay(float(d))}, std::to_string(std::abs(d)), {1.0f, 0.5f}, {-0.3f, 0.0f}, kPlotAxis));
     p.labels.push_back(label({0.5f * (kAX0 + kAX1), y0}, "theta_i (deg)", {0.5f, 0.0f}, {0.0f, 1.3f}));
     p.labels.push_back(label({kAX0, ay(90.0f)}, "delta_phi = 180", {0.0f, 0.0f}, {0.3f, 0.2f}));
     p.labels.push_back(label({kAX0, ay(-90.0f)}, "delta_phi = 0", {0.0f, 1.0f}, {0.3f, -0.2f}));
@@ -429,10 +445,13 @@ void addIncidencePlaneAxes(Plot& p, float y0) {
 void addAzimuthSliceAxes(Plot& p, float y0, float incidenceDeg) {
     auto bx = [&](float dphi) { return kBX0 + (kBX1 - kBX0) * dphi / 360.0f; };
     auto by = [&](float thetaO) { return y0 + thetaO / 90.0f; };
-    for (int d = 0; d <= 360; d += 90) p.labels.push_back(label({bx(float(d)), y0}, std::to_string(d), {0.5f, 0.0f}, {0.0f, 0.2f}, kPlotAxis));
-    for (int d = 0; d <= 90; d += 30) p.labels.push_back(label({kBX0, by(float(d))}, std::to_string(d), {1.0f, 0.5f}, {-0.3f, 0.0f}, kPlotAxis));
+    for (int d = 0; d <= 360; d += 90)
+        p.labels.push_back(label({bx(float(d)), y0}, std::to_string(d), {0.5f, 0.0f}, {0.0f, 0.2f}, kPlotAxis));
+    for (int d = 0; d <= 90; d += 30)
+        p.labels.push_back(label({kBX0, by(float(d))}, std::to_string(d), {1.0f, 0.5f}, {-0.3f, 0.0f}, kPlotAxis));
     p.labels.push_back(label({0.5f * (kBX0 + kBX1), y0}, "delta_phi (deg)", {0.5f, 0.0f}, {0.0f, 1.3f}));
-    PlotPolyline rMark = line("R", {{bx(180.0f), by(incidenceDeg) - 0.08f}, {bx(180.0f), by(incidenceDeg) - 0.03f}}, kPlotText, 1.5f);
+    PlotPolyline rMark =
+        line("R", {{bx(180.0f), by(incidenceDeg) - 0.08f}, {bx(180.0f), by(incidenceDeg) - 0.03f}}, kPlotText, 1.5f);
     p.lines.push_back(rMark);
     rMark.points = {{bx(180.0f), by(incidenceDeg) + 0.03f}, {bx(180.0f), by(incidenceDeg) + 0.08f}};
     p.lines.push_back(std::move(rMark));
@@ -464,7 +483,8 @@ void addColourBar(Plot& p, float x0, float x1, const HeatScale& scale, float top
 
 Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float incidenceDeg) {
     const bool anisotropic = anisotropicLobe(m, env);
-    const std::vector<float> phis = anisotropic ? std::vector<float>{90.0f, 0.0f} : std::vector<float>{0.0f};  // bottom row first
+    const std::vector<float> phis =
+        anisotropic ? std::vector<float>{90.0f, 0.0f} : std::vector<float>{0.0f};  // bottom row first
     std::vector<BrdfSliceGrid> planes, slices;
     for (float phi : phis) {
         planes.push_back(sampleIncidencePlane(m, env, phi));
@@ -478,16 +498,18 @@ Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float inci
     Plot p;
     p.kind = PlotKind::BrdfSlice;
     p.title = "BRDF f_r(delta_phi; theta_i -> theta_o): " + lobeName(m, env);
-    p.subtitle = "colour: log f_r, f_r = k_d + k_s spec / (N.I), k_d = " + shortNumber(m.kd) + ", k_s = " + shortNumber(m.ks) +
-                 specularModifiers(env) + "; delta_phi = phi_o - phi_i";
-    if (anisotropic) p.subtitle += "; rows: light along T (phi_i = 0) and along B (phi_i = 90 deg) differ: f_r needs phi_i too (4-D)";
+    p.subtitle = "colour: log f_r, f_r = k_d + k_s spec / (N.I), k_d = " + shortNumber(m.kd) +
+                 ", k_s = " + shortNumber(m.ks) + specularModifiers(env) + "; delta_phi = phi_o - phi_i";
+    if (anisotropic)
+        p.subtitle +=
+            "; rows: light along T (phi_i = 0) and along B (phi_i = 90 deg) differ: f_r needs phi_i too (4-D)";
     for (std::size_t r = 0; r < phis.size(); ++r) {
         const float y0 = kRowStep * float(r);
         addHeatPanel(p, planes[r], planeScale, kAX0, kAX1, y0);
         addHeatPanel(p, slices[r], sliceScale, kBX0, kBX1, y0);
         if (anisotropic)  // which row, in the azimuth slice's top right corner (dark: the lobe is at 180)
-            p.labels.push_back(label({kBX1, y0 + 1.0f}, r == 1 ? "phi_i = 0, along T" : "phi_i = 90 deg, along B", {1.0f, 0.0f},
-                                     {-0.3f, 0.2f}, kYellow));
+            p.labels.push_back(label({kBX1, y0 + 1.0f}, r == 1 ? "phi_i = 0, along T" : "phi_i = 90 deg, along B",
+                                     {1.0f, 0.0f}, {-0.3f, 0.2f}, kYellow));
         addIncidencePlaneAxes(p, y0);
         addAzimuthSliceAxes(p, y0, incidenceDeg);
     }

@@ -97,7 +97,7 @@ Rgba8 dimmed(Rgba8 c) { return Rgba8{c.r, c.g, c.b, kDimAlpha}; }
 std::string lobeFactors(const FormulaInput& in) {
     std::string s;
     if (in.env.normalization == SpecularNormalization::Energy)
-        s += anisotropicLobe(in.material, in.env) ? " · √((k_t + 1)(k_b + 1))/33"
+        s += anisotropicLobe(in.material, in.env)     ? " · √((k_t + 1)(k_b + 1))/33"
              : in.env.model == ReflectionModel::Phong ? " · (k_e + 2)/34"
                                                       : " · (k_e + 8)/40";
     if (in.env.fresnel != FresnelMode::None) s += " · F(V·H_l)";
@@ -115,8 +115,9 @@ std::string fresnelLine(const FormulaInput& in) {
 
 // Anisotropic reflection's exponent (Ashikhmin and Shirley's), with the material's k_t and k_b.
 std::string anisotropyLine(const FormulaInput& in) {
-    return "k(H_l) = (k_t (H_l·T)^2 + k_b (H_l·B)^2) / (1 − (H_l·N)^2),   k_t = " + formulaNumber(in.material.anisotropy.x) +
-           " along T,  k_b = " + formulaNumber(in.material.anisotropy.y) + " along B";
+    return "k(H_l) = (k_t (H_l·T)^2 + k_b (H_l·B)^2) / (1 − (H_l·N)^2),   k_t = " +
+           formulaNumber(in.material.anisotropy.x) + " along T,  k_b = " + formulaNumber(in.material.anisotropy.y) +
+           " along B";
 }
 
 // Mirror and glass after the sum (core/shading/environment.hpp), with the material's k_r and k_t. No
@@ -124,13 +125,13 @@ std::string anisotropyLine(const FormulaInput& in) {
 std::string mirrorGlassLine(const FormulaInput& in) {
     const bool f = in.env.fresnel != FresnelMode::None;
     return std::string("+ k_r") + (f ? " F" : "") + " env(R) + k_t" + (f ? " (1 − F)" : "") +
-           " env(T),   R = 2(N·V)N − V,   T by Snell's law (ior " + formulaNumber(in.env.ior) + "),   k_r = " +
-           formulaNumber(in.material.mirror) +
-           ",  k_t = " + formulaNumber(in.material.transmission);
+           " env(T),   R = 2(N·V)N − V,   T by Snell's law (ior " + formulaNumber(in.env.ior) +
+           "),   k_r = " + formulaNumber(in.material.mirror) + ",  k_t = " + formulaNumber(in.material.transmission);
 }
 
 // E's own line: what a glTF material's emission is made of.
-constexpr const char* kEmissiveLine = "E = emissiveFactor · emissiveTexture(uv) · emissiveStrength   (glTF: the light the surface gives off)";
+constexpr const char* kEmissiveLine =
+    "E = emissiveFactor · emissiveTexture(uv) · emissiveStrength   (glTF: the light the surface gives off)";
 
 // What the main line says after its bracket when `show` draws one light or the unlit colour.
 std::string showNote(const TermView& show) {
@@ -143,7 +144,11 @@ std::string showNote(const TermView& show) {
 class FormulaBuilder {
 public:
     FormulaBuilder(const FormulaInput& in, float size, const TextMetrics& metrics)
-        : in_(in), size_(size), metrics_(metrics), set_(layout_.runs, metrics), pad_(0.5f * size),
+        : in_(in),
+          size_(size),
+          metrics_(metrics),
+          set_(layout_.runs, metrics),
+          pad_(0.5f * size),
           valueSize_(in.valueSize) {
         layout_.corner = 0.3f * size;
     }
@@ -171,26 +176,27 @@ public:
         }
         if (mirrorOrGlass(in_.material, in_.env.environment)) {
             baseline = nextBaseline(baseline, valueSize_ * size_, kFresnelSize * size_) + 0.1f * size_;
-            const Span s = set_.set(mirrorGlassLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
-                                    FormulaTerm::Specular);
+            const Span s = set_.set(mirrorGlassLine(in_), pad_, baseline, kFresnelSize * size_,
+                                    color(FormulaTerm::Specular), FormulaTerm::Specular);
             box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
         if (anisotropicLobe(in_.material, in_.env)) {
             baseline = nextBaseline(baseline, valueSize_ * size_, kFresnelSize * size_) + 0.1f * size_;
-            const Span s = set_.set(anisotropyLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
-                                    FormulaTerm::Specular);
+            const Span s = set_.set(anisotropyLine(in_), pad_, baseline, kFresnelSize * size_,
+                                    color(FormulaTerm::Specular), FormulaTerm::Specular);
             box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
         if (in_.env.fresnel != FresnelMode::None) {
             baseline = nextBaseline(baseline, valueSize_ * size_, kFresnelSize * size_) + 0.1f * size_;
-            const Span s = set_.set(fresnelLine(in_), pad_, baseline, kFresnelSize * size_, color(FormulaTerm::Specular),
-                                    FormulaTerm::Specular);
+            const Span s = set_.set(fresnelLine(in_), pad_, baseline, kFresnelSize * size_,
+                                    color(FormulaTerm::Specular), FormulaTerm::Specular);
             box(FormulaTerm::Specular, s, baseline, kFresnelSize * size_);
             bottom = baseline + (1.0f - metrics_.ascent) * kFresnelSize * size_;
         }
-        for (const FormulaRun& r : layout_.runs) layout_.width = std::max(layout_.width, r.x + metrics_.width(r.text, r.size));
+        for (const FormulaRun& r : layout_.runs)
+            layout_.width = std::max(layout_.width, r.x + metrics_.width(r.text, r.size));
         layout_.width += pad_;
         layout_.height = bottom + pad_;
         return layout_;
@@ -206,7 +212,8 @@ private:
         return termDimmed(in_.env.show, term) ? dimmed(c) : c;
     }
 
-    Span piece(const std::string& markup, FormulaTerm term, float baseline, FormulaRun::Kind kind = FormulaRun::Kind::Symbol) {
+    Span piece(const std::string& markup, FormulaTerm term, float baseline,
+               FormulaRun::Kind kind = FormulaRun::Kind::Symbol) {
         const Span s = set_.set(markup, x_, baseline, size_, color(term), term, kind);
         x_ = s.x1;
         if (term != FormulaTerm::None) termSpan(term, s);
@@ -220,8 +227,8 @@ private:
 
     void box(FormulaTerm term, const Span& s, float baseline, float size) {
         const float margin = 0.12f * size;
-        layout_.boxes.push_back(FormulaBox{term, s.x0 - margin, baseline - metrics_.ascent * size - margin, s.x1 + margin,
-                                           baseline + (1.0f - metrics_.ascent) * size + margin,
+        layout_.boxes.push_back(FormulaBox{term, s.x0 - margin, baseline - metrics_.ascent * size - margin,
+                                           s.x1 + margin, baseline + (1.0f - metrics_.ascent) * size + margin,
                                            termIsolated(in_.env.show, term)});
     }
 
@@ -242,7 +249,8 @@ private:
         piece("·S·spec_l", FormulaTerm::Specular, baseline);
         piece(")", FormulaTerm::None, baseline);
         const std::string note = showNote(in_.env.show);
-        if (!note.empty()) set_.set(note, x_, baseline, valueSize_ * size_, kNoteColor, FormulaTerm::None, FormulaRun::Kind::Note);
+        if (!note.empty())
+            set_.set(note, x_, baseline, valueSize_ * size_, kNoteColor, FormulaTerm::None, FormulaRun::Kind::Note);
         for (FormulaTerm t : {FormulaTerm::Ambient, FormulaTerm::Diffuse, FormulaTerm::Specular})
             box(t, spans_[int(t)], baseline, size_);
         if (in_.emissive) box(FormulaTerm::Emissive, spans_[int(FormulaTerm::Emissive)], baseline, size_);
@@ -270,23 +278,28 @@ private:
         const ShadingTerms& t = *in_.probed;
         float rowEnd = 0.0f;
         const float size = valueSize_ * size_;
-        set_.set("= " + formulaRgb(t.total), lSpan_.x0, baseline, size, kSymbolColor, FormulaTerm::None, FormulaRun::Kind::Value);
+        set_.set("= " + formulaRgb(t.total), lSpan_.x0, baseline, size, kSymbolColor, FormulaTerm::None,
+                 FormulaRun::Kind::Value);
         rowEnd = lSpan_.x0 + metrics_.width("= " + formulaRgb(t.total), size) + 0.6f * size;
-        if (in_.emissive) valueUnder(spans_[int(FormulaTerm::Emissive)], formulaRgb(t.emissive), FormulaTerm::Emissive, baseline, rowEnd);
+        if (in_.emissive)
+            valueUnder(spans_[int(FormulaTerm::Emissive)], formulaRgb(t.emissive), FormulaTerm::Emissive, baseline,
+                       rowEnd);
         valueUnder(spans_[int(FormulaTerm::Ambient)], formulaRgb(t.ambient), FormulaTerm::Ambient, baseline, rowEnd);
         valueUnder(spans_[int(FormulaTerm::Diffuse)], formulaRgb(t.diffuse), FormulaTerm::Diffuse, baseline, rowEnd);
         valueUnder(spans_[int(FormulaTerm::Specular)], formulaRgb(t.specular), FormulaTerm::Specular, baseline, rowEnd);
         if (!in_.probedAt.empty())
-            set_.set(in_.probedAt, rowEnd + 0.6f * size, baseline, size, kNoteColor, FormulaTerm::None, FormulaRun::Kind::Note);
+            set_.set(in_.probedAt, rowEnd + 0.6f * size, baseline, size, kNoteColor, FormulaTerm::None,
+                     FormulaRun::Kind::Note);
     }
 
     void specLine(float baseline) {
         x_ = pad_;
         const float start = x_;
         piece("spec_l = ", FormulaTerm::Specular, baseline);
-        piece(in_.env.model == ReflectionModel::Phong ? "max(0, R(I_l)·V)" : "max(0, H_l·N)", FormulaTerm::Specular, baseline);
-        keSpan_ = piece(anisotropicLobe(in_.material, in_.env) ? "^{k(H_l)}" : "^{k_e}", FormulaTerm::Specular, baseline,
-                        FormulaRun::Kind::Coefficient);
+        piece(in_.env.model == ReflectionModel::Phong ? "max(0, R(I_l)·V)" : "max(0, H_l·N)", FormulaTerm::Specular,
+              baseline);
+        keSpan_ = piece(anisotropicLobe(in_.material, in_.env) ? "^{k(H_l)}" : "^{k_e}", FormulaTerm::Specular,
+                        baseline, FormulaRun::Kind::Coefficient);
         piece(lobeFactors(in_), FormulaTerm::Specular, baseline);
         box(FormulaTerm::Specular, Span{start, x_}, baseline, size_);
     }
@@ -401,10 +414,8 @@ std::string formulaNumber(float value) {
     char text[32];
     if (std::fabs(value) >= 1.0f && std::fabs(value - std::round(value)) < 1e-4f)
         std::snprintf(text, sizeof text, "%.0f", double(value));
-    else if (std::fabs(value) < 0.1f && value != 0.0f)
-        std::snprintf(text, sizeof text, "%.3f", double(value));
-    else
-        std::snprintf(text, sizeof text, "%.2f", double(value));
+    else if (std::fabs(value) < 0.1f && value != 0.0f) std::snprintf(text, sizeof text, "%.3f", double(value));
+    else std::snprintf(text, sizeof text, "%.2f", double(value));
     return text;
 }
 

@@ -35,9 +35,9 @@ bool termDimmed(const TermView& show, FormulaTerm term);
 
 // One piece of text in one size and colour. Positions are pixels from the layout's top-left corner.
 struct FormulaRun {
-    std::string text;          // UTF-8
+    std::string text;  // UTF-8
     float x = 0, baseline = 0;
-    float size = 0;            // line height (ascent - descent of the font), as ImGui sizes its fonts
+    float size = 0;  // line height (ascent - descent of the font), as ImGui sizes its fonts
     Rgba8 color;
     FormulaTerm term = FormulaTerm::None;
     enum class Kind { Symbol, Coefficient, Value, Note } kind = Kind::Symbol;  // value: a k or a probed term
@@ -64,7 +64,7 @@ inline constexpr float kFormulaValueSize = 0.62f;
 struct FormulaInput {
     LightingEnvironment env;  // its model, normalization, fresnel, ior and show
     Material material;
-    bool emissive = false;    // the scene draws a glTF material that gives off light: L = E + ...
+    bool emissive = false;  // the scene draws a glTF material that gives off light: L = E + ...
     std::optional<ShadingTerms> probed;
     std::string probedAt;  // where: "at pixel 1050,330", at the end of the probed values' row
     // The k values, probed terms and notes under the symbols, relative to the main line: the PNG's
@@ -102,14 +102,14 @@ struct FormulaNote {
 };
 struct FormulaOverlay {
     FormulaLayout formula;
-    float x = 0, y = 0;            // the formula's top-left
+    float x = 0, y = 0;  // the formula's top-left
     std::vector<FormulaNote> notes;
 };
 // `fontSize`: the UI's text size (16 px x content scale x UI scale in the viewer); the formula's main
 // line is 1.5 times that, smaller where the view is too narrow for it.
 FormulaOverlay layoutFormulaOverlay(const FormulaInput& in, float viewWidth, float viewHeight,
                                     const std::vector<FormulaPane>& panes, float fontSize, const TextMetrics& metrics);
-inline constexpr float kFormulaSize = 1.5f;   // the main line, in the UI's text sizes
+inline constexpr float kFormulaSize = 1.5f;                // the main line, in the UI's text sizes
 inline constexpr std::uint8_t kFormulaBackingAlpha = 170;  // the translucent black under the formula and notes
 inline constexpr std::uint8_t kIsolatedBoxAlpha = 70;      // the isolated term's tint
 

@@ -47,7 +47,8 @@ FormulaOverlay imageFormulaOverlay(const Image& image, const FormulaInput& in, c
 
 void drawFormulaOverlay(Image& image, const FormulaInput& in, const std::vector<FormulaPane>& panes) {
     const TrueTypeFont* font = TrueTypeFont::dejaVuSans();
-    if (!font) throw InputError("--formula: needs the DejaVu Sans font (Debian: fonts-dejavu-core), which was not found");
+    if (!font)
+        throw InputError("--formula: needs the DejaVu Sans font (Debian: fonts-dejavu-core), which was not found");
     const FormulaOverlay o = imageFormulaOverlay(image, in, panes, *font);
     const float linePerEm = font->height(1.0f);
     const auto text = [&](float x, float top, const std::string& s, float size, Rgba8 color) {

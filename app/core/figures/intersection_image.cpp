@@ -21,7 +21,7 @@ namespace {
 
 // The arrows' colours: those of the viewer's probe arrows (viewer/probe_arrows.cpp) where they mean
 // the same vector; T its own.
-constexpr Rgba8 kIncoming{90, 215, 255, 255};   // I: the ray from the eye (V reversed)
+constexpr Rgba8 kIncoming{90, 215, 255, 255};  // I: the ray from the eye (V reversed)
 constexpr Rgba8 kNormal{255, 255, 255, 255};
 constexpr Rgba8 kReflected{255, 115, 90, 255};
 constexpr Rgba8 kRefracted{120, 255, 140, 255};
@@ -66,7 +66,8 @@ void fillBox(Image& image, float x0, float y0, float x1, float y1, Rgba8 color) 
     for (int y = std::max(int(y0), 0); y < std::min(int(y1), image.height); ++y)
         for (int x = std::max(int(x0), 0); x < std::min(int(x1), image.width); ++x) {
             std::uint8_t* q = image.pixel(x, y);
-            for (int c = 0; c < 3; ++c) q[c] = std::uint8_t(std::lround(float(q[c]) * (1.0f - a) + float((&color.r)[c]) * a));
+            for (int c = 0; c < 3; ++c)
+                q[c] = std::uint8_t(std::lround(float(q[c]) * (1.0f - a) + float((&color.r)[c]) * a));
         }
 }
 
@@ -84,7 +85,11 @@ struct Pen {
     float scale, width, size, em;  // em: the font's scale for text `size` pixels tall
 
     Pen(Image& im, const TrueTypeFont& f)
-        : image(im), font(f), scale(std::clamp(float(im.height) / 720.0f, 0.6f, 4.0f)), width(2.5f * scale), size(17.0f * scale),
+        : image(im),
+          font(f),
+          scale(std::clamp(float(im.height) / 720.0f, 0.6f, 4.0f)),
+          width(2.5f * scale),
+          size(17.0f * scale),
           em(size / f.height(1.0f)) {}
     void text(float x, float y, const std::string& s, Rgba8 color) const { font.draw(image, x, y, s, em, color); }
     float textWidth(const std::string& s) const { return font.width(s, em); }
@@ -125,7 +130,8 @@ glm::vec2 drawOnModel(const Pen& pen, const Scene& scene, const IntersectionPoin
 // The numbers under the schematic: the angles, Snell's law, and the Fresnel split.
 std::vector<std::string> numberLines(const IntersectionNumbers& num) {
     return {"θ_i = " + fixed("%.1f°", num.thetaIDeg) +
-                (num.totalInternal ? "   θ_t: none (total internal reflection)" : "   θ_t = " + fixed("%.1f°", num.thetaTDeg)),
+                (num.totalInternal ? "   θ_t: none (total internal reflection)"
+                                   : "   θ_t = " + fixed("%.1f°", num.thetaTDeg)),
             "η_i sin θ_i = " + fixed("%.3f", num.etaI * std::sin(num.thetaIDeg * 3.14159265f / 180.0f)) +
                 (num.totalInternal ? "  > η_t" : " = η_t sin θ_t"),
             "R_∥ = " + fixed("%.3f", num.rParallel) + "   R_⊥ = " + fixed("%.3f", num.rPerpendicular),
@@ -141,7 +147,8 @@ struct Box {
 
 // On the side the reflected arrow does not point to (it stays visible), else where there is room;
 // inside the pane.
-Box placeBox(const Pen& pen, const IntersectionPoint& at, glm::vec2 p, glm::vec2 rTip, const std::vector<std::string>& lines) {
+Box placeBox(const Pen& pen, const IntersectionPoint& at, glm::vec2 p, glm::vec2 rTip,
+             const std::vector<std::string>& lines) {
     const float size = pen.size;
     float textWidth = 0.0f;
     for (const std::string& l : lines) textWidth = std::max(textWidth, pen.textWidth(l));
@@ -152,7 +159,8 @@ Box placeBox(const Pen& pen, const IntersectionPoint& at, glm::vec2 p, glm::vec2
     b.height = b.pad + b.sketch + b.pad + b.lineHeight * float(lines.size()) + b.pad;
     const float right = at.paneX + at.paneWidth, bottom = at.paneY + at.paneHeight;
     const bool left = rTip.x > p.x ? p.x - 3.0f * size - b.width >= at.paneX : p.x + 3.0f * size + b.width > right;
-    b.x = std::clamp(left ? p.x - 3.0f * size - b.width : p.x + 3.0f * size, at.paneX, std::max(at.paneX, right - b.width));
+    b.x = std::clamp(left ? p.x - 3.0f * size - b.width : p.x + 3.0f * size, at.paneX,
+                     std::max(at.paneX, right - b.width));
     b.y = std::clamp(p.y - 0.5f * b.height, at.paneY, std::max(at.paneY, bottom - b.height));
     return b;
 }
@@ -165,10 +173,12 @@ void drawSchematic(const Pen& pen, const Box& box, const IntersectionNumbers& nu
     const glm::vec2 o(x + 0.5f * box.width, y + pad + 0.5f * sketch);
     const float arm = 0.42f * sketch;
     fillBox(pen.image, x + pad, o.y, x + box.width - pad, y + pad + sketch, Rgba8{90, 140, 200, 70});
-    drawSegment(pen.image, glm::vec2(x + pad, o.y), glm::vec2(x + box.width - pad, o.y), 0.6f * width, Rgba8{200, 200, 200, 255});
+    drawSegment(pen.image, glm::vec2(x + pad, o.y), glm::vec2(x + box.width - pad, o.y), 0.6f * width,
+                Rgba8{200, 200, 200, 255});
     pen.text(x + pad + 0.3f * size, y + pad, "η_i = " + fixed("%.2f", num.etaI), kText);
     pen.text(x + pad + 0.3f * size, y + pad + sketch - size, "η_t = " + fixed("%.2f", num.etaT), kText);
-    drawSegment(pen.image, o - glm::vec2(0, arm), o + glm::vec2(0, arm), 0.4f * width, Rgba8{255, 255, 255, 120});  // the normal's line
+    drawSegment(pen.image, o - glm::vec2(0, arm), o + glm::vec2(0, arm), 0.4f * width,
+                Rgba8{255, 255, 255, 120});  // the normal's line
     drawArrow(pen.image, o, o - glm::vec2(0, arm), 0.8f * width, kNormal);
     pen.text(o.x + 0.3f * size, o.y - arm - 0.5f * size, "N", kNormal);
     const float ti = num.thetaIDeg * 3.14159265f / 180.0f, tt = num.thetaTDeg * 3.14159265f / 180.0f;
@@ -183,7 +193,8 @@ void drawSchematic(const Pen& pen, const Box& box, const IntersectionNumbers& nu
         drawArrow(pen.image, o, tTo, width, kRefracted);
         pen.text(tTo.x + 0.4f * size, tTo.y - 0.8f * size, "T  " + fixed("%.3f", 1.0 - double(num.r)), kRefracted);
         const glm::vec2 at2 = o + 0.6f * arm * glm::vec2(std::sin(0.5f * tt), std::cos(0.5f * tt));
-        pen.text(std::max(at2.x, o.x + 0.1f * size) - 0.5f * pen.textWidth("θ_t") + 0.4f * size, at2.y - 0.2f * size, "θ_t", kRefracted);
+        pen.text(std::max(at2.x, o.x + 0.1f * size) - 0.5f * pen.textWidth("θ_t") + 0.4f * size, at2.y - 0.2f * size,
+                 "θ_t", kRefracted);
     }
     const glm::vec2 at1 = o + 0.6f * arm * glm::vec2(-std::sin(0.5f * ti), -std::cos(0.5f * ti));
     pen.text(std::min(at1.x, o.x - 0.1f * size) - 0.5f * pen.textWidth("θ_i"), at1.y - 0.8f * size, "θ_i", kIncoming);
@@ -206,10 +217,10 @@ IntersectionNumbers intersectionNumbers(const Scene& scene, const IntersectionPo
     return n;
 }
 
-
 void drawIntersectionDiagram(Image& image, const Scene& scene, const IntersectionPoint& at) {
     const TrueTypeFont* font = TrueTypeFont::dejaVuSans();
-    if (!font) throw InputError("--intersection: needs the DejaVu Sans font (Debian: fonts-dejavu-core), which was not found");
+    if (!font)
+        throw InputError("--intersection: needs the DejaVu Sans font (Debian: fonts-dejavu-core), which was not found");
     const Pen pen(image, *font);
     const glm::vec2 p = panePixelOf(at, at.posWorld), rTip = drawOnModel(pen, scene, at);
     // The slide's picture in the plane of incidence, with the numbers under it, in a box beside the point.
@@ -217,7 +228,8 @@ void drawIntersectionDiagram(Image& image, const Scene& scene, const Intersectio
     const std::vector<std::string> lines = numberLines(num);
     const Box box = placeBox(pen, at, p, rTip, lines);
     fillBox(image, box.x, box.y, box.x + box.width, box.y + box.height, Rgba8{0, 0, 0, 190});
-    drawSegment(image, p, glm::vec2(box.x < p.x ? box.x + box.width : box.x, std::clamp(p.y, box.y, box.y + box.height)),
+    drawSegment(image, p,
+                glm::vec2(box.x < p.x ? box.x + box.width : box.x, std::clamp(p.y, box.y, box.y + box.height)),
                 1.0f * pen.scale, Rgba8{255, 255, 255, 110});  // a leader from the box to the point
     drawSchematic(pen, box, num);
     for (std::size_t k = 0; k < lines.size(); ++k)

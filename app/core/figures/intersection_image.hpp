@@ -25,7 +25,7 @@ struct IntersectionPoint {
 // The diagram's numbers (the slide's): the angles in degrees, the indices and the Fresnel terms.
 struct IntersectionNumbers {
     float thetaIDeg = 0.0f;
-    float thetaTDeg = 0.0f;       // 0 past the critical angle
+    float thetaTDeg = 0.0f;  // 0 past the critical angle
     bool totalInternal = false;
     float etaI = 1.0f, etaT = 1.5f;
     float rParallel = 0.0f, rPerpendicular = 0.0f, r = 0.0f;  // R_par, R_perp, their mean

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 
 namespace shadelab {
 namespace {
@@ -179,19 +179,23 @@ Plot fresnelPlot(float eta1, float eta2) {
     const std::optional<float> critical = criticalAngleDeg(eta1, eta2);
     Plot p;
     p.kind = PlotKind::Fresnel;
-    p.title = "Fresnel reflectance: eta_1 = " + format("%.2f", double(eta1)) + " -> eta_2 = " + format("%.2f", double(eta2));
+    p.title =
+        "Fresnel reflectance: eta_1 = " + format("%.2f", double(eta1)) + " -> eta_2 = " + format("%.2f", double(eta2));
     p.subtitle = "R_0 = " + format("%.3f", double(fresnelR0(eta1, eta2)));
     if (critical) p.subtitle += ", total internal reflection beyond " + format("%.1f", double(*critical)) + " deg";
     p.min = {0.0f, 0.0f};
     p.max = {90.0f, 1.0f};
 
     for (int d = 15; d < 90; d += 15) p.lines.push_back(line("grid", {{float(d), 0.0f}, {float(d), 1.0f}}, kPlotGrid));
-    for (int k = 1; k < 5; ++k) p.lines.push_back(line("grid", {{0.0f, 0.2f * float(k)}, {90.0f, 0.2f * float(k)}}, kPlotGrid));
-    p.lines.push_back(line("frame", {{0.0f, 0.0f}, {90.0f, 0.0f}, {90.0f, 1.0f}, {0.0f, 1.0f}, {0.0f, 0.0f}}, kPlotAxis));
+    for (int k = 1; k < 5; ++k)
+        p.lines.push_back(line("grid", {{0.0f, 0.2f * float(k)}, {90.0f, 0.2f * float(k)}}, kPlotGrid));
+    p.lines.push_back(
+        line("frame", {{0.0f, 0.0f}, {90.0f, 0.0f}, {90.0f, 1.0f}, {0.0f, 1.0f}, {0.0f, 0.0f}}, kPlotAxis));
     for (int d = 0; d <= 90; d += 15)
         p.labels.push_back(label({float(d), 0.0f}, std::to_string(d), {0.5f, 0.0f}, {0.0f, 0.3f}, kPlotAxis));
     for (int k = 0; k <= 5; ++k)
-        p.labels.push_back(label({0.0f, 0.2f * float(k)}, format("%.1f", 0.2 * k), {1.0f, 0.5f}, {-0.4f, 0.0f}, kPlotAxis));
+        p.labels.push_back(
+            label({0.0f, 0.2f * float(k)}, format("%.1f", 0.2 * k), {1.0f, 0.5f}, {-0.4f, 0.0f}, kPlotAxis));
     p.labels.push_back(label({45.0f, 0.0f}, "angle of incidence theta_1 (deg)", {0.5f, 0.0f}, {0.0f, 1.5f}));
     p.labels.push_back(label({0.0f, 1.0f}, "R", {0.5f, 1.0f}, {0.0f, -0.4f}));
 
@@ -204,7 +208,8 @@ Plot fresnelPlot(float eta1, float eta2) {
     };
     curve("R_par", kSkyBlue, kCurveWidth, false, [](const FresnelSample& s) { return s.exact.parallel; });
     curve("R_perp", kVermillion, kCurveWidth, false, [](const FresnelSample& s) { return s.exact.perpendicular; });
-    curve("(R_par + R_perp) / 2", kPlotText, kCurveWidth, false, [](const FresnelSample& s) { return s.exact.average; });
+    curve("(R_par + R_perp) / 2", kPlotText, kCurveWidth, false,
+          [](const FresnelSample& s) { return s.exact.average; });
     curve("Schlick", kGreen, kCurveWidth, true, [](const FresnelSample& s) { return s.schlick; });
     // The marked angles last: in the legend after the curves, and drawn over them.
     const float brewster = brewsterAngleDeg(eta1, eta2);
@@ -213,8 +218,8 @@ Plot fresnelPlot(float eta1, float eta2) {
     brewsterLine.dashed = brewsterLine.inLegend = true;
     p.lines.push_back(std::move(brewsterLine));
     if (critical) {
-        PlotPolyline c = line("critical angle " + format("%.1f", double(*critical)) + " deg", {{*critical, 0.0f}, {*critical, 1.0f}},
-                              kYellow, 1.5f);
+        PlotPolyline c = line("critical angle " + format("%.1f", double(*critical)) + " deg",
+                              {{*critical, 0.0f}, {*critical, 1.0f}}, kYellow, 1.5f);
         c.dashed = c.inLegend = true;
         p.lines.push_back(std::move(c));
     }
@@ -225,8 +230,8 @@ Plot scenePlot(PlotKind kind, const Scene& scene, const Material& material, cons
     switch (kind) {
     case PlotKind::Lobe: return lobePlot(lightingEnvironment(scene), material.ke, settings.incidenceDeg);
     case PlotKind::Lobe3d:
-        return lobe3dPlot(material, lightingEnvironment(scene), settings.probed ? *settings.probed : lobeIncidence(settings.incidenceDeg),
-                          settings.lobeView);
+        return lobe3dPlot(material, lightingEnvironment(scene),
+                          settings.probed ? *settings.probed : lobeIncidence(settings.incidenceDeg), settings.lobeView);
     case PlotKind::BrdfSlice: return brdfSlicePlot(material, lightingEnvironment(scene), settings.incidenceDeg);
     case PlotKind::Fresnel: break;
     }
@@ -246,7 +251,8 @@ namespace {
 // a line starting "deg," would stay ASCII).
 std::size_t wordEnd(const std::string& text, std::size_t start) {
     const auto unitAt = [&](std::size_t at) {
-        return text.compare(at, 3, "deg") == 0 && (at + 3 >= text.size() || !std::isalpha(static_cast<unsigned char>(text[at + 3])));
+        return text.compare(at, 3, "deg") == 0 &&
+               (at + 3 >= text.size() || !std::isalpha(static_cast<unsigned char>(text[at + 3])));
     };
     std::size_t end = text.find(' ', start);
     while (end != std::string::npos && unitAt(end + 1)) end = text.find(' ', end + 1);
@@ -368,7 +374,8 @@ PlotLayout paintPlot(const Plot& plot, glm::vec2 size, float lineUnit, PlotPaint
         // Cell edges computed once per column and row, so neighbours share them exactly.
         const glm::vec2 lo = layout.toPixels(h.min), hi = layout.toPixels(h.max);
         for (int r = 0; r < h.rows; ++r) {
-            const float y0 = lo.y + (hi.y - lo.y) * float(r) / float(h.rows), y1 = lo.y + (hi.y - lo.y) * float(r + 1) / float(h.rows);
+            const float y0 = lo.y + (hi.y - lo.y) * float(r) / float(h.rows),
+                        y1 = lo.y + (hi.y - lo.y) * float(r + 1) / float(h.rows);
             for (int c = 0; c < h.columns; ++c) {
                 const float x0 = lo.x + (hi.x - lo.x) * float(c) / float(h.columns);
                 const float x1 = lo.x + (hi.x - lo.x) * float(c + 1) / float(h.columns);
@@ -433,12 +440,22 @@ std::pair<glm::vec2, glm::vec2> arrowHead(glm::vec2 from, glm::vec2 tip, float l
 }
 
 std::string lectureNotation(std::string text) {
-    static const std::pair<const char*, const char*> kSymbols[] = {
-        {"delta_phi", "\u0394\u03c6"}, {">=", "\u2265"}, {"phi_", "\u03c6_"}, {"omega_", "\u03c9_"},
-        {"theta_", "\u03b8_"}, {"eta_1", "\u03b7\u2081"}, {"eta_2", "\u03b7\u2082"},
-        {"eta_", "\u03b7_"}, {" deg", "\u00b0"},
-        {"->", "\u2192"}, {"R_par", "R\u2225"}, {"R_perp", "R\u22a5"}, {"R.V", "R\u00b7V"}, {"N.H", "N\u00b7H"},
-        {"V.H", "V\u00b7H"}, {"N.I", "N\u00b7I"}};
+    static const std::pair<const char*, const char*> kSymbols[] = {{"delta_phi", "\u0394\u03c6"},
+                                                                   {">=", "\u2265"},
+                                                                   {"phi_", "\u03c6_"},
+                                                                   {"omega_", "\u03c9_"},
+                                                                   {"theta_", "\u03b8_"},
+                                                                   {"eta_1", "\u03b7\u2081"},
+                                                                   {"eta_2", "\u03b7\u2082"},
+                                                                   {"eta_", "\u03b7_"},
+                                                                   {" deg", "\u00b0"},
+                                                                   {"->", "\u2192"},
+                                                                   {"R_par", "R\u2225"},
+                                                                   {"R_perp", "R\u22a5"},
+                                                                   {"R.V", "R\u00b7V"},
+                                                                   {"N.H", "N\u00b7H"},
+                                                                   {"V.H", "V\u00b7H"},
+                                                                   {"N.I", "N\u00b7I"}};
     // A name ending in a letter is replaced only where its word ends there (" deg" but not " degrees").
     const auto wordEnds = [&](std::size_t end, const char* ascii) {
         const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };

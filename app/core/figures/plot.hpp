@@ -12,10 +12,10 @@
 // exactly what the renderer computes. A Plot is a small display list in plot coordinates — polylines
 // and labels, a title and a legend — and layoutPlot maps it onto a pixel rectangle; plot_image.cpp
 // rasterises it into a PNG (--plot), the viewer's panel draws the same Plot with ImGui.
-#include "core/shading/lighting.hpp"
+#include "core/image/text.hpp"
 #include "core/scene/scene.hpp"
 #include "core/scene/scene_names.hpp"
-#include "core/image/text.hpp"
+#include "core/shading/lighting.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -28,8 +28,10 @@
 namespace shadelab {
 
 enum class PlotKind { Lobe, Fresnel, Lobe3d, BrdfSlice };
-inline constexpr EnumName<PlotKind> kPlotKindNames[] = {
-    {"lobe", PlotKind::Lobe}, {"fresnel", PlotKind::Fresnel}, {"lobe3d", PlotKind::Lobe3d}, {"brdf-slice", PlotKind::BrdfSlice}};
+inline constexpr EnumName<PlotKind> kPlotKindNames[] = {{"lobe", PlotKind::Lobe},
+                                                        {"fresnel", PlotKind::Fresnel},
+                                                        {"lobe3d", PlotKind::Lobe3d},
+                                                        {"brdf-slice", PlotKind::BrdfSlice}};
 const char* toString(PlotKind kind);
 
 // ---- The curves' values
@@ -38,18 +40,18 @@ const char* toString(PlotKind kind);
 // (I = (-sin, cos), pointing toward the light, as in the lecture's R(I) = 2(N.I)N - I) and the view
 // direction V at angleDeg from N, positive toward R's side (V = (sin, cos)): spec for each model.
 struct LobeSample {
-    float angleDeg = 0.0f;   // V's angle from N, -90..90
-    float phong = 0.0f;      // specularTerm with env.model = Phong
-    float blinnPhong = 0.0f; // specularTerm with env.model = BlinnPhong
+    float angleDeg = 0.0f;    // V's angle from N, -90..90
+    float phong = 0.0f;       // specularTerm with env.model = Phong
+    float blinnPhong = 0.0f;  // specularTerm with env.model = BlinnPhong
 };
 // V from -90 to 90 degrees: every degree, and densely around R (where a high k_e's lobe is narrower
 // than a degree), in increasing angle. env supplies normalisation, Fresnel and ior (its model is ignored).
 std::vector<LobeSample> sampleLobe(const LightingEnvironment& env, float ke, float incidenceDeg);
 
 struct FresnelSample {
-    float angleDeg = 0.0f;   // angle of incidence theta_1, 0..90
-    FresnelTerms exact;      // fresnelExact(cos theta_1, eta1, eta2)
-    float schlick = 0.0f;    // fresnelSchlick(cos theta_1, eta1, eta2)
+    float angleDeg = 0.0f;  // angle of incidence theta_1, 0..90
+    FresnelTerms exact;     // fresnelExact(cos theta_1, eta1, eta2)
+    float schlick = 0.0f;   // fresnelSchlick(cos theta_1, eta1, eta2)
 };
 // 0 to 90 degrees every quarter degree, plus the critical and Brewster angles exactly, in increasing angle.
 std::vector<FresnelSample> sampleFresnel(float eta1, float eta2);
@@ -64,12 +66,12 @@ float brewsterAngleDeg(float eta1, float eta2);
 // A polyline in plot coordinates. `width` is in line units (the renderer's base line width: about
 // 1.25 pixels in an 800 x 600 PNG); curves are 2, grid lines 1.
 struct PlotPolyline {
-    std::string name;                 // the legend text, or what the line is ("grid", "N", "critical angle")
+    std::string name;  // the legend text, or what the line is ("grid", "N", "critical angle")
     std::vector<glm::vec2> points;
     Rgba8 color;
     float width = 1.0f;
     bool dashed = false;
-    bool arrow = false;               // an arrowhead at the last point
+    bool arrow = false;  // an arrowhead at the last point
     bool inLegend = false;
 };
 
@@ -77,7 +79,7 @@ struct PlotPolyline {
 // (0.5, 1) its bottom centre; `offset` then moves it by that many line heights (x right, y down).
 struct PlotLabel {
     glm::vec2 at{0.0f};
-    std::string text;                 // printable ASCII (the PNG font has no Greek)
+    std::string text;  // printable ASCII (the PNG font has no Greek)
     glm::vec2 align{0.0f};
     glm::vec2 offset{0.0f};
     Rgba8 color;
@@ -99,7 +101,7 @@ struct Plot {
     bool equalAspect = false;         // one unit spans as many pixels along x as along y (polar plots)
     std::vector<PlotPolyline> lines;  // in drawing order: grid first, curves last
     std::vector<PlotLabel> labels;
-    std::vector<PlotHeatMap> heatMaps; // under the lines
+    std::vector<PlotHeatMap> heatMaps;  // under the lines
 };
 
 // The colours, for a dark background (the viewer's panel, and the PNG, as the sweep sheets: both read
@@ -132,10 +134,10 @@ TangentFrame plotTangentFrame();
 // the mirror direction R (rings at fixed angles from R, dense near R where the lobe is; and meridians
 // through R), cut at the horizon; in 3-D plot-frame points (direction * f_r).
 struct LobeSurface {
-    glm::vec3 i{0.0f}, r{0.0f};                        // unit: toward the light, its mirror direction
+    glm::vec3 i{0.0f}, r{0.0f};  // unit: toward the light, its mirror direction
     std::vector<std::vector<glm::vec3>> rings, meridians;
-    std::vector<glm::vec3> planeOfIncidence;           // the 2-D lobe: the surface cut by the x-y plane
-    float peak = 0.0f;                                 // the largest f_r on the surface
+    std::vector<glm::vec3> planeOfIncidence;  // the 2-D lobe: the surface cut by the x-y plane
+    float peak = 0.0f;                        // the largest f_r on the surface
 };
 LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env, float incidenceDeg);
 // The same for any light direction `toLight` (unit, in the plot's frame, above the surface: y > 0).
@@ -145,27 +147,29 @@ LobeSurface sampleLobeSurface(const Material& m, const LightingEnvironment& env,
 // PNG's: the light at the incidence angle on the left (phi_i = 180 deg), no eye. The viewer's, once a
 // pixel is probed: that point's own I and V (lobeIncidenceAt).
 struct LobeIncidence {
-    glm::vec3 toLight{0.0f, 1.0f, 0.0f};   // omega_i, unit, y > 0
-    std::optional<glm::vec3> toEye;        // V, unit (drawn when set)
-    std::string where;                     // "at pixel 412, 300": said in the title when set
+    glm::vec3 toLight{0.0f, 1.0f, 0.0f};  // omega_i, unit, y > 0
+    std::optional<glm::vec3> toEye;       // V, unit (drawn when set)
+    std::string where;                    // "at pixel 412, 300": said in the title when set
 };
 LobeIncidence lobeIncidence(float incidenceDeg);
 // A surface point's N, I (toward the light) and V (toward the eye) in world space, into the plot's frame.
 // Anisotropic (`frame` set): the point's T and B are the plot's T and B, so phi_i is where the light is
 // between them. Isotropic: azimuth does not matter, and the frame is turned to put I on the left
 // (phi_i = 180 deg), as in the PNG. None when the light is behind the surface (N.I <= 0): no lobe.
-std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3& i, const glm::vec3& v, const TangentFrame* frame);
+std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
+                                             const TangentFrame* frame);
 // Where the 3-D lobe is seen from: the eye's azimuth phi (from T, as directionAt) and elevation above
 // the surface. The default is the PNG's fixed oblique view, from the front right, 25 degrees up; the
 // viewer's Plots section turns it with the mouse.
 struct LobeView {
     float azimuthDeg = -60.0f;
-    float elevationDeg = 25.0f;   // 0..89
+    float elevationDeg = 25.0f;  // 0..89
 };
 // The surface projected orthographically from `view`, with N, I, R (and T, B when anisotropic) and
 // reference circles in the surface.
 Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, float incidenceDeg, const LobeView& view = {});
-Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, const LobeIncidence& incidence, const LobeView& view = {});
+Plot lobe3dPlot(const Material& m, const LightingEnvironment& env, const LobeIncidence& incidence,
+                const LobeView& view = {});
 // The view: plot x = dot(p, right), plot y = dot(p, up).
 glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view = {});
 
@@ -178,11 +182,15 @@ glm::vec2 lobe3dProjection(const glm::vec3& p, const LobeView& view = {});
 // each, which differ: the fourth angle.
 struct BrdfSliceGrid {
     int columns = 0, rows = 0;
-    std::vector<float> values;                         // row-major, row 0 at the lowest theta_o
-    float at(int column, int row) const { return values[std::size_t(row) * std::size_t(columns) + std::size_t(column)]; }
+    std::vector<float> values;  // row-major, row 0 at the lowest theta_o
+    float at(int column, int row) const {
+        return values[std::size_t(row) * std::size_t(columns) + std::size_t(column)];
+    }
 };
-BrdfSliceGrid sampleIncidencePlane(const Material& m, const LightingEnvironment& env, float phiIDeg);      // 90 x 180, 1 deg cells
-BrdfSliceGrid sampleAzimuthSlice(const Material& m, const LightingEnvironment& env, float thetaIDeg, float phiIDeg);  // 180 x 90, 2 x 1 deg
+BrdfSliceGrid sampleIncidencePlane(const Material& m, const LightingEnvironment& env,
+                                   float phiIDeg);  // 90 x 180, 1 deg cells
+BrdfSliceGrid sampleAzimuthSlice(const Material& m, const LightingEnvironment& env, float thetaIDeg,
+                                 float phiIDeg);  // 180 x 90, 2 x 1 deg
 Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float incidenceDeg);
 // The colour scale: t in [0, 1] to viridis (dark purple to yellow; readable on the dark background).
 Rgba8 heatColor(float t);
@@ -190,10 +198,10 @@ Rgba8 heatColor(float t);
 // What the plots take beside the scene: the lobe's incoming direction, and which side of the surface
 // the Fresnel plot's light comes from.
 struct PlotSettings {
-    float incidenceDeg = 45.0f;   // angle between I and N, 0..kIncidenceDegRange.hi
-    bool fromInside = false;      // false: from air into the material (eta1 = 1, eta2 = ior), as the
-                                  // renderer's Fresnel term; true: eta1 = ior, eta2 = 1 (total internal reflection)
-    LobeView lobeView;            // the 3-D lobe's view (the CLI keeps the default)
+    float incidenceDeg = 45.0f;  // angle between I and N, 0..kIncidenceDegRange.hi
+    bool fromInside = false;     // false: from air into the material (eta1 = 1, eta2 = ior), as the
+                                 // renderer's Fresnel term; true: eta1 = ior, eta2 = 1 (total internal reflection)
+    LobeView lobeView;           // the 3-D lobe's view (the CLI keeps the default)
     // The viewer with a probed pixel: the 3-D lobe of that point's own I and V (incidenceDeg is then
     // not used for it). The CLI leaves it unset.
     std::optional<LobeIncidence> probed;
@@ -209,9 +217,9 @@ Plot scenePlot(PlotKind kind, const Scene& scene, const Material& material, cons
 using MeasureText = std::function<glm::vec2(const std::string&)>;
 
 struct PlotLegendEntry {
-    std::size_t line = 0;             // index into Plot::lines
+    std::size_t line = 0;                        // index into Plot::lines
     glm::vec2 swatchFrom{0.0f}, swatchTo{0.0f};  // a short stroke in the line's style
-    glm::vec2 textAt{0.0f};           // top-left
+    glm::vec2 textAt{0.0f};                      // top-left
 };
 
 // Where everything goes in a width x height pixel rectangle (origin top-left, y down): title and
@@ -219,15 +227,15 @@ struct PlotLegendEntry {
 struct PlotLayout {
     struct Line {
         std::string text;
-        glm::vec2 at{0.0f};                     // top-left
+        glm::vec2 at{0.0f};  // top-left
         Rgba8 color;
     };
-    std::vector<Line> header;                   // title and subtitle, wrapped at spaces to fit the width
+    std::vector<Line> header;  // title and subtitle, wrapped at spaces to fit the width
     std::vector<PlotLegendEntry> legend;
-    glm::vec2 areaMin{0.0f}, areaMax{0.0f};     // the pixels that plot.min..max map onto
+    glm::vec2 areaMin{0.0f}, areaMax{0.0f};  // the pixels that plot.min..max map onto
     float lineHeight = 0.0f;
-    glm::vec2 pixelsPerUnit{1.0f};              // y is flipped: larger plot y is higher up
-    glm::vec2 plotOrigin{0.0f};                 // the pixel of plot point (0, 0)
+    glm::vec2 pixelsPerUnit{1.0f};  // y is flipped: larger plot y is higher up
+    glm::vec2 plotOrigin{0.0f};     // the pixel of plot point (0, 0)
     glm::vec2 toPixels(glm::vec2 p) const {
         return {plotOrigin.x + p.x * pixelsPerUnit.x, plotOrigin.y - p.y * pixelsPerUnit.y};
     }

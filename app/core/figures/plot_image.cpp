@@ -16,16 +16,21 @@ namespace {
 class ImagePainter final : public PlotPainter {
 public:
     ImagePainter(Image& image, int textScale)
-        : image_(image), textScale_(textScale), font_(TrueTypeFont::dejaVuSans()),
+        : image_(image),
+          textScale_(textScale),
+          font_(TrueTypeFont::dejaVuSans()),
           coverage_(std::size_t(image.width) * std::size_t(image.height), 0.0f) {}
 
     // DejaVu Sans at 9 pixels per text scale (capitals about 6.5 tall, the bitmap font has 7). The
     // bitmap fallback draws capitals 7 font pixels tall with descenders 2 below; its own line height of
     // 12 adds leading. Text boxes are the 9 pixels that hold ink, so centred labels look centred.
     // Whole pixels, so the layout's lines land on pixel rows and columns and stay crisp.
-    float lineHeight() const override { return font_ ? std::round(font_->height(pixels())) : 10.0f * float(textScale_); }
+    float lineHeight() const override {
+        return font_ ? std::round(font_->height(pixels())) : 10.0f * float(textScale_);
+    }
     glm::vec2 measure(const std::string& text) const override {
-        if (font_) return {std::ceil(font_->width(lectureNotation(text), pixels())), std::round(font_->height(pixels()))};
+        if (font_)
+            return {std::ceil(font_->width(lectureNotation(text), pixels())), std::round(font_->height(pixels()))};
         return {float(textWidth(text, textScale_)), 9.0f * float(textScale_)};
     }
     void stroke(const std::vector<glm::vec2>& pixels, Rgba8 color, float width) override {
@@ -61,8 +66,10 @@ public:
     }
     // Pixels whose centres lie in [lo, hi): cells that share an edge share no pixel and leave none out.
     void fillRect(glm::vec2 lo, glm::vec2 hi, Rgba8 color) override {
-        const int x0 = std::max(0, int(std::ceil(lo.x - 0.5f))), x1 = std::min(image_.width, int(std::ceil(hi.x - 0.5f)));
-        const int y0 = std::max(0, int(std::ceil(lo.y - 0.5f))), y1 = std::min(image_.height, int(std::ceil(hi.y - 0.5f)));
+        const int x0 = std::max(0, int(std::ceil(lo.x - 0.5f))),
+                  x1 = std::min(image_.width, int(std::ceil(hi.x - 0.5f)));
+        const int y0 = std::max(0, int(std::ceil(lo.y - 0.5f))),
+                  y1 = std::min(image_.height, int(std::ceil(hi.y - 0.5f)));
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 std::uint8_t* p = image_.pixel(x, y);
@@ -96,7 +103,8 @@ private:
     Box clipped(glm::vec2 lo, glm::vec2 hi) const {
         Box b;
         b.x0 = std::max(0, int(std::floor(lo.x))), b.y0 = std::max(0, int(std::floor(lo.y)));
-        b.x1 = std::min(image_.width, int(std::ceil(hi.x)) + 1), b.y1 = std::min(image_.height, int(std::ceil(hi.y)) + 1);
+        b.x1 = std::min(image_.width, int(std::ceil(hi.x)) + 1),
+        b.y1 = std::min(image_.height, int(std::ceil(hi.y)) + 1);
         return b;
     }
     void cover(int x, int y, float c) {
@@ -111,7 +119,8 @@ private:
                 float& c = coverage_[std::size_t(y) * std::size_t(image_.width) + std::size_t(x)];
                 if (c <= 0.0f) continue;
                 std::uint8_t* p = image_.pixel(x, y);
-                for (int ch = 0; ch < 3; ++ch) p[ch] = std::uint8_t(std::lround(float(p[ch]) + (rgb[ch] - float(p[ch])) * c));
+                for (int ch = 0; ch < 3; ++ch)
+                    p[ch] = std::uint8_t(std::lround(float(p[ch]) + (rgb[ch] - float(p[ch])) * c));
                 c = 0.0f;
             }
     }

@@ -3,8 +3,8 @@
 // antialiased lines (coverage from the distance to each segment), filled arrowheads, and
 // DejaVu Sans text through stb_truetype (core/image/truetype_text.hpp; stb_easy_font, core/image/text.hpp, where
 // the font file is missing). No GL, no context.
-#include "core/image/image.hpp"
 #include "core/figures/plot.hpp"
+#include "core/image/image.hpp"
 
 namespace shadelab {
 
@@ -16,8 +16,8 @@ inline constexpr int kPlotDefaultWidth = 800, kPlotDefaultHeight = 600;
 inline constexpr int kPlotMinWidth = 320, kPlotMinHeight = 240, kPlotMaxSide = 4096;
 // "320x240 to 4096x4096": the plot sizes --size may ask for, as messages and --help say it.
 inline std::string plotSizesText() {
-    return std::to_string(kPlotMinWidth) + "x" + std::to_string(kPlotMinHeight) + " to " + std::to_string(kPlotMaxSide) +
-           "x" + std::to_string(kPlotMaxSide);
+    return std::to_string(kPlotMinWidth) + "x" + std::to_string(kPlotMinHeight) + " to " +
+           std::to_string(kPlotMaxSide) + "x" + std::to_string(kPlotMaxSide);
 }
 
 }  // namespace shadelab

@@ -11,9 +11,10 @@ namespace shadelab {
 namespace {
 
 const std::set<std::string>& keywords() {
-    static const std::set<std::string> k = {"if", "else", "for", "while", "do", "return", "break", "continue", "const",
-                                            "in", "out", "inout", "uniform", "layout", "flat", "smooth", "struct",
-                                            "discard", "true", "false", "location", "std140", "precision", "highp"};
+    static const std::set<std::string> k = {"if",      "else",     "for",      "while",  "do",        "return",
+                                            "break",   "continue", "const",    "in",     "out",       "inout",
+                                            "uniform", "layout",   "flat",     "smooth", "struct",    "discard",
+                                            "true",    "false",    "location", "std140", "precision", "highp"};
     return k;
 }
 
@@ -30,10 +31,11 @@ bool isType(const std::string& word) {
 }
 
 const std::set<std::string>& builtins() {
-    static const std::set<std::string> b = {"dot", "normalize", "max", "min", "pow", "clamp", "mix", "abs", "sqrt",
-                                            "inversesqrt", "texture", "length", "cross", "reflect", "floor", "fract",
-                                            "step", "smoothstep", "exp", "log", "sign", "transpose", "inverse",
-                                            "gl_Position", "gl_FragCoord", "gl_FrontFacing", "gl_InstanceID", "gl_VertexID"};
+    static const std::set<std::string> b = {
+        "dot",          "normalize",      "max",           "min",        "pow",   "clamp",     "mix",     "abs",
+        "sqrt",         "inversesqrt",    "texture",       "length",     "cross", "reflect",   "floor",   "fract",
+        "step",         "smoothstep",     "exp",           "log",        "sign",  "transpose", "inverse", "gl_Position",
+        "gl_FragCoord", "gl_FrontFacing", "gl_InstanceID", "gl_VertexID"};
     return b;
 }
 
@@ -78,8 +80,8 @@ std::vector<GlslSpan> highlight(const std::string& line, bool& inComment) {
             std::size_t end = i;
             while (end < line.size() && identifierChar(line[end])) ++end;
             const std::string word = line.substr(i, end - i);
-            const GlslToken token = keywords().count(word) ? GlslToken::Keyword
-                                    : isType(word)         ? GlslToken::Type
+            const GlslToken token = keywords().count(word)   ? GlslToken::Keyword
+                                    : isType(word)           ? GlslToken::Type
                                     : builtins().count(word) ? GlslToken::Builtin
                                                              : GlslToken::Plain;
             append(spans, word, token);
@@ -134,7 +136,8 @@ FormulaTerm glslLineTerm(const std::string& line) {
                  {"fresnelSchlick(", FormulaTerm::Specular},
                  {"fresnelExact(", FormulaTerm::Specular},
                  {"shadeLectureSpecular(", FormulaTerm::Specular},
-                 {"objectEmission(", FormulaTerm::Emissive}, {"shownEmission(", FormulaTerm::Emissive}};
+                 {"objectEmission(", FormulaTerm::Emissive},
+                 {"shownEmission(", FormulaTerm::Emissive}};
     std::size_t best = std::string::npos;
     FormulaTerm term = FormulaTerm::None;
     for (const auto& n : names) {
@@ -164,7 +167,8 @@ std::vector<GlslError> glslErrors(const std::string& log) {
     }
     std::vector<GlslError> errors;
     for (std::size_t i = 0; i < places.size(); ++i) {
-        std::size_t end = std::min(log.find('\n', places[i].start), i + 1 < places.size() ? places[i + 1].start : log.size());
+        std::size_t end =
+            std::min(log.find('\n', places[i].start), i + 1 < places.size() ? places[i + 1].start : log.size());
         std::string message = log.substr(places[i].start, std::min(end, log.size()) - places[i].start);
         while (!message.empty() && (message.back() == ' ' || message.back() == ';')) message.pop_back();
         errors.push_back(GlslError{log.substr(places[i].start, places[i].number - 1 - places[i].start),

@@ -42,7 +42,8 @@ void GltfReader::checkRange(int bvIndex, std::size_t byteOffset, std::size_t ele
 GltfReader::View GltfReader::view(int ai, const std::string& where, const std::vector<int>& types,
                                   const std::vector<int>& componentTypes) const {
     const std::string name = where + " (accessor " + std::to_string(ai) + ")";
-    if (ai < 0 || std::size_t(ai) >= model_.accessors.size()) fail(where, "accessor " + std::to_string(ai) + " does not exist");
+    if (ai < 0 || std::size_t(ai) >= model_.accessors.size())
+        fail(where, "accessor " + std::to_string(ai) + " does not exist");
     const tinygltf::Accessor& a = model_.accessors[std::size_t(ai)];
     bool typeOk = false, ctOk = false;
     for (int t : types) typeOk = typeOk || a.type == t;
@@ -82,7 +83,8 @@ void GltfReader::materialiseSparse(const tinygltf::Accessor& a, std::size_t elem
                                    View& v) const {
     auto bytes = std::make_shared<std::vector<unsigned char>>(v.count * elementSize, 0);
     if (v.base)
-        for (std::size_t i = 0; i < v.count; ++i) std::memcpy(bytes->data() + i * elementSize, v.base + i * v.stride, elementSize);
+        for (std::size_t i = 0; i < v.count; ++i)
+            std::memcpy(bytes->data() + i * elementSize, v.base + i * v.stride, elementSize);
     const std::size_t n = std::size_t(a.sparse.count);
     if (a.sparse.count < 0 || n > v.count) fail(name, "sparse count out of range");
     View idx;
@@ -169,9 +171,13 @@ std::vector<glm::vec3> GltfReader::readVec3(const View& v) {
     std::vector<glm::vec3> out(v.count);
     switch (v.componentType) {
     case TINYGLTF_COMPONENT_TYPE_BYTE: readVec3As<std::int8_t>(v.base, v.stride, v.count, v.normalized, out); break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: readVec3As<std::uint8_t>(v.base, v.stride, v.count, v.normalized, out); break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        readVec3As<std::uint8_t>(v.base, v.stride, v.count, v.normalized, out);
+        break;
     case TINYGLTF_COMPONENT_TYPE_SHORT: readVec3As<std::int16_t>(v.base, v.stride, v.count, v.normalized, out); break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: readVec3As<std::uint16_t>(v.base, v.stride, v.count, v.normalized, out); break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        readVec3As<std::uint16_t>(v.base, v.stride, v.count, v.normalized, out);
+        break;
     default:  // FLOAT: copied as it is
         if (v.stride == sizeof(glm::vec3)) {
             if (v.count) std::memcpy(out.data(), v.base, v.count * sizeof(glm::vec3));
@@ -258,13 +264,15 @@ float GltfReader::scalarAt(const View& v, std::size_t i, int c) {
 
 // POSITION: FLOAT, or any 8- or 16-bit integer type (KHR_mesh_quantization; the node transform dequantizes).
 std::vector<glm::vec3> GltfReader::readPositions(int accessor, const std::string& where) const {
-    const View pos = view(accessor, where + " POSITION", {TINYGLTF_TYPE_VEC3},
-                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    const View pos =
+        view(accessor, where + " POSITION", {TINYGLTF_TYPE_VEC3},
+             {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+              TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
     std::vector<glm::vec3> positions = readVec3(pos);
     for (std::size_t i = 0; i < pos.count; ++i) {
         if (!isFinite(positions[i]))
-            fail(where + " POSITION (accessor " + std::to_string(accessor) + ")", "vertex " + std::to_string(i) + " is not finite");
+            fail(where + " POSITION (accessor " + std::to_string(accessor) + ")",
+                 "vertex " + std::to_string(i) + " is not finite");
     }
     return positions;
 }
@@ -281,9 +289,10 @@ std::vector<glm::vec3> GltfReader::readNormals(const tinygltf::Primitive& p, con
         return normals;
     }
     const std::string name = where + " NORMAL (accessor " + std::to_string(nrmIt->second) + ")";
-    const View nv = vertexAttribute(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
-                                    {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
-                                    positions.size(), "normals");
+    const View nv =
+        vertexAttribute(nrmIt->second, where + " NORMAL", {TINYGLTF_TYPE_VEC3},
+                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
+                        positions.size(), "normals");
     normals = readVec3(nv);
     for (std::size_t i = 0; i < normals.size(); ++i) {
         glm::vec3& n = normals[i];
@@ -301,14 +310,15 @@ std::vector<glm::vec2> GltfReader::texcoords(const tinygltf::Primitive& p, const
     const std::string name = "TEXCOORD_" + std::to_string(t.texCoord);
     const auto it = p.attributes.find(name);
     if (it == p.attributes.end()) {
-        info_.warnings.push_back(where + ": its " + t.role + " texture reads " + name + ", which it does not have; drawn in its " +
-                                 t.role + " factor");
+        info_.warnings.push_back(where + ": its " + t.role + " texture reads " + name +
+                                 ", which it does not have; drawn in its " + t.role + " factor");
         return {};
     }
-    const View v = vertexAttribute(it->second, where + " " + name, {TINYGLTF_TYPE_VEC2},
-                                   {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                    TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                                   count, nullptr);
+    const View v = vertexAttribute(
+        it->second, where + " " + name, {TINYGLTF_TYPE_VEC2},
+        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+         TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+        count, nullptr);
     std::vector<glm::vec2> out(count);
     for (std::size_t i = 0; i < count; ++i) {
         const glm::vec3 uv = t.transform * glm::vec3(scalarAt(v, i, 0), scalarAt(v, i, 1), 1.0f);
@@ -326,15 +336,17 @@ std::vector<glm::vec4> GltfReader::vertexColors(const tinygltf::Primitive& p, st
     const auto it = p.attributes.find("COLOR_0");
     if (it == p.attributes.end()) return {};
     const std::string name = where + " COLOR_0 (accessor " + std::to_string(it->second) + ")";
-    const View v = vertexAttribute(it->second, where + " COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
-                                   {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                    TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                                   count, "colours");
+    const View v = vertexAttribute(
+        it->second, where + " COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
+        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+         TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+        count, "colours");
     const bool rgba = v.components == 4;
     std::vector<glm::vec4> out(count);
     for (std::size_t i = 0; i < count; ++i) {
         const glm::vec4 c(scalarAt(v, i, 0), scalarAt(v, i, 1), scalarAt(v, i, 2), rgba ? scalarAt(v, i, 3) : 1.0f);
-        if (!isFinite(glm::vec3(c)) || !std::isfinite(c.w)) fail(name, "colour " + std::to_string(i) + " is not finite");
+        if (!isFinite(glm::vec3(c)) || !std::isfinite(c.w))
+            fail(name, "colour " + std::to_string(i) + " is not finite");
         out[i] = glm::clamp(c, 0.0f, 1.0f);
     }
     return out;
@@ -345,13 +357,15 @@ std::vector<glm::vec4> GltfReader::readTangents(const tinygltf::Primitive& p, st
     const auto it = p.attributes.find("TANGENT");
     if (it == p.attributes.end()) return {};
     const std::string name = where + " TANGENT (accessor " + std::to_string(it->second) + ")";
-    const View v = vertexAttribute(it->second, where + " TANGENT", {TINYGLTF_TYPE_VEC4},
-                                   {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
-                                   count, "tangents");
+    const View v =
+        vertexAttribute(it->second, where + " TANGENT", {TINYGLTF_TYPE_VEC4},
+                        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
+                        count, "tangents");
     std::vector<glm::vec4> out(count);
     for (std::size_t i = 0; i < count; ++i) {
         const glm::vec4 t(scalarAt(v, i, 0), scalarAt(v, i, 1), scalarAt(v, i, 2), scalarAt(v, i, 3));
-        if (!isFinite(glm::vec3(t)) || !std::isfinite(t.w)) fail(name, "tangent " + std::to_string(i) + " is not finite");
+        if (!isFinite(glm::vec3(t)) || !std::isfinite(t.w))
+            fail(name, "tangent " + std::to_string(i) + " is not finite");
         out[i] = glm::vec4(glm::vec3(t), t.w < 0.0f ? -1.0f : 1.0f);
     }
     return out;

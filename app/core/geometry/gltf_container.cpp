@@ -131,7 +131,8 @@ bool decodeBase64(std::string_view in, std::vector<unsigned char>& out) {
     static const std::array<std::int8_t, 256> kValue = [] {
         std::array<std::int8_t, 256> t{};
         t.fill(-1);
-        for (int i = 0; i < 26; ++i) t[std::size_t('A' + i)] = std::int8_t(i), t[std::size_t('a' + i)] = std::int8_t(26 + i);
+        for (int i = 0; i < 26; ++i)
+            t[std::size_t('A' + i)] = std::int8_t(i), t[std::size_t('a' + i)] = std::int8_t(26 + i);
         for (int i = 0; i < 10; ++i) t[std::size_t('0' + i)] = std::int8_t(52 + i);
         t[std::size_t('+')] = 62, t[std::size_t('/')] = 63;
         return t;
@@ -290,8 +291,8 @@ Mesh parseGltf(std::string json, LoadContext& context, const std::string& path, 
     // here a URI's bytes are kept as they are. An image in a buffer view is read from the view then,
     // with its range checked (tinygltf hands it over unchecked).
     loader.SetImageLoader(
-        [](tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes, int size,
-           void*) {
+        [](tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+           int size, void*) {
             if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
             return true;
         },
@@ -356,8 +357,7 @@ Mesh loadGltf(const std::string& path, GltfInfo* infoOut) {
     return parseGlb(size, read, path, folder, infoOut);
 }
 
-Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::string& folderName,
-                        GltfInfo* infoOut) {
+Mesh loadGltfFromMemory(std::string bytes, const std::string& label, const std::string& folderName, GltfInfo* infoOut) {
     const fs::path folder(folderName);
     // A .glb starts with the magic "glTF"; anything else is read as JSON.
     if (bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0) {

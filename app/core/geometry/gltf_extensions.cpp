@@ -11,8 +11,8 @@
 #if SHADELAB_HAVE_MESHOPT
 #include <meshoptimizer.h>
 #endif
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstring>
@@ -20,23 +20,24 @@
 namespace shadelab {
 
 const std::vector<std::string> kDecodedGltfExtensions = {
-    "KHR_mesh_quantization",       // integer positions and normals, dequantized by the node transform
+    "KHR_mesh_quantization",  // integer positions and normals, dequantized by the node transform
 #if SHADELAB_HAVE_MESHOPT
-    "EXT_meshopt_compression",     // meshoptimizer's vertex and index codecs and filters
+    "EXT_meshopt_compression",  // meshoptimizer's vertex and index codecs and filters
 #endif
 #if SHADELAB_HAVE_DRACO
     "KHR_draco_mesh_compression",  // Draco-compressed primitives
 #endif
-    "EXT_mesh_gpu_instancing",     // a node drawn once per TRANSLATION / ROTATION / SCALE
-    "KHR_texture_transform",       // the base colour and emissive textures' coordinates offset, rotated, scaled
+    "EXT_mesh_gpu_instancing",          // a node drawn once per TRANSLATION / ROTATION / SCALE
+    "KHR_texture_transform",            // the base colour and emissive textures' coordinates offset, rotated, scaled
     "KHR_materials_emissive_strength",  // E's factor multiplied past 1
-    "KHR_lights_punctual",         // point, spot and directional lights: a scene's lights when it gives none
+    "KHR_lights_punctual",              // point, spot and directional lights: a scene's lights when it gives none
 };
 
 namespace {
 
 bool decoded(const std::string& name) {
-    return std::find(kDecodedGltfExtensions.begin(), kDecodedGltfExtensions.end(), name) != kDecodedGltfExtensions.end();
+    return std::find(kDecodedGltfExtensions.begin(), kDecodedGltfExtensions.end(), name) !=
+           kDecodedGltfExtensions.end();
 }
 
 // What extensions that are used but not read would have changed, in the words of the lecture: one
@@ -48,7 +49,8 @@ std::string notRead(const std::vector<std::string>& names) {
         if (name.rfind("KHR_xmp", 0) == 0) continue;
         list += (list.empty() ? "" : ", ") + name;
         if (name.rfind("KHR_materials_", 0) == 0) materials = true;
-        else if (name.rfind("KHR_texture_", 0) == 0 || name.rfind("EXT_texture_", 0) == 0 || name == "MSFT_texture_dds") textures = true;
+        else if (name.rfind("KHR_texture_", 0) == 0 || name.rfind("EXT_texture_", 0) == 0 || name == "MSFT_texture_dds")
+            textures = true;
         else if (name == "KHR_lights_punctual") lights = true;
         else other = true;
     }
@@ -83,8 +85,7 @@ bool prepareGltfExtensions(nlohmann::json& doc, const std::string& label, GltfPr
         return list;
     };
     for (const std::string& name : names("extensionsRequired"))
-        if (!decoded(name))
-            throw InputError(label + ": requires " + name + ", which shadelab does not read");
+        if (!decoded(name)) throw InputError(label + ": requires " + name + ", which shadelab does not read");
     std::vector<std::string> unread;
     for (const std::string& name : names("extensionsUsed"))
         if (!decoded(name)) unread.push_back(name);
@@ -186,7 +187,8 @@ int decodeMeshoptAttributes(unsigned char* out, const MeshoptStream& m, const st
 int decodeMeshoptIndices(unsigned char* out, const MeshoptStream& m, const std::string& where) {
     const std::size_t n = m.count, s = m.stride;
     if (s != 2 && s != 4) throw InputError(where + ": indices need a byteStride of 2 or 4");
-    if (m.mode == "TRIANGLES" && n % 3 != 0) throw InputError(where + ": TRIANGLES need a count that is a multiple of 3");
+    if (m.mode == "TRIANGLES" && n % 3 != 0)
+        throw InputError(where + ": TRIANGLES need a count that is a multiple of 3");
     return m.mode == "TRIANGLES" ? meshopt_decodeIndexBuffer(out, n, s, m.in, m.encoded)
                                  : meshopt_decodeIndexSequence(out, n, s, m.in, m.encoded);
 }
@@ -200,13 +202,13 @@ void decodeMeshopt(tinygltf::Model& model, const std::string& label) {
         const MeshoptStream stream = meshoptStream(model, it->second, where);
         std::vector<unsigned char> out(stream.count * stream.stride);
         int result = -1;
-        if (stream.mode == "ATTRIBUTES")
-            result = decodeMeshoptAttributes(out.data(), stream, where);
+        if (stream.mode == "ATTRIBUTES") result = decodeMeshoptAttributes(out.data(), stream, where);
         else if (stream.mode == "TRIANGLES" || stream.mode == "INDICES")
             result = decodeMeshoptIndices(out.data(), stream, where);
-        else
-            throw InputError(where + ": unknown mode \"" + stream.mode + "\"");
-        if (result != 0) throw InputError(where + ": the compressed data does not decode (meshopt error " + std::to_string(result) + ")");
+        else throw InputError(where + ": unknown mode \"" + stream.mode + "\"");
+        if (result != 0)
+            throw InputError(where + ": the compressed data does not decode (meshopt error " + std::to_string(result) +
+                             ")");
         // The view now reads a buffer of its own, holding the decoded bytes.
         tinygltf::Buffer plain;
         plain.data = std::move(out);
@@ -240,8 +242,10 @@ void pointAccessorAt(tinygltf::Model& model, int accessorIndex, std::vector<unsi
 }
 
 // The primitive's Draco data (the extension's bufferView), decoded, within the size limits.
-std::unique_ptr<draco::Mesh> decodeDracoMesh(const tinygltf::Model& model, const tinygltf::Value& e, const std::string& where) {
-    const int bvIndex = e.Has("bufferView") && e.Get("bufferView").IsNumber() ? e.Get("bufferView").GetNumberAsInt() : -1;
+std::unique_ptr<draco::Mesh> decodeDracoMesh(const tinygltf::Model& model, const tinygltf::Value& e,
+                                             const std::string& where) {
+    const int bvIndex =
+        e.Has("bufferView") && e.Get("bufferView").IsNumber() ? e.Get("bufferView").GetNumberAsInt() : -1;
     if (bvIndex < 0 || std::size_t(bvIndex) >= model.bufferViews.size())
         throw InputError(where + ": bufferView " + std::to_string(bvIndex) + " does not exist");
     const tinygltf::BufferView& bv = model.bufferViews[std::size_t(bvIndex)];

@@ -16,7 +16,8 @@ namespace shadelab {
 struct GltfCamera {
     std::string name;
     bool perspective = true;
-    glm::vec3 eye{0.0f}, target{0.0f, 0.0f, -1.0f}, up{0.0f, 1.0f, 0.0f};  // target: on the view axis, level with the model's centre
+    glm::vec3 eye{0.0f}, target{0.0f, 0.0f, -1.0f},
+        up{0.0f, 1.0f, 0.0f};  // target: on the view axis, level with the model's centre
     float yfovDeg = 45.0f;
     float znear = 0.1f;
     float zfar = 0.0f;  // 0: infinite (the file gave none)
@@ -31,16 +32,16 @@ struct GltfLight {
 };
 
 struct GltfInfo {
-    int nodes = 0;              // nodes visited in the drawn scene
-    int meshes = 0;             // meshes in the file
-    int materials = 0;          // materials in the file
-    int doubleSidedMaterials = 0;  // of those, how many are doubleSided (drawn from both sides)
-    int primitives = 0;         // primitives drawn (instances counted each time)
-    std::size_t fileTriangles = 0;  // TRIANGLES primitives of all meshes, each counted once
-    std::size_t triangles = 0;  // triangles drawn: every instance, strips and fans included
-    std::size_t vertices = 0;   // vertices after baking
-    std::size_t generatedNormals = 0;  // vertices whose normal shadelab computed (file had none)
-    int textures = 0;           // base colour images decoded (each image and sampler pair once)
+    int nodes = 0;                               // nodes visited in the drawn scene
+    int meshes = 0;                              // meshes in the file
+    int materials = 0;                           // materials in the file
+    int doubleSidedMaterials = 0;                // of those, how many are doubleSided (drawn from both sides)
+    int primitives = 0;                          // primitives drawn (instances counted each time)
+    std::size_t fileTriangles = 0;               // TRIANGLES primitives of all meshes, each counted once
+    std::size_t triangles = 0;                   // triangles drawn: every instance, strips and fans included
+    std::size_t vertices = 0;                    // vertices after baking
+    std::size_t generatedNormals = 0;            // vertices whose normal shadelab computed (file had none)
+    int textures = 0;                            // base colour images decoded (each image and sampler pair once)
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // of the drawn vertices, world space
     std::vector<std::string> warnings;
     std::vector<GltfCamera> cameras;  // in the order the drawn scene reaches them (--camera N)

@@ -67,7 +67,8 @@ private:
     // view()'s steps for a sparse accessor: the count of one without a bufferView checked against the
     // file's bytes, and its elements materialised into v.
     void checkZeroBackedCount(std::size_t count, const std::string& name) const;
-    void materialiseSparse(const tinygltf::Accessor& a, std::size_t elementSize, const std::string& name, View& v) const;
+    void materialiseSparse(const tinygltf::Accessor& a, std::size_t elementSize, const std::string& name,
+                           View& v) const;
     // A vertex attribute's view beside POSITION: `count` elements, and where `integers` names them
     // ("colours"), integer values normalized. `where` names the attribute.
     View vertexAttribute(int accessorIndex, const std::string& where, const std::vector<int>& allowedTypes,
@@ -95,8 +96,8 @@ private:
                                          const std::string& where) const;
     std::vector<glm::vec3> readNormals(const tinygltf::Primitive& p, const std::vector<glm::vec3>& positions,
                                        const std::vector<std::uint32_t>& triangles, const std::string& where);
-    void bakeVertices(std::vector<glm::vec3>&& positions, std::vector<glm::vec3>&& normals, const glm::mat4& worldFromObject,
-                      int positionAccessor, const std::string& where);
+    void bakeVertices(std::vector<glm::vec3>&& positions, std::vector<glm::vec3>&& normals,
+                      const glm::mat4& worldFromObject, int positionAccessor, const std::string& where);
     void appendColorInputs(std::uint32_t base, std::size_t count, const std::vector<glm::vec2>& uvs,
                            const std::vector<glm::vec4>& colors, const std::vector<glm::vec2>& emissiveUvs);
     std::uint32_t appendIndices(std::vector<std::uint32_t>&& triangles, std::uint32_t base, bool mirrored);
@@ -111,8 +112,8 @@ private:
     // (emissiveTexture), decoded once per image and sampler into Mesh::textures; -1 (with a warning)
     // where it cannot be drawn.
     struct MaterialTexture {
-        int slot = -1;           // index into mesh_.textures
-        int texCoord = 0;        // which TEXCOORD_n
+        int slot = -1;              // index into mesh_.textures
+        int texCoord = 0;           // which TEXCOORD_n
         glm::mat3 transform{1.0f};  // KHR_texture_transform: uv' = transform * (uv, 1)
         const char* role = "base colour";
     };
@@ -124,21 +125,24 @@ private:
     std::string decodeImage(const tinygltf::Image& image, TextureImage& out) const;
     std::vector<glm::vec2> texcoords(const tinygltf::Primitive& p, const MaterialTexture& t, std::size_t count,
                                      const std::string& where) const;
-    std::vector<glm::vec4> vertexColors(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
+    std::vector<glm::vec4> vertexColors(const tinygltf::Primitive& p, std::size_t count,
+                                        const std::string& where) const;
     // TANGENT (xyz, w the handedness), or empty; appended to *out_ baked with `world` (w = 0 where a
     // primitive has none: completeTangents fills those).
-    std::vector<glm::vec4> readTangents(const tinygltf::Primitive& p, std::size_t count, const std::string& where) const;
-    void appendTangents(std::uint32_t base, std::size_t count, const std::vector<glm::vec4>& tangents, const glm::mat4& world);
+    std::vector<glm::vec4> readTangents(const tinygltf::Primitive& p, std::size_t count,
+                                        const std::string& where) const;
+    void appendTangents(std::uint32_t base, std::size_t count, const std::vector<glm::vec4>& tangents,
+                        const glm::mat4& world);
     std::map<std::pair<int, int>, int> textureSlots_;  // (image, sampler) -> slot, or -1
 
     const std::string& path_;
     const tinygltf::Model& model_;
     GltfInfo& info_;
     Mesh mesh_;
-    Mesh* out_ = &mesh_;           // where addPrimitive appends: mesh_, or the instanced pass's mesh
-    bool instancedPass_ = false;   // read()'s second walk (a file with EXT_mesh_gpu_instancing)
-    bool instanced_ = false;       // a node drew more than one instance
-    int currentNode_ = -1;  // the node whose meshes addPrimitive is baking
+    Mesh* out_ = &mesh_;          // where addPrimitive appends: mesh_, or the instanced pass's mesh
+    bool instancedPass_ = false;  // read()'s second walk (a file with EXT_mesh_gpu_instancing)
+    bool instanced_ = false;      // a node drew more than one instance
+    int currentNode_ = -1;        // the node whose meshes addPrimitive is baking
 };
 
 }  // namespace shadelab::gltf_import_parts

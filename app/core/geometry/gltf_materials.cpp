@@ -23,7 +23,8 @@ glm::mat3 textureTransform(const tinygltf::Value& ext) {
         if (!ext.Has(key)) return fallback;
         const tinygltf::Value& v = ext.Get(key);
         if (i < 0) return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
-        return v.IsArray() && v.ArrayLen() > std::size_t(i) && v.Get(i).IsNumber() ? v.Get(i).GetNumberAsDouble() : fallback;
+        return v.IsArray() && v.ArrayLen() > std::size_t(i) && v.Get(i).IsNumber() ? v.Get(i).GetNumberAsDouble()
+                                                                                   : fallback;
     };
     const float ox = float(number("offset", 0, 0.0)), oy = float(number("offset", 1, 0.0));
     const float r = float(number("rotation", -1, 0.0));
@@ -36,8 +37,9 @@ glm::mat3 textureTransform(const tinygltf::Value& ext) {
 
 // A sampler's GL enum, or glTF's default where the file gives none or one GL does not have.
 int wrapMode(int mode) {
-    return mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE || mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? mode
-                                                                                                      : TINYGLTF_TEXTURE_WRAP_REPEAT;
+    return mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE || mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT
+               ? mode
+               : TINYGLTF_TEXTURE_WRAP_REPEAT;
 }
 
 // A sampler's wrap modes and filters on a texture; glTF's defaults (repeat, trilinear) where it gives none.
@@ -64,9 +66,9 @@ constexpr std::size_t kMaxModelTexturePixels = std::size_t(1) << 28;
 
 // Parts that look the same: consecutive primitives like these share one draw.
 bool sameLook(const MeshPart& a, const MeshPart& b) {
-    return a.baseColor == b.baseColor && a.texture == b.texture && a.baseAlpha == b.baseAlpha && a.alphaMode == b.alphaMode &&
-           a.alphaCutoff == b.alphaCutoff && a.emissive == b.emissive && a.emissiveTexture == b.emissiveTexture &&
-           a.doubleSided == b.doubleSided;
+    return a.baseColor == b.baseColor && a.texture == b.texture && a.baseAlpha == b.baseAlpha &&
+           a.alphaMode == b.alphaMode && a.alphaCutoff == b.alphaCutoff && a.emissive == b.emissive &&
+           a.emissiveTexture == b.emissiveTexture && a.doubleSided == b.doubleSided;
 }
 
 // KHR_materials_emissive_strength's factor (1 without it; a negative or non-finite one is ignored).
@@ -87,7 +89,8 @@ GltfReader::MaterialTexture GltfReader::materialTexture(const tinygltf::TextureI
     t.texCoord = info.texCoord;
     if (const auto e = info.extensions.find("KHR_texture_transform"); e != info.extensions.end()) {
         t.transform = textureTransform(e->second);
-        if (e->second.Has("texCoord") && e->second.Get("texCoord").IsInt()) t.texCoord = e->second.Get("texCoord").GetNumberAsInt();
+        if (e->second.Has("texCoord") && e->second.Get("texCoord").IsInt())
+            t.texCoord = e->second.Get("texCoord").GetNumberAsInt();
     }
     t.slot = textureSlot(info.index);
     return t;
@@ -102,7 +105,8 @@ GltfReader::MaterialTexture GltfReader::emissiveTexture(int mi) {
     if (mi < 0 || std::size_t(mi) >= model_.materials.size()) return {};
     const tinygltf::Material& m = model_.materials[std::size_t(mi)];
     // No light given off (a zero factor): the texture would multiply nothing, and is not read.
-    if (m.emissiveFactor.size() < 3 || (m.emissiveFactor[0] <= 0.0 && m.emissiveFactor[1] <= 0.0 && m.emissiveFactor[2] <= 0.0))
+    if (m.emissiveFactor.size() < 3 ||
+        (m.emissiveFactor[0] <= 0.0 && m.emissiveFactor[1] <= 0.0 && m.emissiveFactor[2] <= 0.0))
         return {};
     return materialTexture(m.emissiveTexture, "emissive");
 }
@@ -120,10 +124,12 @@ int GltfReader::textureSlot(int ti) {
         return -1;
     };
     if (texture.source < 0) return skip("no PNG or JPEG image (only an extension's)");
-    if (std::size_t(texture.source) >= model_.images.size()) fail(where, "image " + std::to_string(texture.source) + " does not exist");
+    if (std::size_t(texture.source) >= model_.images.size())
+        fail(where, "image " + std::to_string(texture.source) + " does not exist");
     const tinygltf::Image& image = model_.images[std::size_t(texture.source)];
     auto out = std::make_shared<TextureImage>();
-    out->name = image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "image " + std::to_string(texture.source) : image.uri;
+    out->name =
+        image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "image " + std::to_string(texture.source) : image.uri;
     if (const std::string why = decodeImage(image, *out); !why.empty()) return skip(why);
     if (texture.sampler >= 0 && std::size_t(texture.sampler) < model_.samplers.size())
         useSampler(model_.samplers[std::size_t(texture.sampler)], *out);
@@ -149,15 +155,16 @@ std::string GltfReader::decodeImage(const tinygltf::Image& image, TextureImage& 
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &w, &h, &channels))
         return out.name + " is not an image shadelab decodes (PNG or JPEG)";
-    if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide || std::size_t(w) * std::size_t(h) > kMaxTexturePixels)
+    if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide ||
+        std::size_t(w) * std::size_t(h) > kMaxTexturePixels)
         return out.name + " is " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than shadelab reads (" +
                std::to_string(kMaxTextureSide) + " on a side, 64 Mpixels)";
     std::size_t decoded = 0;
     for (const auto& t : mesh_.textures) decoded += std::size_t(t->width) * std::size_t(t->height);
     if (decoded + std::size_t(w) * std::size_t(h) > kMaxModelTexturePixels)
         return out.name + " would take the model's textures past 256 Mpixels";
-    std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load_from_memory(bytes, int(size), &w, &h, &channels, 4),
-                                                           &stbi_image_free);
+    std::unique_ptr<unsigned char, void (*)(void*)> pixels(
+        stbi_load_from_memory(bytes, int(size), &w, &h, &channels, 4), &stbi_image_free);
     if (!pixels) return out.name + " does not decode (" + std::string(stbi_failure_reason()) + ")";
     out.width = w, out.height = h;
     out.rgba.assign(pixels.get(), pixels.get() + std::size_t(w) * std::size_t(h) * 4);
@@ -176,15 +183,15 @@ void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textur
     if (materialIndex >= 0 && std::size_t(materialIndex) < model_.materials.size()) {
         const tinygltf::Material& m = model_.materials[std::size_t(materialIndex)];
         const auto& f = m.pbrMetallicRoughness.baseColorFactor;
-        if (f.size() >= 3)
-            part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
+        if (f.size() >= 3) part.baseColor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), 0.0f, 1.0f);
         if (f.size() >= 4 && std::isfinite(f[3])) part.baseAlpha = glm::clamp(float(f[3]), 0.0f, 1.0f);
         if (m.alphaMode == "MASK") part.alphaMode = AlphaMode::Mask;
         if (m.alphaMode == "BLEND") part.alphaMode = AlphaMode::Blend;
         if (std::isfinite(m.alphaCutoff)) part.alphaCutoff = glm::clamp(float(m.alphaCutoff), 0.0f, 1.0f);
         const auto& e = m.emissiveFactor;
         if (e.size() >= 3 && std::isfinite(e[0]) && std::isfinite(e[1]) && std::isfinite(e[2]))
-            part.emissive = glm::clamp(glm::vec3(float(e[0]), float(e[1]), float(e[2])), 0.0f, 1.0f) * emissiveStrength(m);
+            part.emissive =
+                glm::clamp(glm::vec3(float(e[0]), float(e[1]), float(e[2])), 0.0f, 1.0f) * emissiveStrength(m);
         part.doubleSided = m.doubleSided;
     }
     part.texture = textureSlot;
@@ -194,8 +201,7 @@ void GltfReader::addPart(int materialIndex, std::uint32_t firstIndex, int textur
     if (last && sameLook(*last, part) && last->instances.empty() && part.instances.empty() &&
         last->firstIndex + last->indexCount == part.firstIndex)
         last->indexCount += part.indexCount;
-    else if (part.indexCount > 0)
-        out_->parts.push_back(part);
+    else if (part.indexCount > 0) out_->parts.push_back(part);
 }
 
 }  // namespace shadelab::gltf_import_parts

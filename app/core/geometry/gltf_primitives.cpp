@@ -56,13 +56,15 @@ void GltfReader::addPrimitive(const tinygltf::Primitive& p, const glm::mat4& wor
     // C where it varies over the surface: the base colour texture's coordinates and COLOR_0.
     const std::size_t vertexCount = positions.size();
     const MaterialTexture texture = baseColorTexture(p.material);
-    std::vector<glm::vec2> uvs = texture.slot >= 0 ? texcoords(p, texture, vertexCount, where) : std::vector<glm::vec2>();
+    std::vector<glm::vec2> uvs =
+        texture.slot >= 0 ? texcoords(p, texture, vertexCount, where) : std::vector<glm::vec2>();
     const int textureSlot = uvs.empty() ? -1 : texture.slot;
     const std::vector<glm::vec4> colors = vertexColors(p, vertexCount, where);
     const std::vector<glm::vec4> tangents = readTangents(p, vertexCount, where);
     // E where it varies: the emissive texture at its own coordinates.
     const MaterialTexture emissive = emissiveTexture(p.material);
-    std::vector<glm::vec2> emissiveUvs = emissive.slot >= 0 ? texcoords(p, emissive, vertexCount, where) : std::vector<glm::vec2>();
+    std::vector<glm::vec2> emissiveUvs =
+        emissive.slot >= 0 ? texcoords(p, emissive, vertexCount, where) : std::vector<glm::vec2>();
     const int emissiveSlot = emissiveUvs.empty() ? -1 : emissive.slot;
 
     const auto base = std::uint32_t(out_->positions.size());

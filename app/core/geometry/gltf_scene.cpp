@@ -93,7 +93,8 @@ void GltfReader::summarise() {
     for (const tinygltf::Mesh& m : model_.meshes)
         for (const tinygltf::Primitive& p : m.primitives) {
             if (p.mode >= 0 && p.mode != TINYGLTF_MODE_TRIANGLES) continue;
-            const int counted = p.indices >= 0 ? p.indices : (p.attributes.count("POSITION") ? p.attributes.at("POSITION") : -1);
+            const int counted =
+                p.indices >= 0 ? p.indices : (p.attributes.count("POSITION") ? p.attributes.at("POSITION") : -1);
             if (counted >= 0 && std::size_t(counted) < model_.accessors.size())
                 info_.fileTriangles += model_.accessors[std::size_t(counted)].count / 3;
         }
@@ -122,11 +123,13 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         local = glm::make_mat4(n.matrix.data());
     } else {
         if (n.translation.size() == 3)
-            local = glm::translate(local, glm::vec3(float(n.translation[0]), float(n.translation[1]), float(n.translation[2])));
+            local = glm::translate(
+                local, glm::vec3(float(n.translation[0]), float(n.translation[1]), float(n.translation[2])));
         if (n.rotation.size() == 4)  // glTF stores x, y, z, w
-            local *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]),
-                                              float(n.rotation[2])));
-        if (n.scale.size() == 3) local = glm::scale(local, glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
+            local *= glm::mat4_cast(
+                glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
+        if (n.scale.size() == 3)
+            local = glm::scale(local, glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
     }
     const glm::mat4 world = parent * local;
     // A translation of 1e39 is +inf as a float; finite scales can multiply past the float range.
@@ -141,7 +144,8 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
         addLight(n, ni, world);
     }
     if (n.mesh >= 0) {
-        if (std::size_t(n.mesh) >= model_.meshes.size()) fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
+        if (std::size_t(n.mesh) >= model_.meshes.size())
+            fail("node " + std::to_string(ni), "mesh " + std::to_string(n.mesh) + " does not exist");
         const tinygltf::Mesh& m = model_.meshes[std::size_t(n.mesh)];
         currentNode_ = ni;
         const std::vector<glm::mat4> copies = instances(ni, n);
@@ -154,13 +158,16 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
             for (const glm::mat4& instance : copies) relative.push_back(world * instance * firstInverse);
             relative[0] = glm::mat4(1.0f);
             for (std::size_t k = 0; k < m.primitives.size(); ++k)
-                addPrimitive(m.primitives[k], first, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k), relative);
+                addPrimitive(m.primitives[k], first,
+                             "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k), relative);
         } else {
             for (const glm::mat4& instance : copies) {
                 const glm::mat4 instanceWorld = world * instance;
-                if (!isFinite(instanceWorld)) fail("node " + std::to_string(ni), "an instance's transform is not finite");
+                if (!isFinite(instanceWorld))
+                    fail("node " + std::to_string(ni), "an instance's transform is not finite");
                 for (std::size_t k = 0; k < m.primitives.size(); ++k)
-                    addPrimitive(m.primitives[k], instanceWorld, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
+                    addPrimitive(m.primitives[k], instanceWorld,
+                                 "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(k));
             }
         }
     }
@@ -178,15 +185,16 @@ std::vector<glm::mat4> GltfReader::instances(int ni, const tinygltf::Node& n) {
     std::optional<View> translation, rotation, scale;
     std::size_t count = 0;
     bool counted = false;
-    const auto read = [&](const char* name, int type, const std::vector<int>& componentTypes, std::optional<View>& out) {
+    const auto read = [&](const char* name, int type, const std::vector<int>& componentTypes,
+                          std::optional<View>& out) {
         if (!attributes.Has(name)) return;
         out = view(attributes.Get(name).GetNumberAsInt(), where + " " + name, {type}, componentTypes);
         if (counted && out->count != count) fail(where, std::string(name) + " counts differ from the other attributes");
         count = out->count, counted = true;
     };
     read("TRANSLATION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, translation);
-    read("ROTATION", TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
-         rotation);
+    read("ROTATION", TINYGLTF_TYPE_VEC4,
+         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT}, rotation);
     read("SCALE", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, scale);
     if (!counted) fail(where, "has none of TRANSLATION, ROTATION and SCALE");
     if (count == 0) fail(where, "has no instances");
@@ -196,7 +204,9 @@ std::vector<glm::mat4> GltfReader::instances(int ni, const tinygltf::Node& n) {
     std::vector<glm::mat4> out(count, glm::mat4(1.0f));
     for (std::size_t i = 0; i < count; ++i) {
         glm::mat4& m = out[i];
-        if (translation) m = glm::translate(m, glm::vec3(scalarAt(*translation, i, 0), scalarAt(*translation, i, 1), scalarAt(*translation, i, 2)));
+        if (translation)
+            m = glm::translate(
+                m, glm::vec3(scalarAt(*translation, i, 0), scalarAt(*translation, i, 1), scalarAt(*translation, i, 2)));
         if (rotation)  // x, y, z, w as in a node's rotation
             m *= glm::mat4_cast(glm::normalize(glm::quat(scalarAt(*rotation, i, 3), scalarAt(*rotation, i, 0),
                                                          scalarAt(*rotation, i, 1), scalarAt(*rotation, i, 2))));
@@ -213,7 +223,8 @@ void GltfReader::addCamera(int ci, const glm::mat4& world) {
     cam.name = c.name.empty() ? "camera " + std::to_string(ci) : c.name;
     cam.perspective = c.type != "orthographic";
     cam.eye = glm::vec3(world[3]);
-    const glm::vec3 forward = safeNormalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    const glm::vec3 forward =
+        safeNormalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f));
     cam.target = cam.eye + forward;  // moved onto the model once its bounds are known (read())
     cam.up = safeNormalize(glm::mat3(world) * glm::vec3(0.0f, 1.0f, 0.0f));
     if (cam.perspective) {
@@ -268,7 +279,8 @@ void GltfReader::addLight(const tinygltf::Node& n, int ni, const glm::mat4& worl
     }
     if (l.type == LightType::Spot) {
         const double inner = src.spot.innerConeAngle, outer = src.spot.outerConeAngle;
-        if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || outer <= inner || outer > 1.5707963268 + 1e-6)
+        if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || outer <= inner ||
+            outer > 1.5707963268 + 1e-6)
             fail(name, "spot cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2");
         l.outerConeDeg = std::clamp(float(glm::degrees(outer)), float(kSpotOuterConeDegRange.lo), kSpotConeDegRange.hi);
         l.innerConeDeg = std::clamp(float(glm::degrees(inner)), 0.0f, std::max(l.outerConeDeg - 0.01f, 0.0f));
@@ -290,7 +302,8 @@ std::string describe(const std::string& path, const GltfInfo& i) {
     s += "meshes: " + std::to_string(i.meshes) + "\n";
     s += "materials: " + std::to_string(i.materials) + "\n";
     if (i.doubleSidedMaterials > 0)
-        s += "double-sided materials: " + std::to_string(i.doubleSidedMaterials) + " (both sides drawn, the back lit with its normal flipped)\n";
+        s += "double-sided materials: " + std::to_string(i.doubleSidedMaterials) +
+             " (both sides drawn, the back lit with its normal flipped)\n";
     s += "textures: " + std::to_string(i.textures) + " base colour image" + (i.textures == 1 ? "" : "s") + " drawn\n";
     s += "primitives: " + std::to_string(i.primitives) + " drawn\n";
     s += "triangles: " + std::to_string(i.fileTriangles) + " in the file's TRIANGLES primitives, " +
@@ -299,19 +312,23 @@ std::string describe(const std::string& path, const GltfInfo& i) {
     s += "bounds: min " + vec(i.boundsMin) + " max " + vec(i.boundsMax) + "\n";
     for (std::size_t c = 0; c < i.cameras.size(); ++c)
         s += "camera " + std::to_string(c) + ": " + i.cameras[c].name +
-             (i.cameras[c].perspective ? ", perspective, " + std::to_string(int(std::lround(i.cameras[c].yfovDeg))) + " degrees"
-                                       : std::string(", orthographic (not drawn: shadelab's views are perspective)")) +
+             (i.cameras[c].perspective
+                  ? ", perspective, " + std::to_string(int(std::lround(i.cameras[c].yfovDeg))) + " degrees"
+                  : std::string(", orthographic (not drawn: shadelab's views are perspective)")) +
              " (--camera " + std::to_string(c) + ")\n";
     for (std::size_t l = 0; l < i.lights.size(); ++l) {
         const Light& light = i.lights[l].light;
         char b[160];
         std::snprintf(b, sizeof b, "light %zu: %s, %s, %g %s", l, i.lights[l].name.c_str(), toString(light.type),
                       double(light.intensity), light.type == LightType::Directional ? "lux" : "cd");
-        s += std::string(b) + (light.type == LightType::Directional ? " toward " + vec(light.direction) : " at " + vec(light.position)) +
+        s += std::string(b) +
+             (light.type == LightType::Directional ? " toward " + vec(light.direction) : " at " + vec(light.position)) +
              " (lights the scene when it gives no lights)\n";
     }
-    s += "normals: " + (i.generatedNormals ? "generated for " + std::to_string(i.generatedNormals) + " vertices"
-                                             : std::string("from the file")) + "\n";
+    s += "normals: " +
+         (i.generatedNormals ? "generated for " + std::to_string(i.generatedNormals) + " vertices"
+                             : std::string("from the file")) +
+         "\n";
     for (const std::string& w : i.warnings) s += "warning: " + w + "\n";
     return s;
 }

@@ -38,7 +38,8 @@ void orientToNormals(Mesh& m) {
     for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
         const uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
         const glm::vec3 n = faceNormal(m.positions[a], m.positions[b], m.positions[c]);
-        if (glm::dot(n, m.normals[a] + m.normals[b] + m.normals[c]) < 0.0f) std::swap(m.indices[t + 1], m.indices[t + 2]);
+        if (glm::dot(n, m.normals[a] + m.normals[b] + m.normals[c]) < 0.0f)
+            std::swap(m.indices[t + 1], m.indices[t + 2]);
     }
 }
 
@@ -82,12 +83,12 @@ Mesh makeUvSphere(int slices, int stacks, float radius) {
 
 Mesh makeIcoSphere(int subdivisions, float radius) {
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    std::vector<glm::vec3> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<glm::vec3> p = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
     for (auto& v : p) v = glm::normalize(v);
-    std::vector<uint32_t> idx = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,
-                                 11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8,
-                                 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+    std::vector<uint32_t> idx = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                                 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                                 6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
     for (int s = 0; s < subdivisions; ++s) {
         std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
         auto mid = [&](uint32_t a, uint32_t b) {
@@ -157,8 +158,8 @@ Mesh makePlane(float size, int subdivisions) {
     Mesh m;
     for (int i = 0; i <= subdivisions; ++i)
         for (int j = 0; j <= subdivisions; ++j) {
-            m.positions.push_back({size * (float(j) / float(subdivisions) - 0.5f), 0.0f,
-                                   size * (float(i) / float(subdivisions) - 0.5f)});
+            m.positions.push_back(
+                {size * (float(j) / float(subdivisions) - 0.5f), 0.0f, size * (float(i) / float(subdivisions) - 0.5f)});
             m.normals.push_back({0.0f, 1.0f, 0.0f});
         }
     appendGridTriangles(m.indices, subdivisions, subdivisions);
@@ -254,8 +255,9 @@ FlatMesh makeFlatMesh(const Mesh& m) {
             ++rotations;
         }
         uint32_t provoking = corner[2];
-        const glm::vec4 tangent = tangents ? faceTangent(m.tangents[corner[0]], m.tangents[corner[1]], m.tangents[corner[2]], n)
-                                           : glm::vec4(0.0f);
+        const glm::vec4 tangent =
+            tangents ? faceTangent(m.tangents[corner[0]], m.tangents[corner[1]], m.tangents[corner[2]], n)
+                     : glm::vec4(0.0f);
         if (rotations == 3) {  // all three corners already provoke other triangles: a vertex of its own
             provoking = uint32_t(f.positions.size());
             f.positions.push_back(m.positions[corner[2]]);
@@ -303,7 +305,7 @@ int wrapTexel(int i, int size, int wrap) {
         int m = ((i % period) + period) % period;
         return m < size ? m : period - 1 - m;
     }
-    return ((i % size) + size) % size;                      // GL_REPEAT
+    return ((i % size) + size) % size;  // GL_REPEAT
 }
 
 }  // namespace
@@ -327,7 +329,8 @@ glm::vec4 sampleTextureRgba(const TextureImage& t, const glm::vec2& uv) {
     const float fx = x - 0.5f, fy = y - 0.5f;
     const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
     const float ax = fx - float(x0), ay = fy - float(y0);
-    return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), ax), glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), ax), ay);
+    return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), ax),
+                    glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), ax), ay);
 }
 
 glm::vec3 sampleTexture(const TextureImage& t, const glm::vec2& uv) { return glm::vec3(sampleTextureRgba(t, uv)); }
@@ -355,7 +358,8 @@ BoundingSphere worldBounds(const std::vector<const Mesh*>& meshes, const std::ve
     if (!any) return b;
     b.center = 0.5f * (lo + hi);
     float radius2 = 0.0f;
-    forEachWorldPosition([&](const glm::vec3& w) { radius2 = std::max(radius2, glm::dot(w - b.center, w - b.center)); });
+    forEachWorldPosition(
+        [&](const glm::vec3& w) { radius2 = std::max(radius2, glm::dot(w - b.center, w - b.center)); });
     b.radius = std::sqrt(radius2);
     return b;
 }

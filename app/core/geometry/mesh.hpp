@@ -24,15 +24,15 @@ struct MeshPart {
     std::uint32_t indexCount = 0;
     bool hasBaseColor = false;
     glm::vec3 baseColor{1.0f};
-    int texture = -1;                   // index into Mesh::textures; -1: none
+    int texture = -1;  // index into Mesh::textures; -1: none
     // Coverage: Opaque ignores alpha; Mask draws where alpha >= alphaCutoff; Blend mixes by alpha.
-    float baseAlpha = 1.0f;             // the base colour factor's alpha
+    float baseAlpha = 1.0f;  // the base colour factor's alpha
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     // E, the light the surface gives off: emissiveFactor x KHR_materials_emissive_strength, times the
     // emissive texture (sRGB, read at Mesh::emissiveTexcoords) where it has one.
     glm::vec3 emissive{0.0f};
-    int emissiveTexture = -1;           // index into Mesh::textures; -1: none
+    int emissiveTexture = -1;  // index into Mesh::textures; -1: none
     // glTF's material.doubleSided: drawn from both sides, a back face lit with its normal flipped
     // (no back-face culling for this part). False: back faces are culled, as for procedural meshes.
     bool doubleSided = false;
@@ -46,19 +46,19 @@ struct MeshPart {
 // texture; sampleTexture() on the CPU). Row 0 is the image's top row, at texture coordinate v = 0.
 struct TextureImage {
     int width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;     // width * height * 4 bytes
+    std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
     // The sampler, in GL's (and glTF's) enum values.
-    int wrapS = 0x2901, wrapT = 0x2901; // GL_REPEAT (or GL_CLAMP_TO_EDGE 0x812F, GL_MIRRORED_REPEAT 0x8370)
-    int magFilter = 0x2601;             // GL_LINEAR (or GL_NEAREST 0x2600)
-    int minFilter = 0x2703;             // GL_LINEAR_MIPMAP_LINEAR (or any other GL minification filter)
-    std::string name;                   // for messages: the image's URI or "image N"
+    int wrapS = 0x2901, wrapT = 0x2901;  // GL_REPEAT (or GL_CLAMP_TO_EDGE 0x812F, GL_MIRRORED_REPEAT 0x8370)
+    int magFilter = 0x2601;              // GL_LINEAR (or GL_NEAREST 0x2600)
+    int minFilter = 0x2703;              // GL_LINEAR_MIPMAP_LINEAR (or any other GL minification filter)
+    std::string name;                    // for messages: the image's URI or "image N"
 };
 
 struct Mesh {
-    std::vector<glm::vec3> positions;   // object space
-    std::vector<glm::vec3> normals;     // object space, unit length, one per position
-    std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise from outside
-    std::vector<MeshPart> parts;        // empty: the whole mesh is one part with the scene's colour
+    std::vector<glm::vec3> positions;    // object space
+    std::vector<glm::vec3> normals;      // object space, unit length, one per position
+    std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise from outside
+    std::vector<MeshPart> parts;         // empty: the whole mesh is one part with the scene's colour
     // Where C varies over the surface (a glTF model with a base colour texture or COLOR_0): both are
     // one per position, or both empty. texcoords: the coordinates the part's texture is read with
     // (its TEXCOORD_n, KHR_texture_transform applied; 0 where a part has none); colors: COLOR_0's
@@ -102,10 +102,10 @@ glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
 // UV sphere laid out exactly like ../shared/bench (seam column duplicated, one triangle per pole quad):
 // (stacks + 1) * (slices + 1) vertices, 2 * slices * (stacks - 1) triangles.
 Mesh makeUvSphere(int slices, int stacks, float radius);
-Mesh makeIcoSphere(int subdivisions, float radius);            // 20 * 4^n triangles
+Mesh makeIcoSphere(int subdivisions, float radius);  // 20 * 4^n triangles
 Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments);
-Mesh makeCube(float size);                                     // 24 vertices, one normal per face
-Mesh makePlane(float size, int subdivisions);                  // x-z square at y = 0, facing +y
+Mesh makeCube(float size);                     // 24 vertices, one normal per face
+Mesh makePlane(float size, int subdivisions);  // x-z square at y = 0, facing +y
 
 // Where a vertex's tangent frame comes from (anisotropic reflection), in this order of preference.
 enum class TangentSource { Given, Texcoords, UpAxis };
@@ -128,11 +128,11 @@ Mesh makeProceduralMesh(const MeshSpec& spec);
 // mesh (T = 2V) that is about T vertices instead of the V + T of one new vertex per triangle, and a
 // third fewer vertex-shader runs. The colour is still evaluated once per triangle, at its centroid.
 struct FlatMesh {
-    std::vector<glm::vec3> positions;   // object space
-    std::vector<glm::vec3> normals;     // face normal at each provoking vertex (vertex normal elsewhere)
-    std::vector<glm::vec3> centroids;   // triangle centroid at each provoking vertex (position elsewhere)
-    std::vector<std::uint32_t> indices; // per triangle, its corners rotated so the provoking one is last
-    std::vector<glm::vec2> texcoords;   // as the Mesh's (empty when it has none), copied to added vertices
+    std::vector<glm::vec3> positions;    // object space
+    std::vector<glm::vec3> normals;      // face normal at each provoking vertex (vertex normal elsewhere)
+    std::vector<glm::vec3> centroids;    // triangle centroid at each provoking vertex (position elsewhere)
+    std::vector<std::uint32_t> indices;  // per triangle, its corners rotated so the provoking one is last
+    std::vector<glm::vec2> texcoords;    // as the Mesh's (empty when it has none), copied to added vertices
     std::vector<glm::vec4> colors;
     std::vector<glm::vec2> emissiveTexcoords;
     // Anisotropic draws: at each provoking vertex the triangle's tangent (its corners' tangents averaged,

@@ -79,12 +79,14 @@ void SceneRayCaster::addTriangles(const Scene& scene, const SceneGeometry& geome
         const float frontSign = glm::determinant(glm::mat3(world)) < 0.0f ? -1.0f : 1.0f;
         const std::vector<bool> doubleSided = doubleSidedTriangles(mesh);
         std::vector<glm::vec3> posWorld(mesh.positions.size());
-        for (std::size_t i = 0; i < posWorld.size(); ++i) posWorld[i] = glm::vec3(world * glm::vec4(mesh.positions[i], 1.0f));
+        for (std::size_t i = 0; i < posWorld.size(); ++i)
+            posWorld[i] = glm::vec3(world * glm::vec4(mesh.positions[i], 1.0f));
         for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
             const glm::vec3& a = posWorld[mesh.indices[3 * t]];
             const glm::vec3& b = posWorld[mesh.indices[3 * t + 1]];
             const glm::vec3& c = posWorld[mesh.indices[3 * t + 2]];
-            triangles_.push_back({a, b - a, c - a, std::uint32_t(o), std::uint32_t(t), frontSign, bool(doubleSided[t])});
+            triangles_.push_back(
+                {a, b - a, c - a, std::uint32_t(o), std::uint32_t(t), frontSign, bool(doubleSided[t])});
         }
     }
 }
@@ -150,7 +152,8 @@ void SceneRayCaster::traverse(const glm::vec3& origin, const glm::vec3& directio
     // A zero component becomes a tiny one of the same sign: the slab test then needs no special case
     // (0 * inf would be NaN for a ray starting exactly on a box face).
     glm::vec3 inv;
-    for (int k = 0; k < 3; ++k) inv[k] = 1.0f / (direction[k] != 0.0f ? direction[k] : std::copysign(1e-30f, direction[k]));
+    for (int k = 0; k < 3; ++k)
+        inv[k] = 1.0f / (direction[k] != 0.0f ? direction[k] : std::copysign(1e-30f, direction[k]));
     std::uint32_t stack[64];  // depth ~ log2(n / 4) + 1: 64 holds any mesh that fits in memory
     int top = 0;
     if (boxEntry(nodes_[0].lo, nodes_[0].hi, origin, inv, tMin, tMax) == kInf) return;
@@ -164,10 +167,12 @@ void SceneRayCaster::traverse(const glm::vec3& origin, const glm::vec3& directio
         }
         // Nearer child on top of the stack, so the nearest hit shortens tMax early.
         const float enterLeft = boxEntry(nodes_[node.first].lo, nodes_[node.first].hi, origin, inv, tMin, tMax);
-        const float enterRight = boxEntry(nodes_[node.first + 1].lo, nodes_[node.first + 1].hi, origin, inv, tMin, tMax);
+        const float enterRight =
+            boxEntry(nodes_[node.first + 1].lo, nodes_[node.first + 1].hi, origin, inv, tMin, tMax);
         const bool leftFirst = enterLeft <= enterRight;
         const float enter[2] = {leftFirst ? enterRight : enterLeft, leftFirst ? enterLeft : enterRight};
-        const std::uint32_t child[2] = {leftFirst ? node.first + 1 : node.first, leftFirst ? node.first : node.first + 1};
+        const std::uint32_t child[2] = {leftFirst ? node.first + 1 : node.first,
+                                        leftFirst ? node.first : node.first + 1};
         for (int k = 0; k < 2; ++k)
             if (enter[k] != kInf && top < 64) stack[top++] = child[k];
     }
@@ -182,7 +187,8 @@ std::optional<TriangleHit> SceneRayCaster::nearestFrontFace(const glm::vec3& ori
             h.t < tMin || h.t > tMax)
             return false;
         tMax = h.t;
-        best = TriangleHit{tri.object, tri.triangle, h.t, glm::vec3(1.0f - h.u - h.v, h.u, h.v), h.det * tri.frontSign < 0.0f};
+        best = TriangleHit{tri.object, tri.triangle, h.t, glm::vec3(1.0f - h.u - h.v, h.u, h.v),
+                           h.det * tri.frontSign < 0.0f};
         return false;  // a nearer one may follow
     });
     return best;

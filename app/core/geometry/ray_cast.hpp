@@ -4,8 +4,8 @@
 // light source and test for occlusion"). The triangles of every object are put in world space once,
 // in a bounding-volume hierarchy, so a ray against a 200k-triangle model costs microseconds (a plain
 // loop over the triangles costs milliseconds, and a probe with shadows casts thousands of rays).
-#include "core/scene/scene.hpp"
 #include "core/geometry/scene_geometry.hpp"
+#include "core/scene/scene.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -52,13 +52,13 @@ private:
     struct Triangle {
         glm::vec3 a, edge1, edge2;  // world space: corners a, a + edge1, a + edge2 in index order
         std::uint32_t object, triangle;
-        float frontSign;            // +1: counter-clockwise corners face the viewer; -1 under a mirroring transform
-        bool doubleSided;           // its part is double-sided: both faces are hit
+        float frontSign;   // +1: counter-clockwise corners face the viewer; -1 under a mirroring transform
+        bool doubleSided;  // its part is double-sided: both faces are hit
     };
     struct Node {
-        glm::vec3 lo, hi;           // bounds of everything below
-        std::uint32_t first = 0;    // leaf: first of `count` triangles; inner: index of the left child (right = +1)
-        std::uint32_t count = 0;    // 0 for an inner node
+        glm::vec3 lo, hi;         // bounds of everything below
+        std::uint32_t first = 0;  // leaf: first of `count` triangles; inner: index of the left child (right = +1)
+        std::uint32_t count = 0;  // 0 for an inner node
     };
     template <typename Visit>
     void traverse(const glm::vec3& origin, const glm::vec3& direction, float tMin, float& tMax, Visit&& visit) const;

@@ -1,7 +1,7 @@
 #include "core/geometry/scene_geometry.hpp"
 
-#include "core/geometry/camera.hpp"
 #include "core/base/error.hpp"
+#include "core/geometry/camera.hpp"
 #include "core/shading/lighting.hpp"
 
 #include <glm/common.hpp>
@@ -55,7 +55,9 @@ void useModelCamera(Scene& scene, const SceneGeometry& g) {
                          (cameras.size() == 1 ? "" : "s") + " in its drawn scene" +
                          (cameras.empty() ? "" : " (0.." + std::to_string(cameras.size() - 1) + ")"));
     const GltfCamera& c = cameras[n];
-    if (!c.perspective) throw InputError("--camera: camera " + std::to_string(n) + " of " + path + " is orthographic: shadelab's views are perspective");
+    if (!c.perspective)
+        throw InputError("--camera: camera " + std::to_string(n) + " of " + path +
+                         " is orthographic: shadelab's views are perspective");
     const glm::mat4 world = worldFromObject(scene.objects[object].transform);
     Camera& cam = scene.camera;
     cam.eye = glm::vec3(world * glm::vec4(c.eye, 1.0f));
@@ -85,7 +87,8 @@ void useModelLights(Scene& scene, const SceneGeometry& g) {
 
 }  // namespace
 
-std::vector<Light> lecturesLights(const std::vector<GltfLight>& lights, const glm::mat4& world, const BoundingSphere& b) {
+std::vector<Light> lecturesLights(const std::vector<GltfLight>& lights, const glm::mat4& world,
+                                  const BoundingSphere& b) {
     std::vector<Light> out;
     const float scale = std::cbrt(std::fabs(glm::determinant(glm::mat3(world))));
     const float radius = b.radius > 0.0f ? b.radius : 1.0f;

@@ -43,7 +43,8 @@ EnvironmentImage readHdr(const std::string& path) {
     if (!stbi_info_from_file(file.get(), &w, &h, &channels))
         throw InputError(path + ": cannot read the .hdr file: " + stbi_failure_reason());
     checkSize(path, w, h);
-    std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf_from_file(file.get(), &w, &h, &channels, 3), &stbi_image_free);
+    std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf_from_file(file.get(), &w, &h, &channels, 3),
+                                                   &stbi_image_free);
     if (!pixels) throw InputError(path + ": cannot read the .hdr file: " + stbi_failure_reason());
     EnvironmentImage img{w, h, std::vector<float>(pixels.get(), pixels.get() + std::size_t(w) * std::size_t(h) * 3)};
     for (float& v : img.rgb)
@@ -54,7 +55,8 @@ EnvironmentImage readHdr(const std::string& path) {
 EnvironmentImage readPngEnvironment(const std::string& path) {
     const Image png = readPng(path);
     checkSize(path, png.width, png.height);
-    EnvironmentImage img{png.width, png.height, std::vector<float>(std::size_t(png.width) * std::size_t(png.height) * 3)};
+    EnvironmentImage img{png.width, png.height,
+                         std::vector<float>(std::size_t(png.width) * std::size_t(png.height) * 3)};
     for (std::size_t p = 0; p < std::size_t(png.width) * std::size_t(png.height); ++p)
         for (std::size_t c = 0; c < 3; ++c) img.rgb[3 * p + c] = decodeSrgb(png.rgba[4 * p + c]);
     return img;

@@ -12,11 +12,11 @@
 #endif
 
 #include <algorithm>
-#include <cmath>
 #include <cerrno>
-#include <cstring>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -49,7 +49,8 @@ void writePng(const std::string& path, const Image& img, int level) {
             const Sink& to = *static_cast<Sink*>(context);
             *to.ok = *to.ok && std::fwrite(data, 1, std::size_t(size), to.file) == std::size_t(size);
         };
-        const int encoded = stbi_write_png_to_func(put, &sink, img.width, img.height, 4, img.rgba.data(), img.width * 4);
+        const int encoded =
+            stbi_write_png_to_func(put, &sink, img.width, img.height, 4, img.rgba.data(), img.width * 4);
         if (!encoded) throw InputError(path + ": cannot write: the PNG encoder failed");
         return written;
     });
@@ -107,8 +108,8 @@ void setUpPng(png_structp png, png_infop info, const Image& img, int level) {
     // Rendered frames are smooth gradients: the Sub filter alone compresses them nearly as well as
     // adaptive filtering at a fraction of the cost.
     png_set_filter(png, PNG_FILTER_TYPE_BASE, level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
-    png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGBA,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (int y = 0; y < img.height; ++y) png_write_row(png, img.pixel(0, y));
     png_write_end(png, nullptr);
@@ -123,8 +124,9 @@ void writePng(const std::string& path, const Image& img, int level) {
         if (!info || setjmp(png_jmpbuf(png))) {
             png_destroy_write_struct(&png, &info);
             // A stream error (ENOSPC, EIO) says more than libpng's "Write Error".
-            throw InputError(path + ": cannot write: " +
-                             (std::ferror(f) && errno ? std::string(std::strerror(errno)) : "libpng: " + errors.message));
+            throw InputError(
+                path + ": cannot write: " +
+                (std::ferror(f) && errno ? std::string(std::strerror(errno)) : "libpng: " + errors.message));
         }
         png_init_io(png, f);
         setUpPng(png, info, img, level);

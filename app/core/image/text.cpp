@@ -47,8 +47,8 @@ void drawText(Image& image, int x, int y, const std::string& text, int scale, Rg
     std::vector<char> mutableText = printableAscii(text);
     std::vector<float> buffer(text.size() * 270 / sizeof(float) + 64);
     unsigned char rgba[4] = {255, 255, 255, 255};
-    const int quads = stb_easy_font_print(0.0f, 0.0f, mutableText.data(), rgba, buffer.data(),
-                                          int(buffer.size() * sizeof(float)));
+    const int quads =
+        stb_easy_font_print(0.0f, 0.0f, mutableText.data(), rgba, buffer.data(), int(buffer.size() * sizeof(float)));
     for (int q = 0; q < quads; ++q) {
         const float* v = &buffer[std::size_t(q) * 16];  // 4 vertices x (x, y, z, colour)
         const float qx0 = std::min(v[0], v[8]), qx1 = std::max(v[0], v[8]);

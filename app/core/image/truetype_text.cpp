@@ -52,7 +52,8 @@ const TrueTypeFont* TrueTypeFont::dejaVuSans() {
         auto impl = std::make_unique<Impl>();
         std::ifstream in(kDejaVuSans, std::ios::binary);
         impl->data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-        if (impl->data.empty() || !stbtt_InitFont(&impl->info, impl->data.data(), stbtt_GetFontOffsetForIndex(impl->data.data(), 0)))
+        if (impl->data.empty() ||
+            !stbtt_InitFont(&impl->info, impl->data.data(), stbtt_GetFontOffsetForIndex(impl->data.data(), 0)))
             return nullptr;
         stbtt_GetFontVMetrics(&impl->info, &impl->ascent, &impl->descent, &impl->lineGap);
         return std::unique_ptr<TrueTypeFont>(new TrueTypeFont(std::move(impl)));

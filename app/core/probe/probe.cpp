@@ -49,7 +49,7 @@ glm::vec3 shownSpecular(const ShadingTerms& t, const TermView& show) {
     case ShowTerm::Specular: return t.specular;
     case ShowTerm::Light:
         return show.light >= 0 && std::size_t(show.light) < t.lights.size() ? t.lights[std::size_t(show.light)].specular
-                                                                           : glm::vec3(0.0f);
+                                                                            : glm::vec3(0.0f);
     default: return glm::vec3(0.0f);
     }
 }
@@ -92,7 +92,7 @@ ProbeEvaluation evaluate(const TriangleContext& c, const Material& material, con
         const Light& light = c.env.lights[l];
         ProbeLight& out = e.lights[l];
         out.towardLight = light.type == LightType::Directional ? glm::normalize(-light.direction)
-                                                                : glm::normalize(light.position - posWorld);
+                                                               : glm::normalize(light.position - posWorld);
         out.nDotI = glm::dot(nrmWorld, out.towardLight);
         out.reflected = 2.0f * out.nDotI * nrmWorld - out.towardLight;
         out.rDotV = glm::dot(out.reflected, e.viewWorld);
@@ -121,7 +121,8 @@ void evaluatePhong(const TriangleContext& c, const Material& lit, ModeProbe& m) 
     const glm::vec4 tan = w.x * tangentToWorld(c.worldFromObject, c.tanObject[0]) +
                           w.y * tangentToWorld(c.worldFromObject, c.tanObject[1]) +
                           w.z * tangentToWorld(c.worldFromObject, c.tanObject[2]);
-    m.evaluations.push_back(evaluate(c, lit, toWorld(c.worldFromObject, posObject), c.facing * glm::normalize(nrm), tan));
+    m.evaluations.push_back(
+        evaluate(c, lit, toWorld(c.worldFromObject, posObject), c.facing * glm::normalize(nrm), tan));
     m.color = m.evaluations[0].terms.total;
 }
 
@@ -151,8 +152,9 @@ void evaluateFlat(const TriangleContext& c, const Material& lit, ModeProbe& m) {
     const glm::vec3 centroid = (c.posObject[0] + c.posObject[1] + c.posObject[2]) / 3.0f;
     const glm::vec3 face = faceNormal(c.posObject[0], c.posObject[1], c.posObject[2]);
     const glm::vec4 tan = faceTangent(c.tanObject[0], c.tanObject[1], c.tanObject[2], face);
-    ProbeEvaluation e = evaluate(c, lit, toWorld(c.worldFromObject, centroid),
-                                 c.facing * glm::normalize(c.normalWorldFromObject * face), tangentToWorld(c.worldFromObject, tan));
+    ProbeEvaluation e =
+        evaluate(c, lit, toWorld(c.worldFromObject, centroid),
+                 c.facing * glm::normalize(c.normalWorldFromObject * face), tangentToWorld(c.worldFromObject, tan));
     e.site = ProbeEvaluation::Site::Centroid;
     m.color = e.terms.total;
     if (c.baseMaterial) {
@@ -220,8 +222,10 @@ Material drawnMaterial(const Scene& scene, const Mesh& mesh, std::size_t object,
 void sampleColor(const Mesh& mesh, const MeshPart* part, const glm::vec3& w, ProbeResult& r, TriangleContext& c,
                  Material& baseMaterial) {
     r.textured = true;
-    r.texcoord = w.x * mesh.texcoords[c.vertex[0]] + w.y * mesh.texcoords[c.vertex[1]] + w.z * mesh.texcoords[c.vertex[2]];
-    const glm::vec4 color = w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
+    r.texcoord =
+        w.x * mesh.texcoords[c.vertex[0]] + w.y * mesh.texcoords[c.vertex[1]] + w.z * mesh.texcoords[c.vertex[2]];
+    const glm::vec4 color =
+        w.x * mesh.colors[c.vertex[0]] + w.y * mesh.colors[c.vertex[1]] + w.z * mesh.colors[c.vertex[2]];
     glm::vec4 texel = color;
     if (part && part->texture >= 0 && std::size_t(part->texture) < mesh.textures.size())
         texel *= sampleTextureRgba(*mesh.textures[std::size_t(part->texture)], r.texcoord);
@@ -230,7 +234,8 @@ void sampleColor(const Mesh& mesh, const MeshPart* part, const glm::vec3& w, Pro
     r.baseColor = baseMaterial.color;
     r.material.color = baseMaterial.color * r.texel;
     // E varies with the emissive texture: Phong's sum has it at the point, flat and Gouraud add it per fragment.
-    if (part && part->emissiveTexture >= 0 && mesh.hasEmissiveTexture() && std::size_t(part->emissiveTexture) < mesh.textures.size()) {
+    if (part && part->emissiveTexture >= 0 && mesh.hasEmissiveTexture() &&
+        std::size_t(part->emissiveTexture) < mesh.textures.size()) {
         const glm::vec2 uv = w.x * mesh.emissiveTexcoords[c.vertex[0]] + w.y * mesh.emissiveTexcoords[c.vertex[1]] +
                              w.z * mesh.emissiveTexcoords[c.vertex[2]];
         r.material.emissive *= sampleTexture(*mesh.textures[std::size_t(part->emissiveTexture)], uv);
@@ -273,12 +278,14 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
     if (part) r.alphaMode = part->alphaMode, r.alpha = part->baseAlpha, r.alphaCutoff = part->alphaCutoff;
     const LightingEnvironment env = lightingEnvironment(scene);
     const glm::mat4 world = worldFromObject(scene.objects[anchor.object].transform);
-    TriangleContext c{scene, env, r.material, caster, world, normalWorldFromObject(world), {}, {}, {}, {}, anchor.barycentric};
+    TriangleContext c{scene, env, r.material,        caster, world, normalWorldFromObject(world), {}, {},
+                      {},    {},  anchor.barycentric};
     for (int k = 0; k < 3; ++k) {
         c.vertex[k] = mesh.indices[3 * anchor.triangle + std::size_t(k)];
         c.posObject[k] = mesh.positions[c.vertex[k]];
         c.nrmObject[k] = mesh.normals[c.vertex[k]];
-        c.tanObject[k] = c.vertex[k] < mesh.tangents.size() ? mesh.tangents[c.vertex[k]] : tangentAroundUp(c.nrmObject[k]);
+        c.tanObject[k] =
+            c.vertex[k] < mesh.tangents.size() ? mesh.tangents[c.vertex[k]] : tangentAroundUp(c.nrmObject[k]);
     }
     // A double-sided part seen from behind is lit with its normals flipped; a single-sided one is
     // culled there (the ray cast does not find it), so its facing is not asked.
@@ -326,13 +333,15 @@ ProbeResult probePixel(const Scene& scene, const SceneGeometry& geometry, const 
     const auto hit = caster.nearestFrontFace(cam.eye, direction, cam.nearPlane / along, cam.farPlane / along);
     if (!hit || !validAnchor(scene, geometry, ProbeAnchor{x, y, r.pane, hit->object, hit->triangle, hit->barycentric}))
         return r;
-    return probeAnchor(scene, geometry, caster, ProbeAnchor{x, y, r.pane, hit->object, hit->triangle, hit->barycentric});
+    return probeAnchor(scene, geometry, caster,
+                       ProbeAnchor{x, y, r.pane, hit->object, hit->triangle, hit->barycentric});
 }
 
 std::string probedPlace(const ProbeResult& result) {
     std::string mode = result.modes.empty() ? "" : toString(result.modes[0].mode);
     if (!mode.empty()) mode[0] = char(std::toupper(static_cast<unsigned char>(mode[0])));
-    return "at pixel " + std::to_string(result.x) + "," + std::to_string(result.y) + (mode.empty() ? "" : " (" + mode + ")");
+    return "at pixel " + std::to_string(result.x) + "," + std::to_string(result.y) +
+           (mode.empty() ? "" : " (" + mode + ")");
 }
 
 std::optional<ShadingTerms> probedTerms(const ProbeResult& result) {
@@ -345,7 +354,8 @@ std::optional<ShadingTerms> probedTerms(const ProbeResult& result) {
         for (std::size_t k = 0; k < m.evaluations.size() && k < 3; ++k) {
             const ShadingTerms& e = m.evaluations[k].terms;
             const float w = result.anchor.barycentric[int(k)];
-            t.ambient += w * e.ambient, t.diffuse += w * e.diffuse, t.specular += w * e.specular, t.shown += w * e.shown;
+            t.ambient += w * e.ambient, t.diffuse += w * e.diffuse, t.specular += w * e.specular,
+                t.shown += w * e.shown;
             t.environment += w * e.environment;
         }
     }

@@ -14,11 +14,11 @@
 // shadow maps, which agree with it except within a few shadow-map texels of a shadow's edge.
 #include "core/geometry/camera.hpp"
 #include "core/geometry/mesh.hpp"
+#include "core/geometry/ray_cast.hpp"
+#include "core/geometry/scene_geometry.hpp"
+#include "core/scene/scene.hpp"
 #include "core/shading/environment.hpp"
 #include "core/shading/lighting.hpp"
-#include "core/geometry/ray_cast.hpp"
-#include "core/scene/scene.hpp"
-#include "core/geometry/scene_geometry.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -34,14 +34,14 @@ namespace shadelab {
 struct ProbeLight {
     glm::vec3 towardLight{0.0f};  // I, unit (an area light: toward its centre; its shares sum its samples)
     float nDotI = 0.0f;
-    glm::vec3 reflected{0.0f};    // R(I) = 2 (N.I) N - I
+    glm::vec3 reflected{0.0f};  // R(I) = 2 (N.I) N - I
     float rDotV = 0.0f;
-    glm::vec3 halfway{0.0f};      // H = normalize(I + V)
+    glm::vec3 halfway{0.0f};  // H = normalize(I + V)
     float hDotN = 0.0f;
     // The lobe's exponent: k_e, or with anisotropy Ashikhmin and Shirley's at H (anisotropicExponent).
     float exponent = 0.0f;
-    glm::vec3 diffuse{0.0f};      // L_l k_d C max(0, N.I), occlusion included (ShadingTerms::lights)
-    glm::vec3 specular{0.0f};     // L_l k_s S spec_l (with the scene's normalisation and Fresnel)
+    glm::vec3 diffuse{0.0f};   // L_l k_d C max(0, N.I), occlusion included (ShadingTerms::lights)
+    glm::vec3 specular{0.0f};  // L_l k_s S spec_l (with the scene's normalisation and Fresnel)
     // Shadows on: light samples that reached the occlusion test (in front of the surface and of an area
     // light) and how many of them the light reaches. visibility = visible / tested (1 if none tested).
     int samplesTested = 0;
@@ -53,15 +53,15 @@ struct ProbeLight {
 struct ProbeEvaluation {
     enum class Site { Point, Centroid, Vertex };
     Site site = Site::Point;
-    std::uint32_t vertex = 0;     // Site::Vertex: index into the mesh's vertices
+    std::uint32_t vertex = 0;  // Site::Vertex: index into the mesh's vertices
     glm::vec3 posWorld{0.0f};
-    glm::vec3 nrmWorld{0.0f};     // N, unit
-    glm::vec3 viewWorld{0.0f};    // V, unit, toward the eye
+    glm::vec3 nrmWorld{0.0f};   // N, unit
+    glm::vec3 viewWorld{0.0f};  // V, unit, toward the eye
     // Anisotropic reflection: the tangent frame there (T, B), as the mode's shader builds it from the
     // mesh's tangents (Mesh::tangents): interpolated (phong), the corner's (gouraud), the face's (flat).
     bool anisotropic = false;
     TangentFrame frame;
-    ShadingTerms terms;           // ambient, diffuse, specular, shown (before clamping), total (clamped)
+    ShadingTerms terms;  // ambient, diffuse, specular, shown (before clamping), total (clamped)
     // Mirror and glass (a material with k_r or k_t in a scene with an environment): R, T, the angles,
     // the indices, F and the two terms (core/shading/environment.hpp).
     bool mirrorGlass = false;
@@ -73,32 +73,32 @@ struct ProbeEvaluation {
 struct ModeProbe {
     ShadingMode mode = ShadingMode::Phong;
     std::vector<ProbeEvaluation> evaluations;  // phong, flat: one; gouraud: the corners a, b, c
-    glm::vec3 color{0.0f};    // linear, clamped: what the fragment shader encodes (gouraud: interpolated)
-    glm::vec3 output{0.0f};   // after the scene's output encoding (sRGB or as is), in [0, 1]
-    glm::ivec3 output8{0};    // the 8-bit value in the image: round(output * 255)
+    glm::vec3 color{0.0f};   // linear, clamped: what the fragment shader encodes (gouraud: interpolated)
+    glm::vec3 output{0.0f};  // after the scene's output encoding (sRGB or as is), in [0, 1]
+    glm::ivec3 output8{0};   // the 8-bit value in the image: round(output * 255)
 };
 
 // A probed surface point, kept while the camera moves: the viewer re-evaluates it every frame.
 struct ProbeAnchor {
-    int x = 0, y = 0;                    // the pixel it was set at
-    int pane = 0;                        // index into layoutPanes(): the mode evaluated is that pane's
+    int x = 0, y = 0;  // the pixel it was set at
+    int pane = 0;      // index into layoutPanes(): the mode evaluated is that pane's
     std::size_t object = 0, triangle = 0;
     glm::vec3 barycentric{1.0f / 3.0f};  // weights of the triangle's corners a, b, c
 };
 
 struct ProbeResult {
-    int x = 0, y = 0;          // the pixel (top-left origin)
-    int pane = -1;             // index into layoutPanes(); -1 in the diff layout's spare columns
+    int x = 0, y = 0;  // the pixel (top-left origin)
+    int pane = -1;     // index into layoutPanes(); -1 in the diff layout's spare columns
     Pane paneRect;
-    bool miss = true;          // nothing drawn there: the pixel is the background
-    ProbeAnchor anchor;        // the surface point (when not a miss)
-    glm::vec3 posWorld{0.0f};  // the point the pixel's centre sees
-    Material material;         // as drawn: a glTF part's own base colour replaces `color` unless the scene set one;
-                               // where C varies, `color` is the sampled C (base colour x texel)
-    bool textured = false;     // C varies over the surface (a glTF texture or vertex colours, drawn)
-    glm::vec2 texcoord{0.0f};  // textured: the texture coordinates at the point
-    glm::vec3 texel{1.0f};     // textured: texture(texcoord) x COLOR_0 there, linear
-    glm::vec3 baseColor{1.0f}; // textured: the part's base colour factor (C = baseColor x texel)
+    bool miss = true;           // nothing drawn there: the pixel is the background
+    ProbeAnchor anchor;         // the surface point (when not a miss)
+    glm::vec3 posWorld{0.0f};   // the point the pixel's centre sees
+    Material material;          // as drawn: a glTF part's own base colour replaces `color` unless the scene set one;
+                                // where C varies, `color` is the sampled C (base colour x texel)
+    bool textured = false;      // C varies over the surface (a glTF texture or vertex colours, drawn)
+    glm::vec2 texcoord{0.0f};   // textured: the texture coordinates at the point
+    glm::vec3 texel{1.0f};      // textured: texture(texcoord) x COLOR_0 there, linear
+    glm::vec3 baseColor{1.0f};  // textured: the part's base colour factor (C = baseColor x texel)
     // A glTF part's coverage (MeshPart): its mode and the alpha at the point (factor x texel x COLOR_0).
     // The probe reports the surface it hits; it does not composite a blended one over what is behind.
     AlphaMode alphaMode = AlphaMode::Opaque;
@@ -107,7 +107,7 @@ struct ProbeResult {
     bool backFace = false;     // and the eye sees its back: every mode evaluates with N flipped (glTF's rule)
     // One mode; the diff layout's difference pane: its two modes (diff.a, diff.b).
     std::vector<ModeProbe> modes;
-    glm::ivec3 output8{0};     // the pixel: the mode's value, the difference pane's |a - b| * factor, or the background
+    glm::ivec3 output8{0};  // the pixel: the mode's value, the difference pane's |a - b| * factor, or the background
 };
 
 // Throws InputError "FLAG: pixel X,Y is outside the WxH image" unless 0 <= x < width, 0 <= y < height.

@@ -145,8 +145,8 @@ std::string readable(const json& j) {
 // The material as drawn at the point (the glTF part's C, its texel, E and coverage where it has them).
 void writeMaterial(const Scene& scene, const ProbeResult& r, json& j) {
     const Material& m = r.material;
-    j["material"] = {{"C", vec(m.color)}, {"S", vec(m.specularColor)}, {"ka", number(m.ka)},
-                     {"kd", number(m.kd)}, {"ks", number(m.ks)},         {"ke", number(m.ke)}};
+    j["material"] = {{"C", vec(m.color)},  {"S", vec(m.specularColor)}, {"ka", number(m.ka)},
+                     {"kd", number(m.kd)}, {"ks", number(m.ks)},        {"ke", number(m.ke)}};
     if (m.mirror > 0.0f) j["material"]["mirror"] = number(m.mirror);
     if (m.transmission > 0.0f) j["material"]["transmission"] = number(m.transmission);
     if (m.anisotropic) j["material"]["anisotropy"] = json::array({number(m.anisotropy.x), number(m.anisotropy.y)});
@@ -173,7 +173,8 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
     j["size"] = json::array({scene.width, scene.height});
     j["layout"] = toString(scene.layout);
     if (r.pane >= 0) {
-        j["pane"] = {{"index", r.pane}, {"rect", json::array({r.paneRect.x, r.paneRect.y, r.paneRect.width, r.paneRect.height})}};
+        j["pane"] = {{"index", r.pane},
+                     {"rect", json::array({r.paneRect.x, r.paneRect.y, r.paneRect.width, r.paneRect.height})}};
         j["mode"] = r.paneRect.difference ? "difference" : toString(r.paneRect.mode);
     } else {
         j["pane"] = nullptr;  // the diff layout's spare columns: background
@@ -203,8 +204,9 @@ std::string probeToJson(const Scene& scene, const ProbeResult& r) {
     j["ambient_A"] = vec(scene.ambient);
     j["shadows"] = {{"enabled", scene.shadows.enabled}};
     if (scene.shadows.enabled)
-        j["shadows"]["test"] = "ray cast on the CPU toward each light sample; the renderer uses shadow maps, so "
-                               "within a few shadow-map texels of a shadow's edge the pixel can differ";
+        j["shadows"]["test"] =
+            "ray cast on the CPU toward each light sample; the renderer uses shadow maps, so "
+            "within a few shadow-map texels of a shadow's edge the pixel can differ";
     if (r.paneRect.difference) {
         writeMode(scene, r, r.modes[0], j["a"]);
         writeMode(scene, r, r.modes[1], j["b"]);

@@ -49,8 +49,7 @@ void parseRamp(Animation& a, const std::string& range, const std::string& flag) 
     a.parameter = range.substr(0, eq);
     a.from = range.substr(eq + 1, dots - eq - 1);
     a.to = range.substr(dots + 2);
-    if (a.from.empty() || a.to.empty())
-        throw InputError(where + ": a ramp needs both ends, A..B (e.g. ke=1..1000)");
+    if (a.from.empty() || a.to.empty()) throw InputError(where + ": a ramp needs both ends, A..B (e.g. ke=1..1000)");
     parseSweep(a.parameter + "=" + a.from + "," + a.to, where);  // the parameter and both ends, or throws
 }
 
@@ -89,8 +88,7 @@ Animation parseAnimation(const std::string& spec, const std::string& flag) {
     a.text = spec;
     const std::string where = flag + ": " + quoteInput(spec);
     std::vector<std::string> parts = split(spec, ':');
-    if (parts.empty() || parts.size() > 3)
-        throw InputError(where + ": not an animation (expected " + kForms + ")");
+    if (parts.empty() || parts.size() > 3) throw InputError(where + ": not an animation (expected " + kForms + ")");
     if (parts[0] == "light-orbit" || parts[0] == "camera-orbit") {
         a.kind = parts[0] == "light-orbit" ? Animation::Kind::LightOrbit : Animation::Kind::CameraOrbit;
         if (parts.size() > 2) throw InputError(where + ": an orbit takes only :SECONDS (expected " + kForms + ")");
@@ -136,9 +134,7 @@ Scene sceneAtTime(const Scene& base, const std::vector<Animation>& animations, d
         case Animation::Kind::CameraOrbit:
             s.camera.eye = s.camera.target + turned(s.camera.eye - s.camera.target, glm::normalize(s.camera.up), angle);
             break;
-        case Animation::Kind::Ramp:
-            applySweep(s, Sweep{a.parameter, {rampValue(a, t / a.seconds)}}, 0, where);
-            break;
+        case Animation::Kind::Ramp: applySweep(s, Sweep{a.parameter, {rampValue(a, t / a.seconds)}}, 0, where); break;
         }
     }
     return s;

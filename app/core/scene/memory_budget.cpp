@@ -65,7 +65,8 @@ std::uint64_t cgroupMemoryLimit(const std::string& root, const std::string& self
         fs::path base;
         std::string file;
         if (line.compare(0, first, "0") == 0 && controllers == ",,") base = root, file = "memory.max";
-        else if (controllers.find(",memory,") != std::string::npos) base = fs::path(root) / "memory", file = "memory.limit_in_bytes";
+        else if (controllers.find(",memory,") != std::string::npos)
+            base = fs::path(root) / "memory", file = "memory.limit_in_bytes";
         else continue;
         // The group and each parent up to the root (a limit set on a parent holds for its children), and
         // the root itself: inside a container's namespace the group's path is the host's, its files at the root.
@@ -93,7 +94,8 @@ std::uint64_t proceduralTriangles(const MeshSpec& m) {
     const auto n = [](int v) { return std::uint64_t(std::max(v, 0)); };
     switch (m.type) {
     case MeshSpec::Type::UvSphere: return 2 * n(m.slices) * (n(m.stacks) > 0 ? n(m.stacks) - 1 : 0);
-    case MeshSpec::Type::IcoSphere: return 20 * (std::uint64_t(1) << (2 * std::min(n(m.subdivisions), std::uint64_t(20))));
+    case MeshSpec::Type::IcoSphere:
+        return 20 * (std::uint64_t(1) << (2 * std::min(n(m.subdivisions), std::uint64_t(20))));
     case MeshSpec::Type::Torus: return 2 * n(m.majorSegments) * n(m.minorSegments);
     case MeshSpec::Type::Cube: return 12;
     case MeshSpec::Type::Plane: return 2 * n(m.planeSubdivisions) * n(m.planeSubdivisions);
@@ -102,7 +104,8 @@ std::uint64_t proceduralTriangles(const MeshSpec& m) {
     return 0;
 }
 
-MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles, std::uint64_t textureBytes) {
+MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint64_t> triangles,
+                        std::uint64_t textureBytes) {
     MemoryUse use;
     use.program = kProgramBytes;
     const std::uint64_t pixels = std::uint64_t(std::max(s.width, 0)) * std::uint64_t(std::max(s.height, 0));
@@ -112,8 +115,11 @@ MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint
         const std::uint64_t areaMap = std::uint64_t(s.shadows.areaMapSize) * std::uint64_t(s.shadows.areaMapSize);
         for (const Light& l : s.lights) {
             if (l.type == LightType::Point) use.shadowMaps += 6 * map * kBytesPerTexel;
-            else if (l.type == LightType::Directional || l.type == LightType::Spot) use.shadowMaps += map * kBytesPerTexel;
-            else use.shadowMaps += std::uint64_t(l.samples.x) * std::uint64_t(l.samples.y) * areaMap * kBytesPerTexel * 8 / 5;
+            else if (l.type == LightType::Directional || l.type == LightType::Spot)
+                use.shadowMaps += map * kBytesPerTexel;
+            else
+                use.shadowMaps +=
+                    std::uint64_t(l.samples.x) * std::uint64_t(l.samples.y) * areaMap * kBytesPerTexel * 8 / 5;
         }
     }
     std::uint64_t tris = 0;
@@ -127,7 +133,8 @@ MemoryUse estimateFrame(const Scene& s, int msaaSamples, std::optional<std::uint
 
 std::string formatBytes(std::uint64_t bytes) {
     char text[32];
-    if (bytes >= (std::uint64_t(1) << 30)) std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1u << 30));
+    if (bytes >= (std::uint64_t(1) << 30))
+        std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1u << 30));
     else std::snprintf(text, sizeof text, "%.0f MiB", double(bytes) / double(1u << 20));
     return text;
 }
@@ -137,15 +144,16 @@ void checkMemory(const MemoryUse& use, const std::string& what) {
     if (use.total() <= budget) return;
     std::string parts;
     const auto part = [&](const char* name, std::uint64_t b) {
-        if (b >= (std::uint64_t(1) << 20)) parts += std::string(parts.empty() ? "" : ", ") + name + " " + formatBytes(b);
+        if (b >= (std::uint64_t(1) << 20))
+            parts += std::string(parts.empty() ? "" : ", ") + name + " " + formatBytes(b);
     };
     part("framebuffers", use.framebuffers);
     part("shadow maps", use.shadowMaps);
     part("meshes", use.meshes);
     part("images", use.images);
     part("textures", use.textures);
-    throw InputError(what + " needs about " + formatBytes(use.total()) + " (" + parts + "), more than the memory budget of " +
-                     formatBytes(budget) + " (--max-memory)");
+    throw InputError(what + " needs about " + formatBytes(use.total()) + " (" + parts +
+                     "), more than the memory budget of " + formatBytes(budget) + " (--max-memory)");
 }
 
 std::optional<std::uint64_t> parseByteSize(const std::string& text) {
@@ -158,7 +166,8 @@ std::optional<std::uint64_t> parseByteSize(const std::string& text) {
         return std::nullopt;
     }
     std::string unit = text.substr(used);
-    if (!unit.empty() && (unit.back() == 'B' || unit.back() == 'b') && unit.size() > 1) unit.pop_back();  // "2GB", "2GiB"
+    if (!unit.empty() && (unit.back() == 'B' || unit.back() == 'b') && unit.size() > 1)
+        unit.pop_back();  // "2GB", "2GiB"
     if (unit.size() == 2 && (unit[1] == 'i' || unit[1] == 'I')) unit.pop_back();
     int shift = 0;
     if (unit.empty()) shift = 0;

@@ -20,9 +20,9 @@ struct MemoryUse {
     std::uint64_t program = 0;       // shadelab and the GL driver themselves, before any request
     std::uint64_t framebuffers = 0;  // colour, depth, multisampled copies, the read-back image
     std::uint64_t shadowMaps = 0;
-    std::uint64_t meshes = 0;        // CPU arrays, the driver's vertex buffers and its binned triangles
-    std::uint64_t images = 0;        // frames kept for a contact sheet or a playlist
-    std::uint64_t textures = 0;      // glTF base colour images: decoded, and as GL textures with their mip levels
+    std::uint64_t meshes = 0;    // CPU arrays, the driver's vertex buffers and its binned triangles
+    std::uint64_t images = 0;    // frames kept for a contact sheet or a playlist
+    std::uint64_t textures = 0;  // glTF base colour images: decoded, and as GL textures with their mip levels
     std::uint64_t total() const { return program + framebuffers + shadowMaps + meshes + images + textures; }
 };
 

@@ -5,13 +5,26 @@
 
 namespace shadelab {
 
-enum class PanelSection { Shading, Material, Plots, Shader, Mesh, Lights, Shadows, Overlays, Camera, Background, File, Keys };
+enum class PanelSection {
+    Shading,
+    Material,
+    Plots,
+    Shader,
+    Mesh,
+    Lights,
+    Shadows,
+    Overlays,
+    Camera,
+    Background,
+    File,
+    Keys
+};
 
 inline constexpr EnumName<PanelSection> kPanelSections[] = {
-    {"shading", PanelSection::Shading}, {"material", PanelSection::Material}, {"plots", PanelSection::Plots},
-    {"shader", PanelSection::Shader},   {"mesh", PanelSection::Mesh},         {"lights", PanelSection::Lights},
-    {"shadows", PanelSection::Shadows}, {"overlays", PanelSection::Overlays}, {"camera", PanelSection::Camera},
-    {"background", PanelSection::Background}, {"file", PanelSection::File},   {"keys", PanelSection::Keys}};
+    {"shading", PanelSection::Shading},       {"material", PanelSection::Material}, {"plots", PanelSection::Plots},
+    {"shader", PanelSection::Shader},         {"mesh", PanelSection::Mesh},         {"lights", PanelSection::Lights},
+    {"shadows", PanelSection::Shadows},       {"overlays", PanelSection::Overlays}, {"camera", PanelSection::Camera},
+    {"background", PanelSection::Background}, {"file", PanelSection::File},         {"keys", PanelSection::Keys}};
 
 // The plots of the "plots" section, top to bottom, by their --plot names (a scene's "viewer": "plot"
 // scrolls the panel to one; viewer/panel.cpp checks them against core/figures/plot.hpp's names).

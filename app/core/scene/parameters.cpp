@@ -28,6 +28,8 @@ constexpr ParameterField mesh(MeshSpec::Type type, int* (*f)(MeshSpec&)) {
 // Each row: id, name, option, symbol, label, section, range, slider, scale, decimals, components,
 // default, help, field. The help texts are the command line's (--help, README): "{range}" and
 // "{default}" are filled in from the row.
+// (a table, read row by row: clang-format leaves it as written)
+// clang-format off
 constexpr Parameter kParameters[] = {
     {Param::Ka, "ka", "--ka", "k_a", "k_a ambient", S::Material, wide(kCoefficientRange), {0, 1}, Scale::Linear, 3, 1,
      0.1, "ambient weight ({range}) of every object", material([](Material& m) { return &m.ka; })},
@@ -70,7 +72,8 @@ constexpr Parameter kParameters[] = {
      "past the critical angle)",
      scene([](Scene& s) { return &s.ior; })},
     {Param::DiffFactor, "factor", "--diff-factor", "factor", "factor", S::Shading, wide(kDiffFactorRange),
-     wide(kDiffFactorRange), Scale::Log, 1, 1, 4, "layout diff: |A - B| is multiplied by X ({range}, default {default})",
+     wide(kDiffFactorRange), Scale::Log, 1, 1, 4,
+     "layout diff: |A - B| is multiplied by X ({range}, default {default})",
      scene([](Scene& s) { return &s.diff.factor; })},
     {Param::Ambient, "ambient", "--ambient", "A", "A ambient", S::Background, wide(kColorRange), wide(kColorRange),
      Scale::Linear, 3, 3, 1, "A, the ambient light, linear RGB ({range} each)",
@@ -90,7 +93,8 @@ constexpr Parameter kParameters[] = {
      Scale::Linear, 3, 1, 1, "a light's intensity (an area light's: of the whole rectangle)",
      light([](Light& l) { return &l.intensity; })},
     {Param::OuterCone, "outer_cone_deg", "", "outer", "outer cone (deg)", S::Lights, wide(kSpotOuterConeDegRange),
-     {1, kSpotConeDegRange.hi}, Scale::Linear, 1, 1, 30, "a spot light's outer cone half-angle, degrees: no light beyond it",
+     {1, kSpotConeDegRange.hi}, Scale::Linear, 1, 1, 30,
+     "a spot light's outer cone half-angle, degrees: no light beyond it",
      light([](Light& l) { return &l.outerConeDeg; })},
     {Param::InnerCone, "inner_cone_deg", "", "inner", "inner cone (deg)", S::Lights, wide(kSpotConeDegRange),
      wide(kSpotConeDegRange), Scale::Linear, 1, 1, 15,
@@ -116,7 +120,8 @@ constexpr Parameter kParameters[] = {
     {Param::TorusMinorSegments, "minor_segments", "", "minor", "minor segments", S::Mesh, wide(kTorusSegmentsRange),
      {3, 128}, Scale::Linear, 0, 1, 24, "a torus's segments around its tube",
      mesh(MeshSpec::Type::Torus, [](MeshSpec& m) { return &m.minorSegments; })},
-    {Param::PlaneSubdivisions, "subdivisions", "", "subdivisions", "subdivisions", S::Mesh, wide(kPlaneSubdivisionsRange),
+    {Param::PlaneSubdivisions, "subdivisions", "", "subdivisions", "subdivisions", S::Mesh,
+     wide(kPlaneSubdivisionsRange),
      {1, 128}, Scale::Linear, 0, 1, 1, "a plane's subdivisions per side",
      mesh(MeshSpec::Type::Plane, [](MeshSpec& m) { return &m.planeSubdivisions; })},
 
@@ -130,6 +135,7 @@ constexpr Parameter kParameters[] = {
      Scale::Linear, 0, 1, 1, "percentage-closer filtering radius: (2r+1)^2 lookups",
      sceneInteger([](Scene& s) { return &s.shadows.pcf; })},
 };
+// clang-format on
 
 static_assert(std::size(kParameters) == std::size_t(Param::Pcf) + 1, "a row for every Param, in its order");
 
@@ -168,6 +174,8 @@ std::string parameterHelp(const Parameter& p) {
     return text;
 }
 
-std::string defaultText(const Parameter& p) { return std::isnan(p.defaultValue) ? std::string() : formatNumber(p.defaultValue); }
+std::string defaultText(const Parameter& p) {
+    return std::isnan(p.defaultValue) ? std::string() : formatNumber(p.defaultValue);
+}
 
 }  // namespace shadelab

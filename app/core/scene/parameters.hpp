@@ -24,6 +24,8 @@ namespace shadelab {
 enum class SliderScale { Linear, Log };
 
 // Every parameter of the table, in its order (kParameters[int(p)] is p's row).
+// (grouped by kind, one group a line: clang-format leaves it as written)
+// clang-format off
 enum class Param {
     // Material (each object's; the command line's sets every object's).
     Ka, Kd, Ks, Ke, Anisotropy, Mirror, Transmission, Color, SpecularColor,
@@ -38,6 +40,7 @@ enum class Param {
     // Shadows.
     NormalBias, DepthBias, Pcf,
 };
+// clang-format on
 
 // Where the value lives: one accessor is set, by the parameter's kind (none for Incidence, which is the
 // plots' setting, and for the mesh's, whose field depends on the mesh type: MeshSpec's by name).
@@ -46,7 +49,7 @@ struct ParameterField {
     float* (*scene)(Scene&) = nullptr;
     int* (*sceneInteger)(Scene&) = nullptr;
     float* (*light)(Light&) = nullptr;
-    int* (*mesh)(MeshSpec&) = nullptr;        // a mesh of type `meshType` only
+    int* (*mesh)(MeshSpec&) = nullptr;  // a mesh of type `meshType` only
     MeshSpec::Type meshType = MeshSpec::Type::Cube;
 };
 
@@ -60,10 +63,10 @@ struct Parameter {
     Range<double> range;   // what scene files, the option and the sweep accept (each component)
     Range<double> slider;  // what the sliders span; typed values take the whole range
     SliderScale scale;
-    int decimals;          // the slider shows this many decimals (0: an integer)
-    int components;        // 1; 2 (k_t, k_b); 3 (a colour)
-    double defaultValue;   // a scene's default (each component's where they are equal; NaN where not)
-    const char* help;      // one line: what it is (the option's help adds how it applies)
+    int decimals;         // the slider shows this many decimals (0: an integer)
+    int components;       // 1; 2 (k_t, k_b); 3 (a colour)
+    double defaultValue;  // a scene's default (each component's where they are equal; NaN where not)
+    const char* help;     // one line: what it is (the option's help adds how it applies)
     ParameterField field = {};
     const char* parts[2] = {};  // two components shown as two sliders: each one's label (k_t, k_b)
 };
@@ -80,7 +83,9 @@ const Parameter* meshParameter(MeshSpec::Type type, const std::string& name);
 const Parameter* parameterOfOption(const std::string& option);
 // A parameter's (first) value in a material, a scene or a light. The accessors only point at the
 // field: reading a const object through them writes nothing.
-inline float materialValue(const Parameter& p, const Material& m) { return *p.field.material(const_cast<Material&>(m)); }
+inline float materialValue(const Parameter& p, const Material& m) {
+    return *p.field.material(const_cast<Material&>(m));
+}
 inline float sceneValue(const Parameter& p, const Scene& s) { return *p.field.scene(const_cast<Scene&>(s)); }
 inline float lightValue(const Parameter& p, const Light& l) { return *p.field.light(const_cast<Light&>(l)); }
 

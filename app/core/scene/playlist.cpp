@@ -2,8 +2,8 @@
 
 #include "core/base/error.hpp"
 #include "core/base/file_io.hpp"
-#include "core/scene/scene_json.hpp"
 #include "core/image/text.hpp"
+#include "core/scene/scene_json.hpp"
 #include "platform/platform.hpp"
 
 #include <algorithm>
@@ -15,7 +15,8 @@ namespace fs = std::filesystem;
 
 std::string playlistFolder(const std::string& given) {
     std::error_code ec;
-    const bool bareName = !given.empty() && given.find_first_of("/\\") == std::string::npos && given != "." && given != "..";
+    const bool bareName =
+        !given.empty() && given.find_first_of("/\\") == std::string::npos && given != "." && given != "..";
     if (fs::exists(given, ec) || !bareName) return given;
     for (const fs::path& scenes : dataFoldersBesideProgram(platform::executablePath(), "scenes", "assets/scenes")) {
         const fs::path folder = scenes / given;
@@ -28,8 +29,11 @@ std::vector<std::string> listPresetFiles(const std::string& folder) {
     std::error_code ec;
     if (!fs::exists(folder, ec))
         throw InputError(folder + ": no such folder" +
-                         (folder.find_first_of("/\\") == std::string::npos ? " (nor a scene folder of that name beside the program)" : ""));
-    if (!fs::is_directory(folder, ec)) throw InputError(folder + ": not a folder (--playlist takes a folder of scene files)");
+                         (folder.find_first_of("/\\") == std::string::npos
+                              ? " (nor a scene folder of that name beside the program)"
+                              : ""));
+    if (!fs::is_directory(folder, ec))
+        throw InputError(folder + ": not a folder (--playlist takes a folder of scene files)");
     std::vector<std::string> names;
     fs::directory_iterator it(folder, ec);
     for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
@@ -43,6 +47,7 @@ std::vector<std::string> listPresetFiles(const std::string& folder) {
     if (names.empty()) throw InputError(folder + ": no scene files (*.json) in the folder");
     std::sort(names.begin(), names.end());
     std::vector<std::string> paths;
+    paths.reserve(names.size());
     for (const std::string& n : names) paths.push_back((fs::path(folder) / n).string());
     return paths;
 }
@@ -107,9 +112,11 @@ Image withCaptionStrip(const Image& image, const std::string& title, const std::
     std::copy(image.rgba.begin(), image.rgba.end(), out.rgba.begin());
     fillRect(out, 0, image.height, out.width, out.height, Rgba8{40, 40, 44, 255});
     int y = image.height + margin;
-    for (const std::string& l : titleLines) drawText(out, margin, y, l, titleScale, Rgba8{250, 250, 250, 255}), y += titleLine;
+    for (const std::string& l : titleLines)
+        drawText(out, margin, y, l, titleScale, Rgba8{250, 250, 250, 255}), y += titleLine;
     y += gap;
-    for (const std::string& l : captionLines) drawText(out, margin, y, l, captionScale, Rgba8{210, 210, 210, 255}), y += captionLine;
+    for (const std::string& l : captionLines)
+        drawText(out, margin, y, l, captionScale, Rgba8{210, 210, 210, 255}), y += captionLine;
     return out;
 }
 

@@ -35,12 +35,12 @@ enum class ShowTerm { All, Ambient, Diffuse, Specular, Light, Unlit, Emissive };
 // Limits shared by the parser, the CLI, the sweep, the panel and the renderer: core/scene/scene_limits.hpp.
 
 struct Material {
-    glm::vec3 color{0.85f, 0.32f, 0.2f};   // C, the diffuse/ambient colour (linear RGB, 0..1)
-    glm::vec3 specularColor{1.0f};         // S, the colour of the highlight
-    float ka = 0.1f;                       // ambient weight
-    float kd = 0.7f;                       // diffuse weight
-    float ks = 0.5f;                       // specular weight
-    float ke = 32.0f;                      // specular exponent ("size of the highlight")
+    glm::vec3 color{0.85f, 0.32f, 0.2f};  // C, the diffuse/ambient colour (linear RGB, 0..1)
+    glm::vec3 specularColor{1.0f};        // S, the colour of the highlight
+    float ka = 0.1f;                      // ambient weight
+    float kd = 0.7f;                      // diffuse weight
+    float ks = 0.5f;                      // specular weight
+    float ke = 32.0f;                     // specular exponent ("size of the highlight")
     // True when the scene (or the viewer's panel) set `color`: it then also overrides a glTF model's
     // own base colours. A model given without a colour keeps the colours its file gives.
     bool colorSet = false;
@@ -51,12 +51,12 @@ struct Material {
     // k_t along the surface's tangent T and k_b along its bitangent B (core/shading/lighting.hpp,
     // anisotropicExponent). Off unless the scene or --anisotropy gives it; Blinn-Phong's lobe only.
     bool anisotropic = false;
-    glm::vec2 anisotropy{32.0f};   // k_t, k_b (each in kExponentRange)
+    glm::vec2 anisotropy{32.0f};  // k_t, k_b (each in kExponentRange)
     // Mirror and glass ("mirror", "transmission"): added after the lecture's sum,
     //   k_r F env(R) + k_t (1 - F) env(T)     (core/shading/environment.hpp, environmentTerm)
     // with F the Fresnel reflectance of the scene's "fresnel" mode (1 for both weights under "none").
-    float mirror = 0.0f;           // k_r (kUnitRange)
-    float transmission = 0.0f;     // k_t (kUnitRange)
+    float mirror = 0.0f;        // k_r (kUnitRange)
+    float transmission = 0.0f;  // k_t (kUnitRange)
 };
 
 struct MeshSpec {
@@ -65,16 +65,16 @@ struct MeshSpec {
     // uvsphere: `slices` around the y axis, `stacks` from pole to pole; 2*slices*(stacks-1) triangles
     int slices = 64;
     int stacks = 32;
-    float radius = 1.0f;            // uvsphere, icosphere
-    int subdivisions = 3;           // icosphere: 20*4^n triangles
-    float majorRadius = 1.0f;       // torus: centre of the tube, around the y axis
-    float minorRadius = 0.35f;      // torus: tube radius
-    int majorSegments = 48;         // torus: segments around y
-    int minorSegments = 24;         // torus: segments around the tube
-    float size = 2.0f;              // cube: edge length; plane: edge length (square in x-z, facing +y)
-    int planeSubdivisions = 1;      // plane: quads per edge
-    std::string path;               // gltf: as written in the scene (relative to the scene file)
-    std::string resolvedPath;       // gltf: the path that is read (filled in by the parser)
+    float radius = 1.0f;        // uvsphere, icosphere
+    int subdivisions = 3;       // icosphere: 20*4^n triangles
+    float majorRadius = 1.0f;   // torus: centre of the tube, around the y axis
+    float minorRadius = 0.35f;  // torus: tube radius
+    int majorSegments = 48;     // torus: segments around y
+    int minorSegments = 24;     // torus: segments around the tube
+    float size = 2.0f;          // cube: edge length; plane: edge length (square in x-z, facing +y)
+    int planeSubdivisions = 1;  // plane: quads per edge
+    std::string path;           // gltf: as written in the scene (relative to the scene file)
+    std::string resolvedPath;   // gltf: the path that is read (filled in by the parser)
 
     bool operator==(const MeshSpec& o) const;
     bool operator!=(const MeshSpec& o) const { return !(*this == o); }
@@ -82,7 +82,7 @@ struct MeshSpec {
 
 struct Transform {
     glm::vec3 translation{0.0f};
-    glm::vec3 rotationDeg{0.0f};    // applied about x, then y, then z (R = Rz * Ry * Rx)
+    glm::vec3 rotationDeg{0.0f};  // applied about x, then y, then z (R = Rz * Ry * Rx)
     glm::vec3 scale{1.0f};
 };
 
@@ -94,10 +94,10 @@ struct SceneObject {
 
 struct Light {
     LightType type = LightType::Point;
-    glm::vec3 position{3.0f, 4.0f, 5.0f};     // point and spot lights: world space; area lights: the centre
-    glm::vec3 direction{-1.0f, -1.0f, -1.0f}; // directional lights: the direction the light travels; spot: its axis
+    glm::vec3 position{3.0f, 4.0f, 5.0f};      // point and spot lights: world space; area lights: the centre
+    glm::vec3 direction{-1.0f, -1.0f, -1.0f};  // directional lights: the direction the light travels; spot: its axis
     glm::vec3 color{1.0f};
-    float intensity = 1.0f;                   // area lights: of the whole rectangle (see lighting.hpp)
+    float intensity = 1.0f;                       // area lights: of the whole rectangle (see lighting.hpp)
     Attenuation attenuation = Attenuation::None;  // point, spot and area lights
     // Inverse-square only: > 0 multiplies 1/r^2 by the window clamp(1 - (r/range)^4, 0, 1)^2 so the
     // light reaches exactly zero at `range` (glTF KHR_lights_punctual's recommendation); 0: no window.
@@ -110,7 +110,7 @@ struct Light {
     bool twoSided = false;
     // Spot lights: a point light whose light is confined to a cone around `direction`: full inside the
     // inner half-angle, none outside the outer one, glTF's smooth falloff between (lighting.hpp).
-    float innerConeDeg = 15.0f;               // when not given: half the outer half-angle
+    float innerConeDeg = 15.0f;  // when not given: half the outer half-angle
     float outerConeDeg = 30.0f;
 };
 
@@ -131,8 +131,8 @@ struct ShadowSettings {
 // "environment": "room" | "sky" | a .png or .hdr file (relative to the scene file).
 struct EnvironmentSpec {
     EnvironmentKind kind = EnvironmentKind::None;
-    std::string path;          // Image: as written in the scene or on the command line
-    std::string resolvedPath;  // Image: the path that was read
+    std::string path;                               // Image: as written in the scene or on the command line
+    std::string resolvedPath;                       // Image: the path that was read
     std::shared_ptr<const EnvironmentImage> image;  // Image: its texels (read when the scene is read)
 
     bool operator==(const EnvironmentSpec& o) const { return kind == o.kind && resolvedPath == o.resolvedPath; }
@@ -143,7 +143,7 @@ struct Camera {
     glm::vec3 eye{0.0f, 1.5f, 4.8f};
     glm::vec3 target{0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fovYDeg = 45.0f;          // vertical field of view of each pane
+    float fovYDeg = 45.0f;  // vertical field of view of each pane
     float nearPlane = 0.1f;
     float farPlane = 100.0f;
 };
@@ -192,10 +192,10 @@ struct ViewerStart {
     // "probe": [x, y], a pixel of the scene's "size" (top-left origin); the viewer probes the same point
     // of its view (scaled by the view's height about its centre, as the camera's vertical field of view is).
     std::optional<glm::ivec2> probe;
-    glm::ivec2 probeOf{0, 0};            // the scene's size the probe was given in
-    bool intersection = false;           // "intersection": the diagram at the probe (the viewer's key I)
+    glm::ivec2 probeOf{0, 0};   // the scene's size the probe was given in
+    bool intersection = false;  // "intersection": the diagram at the probe (the viewer's key I)
     std::optional<std::vector<std::string>> panelSections;  // "panel_sections": exactly these open
-    std::string plot;                    // "plot": the panel's Plots section open, scrolled to this plot
+    std::string plot;  // "plot": the panel's Plots section open, scrolled to this plot
     bool empty() const { return !probe && !intersection && !panelSections && plot.empty(); }
     // The pixel of a width x height view that shows what `probe` shows at `probeOf` (clamped into it).
     glm::ivec2 probeIn(int width, int height) const;
@@ -227,9 +227,9 @@ struct Scene {
     ViewerStart viewer;           // "viewer": the probe, diagram and panel sections a preset opens with
 
     // Bookkeeping, not part of the file format:
-    bool cameraGiven = false;     // false: a glTF model may be auto-framed
-    int modelCamera = -1;         // --camera N: the first glTF model's camera N replaces the scene's
-    bool lightsGiven = false;     // false: auto-framing may move the default light with the camera
+    bool cameraGiven = false;          // false: a glTF model may be auto-framed
+    int modelCamera = -1;              // --camera N: the first glTF model's camera N replaces the scene's
+    bool lightsGiven = false;          // false: auto-framing may move the default light with the camera
     bool outputEncodingGiven = false;  // false: a scene with a glTF model is written sRGB-encoded (frameIfNeeded)
     bool emissiveModel = false;   // a glTF model's material gives off light, E (frameIfNeeded; the formula shows E)
     bool usesObjectList = false;  // written back as "objects" rather than the one-object shorthand

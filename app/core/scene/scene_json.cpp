@@ -2,12 +2,12 @@
 
 #include "core/base/embedded.hpp"
 #include "core/base/error.hpp"
-#include "core/base/message.hpp"
+#include "core/base/file_io.hpp"
 #include "core/base/json_depth.hpp"
+#include "core/base/message.hpp"
 #include "core/scene/panel_sections.hpp"
 #include "core/scene/parameters.hpp"
 #include "core/scene/scene_names.hpp"
-#include "core/base/file_io.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -133,7 +133,8 @@ private:
         const json& j = o[key];
         const std::string p = join(path, key);
         if (!j.is_array() || j.size() != 2) fail(p, "expected an array of 2 integers");
-        for (int i = 0; i < 2; ++i) out[i] = integer(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi);
+        for (int i = 0; i < 2; ++i)
+            out[i] = integer(j[static_cast<size_t>(i)], p + "[" + std::to_string(i) + "]", lo, hi);
     }
     // A short single-line text (titles, captions): at most 500 characters, no control characters.
     void text(const json& o, const char* key, std::string& out) const {
@@ -176,7 +177,8 @@ private:
     glm::ivec2 imageSize(const json& j, const std::string& path) const;
     TestSettings testSettings(const json& j, const std::string& path) const;
     ViewerStart viewerStart(const json& j, const std::string& path, glm::ivec2 size) const;
-    std::string oneOf(const std::string& name, const std::vector<std::string>& names, const std::string& path, const char* what) const;
+    std::string oneOf(const std::string& name, const std::vector<std::string>& names, const std::string& path,
+                      const char* what) const;
 
     std::string file_;
     std::string baseDir_;
@@ -271,8 +273,9 @@ Light SceneReader::light(const json& j, const std::string& path) const {
         nonZero(l.direction, join(path, "direction"));
         break;
     case LightType::Area:
-        requireObject(j, path, {"type", "position", "normal", "size", "samples", "color", "intensity", "two_sided",
-                                "attenuation", "range"});
+        requireObject(j, path,
+                      {"type", "position", "normal", "size", "samples", "color", "intensity", "two_sided",
+                       "attenuation", "range"});
         vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
         vec3(j, "normal", path, l.normal, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.normal, join(path, "normal"));
@@ -281,8 +284,9 @@ Light SceneReader::light(const json& j, const std::string& path) const {
         boolean(j, "two_sided", path, l.twoSided);
         break;
     case LightType::Spot:
-        requireObject(j, path, {"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "color", "intensity",
-                                "attenuation", "range"});
+        requireObject(j, path,
+                      {"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "color", "intensity",
+                       "attenuation", "range"});
         vec3(j, "position", path, l.position, kCoordinateRange.lo, kCoordinateRange.hi);
         vec3(j, "direction", path, l.direction, kCoordinateRange.lo, kCoordinateRange.hi);
         nonZero(l.direction, join(path, "direction"));
@@ -290,7 +294,8 @@ Light SceneReader::light(const json& j, const std::string& path) const {
         value(j, path, Param::InnerCone, l.innerConeDeg);
         if (!j.contains("inner_cone_deg")) l.innerConeDeg = 0.5f * l.outerConeDeg;
         if (l.innerConeDeg >= l.outerConeDeg)
-            fail(join(path, "inner_cone_deg"), "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
+            fail(join(path, "inner_cone_deg"),
+                 "must be less than outer_cone_deg (" + std::to_string(l.outerConeDeg) + ")");
         break;
     }
     if (l.type != LightType::Directional) {
@@ -337,9 +342,31 @@ Camera SceneReader::camera(const json& j, const std::string& path) const {
 Scene SceneReader::read(const json& root) {
     Scene s;
     requireObject(root, "",
-                  {"mesh", "material", "objects", "shading", "layout", "reflection", "ambient", "lights", "shadows",
-                   "shadow_settings", "camera", "background", "size", "output_encoding", "specular_normalization",
-                   "fresnel", "ior", "show", "diff", "title", "caption", "textures", "test", "environment", "viewer"});
+                  {"mesh",
+                   "material",
+                   "objects",
+                   "shading",
+                   "layout",
+                   "reflection",
+                   "ambient",
+                   "lights",
+                   "shadows",
+                   "shadow_settings",
+                   "camera",
+                   "background",
+                   "size",
+                   "output_encoding",
+                   "specular_normalization",
+                   "fresnel",
+                   "ior",
+                   "show",
+                   "diff",
+                   "title",
+                   "caption",
+                   "textures",
+                   "test",
+                   "environment",
+                   "viewer"});
     readObjects(root, s);
     choice(root, "shading", "", s.shading, kShadingModeNames);
     choice(root, "layout", "", s.layout, kLayoutNames);
@@ -348,7 +375,8 @@ Scene SceneReader::read(const json& root) {
     choice(root, "fresnel", "", s.fresnel, kFresnelModeNames);
     value(root, "", Param::Ior, s.ior);
     if (root.contains("environment")) {
-        if (!root["environment"].is_string()) fail("environment", std::string("expected a string, got ") + typeName(root["environment"]));
+        if (!root["environment"].is_string())
+            fail("environment", std::string("expected a string, got ") + typeName(root["environment"]));
         s.environment = parseEnvironment(root["environment"].get<std::string>(), baseDir_, file_ + ": environment");
     }
     text(root, "title", s.title);
@@ -356,8 +384,9 @@ Scene SceneReader::read(const json& root) {
     choice(root, "reflection", "", s.reflection, kReflectionModelNames);
     for (const SceneObject& o : s.objects)
         if (o.material.anisotropic && s.reflection == ReflectionModel::Phong)
-            fail("reflection", "phong cannot go with a material's \"anisotropy\": Ashikhmin and Shirley's lobe is "
-                               "Blinn-Phong's (about H)");
+            fail("reflection",
+                 "phong cannot go with a material's \"anisotropy\": Ashikhmin and Shirley's lobe is "
+                 "Blinn-Phong's (about H)");
     choice(root, "output_encoding", "", s.outputEncoding, kOutputEncodingNames);
     s.outputEncodingGiven = root.contains("output_encoding");
     value(root, "", Param::Ambient, s.ambient);
@@ -418,7 +447,8 @@ ViewerStart SceneReader::viewerStart(const json& j, const std::string& path, glm
         v.probeOf = size;
     }
     boolean(j, "intersection", path, v.intersection);
-    if (v.intersection && !v.probe) fail(join(path, "intersection"), "draws the diagram at a probed point: give \"probe\"");
+    if (v.intersection && !v.probe)
+        fail(join(path, "intersection"), "draws the diagram at a probed point: give \"probe\"");
     if (j.contains("panel_sections")) {
         const json& list = j["panel_sections"];
         const std::string at = join(path, "panel_sections");
@@ -444,7 +474,8 @@ ViewerStart SceneReader::viewerStart(const json& j, const std::string& path, glm
 TestSettings SceneReader::testSettings(const json& j, const std::string& path) const {
     TestSettings t;
     requireObject(j, path, {"max_diff", "mean_diff", "max_diff_pixels", "masks"});
-    if (j.contains("max_diff")) t.maxDiff = integer(j["max_diff"], join(path, "max_diff"), kMaxDiffRange.lo, kMaxDiffRange.hi);
+    if (j.contains("max_diff"))
+        t.maxDiff = integer(j["max_diff"], join(path, "max_diff"), kMaxDiffRange.lo, kMaxDiffRange.hi);
     if (j.contains("mean_diff"))
         t.meanDiff = float(number(j["mean_diff"], join(path, "mean_diff"), kMeanDiffRange.lo, kMeanDiffRange.hi));
     if (j.contains("max_diff_pixels"))
@@ -461,7 +492,8 @@ TestSettings SceneReader::testSettings(const json& j, const std::string& path) c
         if (!masks[i].is_array() || masks[i].size() != 4) fail(m, "expected [x, y, w, h] in pixels (4 integers)");
         glm::ivec4 r;
         for (int k = 0; k < 4; ++k)
-            r[k] = integer(masks[i][std::size_t(k)], m + "[" + std::to_string(k) + "]", k < 2 ? 0 : 1, kImageSideRange.hi);
+            r[k] =
+                integer(masks[i][std::size_t(k)], m + "[" + std::to_string(k) + "]", k < 2 ? 0 : 1, kImageSideRange.hi);
         t.masks.push_back(r);
     }
     return t;
@@ -723,19 +755,21 @@ std::string sceneToJson(const Scene& s, const std::string& saveDir) {
     for (const Light& l : s.lights) j["lights"].push_back(lightJson(l));
     j["shadows"] = s.shadows.enabled;
     if (!s.textures) j["textures"] = false;
-    j["shadow_settings"] = {{"normal_bias", s.shadows.normalBias}, {"depth_bias", s.shadows.depthBias},
-                            {"pcf", s.shadows.pcf},                {"map_size", s.shadows.mapSize},
+    j["shadow_settings"] = {{"normal_bias", s.shadows.normalBias},
+                            {"depth_bias", s.shadows.depthBias},
+                            {"pcf", s.shadows.pcf},
+                            {"map_size", s.shadows.mapSize},
                             {"area_map_size", s.shadows.areaMapSize}};
-    j["camera"] = {{"eye", vecJson(s.camera.eye)},        {"target", vecJson(s.camera.target)},
-                   {"up", vecJson(s.camera.up)},          {"fov_y_deg", s.camera.fovYDeg},
-                   {"near", s.camera.nearPlane},          {"far", s.camera.farPlane}};
+    j["camera"] = {{"eye", vecJson(s.camera.eye)},  {"target", vecJson(s.camera.target)}, {"up", vecJson(s.camera.up)},
+                   {"fov_y_deg", s.camera.fovYDeg}, {"near", s.camera.nearPlane},         {"far", s.camera.farPlane}};
     j["background"] = vecJson(s.background);
     j["size"] = {s.width, s.height};
     j["output_encoding"] = toString(s.outputEncoding);
     j["specular_normalization"] = toString(s.specularNormalization);
     j["fresnel"] = toString(s.fresnel);
     j["ior"] = s.ior;
-    if (s.environment.kind == EnvironmentKind::Image) j["environment"] = relativeTo(s.environment.resolvedPath, saveDir);
+    if (s.environment.kind == EnvironmentKind::Image)
+        j["environment"] = relativeTo(s.environment.resolvedPath, saveDir);
     else if (s.environment.kind != EnvironmentKind::None) j["environment"] = toString(s.environment.kind);
     j["show"] = toString(s.show);
     j["diff"] = {{"a", toString(s.diff.a)}, {"b", toString(s.diff.b)}, {"factor", s.diff.factor}};
@@ -772,7 +806,8 @@ TermView parseTermView(const std::string& text, const std::string& where) {
             throw InputError(prefix + "\"" + quoteInput(n) + "\" is not a light index (light:N, N = 0.." +
                              std::to_string(kMaxLights - 1) + ")");
         if (v >= kMaxLights)
-            throw InputError(prefix + "light index " + n + " is out of range (0.." + std::to_string(kMaxLights - 1) + ")");
+            throw InputError(prefix + "light index " + n + " is out of range (0.." + std::to_string(kMaxLights - 1) +
+                             ")");
         t.term = ShowTerm::Light;
         t.light = int(v);
         return t;
@@ -783,8 +818,8 @@ TermView parseTermView(const std::string& text, const std::string& where) {
 void checkCoefficients(const Material& m, const std::string& where) {
     auto check = [&](const char* name, float v, float lo, float hi) {
         if (!std::isfinite(v) || v < lo || v > hi)
-            throw InputError(where + name + ": must be between " + formatNumber(lo) + " and " + formatNumber(hi) + " (got " +
-                             formatNumber(v) + ")");
+            throw InputError(where + name + ": must be between " + formatNumber(lo) + " and " + formatNumber(hi) +
+                             " (got " + formatNumber(v) + ")");
     };
     for (Param id : {Param::Ka, Param::Kd, Param::Ks, Param::Ke, Param::Mirror, Param::Transmission}) {
         const Parameter& p = parameter(id);
@@ -815,8 +850,9 @@ void checkAnisotropy(const Scene& s, const std::string& where) {
     if (s.reflection != ReflectionModel::Phong) return;
     for (const SceneObject& o : s.objects)
         if (o.material.anisotropic)
-            throw InputError(where + "anisotropy: Ashikhmin and Shirley's lobe is Blinn-Phong's (about H); it needs "
-                                     "reflection blinn-phong, not phong");
+            throw InputError(where +
+                             "anisotropy: Ashikhmin and Shirley's lobe is Blinn-Phong's (about H); it needs "
+                             "reflection blinn-phong, not phong");
 }
 
 void checkImageSize(int width, int height, const std::string& where) {

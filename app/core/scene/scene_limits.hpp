@@ -15,8 +15,8 @@ struct Range {
 };
 
 // The scene.
-inline constexpr Range<int> kLightCountRange{0, 16};        // also SL_MAX_LIGHTS in shaders/shared_defs.glsl
-inline constexpr Range<int> kImageSideRange{1, 16384};      // pixels per side, refused before anything is allocated
+inline constexpr Range<int> kLightCountRange{0, 16};    // also SL_MAX_LIGHTS in shaders/shared_defs.glsl
+inline constexpr Range<int> kImageSideRange{1, 16384};  // pixels per side, refused before anything is allocated
 // Procedural meshes' tessellation: scene files, --mesh and the sweep's "tessellation".
 inline constexpr Range<int> kUvSphereSlicesRange{3, 4096};
 inline constexpr Range<int> kUvSphereStacksRange{2, 2048};
@@ -29,13 +29,13 @@ inline constexpr Range<int> kAreaSamplesPerSideRange{1, 16};     // an area ligh
 inline constexpr Range<float> kSpotConeDegRange{0.0f, 90.0f};    // a spot light's cone half-angles (glTF: pi / 2)
 inline constexpr Range<int> kShadowMapSizeRange{64, 4096};       // shadow-map sides, pixels
 inline constexpr Range<int> kPcfRadiusRange{0, 2};               // percentage-closer filtering: (2r+1)^2 lookups
-inline constexpr Range<float> kColorRange{0.0f, 1.0f};           // each channel of C, S, A and the background (linear RGB)
+inline constexpr Range<float> kColorRange{0.0f, 1.0f};  // each channel of C, S, A and the background (linear RGB)
 // Relative index of refraction eta2 / eta1; below 1 the light arrives from the denser side ("from
 // inside" the glass: total internal reflection past the critical angle).
 inline constexpr Range<float> kIorRange{0.2f, 10.0f};
-inline constexpr Range<float> kUnitRange{0.0f, 1.0f};            // mirror and transmission weights k_r, k_t
-inline constexpr Range<float> kDiffFactorRange{1.0f, 1000.0f};   // layout "diff": |A - B| is multiplied by this
-inline constexpr Range<float> kFovYDegRange{1.0f, 179.0f};       // the camera's vertical field of view
+inline constexpr Range<float> kUnitRange{0.0f, 1.0f};           // mirror and transmission weights k_r, k_t
+inline constexpr Range<float> kDiffFactorRange{1.0f, 1000.0f};  // layout "diff": |A - B| is multiplied by this
+inline constexpr Range<float> kFovYDegRange{1.0f, 179.0f};      // the camera's vertical field of view
 // Places, directions and sizes in world units, and the lights' values: the scene reader, --light and
 // the panel. double, as the reader compares: 1e-4 has no exact float.
 // Positions, directions, normals, the camera; an object's translation, rotation (degrees) and scale.
@@ -52,7 +52,7 @@ inline constexpr Range<float> kIncidenceDegRange{0.0f, 89.0f};
 inline constexpr Range<int> kBenchmarkFramesRange{1, 1000000};
 inline constexpr Range<int> kViewerFramesRange{1, 100000000};
 inline constexpr Range<int> kProgressiveStrideRange{1, 16};  // area-light samples spread over S*S frames
-inline constexpr Range<float> kUiScaleRange{0.75f, 4.0f};     // on top of the monitor's content scale
+inline constexpr Range<float> kUiScaleRange{0.75f, 4.0f};    // on top of the monitor's content scale
 // --reference's thresholds, in /255 (the defaults, and what they were measured against: core/image/image.hpp).
 inline constexpr Range<int> kMaxDiffRange{0, 255};           // --max-diff: any channel of any pixel
 inline constexpr Range<float> kMeanDiffRange{0.0f, 255.0f};  // --mean-diff: over every channel of every pixel

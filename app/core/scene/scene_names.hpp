@@ -18,15 +18,16 @@ inline constexpr EnumName<ShadingMode> kShadingModeNames[] = {
     {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
 inline constexpr EnumName<Layout> kLayoutNames[] = {
     {"single", Layout::Single}, {"compare", Layout::Compare}, {"diff", Layout::Diff}};
-inline constexpr EnumName<ReflectionModel> kReflectionModelNames[] = {
-    {"phong", ReflectionModel::Phong}, {"blinn-phong", ReflectionModel::BlinnPhong}};
-inline constexpr EnumName<OutputEncoding> kOutputEncodingNames[] = {
-    {"linear", OutputEncoding::Linear}, {"srgb", OutputEncoding::Srgb}};
-inline constexpr EnumName<LightType> kLightTypeNames[] = {
-    {"point", LightType::Point}, {"directional", LightType::Directional}, {"area", LightType::Area},
-    {"spot", LightType::Spot}};
-inline constexpr EnumName<Attenuation> kAttenuationNames[] = {
-    {"none", Attenuation::None}, {"inverse-square", Attenuation::InverseSquare}};
+inline constexpr EnumName<ReflectionModel> kReflectionModelNames[] = {{"phong", ReflectionModel::Phong},
+                                                                      {"blinn-phong", ReflectionModel::BlinnPhong}};
+inline constexpr EnumName<OutputEncoding> kOutputEncodingNames[] = {{"linear", OutputEncoding::Linear},
+                                                                    {"srgb", OutputEncoding::Srgb}};
+inline constexpr EnumName<LightType> kLightTypeNames[] = {{"point", LightType::Point},
+                                                          {"directional", LightType::Directional},
+                                                          {"area", LightType::Area},
+                                                          {"spot", LightType::Spot}};
+inline constexpr EnumName<Attenuation> kAttenuationNames[] = {{"none", Attenuation::None},
+                                                              {"inverse-square", Attenuation::InverseSquare}};
 inline constexpr EnumName<SpecularNormalization> kSpecularNormalizationNames[] = {
     {"none", SpecularNormalization::None}, {"energy", SpecularNormalization::Energy}};
 inline constexpr EnumName<FresnelMode> kFresnelModeNames[] = {
@@ -35,9 +36,8 @@ inline constexpr EnumName<FresnelMode> kFresnelModeNames[] = {
 inline constexpr EnumName<EnvironmentKind> kEnvironmentNames[] = {
     {"none", EnvironmentKind::None}, {"room", EnvironmentKind::Room}, {"sky", EnvironmentKind::Sky}};
 inline constexpr EnumName<MeshSpec::Type> kMeshTypeNames[] = {
-    {"uvsphere", MeshSpec::Type::UvSphere}, {"icosphere", MeshSpec::Type::IcoSphere},
-    {"torus", MeshSpec::Type::Torus},       {"cube", MeshSpec::Type::Cube},
-    {"plane", MeshSpec::Type::Plane},       {"gltf", MeshSpec::Type::Gltf}};
+    {"uvsphere", MeshSpec::Type::UvSphere}, {"icosphere", MeshSpec::Type::IcoSphere}, {"torus", MeshSpec::Type::Torus},
+    {"cube", MeshSpec::Type::Cube},         {"plane", MeshSpec::Type::Plane},         {"gltf", MeshSpec::Type::Gltf}};
 // "show": one term of the formula; ShowTerm::Light is written "light:N", N the light's index.
 inline constexpr EnumName<ShowTerm> kShowTermNames[] = {
     {"all", ShowTerm::All},           {"ambient", ShowTerm::Ambient}, {"diffuse", ShowTerm::Diffuse},

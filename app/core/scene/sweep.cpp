@@ -2,9 +2,9 @@
 
 #include "core/base/error.hpp"
 #include "core/base/message.hpp"
+#include "core/image/text.hpp"
 #include "core/scene/parameters.hpp"
 #include "core/scene/scene_names.hpp"
-#include "core/image/text.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -25,10 +25,10 @@ NumericParameter swept(Param id) {
     const Parameter& p = parameter(id);
     return {p.name, p.range.lo, p.range.hi, p.decimals == 0, &p};
 }
-const NumericParameter kNumeric[] = {swept(Param::Ke),        swept(Param::Ks),
-                                     swept(Param::Kd),        swept(Param::Ka),
-                                     swept(Param::Intensity), {"tessellation", 1.0, double(kUvSphereSlicesRange.hi), true, nullptr},
-                                     swept(Param::Ior)};
+const NumericParameter kNumeric[] = {
+    swept(Param::Ke), swept(Param::Ks),        swept(Param::Kd),
+    swept(Param::Ka), swept(Param::Intensity), {"tessellation", 1.0, double(kUvSphereSlicesRange.hi), true, nullptr},
+    swept(Param::Ior)};
 
 const NumericParameter* numericNamed(const std::string& name) {
     for (const NumericParameter& p : kNumeric)
@@ -74,12 +74,14 @@ Sweep parseSweep(const std::string& text, const std::string& flag) {
     for (const auto& p : kNumeric) names += std::string(names.empty() ? "" : ", ") + p.name;
     for (const auto& p : kNamed) names += std::string(", ") + p.name;
     if (eq == std::string::npos)
-        throw InputError(flag + ": expected PARAMETER=V1,V2,..., e.g. ke=1,8,32,128,512 (got \"" + quoteInput(text) + "\")");
+        throw InputError(flag + ": expected PARAMETER=V1,V2,..., e.g. ke=1,8,32,128,512 (got \"" + quoteInput(text) +
+                         "\")");
     Sweep s;
     s.parameter = text.substr(0, eq);
     std::stringstream list(text.substr(eq + 1));
     for (std::string v; std::getline(list, v, ',');) s.values.push_back(v);
-    if (s.values.empty() || text.back() == ',') throw InputError(flag + ": " + s.parameter + ": empty value in the list");
+    if (s.values.empty() || text.back() == ',')
+        throw InputError(flag + ": " + s.parameter + ": empty value in the list");
     if (s.values.size() > kMaxSweepValues)
         throw InputError(flag + ": at most " + std::to_string(kMaxSweepValues) + " values (got " +
                          std::to_string(s.values.size()) + ")");
@@ -169,7 +171,7 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
 
 std::string sweepLabel(const Sweep& sweep, std::size_t index) {
     const NumericParameter* numeric = numericNamed(sweep.parameter);
-    const std::string name = numeric && numeric->row                        ? numeric->row->symbol
+    const std::string name = numeric && numeric->row                       ? numeric->row->symbol
                              : sweep.parameter == "specular_normalization" ? "norm"
                              : sweep.parameter == "tessellation"           ? "tess"
                                                                            : sweep.parameter;

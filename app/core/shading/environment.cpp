@@ -1,7 +1,7 @@
 #include "core/shading/environment.hpp"
 
-#include "core/shading/lighting.hpp"
 #include "../../../shaders/shared_defs.glsl"
+#include "core/shading/lighting.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -63,7 +63,7 @@ glm::vec3 imageRadiance(const EnvironmentImage& img, const glm::vec3& d) {
     const float fx = x - x0, fy = y - y0;
     auto texel = [&](int i, int j) {
         i = ((i % img.width) + img.width) % img.width;  // around the longitude
-        j = std::clamp(j, 0, img.height - 1);            // not over the poles
+        j = std::clamp(j, 0, img.height - 1);           // not over the poles
         const float* p = &img.rgb[(std::size_t(j) * std::size_t(img.width) + std::size_t(i)) * 3];
         return glm::vec3(p[0], p[1], p[2]);
     };
@@ -87,7 +87,8 @@ bool mirrorOrGlass(const Material& m, const EnvironmentSpec& env) {
 
 Interface interfaceOf(float ior) { return ior >= 1.0f ? Interface{1.0f, ior} : Interface{1.0f / ior, 1.0f}; }
 
-EnvironmentTerm environmentTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& v) {
+EnvironmentTerm environmentTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n,
+                                const glm::vec3& v) {
     EnvironmentTerm t;
     t.eta = interfaceOf(env.ior);
     const float nDotV = glm::dot(n, v);
@@ -106,9 +107,11 @@ EnvironmentTerm environmentTerm(const Material& m, const LightingEnvironment& en
     t.fresnel = t.totalInternal ? 1.0f : fresnelWeight(env.fresnel, t.cosThetaI, env.ior);
     const float reflectedWeight = t.weighted ? t.fresnel : 1.0f;
     const float transmittedWeight = t.totalInternal ? 0.0f : t.weighted ? 1.0f - t.fresnel : 1.0f;
-    if (m.mirror > 0.0f) t.reflected = m.mirror * reflectedWeight * environmentRadiance(env.environment, t.reflectedDirection);
+    if (m.mirror > 0.0f)
+        t.reflected = m.mirror * reflectedWeight * environmentRadiance(env.environment, t.reflectedDirection);
     if (m.transmission > 0.0f && transmittedWeight > 0.0f)
-        t.transmitted = m.transmission * transmittedWeight * environmentRadiance(env.environment, t.transmittedDirection);
+        t.transmitted =
+            m.transmission * transmittedWeight * environmentRadiance(env.environment, t.transmittedDirection);
     return t;
 }
 

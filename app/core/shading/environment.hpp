@@ -57,17 +57,18 @@ struct EnvironmentTerm {
     glm::vec3 reflectedDirection{0.0f};    // R, unit
     glm::vec3 transmittedDirection{0.0f};  // T, unit (zero when totalInternal)
     bool totalInternal = false;
-    float cosThetaI = 1.0f;                // cos_i = max(N.V, 0)
-    float cosThetaT = 1.0f;                // cos_t (0 when totalInternal)
+    float cosThetaI = 1.0f;  // cos_i = max(N.V, 0)
+    float cosThetaT = 1.0f;  // cos_t (0 when totalInternal)
     Interface eta;
-    float fresnel = 1.0f;                  // F of the scene's mode (1 past the critical angle); 1 under "none"
-    bool weighted = false;                 // F weighs the two terms (fresnel != none)
-    glm::vec3 reflected{0.0f};             // k_r F env(R)
-    glm::vec3 transmitted{0.0f};           // k_t (1 - F) env(T)
+    float fresnel = 1.0f;         // F of the scene's mode (1 past the critical angle); 1 under "none"
+    bool weighted = false;        // F weighs the two terms (fresnel != none)
+    glm::vec3 reflected{0.0f};    // k_r F env(R)
+    glm::vec3 transmitted{0.0f};  // k_t (1 - F) env(T)
     glm::vec3 total() const { return reflected + transmitted; }
 };
 // n and v unit (the normal and the direction to the eye). Zero weights give zero terms (the
 // directions and F are filled in all the same).
-EnvironmentTerm environmentTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& v);
+EnvironmentTerm environmentTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n,
+                                const glm::vec3& v);
 
 }  // namespace shadelab

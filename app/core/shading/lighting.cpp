@@ -6,8 +6,8 @@
 
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
-#include <glm/trigonometric.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <cmath>
 
@@ -19,8 +19,8 @@ constexpr float kPi = 3.14159265358979f;
 // One light sample's addend: radiance * (k_d C (N.I) + k_s S spec), nothing when N.I <= 0 (lecture.glsl's
 // oneLight()).
 // `frame`: the tangent frame, for an anisotropic lobe (else unused).
-void addSample(LightShare& t, const Material& m, const LightingEnvironment& env, const glm::vec3& n,
-               const glm::vec3& v, const glm::vec3& i, const glm::vec3& radiance, const TangentFrame& frame) {
+void addSample(LightShare& t, const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& v,
+               const glm::vec3& i, const glm::vec3& radiance, const TangentFrame& frame) {
     const float nDotI = glm::dot(n, i);
     if (nDotI <= 0.0f) return;  // light behind the surface: no diffuse, no specular
     t.diffuse += radiance * m.kd * m.color * nDotI;
@@ -91,7 +91,8 @@ float fresnelWeight(FresnelMode mode, float cosVH, float ior) {
     return 1.0f;
 }
 
-float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v) {
+float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i,
+                   const glm::vec3& v) {
     const float nDotI = glm::dot(n, i);
     if (nDotI <= 0.0f) return 0.0f;  // light behind the surface
     float cosLobe;
@@ -116,7 +117,8 @@ glm::vec3 orthogonalTangent(const glm::vec3& t, const glm::vec3& n, const glm::v
 
 glm::vec4 tangentAroundUp(const glm::vec3& n) {
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
-    const glm::vec3 t = orthogonalTangent(glm::cross(up, n), n, orthogonalTangent(glm::vec3(1.0f, 0.0f, 0.0f), n, glm::vec3(0.0f, 0.0f, 1.0f)));
+    const glm::vec3 t = orthogonalTangent(
+        glm::cross(up, n), n, orthogonalTangent(glm::vec3(1.0f, 0.0f, 0.0f), n, glm::vec3(0.0f, 0.0f, 1.0f)));
     return glm::vec4(t, 1.0f);
 }
 
@@ -141,8 +143,8 @@ float anisotropicEnergyScale(const glm::vec2& k) {
     return std::sqrt((k.x + 1.0f) * (k.y + 1.0f)) / (kEnergyReferenceExponent + 1.0f);
 }
 
-float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k, const glm::vec3& n, const glm::vec3& i,
-                              const glm::vec3& v, const TangentFrame& frame) {
+float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k, const glm::vec3& n,
+                              const glm::vec3& i, const glm::vec3& v, const TangentFrame& frame) {
     if (glm::dot(n, i) <= 0.0f) return 0.0f;  // light behind the surface
     const glm::vec3 h = glm::normalize(i + v);
     float spec = std::pow(std::max(glm::dot(h, n), 0.0f), anisotropicExponent(k, h, frame));
@@ -151,13 +153,14 @@ float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k
     return spec;
 }
 
-float lobeTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
-               const TangentFrame& frame) {
-    return anisotropicLobe(m, env) ? anisotropicSpecularTerm(env, m.anisotropy, n, i, v, frame) : specularTerm(env, m.ke, n, i, v);
+float lobeTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i,
+               const glm::vec3& v, const TangentFrame& frame) {
+    return anisotropicLobe(m, env) ? anisotropicSpecularTerm(env, m.anisotropy, n, i, v, frame)
+                                   : specularTerm(env, m.ke, n, i, v);
 }
 
-BrdfValue brdf(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
-               const TangentFrame& frame) {
+BrdfValue brdf(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i,
+               const glm::vec3& v, const TangentFrame& frame) {
     const float nDotI = glm::dot(n, i);
     if (nDotI <= 0.0f) return {};  // light behind the surface
     return {m.kd, m.ks * lobeTerm(m, env, n, i, v, frame) / nDotI};
@@ -255,7 +258,8 @@ LightShare pointLight(const ShadedPoint& at, std::size_t li) {
     const glm::vec3 i = d / r;
     const float cone = spotFalloff(light, i);
     const glm::vec3 power = light.color * light.intensity;
-    at.reflect(share, i, power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? at.visible(li, 0, i, r) : 1.0f));
+    at.reflect(share, i,
+               power * (attenuationFactor(light, r2) * cone) * (cone > 0.0f ? at.visible(li, 0, i, r) : 1.0f));
     return share;
 }
 
@@ -340,8 +344,6 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
     return t;
 }
 
-float encodeSrgb(float c) {
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
+float encodeSrgb(float c) { return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 }  // namespace shadelab

@@ -2,10 +2,10 @@
 // CPU reference of the lecture's reflection model: the same inputs and the same result as
 // shaders/lighting.glsl, used by the tests (and later the pixel probe).
 //
-//   L = E + k_a A C + sum_l sum_k v(p, I_lk) L_lk ( k_d C max(0, N.I_lk) + k_s S spec_lk ),  each channel clamped to [0, 1]
-//   (E: the light a glTF material gives off, Material::emissive; 0 for the lecture's own materials)
-//   spec = max(0, R(I).V)^k_e (Phong) or max(0, H.N)^k_e (Blinn-Phong); 0 where N.I <= 0
-//   R(I) = 2 (N.I) N - I,  H = normalize(I + V)
+//   L = E + k_a A C + sum_l sum_k v(p, I_lk) L_lk ( k_d C max(0, N.I_lk) + k_s S spec_lk ),  each channel clamped to
+//   [0, 1] (E: the light a glTF material gives off, Material::emissive; 0 for the lecture's own materials) spec =
+//   max(0, R(I).V)^k_e (Phong) or max(0, H.N)^k_e (Blinn-Phong); 0 where N.I <= 0 R(I) = 2 (N.I) N - I,  H =
+//   normalize(I + V)
 //
 // Point and directional lights are one sample k, with L = colour * intensity * attenuation; a spot light
 // is a point light times its cone's falloff (spotFalloff: glTF KHR_lights_punctual's). An area
@@ -52,12 +52,12 @@ struct LightingEnvironment {
     ReflectionModel model = ReflectionModel::BlinnPhong;
     SpecularNormalization normalization = SpecularNormalization::None;
     FresnelMode fresnel = FresnelMode::None;
-    float ior = 1.5f;                 // eta2 / eta1
+    float ior = 1.5f;  // eta2 / eta1
     TermView show;
-    glm::vec3 ambient{1.0f};          // A
-    std::vector<Light> lights;        // world space
+    glm::vec3 ambient{1.0f};    // A
+    std::vector<Light> lights;  // world space
     glm::vec3 eyeWorld{0.0f};
-    EnvironmentSpec environment;      // what mirrors and glass see (core/shading/environment.hpp)
+    EnvironmentSpec environment;  // what mirrors and glass see (core/shading/environment.hpp)
 };
 
 LightingEnvironment lightingEnvironment(const Scene& scene);
@@ -70,16 +70,16 @@ struct LightShare {
 
 // Each addend of the formula before clamping, and the clamped total (of what `show` selects).
 struct ShadingTerms {
-    glm::vec3 emissive{0.0f};         // E (Material::emissive)
+    glm::vec3 emissive{0.0f};  // E (Material::emissive)
     glm::vec3 ambient{0.0f};
     glm::vec3 diffuse{0.0f};
     glm::vec3 specular{0.0f};
     // Mirror and glass, after the lecture's sum: k_r F env(R) + k_t (1 - F) env(T) (environment.hpp).
     glm::vec3 environment{0.0f};
-    glm::vec3 shown{0.0f};            // what `show` selects before clamping: E + ambient + diffuse + specular
-                                      // + environment with show = all
-    glm::vec3 total{0.0f};            // clamp(shown, 0, 1)
-    std::vector<LightShare> lights;   // per light, in the order of LightingEnvironment::lights
+    glm::vec3 shown{0.0f};           // what `show` selects before clamping: E + ambient + diffuse + specular
+                                     // + environment with show = all
+    glm::vec3 total{0.0f};           // clamp(shown, 0, 1)
+    std::vector<LightShare> lights;  // per light, in the order of LightingEnvironment::lights
 };
 
 // The energy-normalisation of the lobe: (k_e + 2) / 2pi (Phong) or (k_e + 8) / 8pi (Blinn-Phong).
@@ -109,7 +109,8 @@ float fresnelWeight(FresnelMode mode, float cosVH, float ior);
 // max(0, R(I).V)^k_e or max(0, H.N)^k_e of env.model, times energySpecularScale with energy
 // normalisation, times fresnelWeight(V.H) with Fresnel; 0 where N.I <= 0. n, i, v are unit vectors
 // (normal, toward the light, toward the eye). The lobe plot (core/figures/plot.hpp) draws this function.
-float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v);
+float specularTerm(const LightingEnvironment& env, float ke, const glm::vec3& n, const glm::vec3& i,
+                   const glm::vec3& v);
 
 // The frame around the model's up axis (+y in object space): T = normalize(up x N), along the
 // parallels of a sphere (eastward), B = N x T towards the north pole; at a pole (N along +-y) T = +x.
@@ -136,13 +137,13 @@ float anisotropicExponent(const glm::vec2& k, const glm::vec3& h, const TangentF
 // What "energy" multiplies the anisotropic lobe by: sqrt((k_t + 1)(k_b + 1)) / sqrt(33 * 33).
 float anisotropicEnergyScale(const glm::vec2& k);
 // spec with the anisotropic lobe (as specularTerm, the exponent anisotropicExponent's).
-float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k, const glm::vec3& n, const glm::vec3& i,
-                              const glm::vec3& v, const TangentFrame& frame);
+float anisotropicSpecularTerm(const LightingEnvironment& env, const glm::vec2& k, const glm::vec3& n,
+                              const glm::vec3& i, const glm::vec3& v, const TangentFrame& frame);
 
 // The lobe a material gets from one light direction: anisotropicSpecularTerm where anisotropicLobe,
 // else specularTerm at k_e. `frame` is used only by the anisotropic lobe. The renderer's spec.
-float lobeTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
-               const TangentFrame& frame);
+float lobeTerm(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i,
+               const glm::vec3& v, const TangentFrame& frame);
 // The BRDF of the formula above, f_r(I -> V) = dL(V) / dE(I), in the renderer's units: a light of
 // radiance L (colour * intensity) gives the irradiance E = L (N.I) and the reflected radiance
 // L (k_d (N.I) + k_s spec), so f_r = k_d + k_s spec / (N.I), for white C and S (the colours multiply
@@ -150,18 +151,18 @@ float lobeTerm(const Material& m, const LightingEnvironment& env, const glm::vec
 // factor pi, so this is pi times the physical k_d / pi + ...: the same picture. The BRDF plots
 // (core/figures/plot.hpp: lobe3d, brdf-slice) draw this function.
 struct BrdfValue {
-    float diffuse = 0.0f;             // k_d
-    float specular = 0.0f;            // k_s spec / (N.I)
+    float diffuse = 0.0f;   // k_d
+    float specular = 0.0f;  // k_s spec / (N.I)
     float total() const { return diffuse + specular; }
 };
-BrdfValue brdf(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i, const glm::vec3& v,
-               const TangentFrame& frame);
+BrdfValue brdf(const Material& m, const LightingEnvironment& env, const glm::vec3& n, const glm::vec3& i,
+               const glm::vec3& v, const TangentFrame& frame);
 
 // The occlusion test toward one light sample: from the shaded point along `towardLight` (unit) for
 // `distance` (infinite for directional lights). Returns v in [0, 1]: 1 visible, 0 occluded.
 struct LightRay {
-    std::size_t light = 0;            // index into LightingEnvironment::lights
-    int sample = 0;                   // area lights: j * nx + i; else 0
+    std::size_t light = 0;  // index into LightingEnvironment::lights
+    int sample = 0;         // area lights: j * nx + i; else 0
     glm::vec3 towardLight{0.0f};
     float distance = std::numeric_limits<float>::infinity();
 };
@@ -171,9 +172,11 @@ using Visibility = std::function<float(const glm::vec3& posWorld, const LightRay
 // tangent frame for an anisotropic material; null: the frame around world +y (tangentFrame(n, +y x n)),
 // which is the procedural meshes' own where their transform does not rotate them.
 ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const glm::vec3& posWorld,
-                        const glm::vec3& nrmWorld, const Visibility& visibility = {}, const TangentFrame* frame = nullptr);
+                        const glm::vec3& nrmWorld, const Visibility& visibility = {},
+                        const TangentFrame* frame = nullptr);
 inline glm::vec3 shade(const Material& m, const LightingEnvironment& env, const glm::vec3& posWorld,
-                       const glm::vec3& nrmWorld, const Visibility& visibility = {}, const TangentFrame* frame = nullptr) {
+                       const glm::vec3& nrmWorld, const Visibility& visibility = {},
+                       const TangentFrame* frame = nullptr) {
     return shadeTerms(m, env, posWorld, nrmWorld, visibility, frame).total;
 }
 

@@ -14,6 +14,8 @@ namespace shadelab {
 // --ui-scale and Ctrl+= / Ctrl+-: kUiScaleRange (core/scene/scene_limits.hpp).
 
 // What a key does in the viewer (Viewer::runCommand carries it out).
+// (grouped as the key table groups them: clang-format leaves it as written)
+// clang-format off
 enum class ViewerCommand {
     None,  // an unused binding slot
     Flat, Gouraud, Phong, Compare, Difference,
@@ -25,12 +27,16 @@ enum class ViewerCommand {
     Escape,  // close the help, else clear the probe
     Quit,
 };
+// clang-format on
 
 // A key without a character, named here so core needs no window library (the viewer maps GLFW's codes).
 // Plus, Minus and Zero are the main keyboard's key or the keypad's.
+// (one line, as the keys are listed: clang-format leaves it as written)
+// clang-format off
 enum class ViewerKey {
     None, Tab, Escape, Backspace, F1, F5, F11, F12, PageDown, PageUp, Right, Left, Home, End, Plus, Minus, Zero, Q, R
 };
+// clang-format on
 
 enum class KeyMods { None, Ctrl, Any };  // Ctrl not held / held / either (other modifiers are ignored)
 
@@ -42,7 +48,7 @@ enum class KeyFocus { View, UnlessTyping };
 // with Ctrl held there are none) or a key by its code with the modifiers it needs.
 struct KeyBinding {
     const char* characters = nullptr;  // any of these typed characters ("cC"), or nullptr
-    ViewerKey key = ViewerKey::None;               // else this key
+    ViewerKey key = ViewerKey::None;   // else this key
     KeyMods mods = KeyMods::None;
     KeyFocus focus = KeyFocus::View;
     ViewerCommand command = ViewerCommand::None;
@@ -62,6 +68,8 @@ struct Control {
     KeyBinding keys[4];  // the keys that do it (none for the mouse's rows)
 };
 
+// (a table, read row by row: clang-format leaves it as written)
+// clang-format off
 inline constexpr Control kControls[] = {
     {"left drag", "orbit around the target", {}},
     {"right or middle drag", "pan", {}},
@@ -80,7 +88,8 @@ inline constexpr Control kControls[] = {
     {"E", "the lecture's formula (the term --show isolates highlighted)", {typed("eE", ViewerCommand::Formula)}},
     {"I", "the intersection at the probed point: I, N, R, T, theta_i, theta_t, eta and the Fresnel split",
      {typed("iI", ViewerCommand::Intersection)}},
-    {"S", "the shader's GLSL, large, terms marked (F5's errors shown in it)", {typed("sS", ViewerCommand::ShaderSection)}},
+    {"S", "the shader's GLSL, large, terms marked (F5's errors shown in it)",
+     {typed("sS", ViewerCommand::ShaderSection)}},
     {"R   F", "reset the camera to the scene's / frame the model",
      {typed("rR", ViewerCommand::ResetCamera), typed("fF", ViewerCommand::FrameModel)}},
     {"Page Down  Page Up  (Right  Left)", "playlist: next / previous preset",
@@ -89,7 +98,8 @@ inline constexpr Control kControls[] = {
       pressed(ViewerKey::Right, ViewerCommand::NextPreset), pressed(ViewerKey::Left, ViewerCommand::PreviousPreset)}},
     {"Home  End", "playlist: first / last preset",
      {pressed(ViewerKey::Home, ViewerCommand::FirstPreset), pressed(ViewerKey::End, ViewerCommand::LastPreset)}},
-    {"Backspace", "playlist: reset the preset (reload its file)", {pressed(ViewerKey::Backspace, ViewerCommand::ResetPreset)}},
+    {"Backspace", "playlist: reset the preset (reload its file)",
+     {pressed(ViewerKey::Backspace, ViewerCommand::ResetPreset)}},
     {"Ctrl+=  Ctrl+-  Ctrl+0", "UI scale larger / smaller / as the monitor's",
      {pressed(ViewerKey::Plus, ViewerCommand::UiLarger, KeyMods::Ctrl),
       pressed(ViewerKey::Minus, ViewerCommand::UiSmaller, KeyMods::Ctrl),
@@ -97,14 +107,18 @@ inline constexpr Control kControls[] = {
     {"Tab", "hide / show the panel (projector view)", {pressed(ViewerKey::Tab, ViewerCommand::TogglePanel)}},
     {"F11", "fullscreen on / off", {pressed(ViewerKey::F11, ViewerCommand::Fullscreen)}},
     {"F1  or  ?", "this help on / off", {pressed(ViewerKey::F1, ViewerCommand::Help), typed("?", ViewerCommand::Help)}},
-    {"F5", "reload the shaders (errors show, the picture stays)", {pressed(ViewerKey::F5, ViewerCommand::ReloadShaders)}},
+    {"F5", "reload the shaders (errors show, the picture stays)",
+     {pressed(ViewerKey::F5, ViewerCommand::ReloadShaders)}},
     {"F12", "screenshot of the 3D view (timestamped PNG)", {pressed(ViewerKey::F12, ViewerCommand::Screenshot)}},
     {"Space", "play / pause the --animate animation", {typed(" ", ViewerCommand::PlayPause)}},
-    {"Ctrl+R", "record the 3D view to a timestamped MP4 / stop", {pressed(ViewerKey::R, ViewerCommand::Record, KeyMods::Ctrl)}},
+    {"Ctrl+R", "record the 3D view to a timestamped MP4 / stop",
+     {pressed(ViewerKey::R, ViewerCommand::Record, KeyMods::Ctrl)}},
     {"Esc", "close the help, clear the probe, leave a text field",
      {pressed(ViewerKey::Escape, ViewerCommand::Escape, KeyMods::Any, KeyFocus::UnlessTyping)}},
-    {"Q  or  Ctrl+Q", "quit", {typed("qQ", ViewerCommand::Quit), pressed(ViewerKey::Q, ViewerCommand::Quit, KeyMods::Ctrl)}},
+    {"Q  or  Ctrl+Q", "quit",
+     {typed("qQ", ViewerCommand::Quit), pressed(ViewerKey::Q, ViewerCommand::Quit, KeyMods::Ctrl)}},
 };
+// clang-format on
 
 // The binding of a typed character, or nullptr.
 inline const KeyBinding* characterBinding(unsigned character) {

@@ -13,19 +13,17 @@ namespace shadelab {
 enum class Overlay { Wireframe, VertexNormals, FaceNormals, Tangents, LightMarkers };
 
 // --overlays' names.
-inline constexpr EnumName<Overlay> kOverlayNames[] = {
-    {"wireframe", Overlay::Wireframe},
-    {"vertex-normals", Overlay::VertexNormals},
-    {"face-normals", Overlay::FaceNormals},
-    {"tangents", Overlay::Tangents},
-    {"lights", Overlay::LightMarkers}};
+inline constexpr EnumName<Overlay> kOverlayNames[] = {{"wireframe", Overlay::Wireframe},
+                                                      {"vertex-normals", Overlay::VertexNormals},
+                                                      {"face-normals", Overlay::FaceNormals},
+                                                      {"tangents", Overlay::Tangents},
+                                                      {"lights", Overlay::LightMarkers}};
 // The panel's checkboxes, with the key that toggles each (core/ui/controls.hpp).
-inline constexpr EnumName<Overlay> kOverlayLabels[] = {
-    {"wireframe (W)", Overlay::Wireframe},
-    {"vertex normals (N)", Overlay::VertexNormals},
-    {"face normals (Shift+N)", Overlay::FaceNormals},
-    {"tangents (anisotropy's T)", Overlay::Tangents},
-    {"3D light crosses", Overlay::LightMarkers}};
+inline constexpr EnumName<Overlay> kOverlayLabels[] = {{"wireframe (W)", Overlay::Wireframe},
+                                                       {"vertex normals (N)", Overlay::VertexNormals},
+                                                       {"face normals (Shift+N)", Overlay::FaceNormals},
+                                                       {"tangents (anisotropy's T)", Overlay::Tangents},
+                                                       {"3D light crosses", Overlay::LightMarkers}};
 
 // Samples per pixel as --msaa takes them (0 and 1: off; the driver may round up). The panel offers
 // the same counts from 1 on, labelled by msaaLabel().

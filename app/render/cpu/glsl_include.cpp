@@ -8,8 +8,8 @@
 namespace shadelab {
 namespace {
 
-void expandInto(const std::string& name, const std::function<std::string(const std::string&)>& load,
-                ExpandedGlsl& out, int depth) {
+void expandInto(const std::string& name, const std::function<std::string(const std::string&)>& load, ExpandedGlsl& out,
+                int depth) {
     if (depth > 16) throw std::runtime_error(name + ": includes nested deeper than 16");
     for (const auto& f : out.files)
         if (f == name) return;  // already included in this program
@@ -70,7 +70,8 @@ std::string locateGlslLog(const std::string& log, const std::vector<std::string>
             std::string number = line.substr(digits + 1, end - digits - 1);
             if (number.size() < 10) {  // the file in the line number wins (see kGlslLinesPerFile)
                 const unsigned long n = std::stoul(number);
-                if (n >= unsigned(kGlslLinesPerFile)) id = n / kGlslLinesPerFile, number = std::to_string(n % kGlslLinesPerFile);
+                if (n >= unsigned(kGlslLinesPerFile))
+                    id = n / kGlslLinesPerFile, number = std::to_string(n % kGlslLinesPerFile);
             }
             if (id < files.size()) line = line.substr(0, p) + files[id] + ":" + number + line.substr(end);
         }

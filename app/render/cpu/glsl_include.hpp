@@ -28,8 +28,8 @@ inline constexpr const char* kGlslVersionName = "GLSL 330 core";
 #endif
 
 struct ExpandedGlsl {
-    std::string text;                 // ready for glShaderSource
-    std::vector<std::string> files;   // files[S] is the file that #line's source number S means
+    std::string text;                // ready for glShaderSource
+    std::vector<std::string> files;  // files[S] is the file that #line's source number S means
 };
 
 // `load(name)` returns a file's text or throws. `defines` ("NAME VALUE" each) become #define lines

@@ -128,7 +128,8 @@ void areaProjection(const Light& light, const std::vector<Aabb>& objects, Shadow
     tanY = std::min(tanY * 1.02f, maxTan);
     farZ = std::max(farZ * 1.01f, 1e-3f);
     // Seen from a sample off the centre, points can be nearer than they are to the centre.
-    const float nearD = std::clamp(0.9f * (nearZ - std::sqrt(halfW * halfW + halfH * halfH)), farZ * 2e-3f, farZ * 0.5f);
+    const float nearD =
+        std::clamp(0.9f * (nearZ - std::sqrt(halfW * halfW + halfH * halfH)), farZ * 2e-3f, farZ * 0.5f);
     float a, b;
     perspectiveDepth(nearD, farZ, a, b);
     // View space: (x, y, -z) (OpenGL looks down -z); clip = P * view.
@@ -140,7 +141,8 @@ void areaProjection(const Light& light, const std::vector<Aabb>& objects, Shadow
     for (int j = 0; j < light.samples.y; ++j)
         for (int i = 0; i < light.samples.x; ++i) {
             const glm::vec2 o = areaSampleOffset(i, j, light.samples);
-            sp.clipFromWorld.push_back(sp.centreClipFromWorld * glm::translate(glm::mat4(1.0f), -(o.x * af.u + o.y * af.v)));
+            sp.clipFromWorld.push_back(sp.centreClipFromWorld *
+                                       glm::translate(glm::mat4(1.0f), -(o.x * af.u + o.y * af.v)));
         }
 }
 
@@ -165,7 +167,8 @@ void spotProjection(const Light& light, const std::vector<Aabb>& objects, Shadow
     perspectiveDepth(nearD, farZ, a, b);
     // View space: (x, y, -z) (OpenGL looks down -z); clip = P * view, w = the distance along the axis.
     auto row = [&](const glm::vec3& r, float constant) { return glm::vec4(r, constant - glm::dot(r, light.position)); };
-    sp.clipFromWorld.push_back(fromRows(row(x / sp.tanHalf, 0.0f), row(y / sp.tanHalf, 0.0f), row(a * z, -b), row(z, 0.0f)));
+    sp.clipFromWorld.push_back(
+        fromRows(row(x / sp.tanHalf, 0.0f), row(y / sp.tanHalf, 0.0f), row(a * z, -b), row(z, 0.0f)));
     sp.texelWorld = 2.0f * sp.tanHalf / float(sp.size);
 }
 
