@@ -301,6 +301,7 @@ PYBIND11_MODULE(_shadelab, m) {
     m.doc() = "shadelab's renderer, probe, plots and image comparison (the C++ half; import shadelab)";
     static py::exception<InputError> inputError(m, "InputError", PyExc_ValueError);
     static py::exception<ShaderError> shaderError(m, "ShaderError", inputError.ptr());
+    // NOLINTNEXTLINE(performance-unnecessary-value-param): pybind11 takes a translator of a value
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);

@@ -79,6 +79,7 @@ int runPlaylistImages(const RunContext& run) {
     checkOutputFolder(*options.output, "--output");
     std::vector<Preset> presets = loadPlaylist(*options.playlist, [&options](Scene& s) { applyOverrides(s, options); });
     std::vector<Scene> scenes;
+    scenes.reserve(presets.size());
     for (const Preset& p : presets) scenes.push_back(p.scene);
     std::vector<Image> frames(presets.size());
     std::uint64_t kept = 0;  // every frame's pixels (a caption strip adds a little)

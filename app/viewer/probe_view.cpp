@@ -197,6 +197,7 @@ void drawProbeLabels(const Scene& scene, const std::vector<ProbeArrow>& arrows, 
         draw->PushClipRect(ImVec2(paneBox.x0 - pad, paneBox.y0 - pad), ImVec2(paneBox.x1 + pad, paneBox.y1 + pad),
                            true);
         std::vector<Box> placed;
+        placed.reserve(avoid.size());
         for (const UiRect& r : avoid) placed.push_back(Box{r.x, r.y, r.x + r.width, r.y + r.height});
         const auto inside = [&](const glm::vec3& q) {
             return q.z > 0.0f && q.x >= float(pane.x) && q.x < float(pane.x + pane.width) && q.y >= float(pane.y) &&

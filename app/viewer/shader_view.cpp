@@ -98,8 +98,7 @@ void drawLine(const GlslLine& line, float width, int columns = 0) {
             ImGui::PopStyleColor();
         }
     }
-    if (!line.error.empty())
-        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), columns > 0 ? "     %s" : "     %s", line.error.c_str());
+    if (!line.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1.0f), "     %s", line.error.c_str());
 }
 
 }  // namespace

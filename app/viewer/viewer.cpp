@@ -309,7 +309,7 @@ float Viewer::followView(const FrameLayout& l) {
 // the help. Returns the light labels' boxes (the probe's labels keep off them).
 std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBottom) {
     ImGui::PushFont(imgui_.viewFont());
-    const std::vector<UiRect> lightBoxes =
+    std::vector<UiRect> lightBoxes =  // returned: moved, not copied
         settings_.lightLabels ? drawLightLabels(shownScene(), l.view, l.scale, settings_.selectedLight, labelsBottom,
                                                 modelSpheres_.of(document_.scene(), document_.geometry()))
                               : std::vector<UiRect>{};
@@ -396,7 +396,7 @@ Image Viewer::drawView(const FrameLayout& l, bool still, bool last, const std::v
     quality_.plan(frame);
     renderer_->setMovingFrames(quality_.movingThisFrame());  // one shadow lookup per light (renderScene: area lights)
     status_.movingScale = quality_.reducedThisFrame() ? quality_.movingScale() : 1.0f;
-    const Image view = renderView(l, frame.capture, last, arrows);
+    Image view = renderView(l, frame.capture, last, arrows);  // returned: moved, not copied
     quality_.drawn();
     return view;
 }

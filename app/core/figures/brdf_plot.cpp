@@ -110,6 +110,7 @@ void addMeridians(LobeSampler& sampler, const AroundR& grid, float halfWidth) {
         if (float(d) > 3.0f * halfWidth) alphas.push_back(float(d));
     for (int b = 0; b < 360; b += 15) {
         std::vector<glm::vec3> dirs;
+        dirs.reserve(alphas.size());
         for (float a : alphas) dirs.push_back(grid.dir(a, float(b)));
         sampler.addCurve(dirs, sampler.s.meridians);
     }

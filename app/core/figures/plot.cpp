@@ -356,7 +356,7 @@ PlotLayout layoutPlot(const Plot& plot, glm::vec2 size, float lineHeight, const 
 
 PlotLayout paintPlot(const Plot& plot, glm::vec2 size, float lineUnit, PlotPainter& painter) {
     const MeasureText measure = [&](const std::string& text) { return painter.measure(text); };
-    const PlotLayout layout = layoutPlot(plot, size, painter.lineHeight(), measure);
+    PlotLayout layout = layoutPlot(plot, size, painter.lineHeight(), measure);  // returned: moved, not copied
     auto stroke = [&](const PlotPolyline& l, const std::vector<glm::vec2>& pixels, bool arrow) {
         const float width = l.width * lineUnit;
         if (l.dashed) {

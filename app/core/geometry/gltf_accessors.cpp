@@ -114,7 +114,7 @@ void GltfReader::materialiseSparse(const tinygltf::Accessor& a, std::size_t elem
 GltfReader::View GltfReader::vertexAttribute(int ai, const std::string& where, const std::vector<int>& types,
                                              const std::vector<int>& componentTypes, std::size_t count,
                                              const char* integers) const {
-    const View v = view(ai, where, types, componentTypes);
+    View v = view(ai, where, types, componentTypes);  // returned: moved, not copied
     const std::string name = where + " (accessor " + std::to_string(ai) + ")";
     if (integers && v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !v.normalized)
         fail(name, std::string("integer ") + integers + " must be normalized");

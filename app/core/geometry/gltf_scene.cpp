@@ -155,6 +155,7 @@ void GltfReader::visit(int ni, const glm::mat4& parent, int depth) {
             const glm::mat4 first = world * copies[0];
             const glm::mat4 firstInverse = glm::inverse(first);
             std::vector<glm::mat4> relative;
+            relative.reserve(copies.size());
             for (const glm::mat4& instance : copies) relative.push_back(world * instance * firstInverse);
             relative[0] = glm::mat4(1.0f);
             for (std::size_t k = 0; k < m.primitives.size(); ++k)
