@@ -386,7 +386,7 @@ void lightFields(Light& l, std::string& readout) {
 }
 
 void sectionLights(Scene& scene, int& selected, std::string& readout) {
-    colorEdit("ambient A", scene.ambient);
+    colorEdit(parameter(Param::Ambient).label, scene.ambient);
     ImGui::TextDisabled("click a light's name to select it (again: none)");
     int remove = -1;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {

@@ -75,7 +75,7 @@ constexpr Parameter kParameters[] = {
      wide(kDiffFactorRange), Scale::Log, 1, 1, 4,
      "layout diff: |A - B| is multiplied by X ({range}, default {default})",
      scene([](Scene& s) { return &s.diff.factor; })},
-    {Param::Ambient, "ambient", "--ambient", "A", "A ambient", S::Background, wide(kColorRange), wide(kColorRange),
+    {Param::Ambient, "ambient", "--ambient", "A", "ambient A", S::Lights, wide(kColorRange), wide(kColorRange),
      Scale::Linear, 3, 3, 1, "A, the ambient light, linear RGB ({range} each)",
      scene([](Scene& s) { return &s.ambient.x; })},
     {Param::Background, "background", "--background", "background", "background", S::Background, wide(kColorRange),
