@@ -162,7 +162,10 @@ void renderScenesHeadless(std::vector<Scene>& scenes, const ShaderLibrary& shade
     // the first ends the run. An InputError or a ShaderError leaves the context as it was: programs that
     // failed are not kept (ProgramCache builds them again when asked), a model that failed is no geometry.
     const auto each = [&failed](std::size_t i, const std::function<void()>& work) {
-        if (!failed) return work(), true;
+        if (!failed) {
+            work();
+            return true;
+        }
         try {
             work();
             return true;
@@ -220,8 +223,14 @@ Image renderSweepHeadless(const Scene& base, const std::vector<Sweep>& sweeps, c
         for (std::size_t c = 0; c < columns; ++c) {
             Scene s = base;
             std::string label;
-            if (!sweeps.empty()) applySweep(s, sweeps[0], c, flag), label = sweepLabel(sweeps[0], c);
-            if (sweeps.size() > 1) applySweep(s, sweeps[1], r, flag), label += "  " + sweepLabel(sweeps[1], r);
+            if (!sweeps.empty()) {
+                applySweep(s, sweeps[0], c, flag);
+                label = sweepLabel(sweeps[0], c);
+            }
+            if (sweeps.size() > 1) {
+                applySweep(s, sweeps[1], r, flag);
+                label += "  " + sweepLabel(sweeps[1], r);
+            }
             scenes.push_back(std::move(s));
             labels.push_back(std::move(label));
         }

@@ -197,9 +197,15 @@ void applyOverrides(Scene& s, const Options& o) {
         if (o.kd) obj.material.kd = *o.kd;
         if (o.ks) obj.material.ks = *o.ks;
         if (o.ke) obj.material.ke = *o.ke;
-        if (o.color) obj.material.color = *o.color, obj.material.colorSet = true;
+        if (o.color) {
+            obj.material.color = *o.color;
+            obj.material.colorSet = true;
+        }
         if (o.specularColor) obj.material.specularColor = *o.specularColor;
-        if (o.anisotropy) obj.material.anisotropic = true, obj.material.anisotropy = *o.anisotropy;
+        if (o.anisotropy) {
+            obj.material.anisotropic = true;
+            obj.material.anisotropy = *o.anisotropy;
+        }
         if (o.mirror) obj.material.mirror = *o.mirror;
         if (o.transmission) obj.material.transmission = *o.transmission;
         checkCoefficients(obj.material, "--");
@@ -207,7 +213,10 @@ void applyOverrides(Scene& s, const Options& o) {
     checkAnisotropy(s, o.anisotropy ? "--" : o.reflection ? "--reflection: " : "");
     if (o.ambient) s.ambient = *o.ambient;
     if (o.background) s.background = *o.background;
-    if (o.width) s.width = *o.width, s.height = *o.height;
+    if (o.width) {
+        s.width = *o.width;
+        s.height = *o.height;
+    }
     if (!o.lights.empty()) {
         s.lights = o.lights;
         s.lightsGiven = true;
@@ -222,7 +231,10 @@ void applyOverrides(Scene& s, const Options& o) {
     if (o.ior) s.ior = *o.ior;
     if (o.environment) s.environment = *o.environment;
     if (o.noTextures) s.textures = false;
-    if (o.diffA) s.diff.a = *o.diffA, s.diff.b = *o.diffB;
+    if (o.diffA) {
+        s.diff.a = *o.diffA;
+        s.diff.b = *o.diffB;
+    }
     if (o.diffFactor) s.diff.factor = *o.diffFactor;
     if (o.show) s.show = *o.show;
     if (s.show.term == ShowTerm::Light && s.show.light >= int(s.lights.size()))

@@ -38,7 +38,8 @@ void DifferencePass::resizeSources(int width, int height) {
         sources_[k] = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
         sourceFbos_[k] = makeFramebuffer(sources_[k].get(), 0, "layout diff");
     }
-    width_ = width, height_ = height;
+    width_ = width;
+    height_ = height;
 }
 
 // Both source panes out of the target into the copies, bound to texture units 0 and 1 (GL's rows run
@@ -52,7 +53,8 @@ void DifferencePass::copySources(const Pane& a, const Pane& b, const RenderTarge
         if (!resolved_ || resolvedWidth_ != target.width || resolvedHeight_ != target.height) {
             resolved_ = makeImageTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, target.width, target.height);
             resolvedFbo_ = makeFramebuffer(resolved_.get(), 0, "layout diff (MSAA resolve)");
-            resolvedWidth_ = target.width, resolvedHeight_ = target.height;
+            resolvedWidth_ = target.width;
+            resolvedHeight_ = target.height;
         }
         blitColor(target.framebuffer, 0, 0, resolvedFbo_.get(), 0, 0, target.width, target.height);
         from = resolvedFbo_.get();

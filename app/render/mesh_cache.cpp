@@ -19,7 +19,8 @@ Aabb partBounds(const Mesh& mesh, const MeshPart& part) {
     const std::size_t end = std::min<std::size_t>(std::size_t(part.firstIndex) + part.indexCount, mesh.indices.size());
     for (std::size_t i = part.firstIndex; i < end; ++i) {
         const glm::vec3& p = mesh.positions[mesh.indices[i]];
-        box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+        box.lo = glm::min(box.lo, p);
+        box.hi = glm::max(box.hi, p);
     }
     return end > part.firstIndex ? box : Aabb{};
 }
@@ -64,7 +65,10 @@ MeshCache::ObjectMesh MeshCache::describe(const Mesh& mesh, const Mesh& baked) {
         object.partBoxes.push_back(part.alphaMode == AlphaMode::Blend ? partBounds(mesh, part) : Aabb{});
     // Bounds and triangle counts of every instance: the baked mesh's.
     Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
-    for (const glm::vec3& p : baked.positions) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+    for (const glm::vec3& p : baked.positions) {
+        box.lo = glm::min(box.lo, p);
+        box.hi = glm::max(box.hi, p);
+    }
     object.box = baked.positions.empty() ? Aabb{} : box;
     object.triangles = baked.triangleCount();
     return object;
@@ -145,8 +149,16 @@ void interleave(InterleavedVertices& out, std::size_t count, std::size_t floats,
         v += floats;
         const glm::vec2& uv = in.texcoords[i];
         const glm::vec4& c = in.colors[i];
-        v[0] = uv.x, v[1] = uv.y, v[2] = c.r, v[3] = c.g, v[4] = c.b, v[5] = c.a;
-        if (in.emissive()) v[6] = in.emissiveTexcoords[i].x, v[7] = in.emissiveTexcoords[i].y;
+        v[0] = uv.x;
+        v[1] = uv.y;
+        v[2] = c.r;
+        v[3] = c.g;
+        v[4] = c.b;
+        v[5] = c.a;
+        if (in.emissive()) {
+            v[6] = in.emissiveTexcoords[i].x;
+            v[7] = in.emissiveTexcoords[i].y;
+        }
     }
     if (in.varies()) {
         out.layout.push_back({SL_ATTRIB_TEXCOORD, 2});
@@ -159,7 +171,10 @@ void interleave(InterleavedVertices& out, std::size_t count, std::size_t floats,
 // without tangents gets T = +x.
 void writeTangent(float* v, const std::vector<glm::vec4>& tangents, std::size_t i) {
     const glm::vec4 t = i < tangents.size() ? tangents[i] : glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
-    v[0] = t.x, v[1] = t.y, v[2] = t.z, v[3] = t.w;
+    v[0] = t.x;
+    v[1] = t.y;
+    v[2] = t.z;
+    v[3] = t.w;
 }
 
 // Gouraud and Phong: position xyz, normal xyz (and, with `tangents`, the tangent xyzw).
@@ -170,7 +185,12 @@ InterleavedVertices smoothVertices(const Mesh& mesh, bool tangents) {
     interleave(out, mesh.positions.size(), tangents ? 10 : 6, {mesh.texcoords, mesh.colors, mesh.emissiveTexcoords},
                [&](float* v, std::size_t i) {
                    const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
-                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = n.x, v[4] = n.y, v[5] = n.z;
+                   v[0] = p.x;
+                   v[1] = p.y;
+                   v[2] = p.z;
+                   v[3] = n.x;
+                   v[4] = n.y;
+                   v[5] = n.z;
                    if (tangents) writeTangent(v + 6, mesh.tangents, i);
                });
     return out;
@@ -185,7 +205,14 @@ InterleavedVertices flatVertices(const FlatMesh& flat, bool tangents) {
     interleave(out, flat.positions.size(), tangents ? 13 : 9, {flat.texcoords, flat.colors, flat.emissiveTexcoords},
                [&](float* v, std::size_t i) {
                    const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
-                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x, v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.y,
+                   v[0] = p.x;
+                   v[1] = p.y;
+                   v[2] = p.z;
+                   v[3] = c.x;
+                   v[4] = c.y;
+                   v[5] = c.z;
+                   v[6] = n.x;
+                   v[7] = n.y;
                    v[8] = n.z;
                    if (tangents) writeTangent(v + 9, flat.tangents, i);
                });
@@ -202,8 +229,14 @@ InterleavedVertices packedFlatVertices(const FlatMesh& flat) {
     interleave(out, flat.positions.size(), 8, {flat.texcoords, flat.colors, flat.emissiveTexcoords},
                [&](float* v, std::size_t i) {
                    const glm::vec3 &p = flat.positions[i], &c = flat.centroids[i], &n = flat.normals[i];
-                   v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = c.x;
-                   v[4] = c.y, v[5] = c.z, v[6] = n.x, v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
+                   v[0] = p.x;
+                   v[1] = p.y;
+                   v[2] = p.z;
+                   v[3] = c.x;
+                   v[4] = c.y;
+                   v[5] = c.z;
+                   v[6] = n.x;
+                   v[7] = n.z < 0.0f ? n.y + float(SL_FLAT_NORMAL_Z_NEGATIVE) : n.y;
                });
     return out;
 }

@@ -295,7 +295,8 @@ void OverlayRenderer::render(const Scene& scene, const RenderTarget& target, con
     for (std::size_t p = 0; p < panes.size(); ++p) {
         const Pane& pane = panes[p];
         glViewport(pane.x, target.height - pane.y - pane.height, pane.width, pane.height);
-        paneWidth_ = float(std::max(pane.width, 1)), paneHeight_ = float(std::max(pane.height, 1));
+        paneWidth_ = float(std::max(pane.width, 1));
+        paneHeight_ = float(std::max(pane.height, 1));
         uniforms_.bindFrame(p);
         for (std::size_t o = 0; o < objects; ++o) drawObjectLines(scene, options, o);
         if (options.lightMarkers) drawLights(scene, objects);

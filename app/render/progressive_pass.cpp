@@ -48,7 +48,8 @@ void ProgressivePass::prepare(const Scene& scene, int width, int height, int str
         sumColor_ = makeImageTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
         depth_ = makeImageTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width, height);
         sumFbo_ = makeFramebuffer(sumColor_.get(), depth_.get(), "progressive sampling (float sum)");
-        width_ = width, height_ = height;
+        width_ = width;
+        height_ = height;
         restart = true;
     }
     if (restart || s != stride_) {

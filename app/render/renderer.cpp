@@ -27,7 +27,10 @@ bool llvmpipeOn128Bits(const std::string& glRenderer) {
 }
 
 void copyVec(float (&dst)[4], const glm::vec3& v, float w = 0.0f) {
-    dst[0] = v.x, dst[1] = v.y, dst[2] = v.z, dst[3] = w;
+    dst[0] = v.x;
+    dst[1] = v.y;
+    dst[2] = v.z;
+    dst[3] = w;
 }
 
 // A program variant as a number, for the per-pane lookup in drawPane.
@@ -305,7 +308,8 @@ void Renderer::renderShadowMaps(const Scene& scene, const std::vector<Draw>& dra
         // A cut-out casts a cut-out shadow; a blended part casts one as if it were opaque.
         if (d.alphaMode == AlphaMode::Mask) {
             depth.maskTexture = meshes_.texture(d.object, d.texture);
-            depth.alpha = d.alpha, depth.alphaCutoff = d.alphaCutoff;
+            depth.alpha = d.alpha;
+            depth.alphaCutoff = d.alphaCutoff;
         }
         if (d.instances < 0) {
             depthDraws.push_back(depth);
@@ -333,7 +337,10 @@ void Renderer::stageUniforms(const Scene& scene, const std::vector<Pane>& panes,
         // rasteriser, so their passes evaluate every sample (they are cheap) and their mean is exact.
         const bool split = pass && panes[p].mode == ShadingMode::Phong;
         const glm::ivec2 first = split ? pass->first : glm::ivec2(0), stride = split ? pass->stride : glm::ivec2(1);
-        b.areaPass[0] = first.x, b.areaPass[1] = first.y, b.areaPass[2] = stride.x, b.areaPass[3] = stride.y;
+        b.areaPass[0] = first.x;
+        b.areaPass[1] = first.y;
+        b.areaPass[2] = stride.x;
+        b.areaPass[3] = stride.y;
         uniforms_->setFrame(p, b);
     }
     for (std::size_t d = 0; d < draws.size(); ++d)

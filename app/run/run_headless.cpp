@@ -46,7 +46,10 @@ Image finishedFrame(const Options& options, Image image, const Scene& scene, con
                                   : scene.objects.empty() ? Material{}
                                                           : scene.objects[0].material;
         FormulaInput in = formulaInput(scene, material);
-        if (hit) in.probed = probedTerms(*probe), in.probedAt = probedPlace(*probe);
+        if (hit) {
+            in.probed = probedTerms(*probe);
+            in.probedAt = probedPlace(*probe);
+        }
         std::vector<FormulaPane> panes;
         for (const Pane& p : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff))
             panes.push_back({float(p.x), float(p.y), float(p.width), float(p.height), p.mode, p.difference});
@@ -127,7 +130,9 @@ std::optional<IntersectionPoint> intersectionPoint(const Scene& scene, const Pro
     at.nrmWorld = n;
     at.clipFromWorld =
         clipFromView(scene.camera, float(pane.width) / float(std::max(pane.height, 1))) * viewFromWorld(scene.camera);
-    at.paneX = float(pane.x), at.paneY = float(pane.y), at.paneWidth = float(pane.width),
+    at.paneX = float(pane.x);
+    at.paneY = float(pane.y);
+    at.paneWidth = float(pane.width);
     at.paneHeight = float(pane.height);
     return at;
 }

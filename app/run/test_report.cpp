@@ -198,7 +198,8 @@ Image differenceForReport(const Image& actual, const Image& reference, float fac
             for (int x = std::max(0, m.x); x < std::min(d.width, m.x + m.z); ++x)
                 if ((x + y) % 8 < 3) {
                     std::uint8_t* p = d.pixel(x, y);
-                    p[0] = p[1] = p[2] = 128, p[3] = 255;
+                    p[0] = p[1] = p[2] = 128;
+                    p[3] = 255;
                 }
     return d;
 }

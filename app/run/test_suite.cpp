@@ -216,8 +216,12 @@ void compareCase(TestCase& c, const Image& actual, const Options& options) {
     if (reference) {
         const CompareResult r = compareCaseImages(actual, *reference, c.masks);
         c.outcome = c.tolerance.matches(r) ? CaseOutcome::Match : CaseOutcome::Differs;
-        if (r.sizeMatches) c.numbers = r, c.message = describe(r, c.tolerance);
-        else c.message = "size " + sizeText(actual) + ", the reference's " + sizeText(*reference);
+        if (r.sizeMatches) {
+            c.numbers = r;
+            c.message = describe(r, c.tolerance);
+        } else {
+            c.message = "size " + sizeText(actual) + ", the reference's " + sizeText(*reference);
+        }
     }
     if (c.outcome != CaseOutcome::Match) {
         std::optional<Image> difference;

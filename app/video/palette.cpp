@@ -22,9 +22,14 @@ Box measured(const std::vector<Key>& colours, std::size_t begin, std::size_t end
     Box box{begin, end};
     for (int c = 0; c < 3; ++c) {
         int lo = 255, hi = 0;
-        for (std::size_t i = begin; i < end; ++i)
-            lo = std::min(lo, channel(colours[i], c)), hi = std::max(hi, channel(colours[i], c));
-        if (hi - lo > box.extent) box.extent = hi - lo, box.widest = c;
+        for (std::size_t i = begin; i < end; ++i) {
+            lo = std::min(lo, channel(colours[i], c));
+            hi = std::max(hi, channel(colours[i], c));
+        }
+        if (hi - lo > box.extent) {
+            box.extent = hi - lo;
+            box.widest = c;
+        }
     }
     return box;
 }
@@ -54,7 +59,10 @@ std::size_t nearest(const std::vector<std::array<std::uint8_t, 3>>& palette, int
     for (std::size_t i = 0; i < palette.size(); ++i) {
         const int dr = palette[i][0] - r, dg = palette[i][1] - g, db = palette[i][2] - b;
         const int d = dr * dr + dg * dg + db * db;
-        if (d < bestDistance) bestDistance = d, best = i;
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = i;
+        }
     }
     return best;
 }
@@ -92,7 +100,8 @@ void ditherInto(const Image& frame, PalettedImage& out) {
 
 PalettedImage paletteFrame(const Image& frame, bool dither) {
     PalettedImage out;
-    out.width = frame.width, out.height = frame.height;
+    out.width = frame.width;
+    out.height = frame.height;
     const std::size_t pixels = std::size_t(frame.width) * std::size_t(frame.height);
     if (pixels == 0) return out;
     std::vector<Key> colours(pixels);

@@ -80,7 +80,8 @@ struct VideoEncoder::State {
 void VideoEncoder::State::openCodec(const AVCodec* encoder, int encodedWidth, int encodedHeight) {
     codec = avcodec_alloc_context3(encoder);
     if (!codec) throw std::bad_alloc();
-    codec->width = encodedWidth, codec->height = encodedHeight;
+    codec->width = encodedWidth;
+    codec->height = encodedHeight;
     codec->time_base = AVRational{1, settings.fps};
     codec->framerate = AVRational{settings.fps, 1};
     codec->thread_count = 0;  // as many as the machine has
@@ -88,8 +89,10 @@ void VideoEncoder::State::openCodec(const AVCodec* encoder, int encodedWidth, in
         codec->pix_fmt = AV_PIX_FMT_PAL8;
     } else {
         codec->pix_fmt = AV_PIX_FMT_YUV420P;
-        codec->colorspace = AVCOL_SPC_BT709, codec->color_primaries = AVCOL_PRI_BT709;
-        codec->color_trc = AVCOL_TRC_BT709, codec->color_range = AVCOL_RANGE_MPEG;
+        codec->colorspace = AVCOL_SPC_BT709;
+        codec->color_primaries = AVCOL_PRI_BT709;
+        codec->color_trc = AVCOL_TRC_BT709;
+        codec->color_range = AVCOL_RANGE_MPEG;
         codec->gop_size = 2 * settings.fps;  // a key frame every 2 s: seeking in a slide's video
     }
     if (format == VideoFormat::Mp4) {
@@ -124,7 +127,10 @@ VideoEncoder::VideoEncoder(const std::string& file, VideoFormat format, int widt
     : state_(std::make_unique<State>()) {
     av_log_set_level(AV_LOG_QUIET);  // what goes wrong is thrown, and said in one line (main.cpp)
     State& s = *state_;
-    s.format = format, s.settings = settings, s.width = width, s.height = height;
+    s.format = format;
+    s.settings = settings;
+    s.width = width;
+    s.height = height;
     s.file = shownAs.empty() ? file : shownAs;  // what messages call it
     const AVCodec* encoder = findEncoder(format, s.file);
     check(avformat_alloc_output_context2(&s.muxer, nullptr, muxerName(format), file.c_str()), s.file);
@@ -147,7 +153,9 @@ VideoEncoder::VideoEncoder(const std::string& file, VideoFormat format, int widt
     s.frame = av_frame_alloc();
     s.packet = av_packet_alloc();
     if (!s.frame || !s.packet) throw std::bad_alloc();
-    s.frame->format = s.codec->pix_fmt, s.frame->width = ew, s.frame->height = eh;
+    s.frame->format = s.codec->pix_fmt;
+    s.frame->width = ew;
+    s.frame->height = eh;
     check(av_frame_get_buffer(s.frame, 0), s.file);
     if (format != VideoFormat::Gif) {
         s.toYuv = sws_getContext(ew, eh, AV_PIX_FMT_RGBA, ew, eh, AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr,

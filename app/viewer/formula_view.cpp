@@ -33,7 +33,10 @@ Band layoutBand(const Scene& scene, const Material& material, const ProbeResult*
                        font->Ascent / font->FontSize}};
     const bool hit = probe && !probe->miss;
     FormulaInput in = formulaInput(scene, hit ? probe->material : material);
-    if (hit) in.probed = probedTerms(*probe), in.probedAt = probedPlace(*probe);
+    if (hit) {
+        in.probed = probedTerms(*probe);
+        in.probedAt = probedPlace(*probe);
+    }
     in.valueSize = 1.0f;
     std::vector<FormulaPane> panes;
     const float scale = style.framebufferScale;

@@ -38,7 +38,10 @@ private:
 
 inline bool FramePacing::countEvents(unsigned long eventCount) {
     const bool still = eventCount == eventsSeen_;
-    if (!still) eventsSeen_ = eventCount, framesToDraw_ = kFramesAfterEvent;
+    if (!still) {
+        eventsSeen_ = eventCount;
+        framesToDraw_ = kFramesAfterEvent;
+    }
     if (framesToDraw_ > 0) --framesToDraw_;
     return still;
 }

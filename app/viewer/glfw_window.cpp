@@ -61,8 +61,10 @@ GlfwWindow::GlfwWindow(int width, int height, float sideWidth, const std::string
     // The content keeps its size on the screen: at 2x, twice the pixels.
     width = int(std::lround(float(width) * area.scale + sideWidth * area.scale));
     height = int(std::lround(float(height) * area.scale));
-    if (placement && placement->width > 0 && placement->height > 0)
-        width = placement->width, height = placement->height;
+    if (placement && placement->width > 0 && placement->height > 0) {
+        width = placement->width;
+        height = placement->height;
+    }
     if (area.width > 0 && area.height > 0) {
         width = std::min(width, area.width);
         height = std::min(height, area.height);

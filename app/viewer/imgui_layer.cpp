@@ -113,9 +113,11 @@ void ImGuiLayer::buildFonts() {
 }
 
 void ImGuiLayer::setViewTextSize(float text, float formulaMain) {
-    text = std::max(std::round(text), 1.0f), formulaMain = std::max(std::round(formulaMain), 1.0f);
+    text = std::max(std::round(text), 1.0f);
+    formulaMain = std::max(std::round(formulaMain), 1.0f);
     if (text == viewText_ && formulaMain == formulaMain_) return;
-    viewText_ = text, formulaMain_ = formulaMain;
+    viewText_ = text;
+    formulaMain_ = formulaMain;
     buildFonts();
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
@@ -168,7 +170,10 @@ void renderLists(const ImDrawData& all, std::vector<ImDrawList*> lists) {
     part.CmdLists = lists.data();
     part.CmdListsCount = int(lists.size());
     part.TotalVtxCount = part.TotalIdxCount = 0;
-    for (const ImDrawList* l : lists) part.TotalVtxCount += l->VtxBuffer.Size, part.TotalIdxCount += l->IdxBuffer.Size;
+    for (const ImDrawList* l : lists) {
+        part.TotalVtxCount += l->VtxBuffer.Size;
+        part.TotalIdxCount += l->IdxBuffer.Size;
+    }
     ImGui_ImplOpenGL3_RenderDrawData(&part);
 }
 
@@ -252,7 +257,8 @@ bool ImGuiLayer::panelFromCache(const std::vector<ImDrawList*>& windows, int lef
         const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (!complete) return false;
-        cacheWidth_ = width, cacheHeight_ = height;
+        cacheWidth_ = width;
+        cacheHeight_ = height;
         hash_ = ~hash;                              // not drawn yet
         for (std::uint64_t& h : stampHash_) h = 0;  // a new size: no copy is in the back buffer
     }

@@ -50,7 +50,10 @@ LabelPlacement placeLightLabel(const LightLabelArea& a, glm::vec2 at, float gap,
     float best = 1e30f;
     for (const LabelDisc& m : a.models) {
         const float d = glm::length(at - m.centre) - m.radius;
-        if (d < best) best = d, nearest = &m;
+        if (d < best) {
+            best = d;
+            nearest = &m;
+        }
     }
     glm::vec2 u = nearest ? at - nearest->centre : glm::vec2(0.0f, 1.0f);
     const float len = glm::length(u);

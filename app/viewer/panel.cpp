@@ -465,7 +465,10 @@ void sectionDisplay(const PanelStatus& status, PanelRequests& requests) {
     std::vector<int> samples;
     std::vector<std::string> labels;
     for (const auto& n : kMsaaNames)
-        if (n.second >= 1) samples.push_back(n.second), labels.push_back(msaaLabel(n.second));
+        if (n.second >= 1) {
+            samples.push_back(n.second);
+            labels.push_back(msaaLabel(n.second));
+        }
     std::vector<const char*> items;
     int choice = 0;
     for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -666,7 +669,10 @@ PanelRequests drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus&
     if (!status.presetTitles.empty() && ImGui::CollapsingHeader("Playlist", ImGuiTreeNodeFlags_DefaultOpen))
         sectionPlaylist(settings, status, requests);
     // The probe's terms come first: a click on the view is a question the panel answers at once.
-    if (probe && settings.scrollToProbe) ImGui::SetScrollHereY(0.0f), settings.scrollToProbe = false;
+    if (probe && settings.scrollToProbe) {
+        ImGui::SetScrollHereY(0.0f);
+        settings.scrollToProbe = false;
+    }
     if (probe && ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen))
         requests.clearProbe |= probeSection(scene, *probe);
     settings.openSections.clear();
@@ -923,7 +929,10 @@ int lightAtPixel(const Scene& scene, const Pane& pane, glm::vec2 pixel, float ra
         const glm::vec3 p = projectToImage(scene.camera, pane, lightHandleWorld(scene, i));
         if (!(p.z > 0.0f)) continue;
         const float d = glm::length(glm::vec2(p) - pixel);
-        if (d <= bestDistance) best = int(i), bestDistance = d;
+        if (d <= bestDistance) {
+            best = int(i);
+            bestDistance = d;
+        }
     }
     return best;
 }

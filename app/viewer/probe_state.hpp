@@ -31,7 +31,10 @@ public:
         std::string message;
     };
     Outcome set(const Scene& scene, const std::shared_ptr<const SceneGeometry>& geometry, int x, int y);
-    void clear() { anchor_.reset(), result_.reset(); }
+    void clear() {
+        anchor_.reset();
+        result_.reset();
+    }
     bool anchored() const { return anchor_.has_value(); }
 
     // This frame's evaluation at the anchor (none without one, or where its triangle is gone).

@@ -175,7 +175,10 @@ Box placeLabel(ImVec2 tip, ImVec2 size, const Box& pane, const std::vector<Box>&
         float cost = 0.0f;
         for (const Box& q : placed) cost += q.overlap(b);
         if (cost <= 0.0f) return b;
-        if (cost < bestCost) bestCost = cost, best = b;
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = b;
+        }
     }
     return best;
 }

@@ -58,7 +58,8 @@ bool SceneDocument::syncGeometry() {
         ++revision_;
         throw;
     }
-    ++revision_, ++geometryRevision_;
+    ++revision_;
+    ++geometryRevision_;
     return true;
 }
 
@@ -74,7 +75,8 @@ void SceneDocument::adopt(Scene next) {
     auto geometry = std::make_shared<const SceneGeometry>(buildSceneGeometry(next));
     scene_ = std::move(next);
     geometry_ = std::move(geometry);
-    ++revision_, ++geometryRevision_;
+    ++revision_;
+    ++geometryRevision_;
 }
 
 void SceneDocument::replace(Scene next) {

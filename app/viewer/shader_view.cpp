@@ -76,7 +76,10 @@ void drawLine(const GlslLine& line, float width, int columns = 0) {
             rows.emplace_back();
             used = 0;
         }
-        if (!text.empty()) rows.back().push_back(GlslSpan{text, s.token}), used += int(text.size());
+        if (!text.empty()) {
+            rows.back().push_back(GlslSpan{text, s.token});
+            used += int(text.size());
+        }
     }
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 at = ImGui::GetCursorScreenPos();

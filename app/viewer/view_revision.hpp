@@ -27,7 +27,10 @@ public:
     // The revision of a view drawn from `inputs`: the last call's while they are the same, one more as
     // soon as any of them differs.
     std::uint64_t of(const ViewInputs& inputs) {
-        if (!last_ || last_->tied() != inputs.tied()) last_ = inputs, ++revision_;
+        if (!last_ || last_->tied() != inputs.tied()) {
+            last_ = inputs;
+            ++revision_;
+        }
         return revision_;
     }
 

@@ -278,7 +278,10 @@ PanelRequests Viewer::panelEdits(const FrameLayout& l) {
         settings_.showPanel ? drawPanel(document_.sceneForWidgets(), settings_, status_, l.panel, probe_.result())
                             : PanelRequests{};
     if (requests.sceneEdited) document_.markEdited();
-    if (settings_.showPanel) status_.scrollToPreset = false, panelDrawn_ = true;  // the list has scrolled to it
+    if (settings_.showPanel) {  // the list has scrolled to it
+        status_.scrollToPreset = false;
+        panelDrawn_ = true;
+    }
     const Camera& after = document_.scene().camera;
     if (before.eye != after.eye || before.target != after.target || before.fovYDeg != after.fovYDeg)
         document_.stopFollowing();  // typed into the Camera section
@@ -323,7 +326,8 @@ std::vector<UiRect> Viewer::drawViewText(const FrameLayout& l, float labelsBotto
     }
     if (settings_.shaderOverView) {  // the message beside the shader view, not over its lines
         const float shader = std::round(messageArea.width * kShaderOverViewShare);
-        messageArea.x += shader, messageArea.width -= shader;
+        messageArea.x += shader;
+        messageArea.width -= shader;
     }
     messageShown_ = std::chrono::steady_clock::now() < messageUntil_;
     if (messageShown_) drawMessage(status_, messageArea);
@@ -638,7 +642,10 @@ void Viewer::handleKeys(const std::vector<KeyPress>& keys) {
 
 void Viewer::runCommand(ViewerCommand command) {
     const auto scene = [this]() -> Scene& { return document_.edit(); };  // the commands that change the scene
-    const auto single = [&](ShadingMode mode) { scene().shading = mode, scene().layout = Layout::Single; };
+    const auto single = [&](ShadingMode mode) {
+        scene().shading = mode;
+        scene().layout = Layout::Single;
+    };
     // C and D toggle: pressed again, back to the layout before (D twice from compare: compare again).
     const auto toggle = [&](Layout layout) {
         const Layout now = document_.scene().layout;
@@ -661,8 +668,14 @@ void Viewer::runCommand(ViewerCommand command) {
     case ViewerCommand::Formula: settings_.showFormula = !settings_.showFormula; break;
     case ViewerCommand::Intersection: settings_.showIntersection = !settings_.showIntersection; break;
     case ViewerCommand::ShaderSection: settings_.shaderOverView = !settings_.shaderOverView; break;
-    case ViewerCommand::ResetCamera: document_.resetCamera(), cameraMoved(); break;
-    case ViewerCommand::FrameModel: document_.frameModel(), cameraMoved(); break;
+    case ViewerCommand::ResetCamera:
+        document_.resetCamera();
+        cameraMoved();
+        break;
+    case ViewerCommand::FrameModel:
+        document_.frameModel();
+        cameraMoved();
+        break;
     case ViewerCommand::NextPreset:
     case ViewerCommand::PreviousPreset:
     case ViewerCommand::FirstPreset:
@@ -727,8 +740,14 @@ void Viewer::apply(const PanelRequests& r) {
     if (r.uiScale > 0.0f) uiScale_ = std::clamp(r.uiScale, kUiScaleRange.lo, kUiScaleRange.hi);
     if (r.msaa > 0) quality_.setMsaaSamples(r.msaa);
     if (r.toggleFullscreen) window_.setFullscreen(!window_.fullscreen());
-    if (r.resetCamera) document_.resetCamera(), cameraMoved();
-    if (r.frameModel) document_.frameModel(), cameraMoved();
+    if (r.resetCamera) {
+        document_.resetCamera();
+        cameraMoved();
+    }
+    if (r.frameModel) {
+        document_.frameModel();
+        cameraMoved();
+    }
     if (r.modelCamera >= 0) {
         // Through the model's camera, as --camera N: no longer framed by shadelab (F or R frame again).
         document_.edit().modelCamera = r.modelCamera;
@@ -909,7 +928,8 @@ ViewInputs Viewer::viewInputs(const RenderTarget& target) const {
     in.geometry = document_.geometryRevision();
     in.renderer = rendererGeneration_;
     in.animation = animation_.step();
-    in.width = std::uint64_t(target.width), in.height = std::uint64_t(target.height);
+    in.width = std::uint64_t(target.width);
+    in.height = std::uint64_t(target.height);
     in.moving = quality_.movingThisFrame() ? 1 : 0;
     return in;
 }

@@ -283,7 +283,10 @@ void applyArguments(const std::vector<std::string>& args) {
     refuseWhatThePageCannotDo(o);
     Scene scene = sceneFromOptions(o);
     const bool pinned = o.width.has_value();
-    if (!pinned) scene.width = a.canvasWidth, scene.height = a.canvasHeight;
+    if (!pinned) {
+        scene.width = a.canvasWidth;
+        scene.height = a.canvasHeight;
+    }
     if (!a.document || o.input != a.input || pinned != a.pinned || o.camera != a.options.camera) {
         // Another scene (or another of its model's cameras): built, framed as --output frames it, the
         // camera its own.
@@ -322,7 +325,10 @@ void drawFormula(const Scene& scene, const RenderTarget& target) {
     const bool hit = a.probe && !a.probe->miss;
     const Material material = hit ? a.probe->material : scene.objects.empty() ? Material{} : scene.objects[0].material;
     FormulaInput in = formulaInput(scene, material);
-    if (hit) in.probed = probedTerms(*a.probe), in.probedAt = probedPlace(*a.probe);
+    if (hit) {
+        in.probed = probedTerms(*a.probe);
+        in.probedAt = probedPlace(*a.probe);
+    }
     std::vector<FormulaPane> panes;
     for (const Pane& p : layoutPanes(scene.layout, scene.shading, scene.width, scene.height, scene.diff))
         panes.push_back({float(p.x), float(p.y), float(p.width), float(p.height), p.mode, p.difference});
@@ -453,7 +459,8 @@ EMSCRIPTEN_KEEPALIVE const char* sl_apply(const char* argumentsJson) {
 // The canvas's size in pixels (CSS size x device pixel ratio), unless --size pins it.
 EMSCRIPTEN_KEEPALIVE const char* sl_resize(int width, int height) {
     WebApp& a = app();
-    a.canvasWidth = std::max(width, 16), a.canvasHeight = std::max(height, 16);
+    a.canvasWidth = std::max(width, 16);
+    a.canvasHeight = std::max(height, 16);
     if (!a.pinned) emscripten_set_canvas_element_size(kCanvas, a.canvasWidth, a.canvasHeight);
     if (!a.document) return reply(json::object());
     if (!a.pinned) a.document->setViewSize(a.canvasWidth, a.canvasHeight);

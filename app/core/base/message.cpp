@@ -12,10 +12,18 @@ std::size_t utf8Length(std::string_view text, std::size_t i) {
     const unsigned char b = byte(i);
     std::size_t n = 0;
     std::uint32_t cp = 0;
-    if (b >= 0xC2 && b <= 0xDF) n = 2, cp = b & 0x1Fu;
-    else if (b >= 0xE0 && b <= 0xEF) n = 3, cp = b & 0x0Fu;
-    else if (b >= 0xF0 && b <= 0xF4) n = 4, cp = b & 0x07u;
-    else return 0;
+    if (b >= 0xC2 && b <= 0xDF) {
+        n = 2;
+        cp = b & 0x1Fu;
+    } else if (b >= 0xE0 && b <= 0xEF) {
+        n = 3;
+        cp = b & 0x0Fu;
+    } else if (b >= 0xF0 && b <= 0xF4) {
+        n = 4;
+        cp = b & 0x07u;
+    } else {
+        return 0;
+    }
     if (i + n > text.size()) return 0;
     for (std::size_t k = 1; k < n; ++k) {
         if ((byte(i + k) & 0xC0u) != 0x80u) return 0;

@@ -184,7 +184,8 @@ std::optional<LobeIncidence> lobeIncidenceAt(const glm::vec3& n, const glm::vec3
     if (glm::dot(n, i) <= 1e-4f) return std::nullopt;
     glm::vec3 t, b;
     if (frame) {
-        t = frame->tangent, b = frame->bitangent;
+        t = frame->tangent;
+        b = frame->bitangent;
     } else {
         // Isotropic: T opposite to I's part along the surface (I on the left), B = N x T as in the plot.
         const glm::vec3 flat = i - glm::dot(n, i) * n;
@@ -263,12 +264,14 @@ void addLobeMesh(Plot& p, const LobeSurface& s, const LobeView& view) {
     if (!p.lines.empty()) {
         for (auto it = p.lines.begin(); it != p.lines.end(); ++it)
             if (it->name == "meridian") {
-                it->inLegend = true, it->name = "meridians through R";
+                it->inLegend = true;
+                it->name = "meridians through R";
                 break;
             }
         for (auto it = p.lines.begin(); it != p.lines.end(); ++it)
             if (it->name == "ring") {
-                it->inLegend = true, it->name = "rings around R";
+                it->inLegend = true;
+                it->name = "rings around R";
                 break;
             }
     }
@@ -303,7 +306,10 @@ void addLobe3dArrows(Plot& p, const LobeSurface& s, const std::optional<glm::vec
 void fitToLines(Plot& p) {
     glm::vec2 lo(1e30f), hi(-1e30f);
     for (const PlotPolyline& l : p.lines)
-        for (const glm::vec2& q : l.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+        for (const glm::vec2& q : l.points) {
+            lo = glm::min(lo, q);
+            hi = glm::max(hi, q);
+        }
     const glm::vec2 margin = 0.04f * (hi - lo);
     p.min = lo - margin;
     p.max = hi + margin;
@@ -492,7 +498,10 @@ Plot brdfSlicePlot(const Material& m, const LightingEnvironment& env, float inci
         slices.push_back(sampleAzimuthSlice(m, env, incidenceDeg, phi));
     }
     std::vector<const BrdfSliceGrid*> planePtrs, slicePtrs;
-    for (std::size_t r = 0; r < phis.size(); ++r) planePtrs.push_back(&planes[r]), slicePtrs.push_back(&slices[r]);
+    for (std::size_t r = 0; r < phis.size(); ++r) {
+        planePtrs.push_back(&planes[r]);
+        slicePtrs.push_back(&slices[r]);
+    }
     // One scale per kind of panel, shared by the rows so that phi_i = 0 and 90 compare.
     const HeatScale planeScale = heatScale(planePtrs, true), sliceScale = heatScale(slicePtrs, false);
 

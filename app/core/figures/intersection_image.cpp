@@ -153,7 +153,8 @@ Box placeBox(const Pen& pen, const IntersectionPoint& at, glm::vec2 p, glm::vec2
     float textWidth = 0.0f;
     for (const std::string& l : lines) textWidth = std::max(textWidth, pen.textWidth(l));
     Box b;
-    b.pad = 0.6f * size, b.lineHeight = 1.3f * size;
+    b.pad = 0.6f * size;
+    b.lineHeight = 1.3f * size;
     b.width = std::max(textWidth, 14.0f * size) + 2.0f * b.pad;
     b.sketch = 9.0f * size;
     b.height = b.pad + b.sketch + b.pad + b.lineHeight * float(lines.size()) + b.pad;
@@ -211,9 +212,12 @@ IntersectionNumbers intersectionNumbers(const Scene& scene, const IntersectionPo
     n.thetaIDeg = float(std::acos(double(t.cosThetaI)) * kDeg);
     n.totalInternal = t.totalInternal;
     n.thetaTDeg = t.totalInternal ? 0.0f : float(std::acos(double(t.cosThetaT)) * kDeg);
-    n.etaI = t.eta.etaI, n.etaT = t.eta.etaT;
+    n.etaI = t.eta.etaI;
+    n.etaT = t.eta.etaT;
     const FresnelTerms f = fresnelExact(t.cosThetaI, t.eta.etaI, t.eta.etaT);
-    n.rParallel = f.parallel, n.rPerpendicular = f.perpendicular, n.r = f.average;
+    n.rParallel = f.parallel;
+    n.rPerpendicular = f.perpendicular;
+    n.r = f.average;
     return n;
 }
 

@@ -296,7 +296,10 @@ float layoutLegend(const Plot& plot, float width, float pad, const MeasureText& 
         if (!plot.lines[i].inLegend) continue;
         const float swatch = 2.2f * lineHeight, textWidth = measure(plot.lines[i].name).x;
         const float entryWidth = swatch + 0.4f * lineHeight + textWidth;
-        if (rowUsed && x + entryWidth > width - pad) x = pad, y += lineHeight * 1.2f;
+        if (rowUsed && x + entryWidth > width - pad) {
+            x = pad;
+            y += lineHeight * 1.2f;
+        }
         PlotLegendEntry e;
         e.line = i;
         e.swatchFrom = {x, y + 0.5f * lineHeight};

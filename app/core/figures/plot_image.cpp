@@ -73,7 +73,9 @@ public:
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 std::uint8_t* p = image_.pixel(x, y);
-                p[0] = color.r, p[1] = color.g, p[2] = color.b;
+                p[0] = color.r;
+                p[1] = color.g;
+                p[2] = color.b;
             }
     }
     void text(glm::vec2 topLeft, const std::string& text, Rgba8 color) override {
@@ -90,7 +92,10 @@ private:
                 *this = b;
                 return;
             }
-            x0 = std::min(x0, b.x0), y0 = std::min(y0, b.y0), x1 = std::max(x1, b.x1), y1 = std::max(y1, b.y1);
+            x0 = std::min(x0, b.x0);
+            y0 = std::min(y0, b.y0);
+            x1 = std::max(x1, b.x1);
+            y1 = std::max(y1, b.y1);
         }
     };
     static float cross(glm::vec2 u, glm::vec2 v) { return u.x * v.y - u.y * v.x; }
@@ -102,8 +107,9 @@ private:
     }
     Box clipped(glm::vec2 lo, glm::vec2 hi) const {
         Box b;
-        b.x0 = std::max(0, int(std::floor(lo.x))), b.y0 = std::max(0, int(std::floor(lo.y)));
-        b.x1 = std::min(image_.width, int(std::ceil(hi.x)) + 1),
+        b.x0 = std::max(0, int(std::floor(lo.x)));
+        b.y0 = std::max(0, int(std::floor(lo.y)));
+        b.x1 = std::min(image_.width, int(std::ceil(hi.x)) + 1);
         b.y1 = std::min(image_.height, int(std::ceil(hi.y)) + 1);
         return b;
     }

@@ -142,7 +142,10 @@ FormulaTerm glslLineTerm(const std::string& line) {
     FormulaTerm term = FormulaTerm::None;
     for (const auto& n : names) {
         const std::size_t at = line.find(n.name);
-        if (at < best) best = at, term = n.term;
+        if (at < best) {
+            best = at;
+            term = n.term;
+        }
     }
     return term;
 }

@@ -84,7 +84,8 @@ float projectedBoxPixels(const Camera& c, const Pane& pane, const glm::vec3& lo,
         const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
         const glm::vec3 image = imageFromClip(pane, clipFromWorld * glm::vec4(corner, 1.0f));
         if (!(image.z > 0.0f)) return paneArea;
-        a = glm::min(a, glm::vec2(image)), b = glm::max(b, glm::vec2(image));
+        a = glm::min(a, glm::vec2(image));
+        b = glm::max(b, glm::vec2(image));
     }
     a = glm::max(a, glm::vec2(float(pane.x), float(pane.y)));
     b = glm::min(b, glm::vec2(float(pane.x + pane.width), float(pane.y + pane.height)));

@@ -131,10 +131,13 @@ bool decodeBase64(std::string_view in, std::vector<unsigned char>& out) {
     static const std::array<std::int8_t, 256> kValue = [] {
         std::array<std::int8_t, 256> t{};
         t.fill(-1);
-        for (int i = 0; i < 26; ++i)
-            t[std::size_t('A' + i)] = std::int8_t(i), t[std::size_t('a' + i)] = std::int8_t(26 + i);
+        for (int i = 0; i < 26; ++i) {
+            t[std::size_t('A' + i)] = std::int8_t(i);
+            t[std::size_t('a' + i)] = std::int8_t(26 + i);
+        }
         for (int i = 0; i < 10; ++i) t[std::size_t('0' + i)] = std::int8_t(52 + i);
-        t[std::size_t('+')] = 62, t[std::size_t('/')] = 63;
+        t[std::size_t('+')] = 62;
+        t[std::size_t('/')] = 63;
         return t;
     }();
     std::size_t n = in.size();
@@ -152,7 +155,8 @@ bool decodeBase64(std::string_view in, std::vector<unsigned char>& out) {
             out[o++] = static_cast<unsigned char>(bits >> 16);
             out[o++] = static_cast<unsigned char>(bits >> 8);
             out[o++] = static_cast<unsigned char>(bits);
-            bits = 0, count = 0;
+            bits = 0;
+            count = 0;
         }
     }
     if (count == 2) out[o++] = static_cast<unsigned char>(bits >> 4);

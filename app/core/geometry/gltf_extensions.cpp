@@ -339,7 +339,8 @@ void decodeCompressedGltf(tinygltf::Model& model, const GltfPrepass& prepass, co
 #else
     (void)prepass;
 #endif
-    (void)model, (void)label;
+    (void)model;
+    (void)label;
 }
 
 }  // namespace shadelab

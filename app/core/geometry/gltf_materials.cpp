@@ -166,7 +166,8 @@ std::string GltfReader::decodeImage(const tinygltf::Image& image, TextureImage& 
     std::unique_ptr<unsigned char, void (*)(void*)> pixels(
         stbi_load_from_memory(bytes, int(size), &w, &h, &channels, 4), &stbi_image_free);
     if (!pixels) return out.name + " does not decode (" + std::string(stbi_failure_reason()) + ")";
-    out.width = w, out.height = h;
+    out.width = w;
+    out.height = h;
     out.rgba.assign(pixels.get(), pixels.get() + std::size_t(w) * std::size_t(h) * 4);
     return "";
 }

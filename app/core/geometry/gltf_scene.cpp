@@ -71,7 +71,10 @@ void GltfReader::readInstanced(const std::vector<int>& roots) {
     auto compact = std::make_shared<Mesh>();
     out_ = compact.get();
     instancedPass_ = true;
-    info_.nodes = 0, info_.triangles = 0, info_.primitives = 0, info_.generatedNormals = 0;  // limits count one walk
+    info_.nodes = 0;
+    info_.triangles = 0;
+    info_.primitives = 0;
+    info_.generatedNormals = 0;  // limits count one walk
     for (int r : roots) visit(r, glm::mat4(1.0f), 0);
     out_ = &mesh_;
     instancedPass_ = false;
@@ -191,7 +194,8 @@ std::vector<glm::mat4> GltfReader::instances(int ni, const tinygltf::Node& n) {
         if (!attributes.Has(name)) return;
         out = view(attributes.Get(name).GetNumberAsInt(), where + " " + name, {type}, componentTypes);
         if (counted && out->count != count) fail(where, std::string(name) + " counts differ from the other attributes");
-        count = out->count, counted = true;
+        count = out->count;
+        counted = true;
     };
     read("TRANSLATION", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, translation);
     read("ROTATION", TINYGLTF_TYPE_VEC4,

@@ -199,7 +199,10 @@ TangentSource completeTangents(Mesh& m) {
             const float det = d1.x * d2.y - d2.x * d1.y;
             if (!(std::fabs(det) > 1e-12f)) continue;  // no texture-space area: no direction to take
             const glm::vec3 dpdu = (e1 * d2.y - e2 * d1.y) / det, dpdv = (e2 * d1.x - e1 * d2.x) / det;
-            for (std::uint32_t v : {a, b, c}) tu[v] += dpdu, tv[v] += dpdv;
+            for (std::uint32_t v : {a, b, c}) {
+                tu[v] += dpdu;
+                tv[v] += dpdv;
+            }
         }
     }
     for (std::size_t v = 0; v < n; ++v) {

@@ -116,8 +116,10 @@ void SceneRayCaster::buildTree() {
         todo.pop_back();
         glm::vec3 boxLo(kInf), boxHi(-kInf), centreLo(kInf), centreHi(-kInf);
         for (std::uint32_t i = r.begin; i < r.end; ++i) {
-            boxLo = glm::min(boxLo, lo[order[i]]), boxHi = glm::max(boxHi, hi[order[i]]);
-            centreLo = glm::min(centreLo, centre[order[i]]), centreHi = glm::max(centreHi, centre[order[i]]);
+            boxLo = glm::min(boxLo, lo[order[i]]);
+            boxHi = glm::max(boxHi, hi[order[i]]);
+            centreLo = glm::min(centreLo, centre[order[i]]);
+            centreHi = glm::max(centreHi, centre[order[i]]);
         }
         nodes_[r.node].lo = boxLo;
         nodes_[r.node].hi = boxHi;

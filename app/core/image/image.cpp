@@ -239,10 +239,14 @@ Image differenceImage(const Image& a, const Image& e, int threshold) {
             const int diff = (x < a.width && y < a.height) ? pixelDifference(a.pixel(x, y), pe) : 255;
             const auto grey = std::uint8_t((int(pe[0]) + int(pe[1]) + int(pe[2])) / 12);
             if (diff > threshold) {
-                out[0] = 255, out[1] = 0, out[2] = 0;
+                out[0] = 255;
+                out[1] = 0;
+                out[2] = 0;
             } else if (diff > 0) {
                 const auto v = std::uint8_t(std::min(255, 64 + diff * 191 / std::max(threshold, 1)));
-                out[0] = v, out[1] = v, out[2] = 0;
+                out[0] = v;
+                out[1] = v;
+                out[2] = 0;
             } else {
                 out[0] = out[1] = out[2] = grey;
             }

@@ -9,12 +9,17 @@
 namespace shadelab {
 
 void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgba8 c) {
-    x0 = std::max(x0, 0), y0 = std::max(y0, 0);
-    x1 = std::min(x1, image.width), y1 = std::min(y1, image.height);
+    x0 = std::max(x0, 0);
+    y0 = std::max(y0, 0);
+    x1 = std::min(x1, image.width);
+    y1 = std::min(y1, image.height);
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
             std::uint8_t* p = image.pixel(x, y);
-            p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = c.a;
+            p[0] = c.r;
+            p[1] = c.g;
+            p[2] = c.b;
+            p[3] = c.a;
         }
 }
 

@@ -20,7 +20,8 @@ std::vector<int> codePoints(const std::string& s) {
         const auto c = static_cast<unsigned char>(s[i]);
         const int length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
         if (length == 0 || i + std::size_t(length) > s.size()) {
-            out.push_back(0xFFFD), ++i;
+            out.push_back(0xFFFD);
+            ++i;
             continue;
         }
         int cp = length == 1 ? c : c & (0xFF >> (length + 1));

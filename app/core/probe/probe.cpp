@@ -275,7 +275,11 @@ ProbeResult probeAnchor(const Scene& scene, const SceneGeometry& geometry, const
     const MeshPart* triangles = partOf(mesh, anchor.triangle);
     // The glTF material's alpha and E: none where the scene's colour replaces it (Renderer::partDraw).
     const MeshPart* part = scene.objects[anchor.object].material.colorSet ? nullptr : triangles;
-    if (part) r.alphaMode = part->alphaMode, r.alpha = part->baseAlpha, r.alphaCutoff = part->alphaCutoff;
+    if (part) {
+        r.alphaMode = part->alphaMode;
+        r.alpha = part->baseAlpha;
+        r.alphaCutoff = part->alphaCutoff;
+    }
     const LightingEnvironment env = lightingEnvironment(scene);
     const glm::mat4 world = worldFromObject(scene.objects[anchor.object].transform);
     TriangleContext c{scene, env, r.material,        caster, world, normalWorldFromObject(world), {}, {},
@@ -354,8 +358,10 @@ std::optional<ShadingTerms> probedTerms(const ProbeResult& result) {
         for (std::size_t k = 0; k < m.evaluations.size() && k < 3; ++k) {
             const ShadingTerms& e = m.evaluations[k].terms;
             const float w = result.anchor.barycentric[int(k)];
-            t.ambient += w * e.ambient, t.diffuse += w * e.diffuse, t.specular += w * e.specular,
-                t.shown += w * e.shown;
+            t.ambient += w * e.ambient;
+            t.diffuse += w * e.diffuse;
+            t.specular += w * e.specular;
+            t.shown += w * e.shown;
             t.environment += w * e.environment;
         }
     }

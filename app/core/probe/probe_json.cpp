@@ -74,7 +74,10 @@ json evaluationJson(const Scene& scene, const ProbeEvaluation& e) {
                       {"diffuse", vec(p.diffuse)},
                       {"specular", vec(p.specular)}};
         light["exponent"] = number(p.exponent);
-        if (e.anisotropic) light["tangent"] = vec(e.frame.tangent), light["bitangent"] = vec(e.frame.bitangent);
+        if (e.anisotropic) {
+            light["tangent"] = vec(e.frame.tangent);
+            light["bitangent"] = vec(e.frame.bitangent);
+        }
         if (scene.lights[l].type == LightType::Area)
             light["samples"] = json::array({scene.lights[l].samples.x, scene.lights[l].samples.y});
         if (scene.shadows.enabled) {

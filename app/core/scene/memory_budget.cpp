@@ -64,10 +64,15 @@ std::uint64_t cgroupMemoryLimit(const std::string& root, const std::string& self
         const fs::path group = fs::path(line.substr(second + 1)).relative_path();
         fs::path base;
         std::string file;
-        if (line.compare(0, first, "0") == 0 && controllers == ",,") base = root, file = "memory.max";
-        else if (controllers.find(",memory,") != std::string::npos)
-            base = fs::path(root) / "memory", file = "memory.limit_in_bytes";
-        else continue;
+        if (line.compare(0, first, "0") == 0 && controllers == ",,") {
+            base = root;
+            file = "memory.max";
+        } else if (controllers.find(",memory,") != std::string::npos) {
+            base = fs::path(root) / "memory";
+            file = "memory.limit_in_bytes";
+        } else {
+            continue;
+        }
         // The group and each parent up to the root (a limit set on a parent holds for its children), and
         // the root itself: inside a container's namespace the group's path is the host's, its files at the root.
         for (fs::path g = group;; g = g.parent_path()) {

@@ -112,11 +112,15 @@ Image withCaptionStrip(const Image& image, const std::string& title, const std::
     std::copy(image.rgba.begin(), image.rgba.end(), out.rgba.begin());
     fillRect(out, 0, image.height, out.width, out.height, Rgba8{40, 40, 44, 255});
     int y = image.height + margin;
-    for (const std::string& l : titleLines)
-        drawText(out, margin, y, l, titleScale, Rgba8{250, 250, 250, 255}), y += titleLine;
+    for (const std::string& l : titleLines) {
+        drawText(out, margin, y, l, titleScale, Rgba8{250, 250, 250, 255});
+        y += titleLine;
+    }
     y += gap;
-    for (const std::string& l : captionLines)
-        drawText(out, margin, y, l, captionScale, Rgba8{210, 210, 210, 255}), y += captionLine;
+    for (const std::string& l : captionLines) {
+        drawText(out, margin, y, l, captionScale, Rgba8{210, 210, 210, 255});
+        y += captionLine;
+    }
     return out;
 }
 

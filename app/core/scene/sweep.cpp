@@ -151,13 +151,23 @@ void applySweep(Scene& scene, const Sweep& sweep, std::size_t index, const std::
         const Range<int> torus{2 * kTorusSegmentsRange.lo, kTorusSegmentsRange.hi};
         switch (m.type) {
         case MeshSpec::Type::UvSphere:
-            need(uvSphere), m.slices = n, m.stacks = std::max(n / 2, kUvSphereStacksRange.lo);
+            need(uvSphere);
+            m.slices = n;
+            m.stacks = std::max(n / 2, kUvSphereStacksRange.lo);
             break;
-        case MeshSpec::Type::IcoSphere: need(kIcoSphereSubdivisionsRange), m.subdivisions = n; break;
+        case MeshSpec::Type::IcoSphere:
+            need(kIcoSphereSubdivisionsRange);
+            m.subdivisions = n;
+            break;
         case MeshSpec::Type::Torus:
-            need(torus), m.majorSegments = n, m.minorSegments = std::max(n / 2, kTorusSegmentsRange.lo);
+            need(torus);
+            m.majorSegments = n;
+            m.minorSegments = std::max(n / 2, kTorusSegmentsRange.lo);
             break;
-        case MeshSpec::Type::Plane: need(kPlaneSubdivisionsRange), m.planeSubdivisions = n; break;
+        case MeshSpec::Type::Plane:
+            need(kPlaneSubdivisionsRange);
+            m.planeSubdivisions = n;
+            break;
         case MeshSpec::Type::Cube:
         case MeshSpec::Type::Gltf:
             throw InputError(flag + ": tessellation: the first object is a " + std::string(toString(m.type)) +
@@ -202,7 +212,10 @@ Image contactSheet(const std::vector<Image>& tiles, const std::vector<std::strin
             for (int x = 0; x < tw && x < tiles[i].width; ++x) {
                 const std::uint8_t* s = tiles[i].pixel(x, y);
                 std::uint8_t* d = sheet.pixel(x0 + x, y0 + bar + y);
-                d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = 255;
+                d[0] = s[0];
+                d[1] = s[1];
+                d[2] = s[2];
+                d[3] = 255;
             }
     }
     return sheet;

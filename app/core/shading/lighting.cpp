@@ -335,7 +335,10 @@ ShadingTerms shadeTerms(const Material& m, const LightingEnvironment& env, const
     // The lecture's sum: k_a A C + sum_l L_l (k_d C max(0, N.I_l) + k_s S spec_l), each light's share kept.
     t.ambient = m.ka * env.ambient * m.color;
     for (std::size_t li = 0; li < env.lights.size(); ++li) t.lights.push_back(lightShare(at, li));
-    for (const LightShare& share : t.lights) t.diffuse += share.diffuse, t.specular += share.specular;
+    for (const LightShare& share : t.lights) {
+        t.diffuse += share.diffuse;
+        t.specular += share.specular;
+    }
     // What this program adds: E before the sum, mirror and glass after it, and "show" keeping one term.
     t.emissive = m.emissive;
     if (mirrorOrGlass(m, env.environment)) t.environment = environmentTerm(m, env, n, at.v).total();

@@ -70,8 +70,10 @@ std::string locateGlslLog(const std::string& log, const std::vector<std::string>
             std::string number = line.substr(digits + 1, end - digits - 1);
             if (number.size() < 10) {  // the file in the line number wins (see kGlslLinesPerFile)
                 const unsigned long n = std::stoul(number);
-                if (n >= unsigned(kGlslLinesPerFile))
-                    id = n / kGlslLinesPerFile, number = std::to_string(n % kGlslLinesPerFile);
+                if (n >= unsigned(kGlslLinesPerFile)) {
+                    id = n / kGlslLinesPerFile;
+                    number = std::to_string(n % kGlslLinesPerFile);
+                }
             }
             if (id < files.size()) line = line.substr(0, p) + files[id] + ":" + number + line.substr(end);
         }

@@ -85,7 +85,10 @@ void directionalProjection(const Light& light, const std::vector<Aabb>& objects,
         lo = glm::min(lo, l);
         hi = glm::max(hi, l);
     }
-    if (objects.empty()) lo = glm::vec3(-1.0f), hi = glm::vec3(1.0f);
+    if (objects.empty()) {
+        lo = glm::vec3(-1.0f);
+        hi = glm::vec3(1.0f);
+    }
     // Square texels: the larger extent sets the scale; a little slack so nothing sits on the border.
     const float half = 0.5f * std::max({hi.x - lo.x, hi.y - lo.y, 1e-3f}) * 1.02f;
     const glm::vec2 mid = 0.5f * (glm::vec2(lo) + glm::vec2(hi));
