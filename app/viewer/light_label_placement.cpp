@@ -26,7 +26,7 @@ bool rectClear(const LightLabelArea& a, const LabelRect& r, float gap) {
 
 LabelPlacement placeLightLabel(const LightLabelArea& a, glm::vec2 at, float gap, glm::vec2 size, float pad,
                                float step) {
-    // The text's top-left corner kept inside the area, as panel.cpp's labelBox does.
+    // The text's top-left corner kept inside the area, as view_overlays.cpp's labelBox does.
     const auto inside = [&](glm::vec2 p) {
         return glm::vec2(std::max(std::min(p.x, a.hi.x - size.x - pad), a.lo.x + pad),
                          std::max(std::min(p.y, a.hi.y - size.y - pad), a.lo.y + pad));

@@ -1,5 +1,5 @@
 #pragma once
-// Where a light's label goes over the view (panel.cpp, drawLightLabels), GL- and ImGui-free so it can be
+// Where a light's label goes over the view (view_overlays.cpp, drawLightLabels), GL- and ImGui-free so it can be
 // tested: off the models (a label once read "0 point" over all three spheres) and clear of the boxes
 // already taken in the pane (the pane labels above, the labels placed before, a border arrow's head), so
 // no two labels touch (at 2x the labels of presets 18 and 19 once ran into their arrow's head).

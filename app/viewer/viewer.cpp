@@ -14,6 +14,7 @@
 #include "viewer/orbit.hpp"
 #include "viewer/probe_view.hpp"
 #include "viewer/shader_view.hpp"
+#include "viewer/view_overlays.hpp"
 
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE

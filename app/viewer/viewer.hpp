@@ -26,6 +26,7 @@
 #include "viewer/recording_session.hpp"
 #include "viewer/reduced_target.hpp"
 #include "viewer/scene_document.hpp"
+#include "viewer/view_overlays.hpp"
 #include "viewer/view_prefs.hpp"
 #include "viewer/view_quality.hpp"
 #include "viewer/view_revision.hpp"

@@ -6,13 +6,14 @@
 #include "core/scene/scene_json.hpp"
 #include "viewer/animation_playback.hpp"
 #include "viewer/frame_pacing.hpp"
-#include "viewer/placed_geometry.hpp"
 #include "viewer/panel.hpp"
+#include "viewer/placed_geometry.hpp"
 #include "viewer/probe_state.hpp"
 #include "viewer/probe_view.hpp"
 #include "viewer/progressive_sampling.hpp"
 #include "viewer/recording_session.hpp"
 #include "viewer/shader_view.hpp"
+#include "viewer/view_overlays.hpp"
 #include "viewer/view_quality.hpp"
 #include "viewer/view_revision.hpp"
 
@@ -115,7 +116,7 @@ TEST(ProgressiveSampling, APassIsTimedOnlyWhenAFrameDrewExactlyOne) {
     p.frameBegins(kT0 + 200ms);  // that frame's one pass took 200 ms, over the budget
     EXPECT_DOUBLE_EQ(p.lastPassMs(), 200.0);
     p.begin(1, 64);
-    p.drawn(true, true);         // a screenshot finished every pass at once: not one pass's time
+    p.drawn(true, true);  // a screenshot finished every pass at once: not one pass's time
     p.frameBegins(kT0 + 900ms);
     EXPECT_DOUBLE_EQ(p.lastPassMs(), 200.0);
     EXPECT_EQ(p.begin(2, 64).stride, 8);  // the restart adapts to the last timed pass
@@ -137,7 +138,8 @@ TEST(AnimationPlayback, AScriptedRunStepsAThirtiethOfASecondAFrameAndLoops) {
         EXPECT_EQ(a.step(), std::uint64_t(frame + 1));
         ASSERT_NE(a.scene(), nullptr);
     }
-    EXPECT_FLOAT_EQ(a.scene()->objects[0].material.ke, sceneAtTime(base, a.animations(), a.shownSeconds(), "").objects[0].material.ke);
+    EXPECT_FLOAT_EQ(a.scene()->objects[0].material.ke,
+                    sceneAtTime(base, a.animations(), a.shownSeconds(), "").objects[0].material.ke);
     EXPECT_FLOAT_EQ(base.objects[0].material.ke, defaultScene().objects[0].material.ke);  // the document's is untouched
 }
 
@@ -196,7 +198,7 @@ TEST(FramePacing, AnEventDrawsAFewFramesThenTheViewerMaySleep) {
 
 TEST(FramePacing, TheCapIsTheDisplaysRefreshElseSixtyHertz) {
     EXPECT_EQ(FramePacing::capHz(144), 144);
-    EXPECT_EQ(FramePacing::capHz(0), 60);    // the monitor does not say
+    EXPECT_EQ(FramePacing::capHz(0), 60);     // the monitor does not say
     EXPECT_EQ(FramePacing::capHz(1000), 60);  // implausible
     FramePacing f;
     f.frameBegins(kT0);
@@ -317,8 +319,8 @@ TEST(ProbeState, NumbersPanesAsTheShaderSectionDoes) {
         EXPECT_EQ(choices.size(), layout == Layout::Compare ? 3u : 2u);
         for (std::size_t p = 0; p < panes.size(); ++p) {
             ProbeState probe;
-            const ProbeState::Outcome at = probe.set(scene, geometry, panes[p].x + panes[p].width / 2,
-                                                     panes[p].y + panes[p].height / 2);
+            const ProbeState::Outcome at =
+                probe.set(scene, geometry, panes[p].x + panes[p].width / 2, panes[p].y + panes[p].height / 2);
             ASSERT_TRUE(at.set) << at.message;
             probe.evaluate(scene, geometry);
             ASSERT_NE(probe.result(), nullptr);
@@ -345,7 +347,8 @@ TEST(StatusStrip, LeavesOutTheRendererThenTheTrianglesWhereTheStripIsNarrow) {
     status.playing = true;
     const auto chars = [](const std::string& t) { return float(t.size()); };  // a byte a unit
     const std::string all = statusStripText(status, 1000.0f, chars);
-    for (const char* part : {"20.0 ms (50 FPS)", "8588 triangles", "llvmpipe", "pass 3 of 16", "playing 1.25 s of 4.00 s"})
+    for (const char* part :
+         {"20.0 ms (50 FPS)", "8588 triangles", "llvmpipe", "pass 3 of 16", "playing 1.25 s of 4.00 s"})
         EXPECT_NE(all.find(part), std::string::npos) << part << " in " << all;
     const std::string noRenderer = statusStripText(status, chars(all) - 1.0f, chars);
     EXPECT_EQ(noRenderer.find("llvmpipe"), std::string::npos) << noRenderer;
@@ -387,7 +390,8 @@ Image gray(int width, int height) {
 TEST(RecordingSession, ToggledAtTheFrameItsEndAndAResizeStopsAndSaves) {
     const std::string path = test::outDir("recording") + "/view.mp4";
     std::vector<std::pair<std::string, bool>> said;
-    RecordingSession r([&] { return path; }, [&](const std::string& m, bool isError) { said.emplace_back(m, isError); });
+    RecordingSession r([&] { return path; },
+                       [&](const std::string& m, bool isError) { said.emplace_back(m, isError); });
     r.toggle();
     EXPECT_TRUE(r.capturing());  // the frame the key was pressed in is read back
     r.frame(Image{}, kT0);       // but the view was empty
@@ -401,7 +405,8 @@ TEST(RecordingSession, ToggledAtTheFrameItsEndAndAResizeStopsAndSaves) {
     r.frame(gray(64, 48), kT0 + 100ms);
     r.frame(gray(80, 48), kT0 + 200ms);  // the window was resized
     EXPECT_FALSE(r.active());
-    EXPECT_EQ(said.back(), std::make_pair("saved recording " + path + " (recording stopped: the view changed size)", false));
+    EXPECT_EQ(said.back(),
+              std::make_pair("saved recording " + path + " (recording stopped: the view changed size)", false));
     EXPECT_EQ(r.lastSaved(), path);
     EXPECT_GT(std::filesystem::file_size(path), 0u);
 }

@@ -3,7 +3,8 @@
 // in the lecture (k_e), the panel's label, the range every reader accepts, the range and scale of the
 // sliders, its default, the panel section it sits in and one line of help. Everything that names,
 // checks, shows or edits one of them reads this table:
-//   - the scene reader and writer (scene_json.cpp) and checkCoefficients: names and ranges;
+//   - the scene reader and writer (scene_reader.cpp, scene_writer.cpp) and checkCoefficients
+//     (scene_checks.cpp): names and ranges;
 //   - the sweep's and --animate's parameters and labels (sweep.cpp): names, ranges and symbols;
 //   - the command line (options/option_table.cpp): the rows of --ka, --ke, --ior, ... from these;
 //   - the viewer's panel (viewer/panel.cpp, parameterSlider) and the web page (web_app.cpp's

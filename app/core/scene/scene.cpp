@@ -2,6 +2,7 @@
 
 #include "core/scene/scene_names.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <sstream>
@@ -53,6 +54,15 @@ std::string formatNumber(double v) {
     std::ostringstream s;
     s << v;
     return s.str();
+}
+
+// The camera keeps its vertical field of view, so the picture scales with the view's height about its
+// centre.
+glm::ivec2 ViewerStart::probeIn(int width, int height) const {
+    const glm::vec2 of(probeOf);
+    const glm::vec2 view{float(width), float(height)};
+    const glm::vec2 p = 0.5f * view + (glm::vec2(*probe) + 0.5f - 0.5f * of) * (view.y / of.y);
+    return glm::clamp(glm::ivec2(glm::floor(p)), glm::ivec2(0), glm::ivec2(width - 1, height - 1));
 }
 
 }  // namespace shadelab

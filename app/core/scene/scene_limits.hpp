@@ -1,5 +1,5 @@
 #pragma once
-// Every numeric range of shadelab's inputs, defined once: the scene reader (scene_json.cpp), the
+// Every numeric range of shadelab's inputs, defined once: the scene reader (scene_reader.cpp), the
 // command line (options/option_table.cpp: its messages and --help print these), the sweep (sweep.cpp)
 // and the viewer's panel all read them from here. GL-free, header-only.
 #include <cmath>

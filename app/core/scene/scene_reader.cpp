@@ -1,3 +1,5 @@
+// Reading scene files: JSON text to a Scene, every field checked and named by its path in messages
+// (scene_json.hpp). The writer is scene_writer.cpp; the checks shared with the command line are scene_checks.cpp.
 #include "core/scene/scene_json.hpp"
 
 #include "core/base/embedded.hpp"
@@ -9,7 +11,6 @@
 #include "core/scene/parameters.hpp"
 #include "core/scene/scene_names.hpp"
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -17,8 +18,6 @@
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
-#include <memory>
-#include <sstream>
 
 namespace shadelab {
 namespace {
@@ -423,19 +422,6 @@ std::string SceneReader::oneOf(const std::string& name, const std::vector<std::s
     return name;
 }
 
-}  // namespace
-
-// The camera keeps its vertical field of view, so the picture scales with the view's height about its
-// centre.
-glm::ivec2 ViewerStart::probeIn(int width, int height) const {
-    const glm::vec2 of(probeOf);
-    const glm::vec2 view{float(width), float(height)};
-    const glm::vec2 p = 0.5f * view + (glm::vec2(*probe) + 0.5f - 0.5f * of) * (view.y / of.y);
-    return glm::clamp(glm::ivec2(glm::floor(p)), glm::ivec2(0), glm::ivec2(width - 1, height - 1));
-}
-
-namespace {
-
 ViewerStart SceneReader::viewerStart(const json& j, const std::string& path, glm::ivec2 size) const {
     ViewerStart v;
     requireObject(j, path, {"probe", "intersection", "panel_sections", "plot"});
@@ -568,66 +554,6 @@ glm::ivec2 SceneReader::imageSize(const json& j, const std::string& path) const 
     return {static_cast<int>(w), static_cast<int>(h)};
 }
 
-json vecJson(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
-
-// A file the scene names, written relative to the directory the scene is saved in (as given where that fails).
-std::string relativeTo(const std::string& resolvedPath, const std::string& saveDir) {
-    std::error_code ec;
-    fs::path abs = fs::absolute(resolvedPath, ec);
-    fs::path rel = ec ? fs::path() : abs.lexically_relative(fs::absolute(saveDir.empty() ? "." : saveDir, ec));
-    return (ec || rel.empty()) ? resolvedPath : rel.generic_string();
-}
-
-nlohmann::ordered_json meshJson(const MeshSpec& m, const std::string& saveDir) {
-    nlohmann::ordered_json j;
-    j["type"] = toString(m.type);
-    switch (m.type) {
-    case MeshSpec::Type::UvSphere:
-        j["slices"] = m.slices;
-        j["stacks"] = m.stacks;
-        j["radius"] = m.radius;
-        break;
-    case MeshSpec::Type::IcoSphere:
-        j["subdivisions"] = m.subdivisions;
-        j["radius"] = m.radius;
-        break;
-    case MeshSpec::Type::Torus:
-        j["major_radius"] = m.majorRadius;
-        j["minor_radius"] = m.minorRadius;
-        j["major_segments"] = m.majorSegments;
-        j["minor_segments"] = m.minorSegments;
-        break;
-    case MeshSpec::Type::Cube: j["size"] = m.size; break;
-    case MeshSpec::Type::Plane:
-        j["size"] = m.size;
-        j["subdivisions"] = m.planeSubdivisions;
-        break;
-    case MeshSpec::Type::Gltf: j["path"] = relativeTo(m.resolvedPath, saveDir); break;
-    }
-    return j;
-}
-
-// `reflection`: anisotropy is written under blinn-phong only, where it applies (the reader refuses it under phong).
-nlohmann::ordered_json materialJson(const Material& m, const MeshSpec& mesh, ReflectionModel reflection) {
-    nlohmann::ordered_json j;
-    // A glTF model's own colours stay unless a colour was chosen: write it only then.
-    if (m.colorSet || mesh.type != MeshSpec::Type::Gltf) j["color"] = vecJson(m.color);
-    j["specular_color"] = vecJson(m.specularColor);
-    for (Param p : {Param::Ka, Param::Kd, Param::Ks, Param::Ke}) j[parameter(p).name] = materialValue(parameter(p), m);
-    if (m.anisotropic && reflection == ReflectionModel::BlinnPhong) j["anisotropy"] = {m.anisotropy.x, m.anisotropy.y};
-    if (m.mirror > 0.0f) j["mirror"] = m.mirror;
-    if (m.transmission > 0.0f) j["transmission"] = m.transmission;
-    return j;
-}
-
-bool isIdentity(const Transform& t) {
-    return t.translation == glm::vec3(0.0f) && t.rotationDeg == glm::vec3(0.0f) && t.scale == glm::vec3(1.0f);
-}
-
-}  // namespace
-
-namespace {
-
 // The text as JSON, within the nesting limit; a malformed text is an InputError "LABEL: malformed JSON: ...".
 json parseJson(const std::string& text, const std::string& label) {
     checkJsonDepth(text, label);
@@ -681,184 +607,6 @@ Scene sceneForModel(const std::string& modelPath) {
     s.objects[0].mesh.path = modelPath;
     s.objects[0].mesh.resolvedPath = fs::path(modelPath).lexically_normal().string();
     return s;
-}
-
-namespace {
-
-// A light's fields, those of its type only.
-nlohmann::ordered_json lightJson(const Light& l) {
-    nlohmann::ordered_json lj;
-    lj["type"] = toString(l.type);
-    if (l.type == LightType::Directional) {
-        lj["direction"] = vecJson(l.direction);
-    } else {
-        lj["position"] = vecJson(l.position);
-    }
-    if (l.type == LightType::Spot) {
-        lj["direction"] = vecJson(l.direction);
-        lj["inner_cone_deg"] = l.innerConeDeg;
-        lj["outer_cone_deg"] = l.outerConeDeg;
-    }
-    if (l.type == LightType::Area) {
-        lj["normal"] = vecJson(l.normal);
-        lj["size"] = {l.size.x, l.size.y};
-        lj["samples"] = {l.samples.x, l.samples.y};
-        lj["two_sided"] = l.twoSided;
-    }
-    lj["color"] = vecJson(l.color);
-    lj["intensity"] = l.intensity;
-    if (l.type != LightType::Directional) {
-        lj["attenuation"] = toString(l.attenuation);
-        if (l.attenuation == Attenuation::InverseSquare && l.range > 0.0f) lj["range"] = l.range;
-    }
-    return lj;
-}
-
-// "test": the thresholds and masks that were set.
-json testJson(const TestSettings& test) {
-    json t = json::object();
-    if (test.maxDiff) t["max_diff"] = *test.maxDiff;
-    if (test.meanDiff) t["mean_diff"] = *test.meanDiff;
-    if (test.maxDiffPixels) t["max_diff_pixels"] = *test.maxDiffPixels;
-    if (!test.masks.empty()) {
-        t["masks"] = json::array();
-        for (const glm::ivec4& r : test.masks) t["masks"].push_back({r.x, r.y, r.z, r.w});
-    }
-    return t;
-}
-
-}  // namespace
-
-std::string sceneToJson(const Scene& s, const std::string& saveDir) {
-    nlohmann::ordered_json j;
-    const bool shorthand = !s.usesObjectList && s.objects.size() == 1 && isIdentity(s.objects[0].transform);
-    if (shorthand) {
-        j["mesh"] = meshJson(s.objects[0].mesh, saveDir);
-        j["material"] = materialJson(s.objects[0].material, s.objects[0].mesh, s.reflection);
-    } else {
-        j["objects"] = nlohmann::ordered_json::array();
-        for (const SceneObject& o : s.objects) {
-            nlohmann::ordered_json oj;
-            oj["mesh"] = meshJson(o.mesh, saveDir);
-            oj["material"] = materialJson(o.material, o.mesh, s.reflection);
-            oj["transform"] = {{"translation", vecJson(o.transform.translation)},
-                               {"rotation_deg", vecJson(o.transform.rotationDeg)},
-                               {"scale", vecJson(o.transform.scale)}};
-            j["objects"].push_back(oj);
-        }
-    }
-    j["shading"] = toString(s.shading);
-    j["layout"] = toString(s.layout);
-    j["reflection"] = toString(s.reflection);
-    j["ambient"] = vecJson(s.ambient);
-    j["lights"] = nlohmann::ordered_json::array();
-    for (const Light& l : s.lights) j["lights"].push_back(lightJson(l));
-    j["shadows"] = s.shadows.enabled;
-    if (!s.textures) j["textures"] = false;
-    j["shadow_settings"] = {{"normal_bias", s.shadows.normalBias},
-                            {"depth_bias", s.shadows.depthBias},
-                            {"pcf", s.shadows.pcf},
-                            {"map_size", s.shadows.mapSize},
-                            {"area_map_size", s.shadows.areaMapSize}};
-    j["camera"] = {{"eye", vecJson(s.camera.eye)},  {"target", vecJson(s.camera.target)}, {"up", vecJson(s.camera.up)},
-                   {"fov_y_deg", s.camera.fovYDeg}, {"near", s.camera.nearPlane},         {"far", s.camera.farPlane}};
-    j["background"] = vecJson(s.background);
-    j["size"] = {s.width, s.height};
-    j["output_encoding"] = toString(s.outputEncoding);
-    j["specular_normalization"] = toString(s.specularNormalization);
-    j["fresnel"] = toString(s.fresnel);
-    j["ior"] = s.ior;
-    if (s.environment.kind == EnvironmentKind::Image)
-        j["environment"] = relativeTo(s.environment.resolvedPath, saveDir);
-    else if (s.environment.kind != EnvironmentKind::None) j["environment"] = toString(s.environment.kind);
-    j["show"] = toString(s.show);
-    j["diff"] = {{"a", toString(s.diff.a)}, {"b", toString(s.diff.b)}, {"factor", s.diff.factor}};
-    if (!s.title.empty()) j["title"] = s.title;
-    if (!s.caption.empty()) j["caption"] = s.caption;
-    if (!s.test.empty()) j["test"] = testJson(s.test);
-    if (!s.viewer.empty()) {
-        json v = json::object();
-        if (s.viewer.probe) {  // in pixels of the size written (the viewer saves at its view's)
-            const glm::ivec2 p = s.viewer.probeIn(s.width, s.height);
-            v["probe"] = {p.x, p.y};
-        }
-        if (s.viewer.intersection) v["intersection"] = true;
-        if (s.viewer.panelSections) v["panel_sections"] = *s.viewer.panelSections;
-        if (!s.viewer.plot.empty()) v["plot"] = s.viewer.plot;
-        j["viewer"] = v;
-    }
-    return j.dump(2) + "\n";
-}
-
-TermView parseTermView(const std::string& text, const std::string& where) {
-    const std::string prefix = where.empty() ? std::string() : where + ": ";
-    TermView t;
-    for (const auto& k : kShowTermNames)
-        if (k.second != ShowTerm::Light && text == k.first) {  // light:N below
-            t.term = k.second;
-            return t;
-        }
-    if (text.rfind("light:", 0) == 0) {
-        const std::string n = text.substr(6);
-        char* end = nullptr;
-        const long v = std::strtol(n.c_str(), &end, 10);
-        if (n.empty() || end != n.c_str() + n.size() || n[0] == '-' || n[0] == '+')
-            throw InputError(prefix + "\"" + quoteInput(n) + "\" is not a light index (light:N, N = 0.." +
-                             std::to_string(kMaxLights - 1) + ")");
-        if (v >= kMaxLights)
-            throw InputError(prefix + "light index " + n + " is out of range (0.." + std::to_string(kMaxLights - 1) +
-                             ")");
-        t.term = ShowTerm::Light;
-        t.light = int(v);
-        return t;
-    }
-    throw InputError(prefix + "unknown value \"" + text + "\" (expected one of " + namesList(kShowTermNames) + ")");
-}
-
-void checkCoefficients(const Material& m, const std::string& where) {
-    auto check = [&](const char* name, float v, float lo, float hi) {
-        if (!std::isfinite(v) || v < lo || v > hi)
-            throw InputError(where + name + ": must be between " + formatNumber(lo) + " and " + formatNumber(hi) +
-                             " (got " + formatNumber(v) + ")");
-    };
-    for (Param id : {Param::Ka, Param::Kd, Param::Ks, Param::Ke, Param::Mirror, Param::Transmission}) {
-        const Parameter& p = parameter(id);
-        check(p.name, materialValue(p, m), float(p.range.lo), float(p.range.hi));
-    }
-}
-
-EnvironmentSpec parseEnvironment(const std::string& text, const std::string& baseDir, const std::string& where) {
-    EnvironmentSpec e;
-    if (const std::optional<EnvironmentKind> kind = valueNamed(kEnvironmentNames, text)) {
-        e.kind = *kind;
-        return e;
-    }
-    if (text.empty()) throw InputError(where + ": expected room, sky, none or a .png or .hdr file");
-    e.kind = EnvironmentKind::Image;
-    e.path = text;
-    const fs::path p(text);
-    e.resolvedPath = (p.is_absolute() || baseDir.empty() ? p : fs::path(baseDir) / p).lexically_normal().string();
-    try {
-        e.image = std::make_shared<const EnvironmentImage>(readEnvironmentImage(e.resolvedPath));
-    } catch (const InputError& error) {
-        throw InputError(where + ": " + error.what());
-    }
-    return e;
-}
-
-void checkAnisotropy(const Scene& s, const std::string& where) {
-    if (s.reflection != ReflectionModel::Phong) return;
-    for (const SceneObject& o : s.objects)
-        if (o.material.anisotropic)
-            throw InputError(where +
-                             "anisotropy: Ashikhmin and Shirley's lobe is Blinn-Phong's (about H); it needs "
-                             "reflection blinn-phong, not phong");
-}
-
-void checkImageSize(int width, int height, const std::string& where) {
-    if (width < 1 || height < 1 || width > kImageSideRange.hi || height > kImageSideRange.hi)
-        throw InputError(where + ": width and height must be between 1 and " + std::to_string(kImageSideRange.hi) +
-                         " (got " + std::to_string(width) + "x" + std::to_string(height) + ")");
 }
 
 }  // namespace shadelab
