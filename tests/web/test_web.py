@@ -872,6 +872,35 @@ class PanelFiles(PanelTest):
             self.assertIn(extension, m["text"])
 
 
+class PanelRefinement(PanelTest):
+    """An area light's sum refines to the end while the page is idle, as the desktop viewer's does, and a
+    preset after another shows its own complete picture (preset 21's soft shadow, not 20's steps)."""
+
+    def complete(self, what):
+        wait_for(DRIVER, "return window.shadelab.ready && window.shadelab.progress === null", what, timeout=120)
+
+    def test_area_lights_refine_to_the_end(self):
+        presets = [p["name"] for p in self.open_and_describe()["presets"]]
+        twenty = 1 + next(i for i, n in enumerate(presets) if n.startswith("20-"))
+        self.open("preset=%d&size=%s" % (twenty, SIZE))
+        self.complete("preset %d's passes all drawn, with nothing happening" % twenty)
+        # The next preset, reached from this one as a lecturer steps through them: its first frame is
+        # a first pass (progress set again), and then it too refines to the end.
+        frames = self.frames()
+        DRIVER.execute_script("document.getElementById('next').click();")
+        wait_for(DRIVER, "return window.shadelab.frames > %d && window.shadelab.state()[0].includes('/%s')"
+                 % (frames, presets[twenty]), "preset %d's first frame" % (twenty + 1))
+        self.complete("preset %d's passes all drawn, with nothing happening" % (twenty + 1))
+        self.assertGreater(self.frames() - frames, 2, "preset %d was refined over several frames" % (twenty + 1))
+        frames = self.frames()
+        time.sleep(1.0)
+        self.assertEqual(self.frames(), frames, "a complete, idle page draws nothing")
+
+    def open_and_describe(self):
+        self.open("size=" + SIZE)
+        return DRIVER.execute_script("const d = window.shadelab.describe; return typeof d === 'function' ? d() : d;")
+
+
 class PanelViews(PanelTest):
     """What the panel shows besides the canvas: the help, the probe, the plots, the downloads, a drop."""
 

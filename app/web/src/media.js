@@ -27,7 +27,9 @@ function download(blob, name) {
   setTimeout(() => URL.revokeObjectURL(a.href), 10000);
 }
 export function screenshot() {
-  callJson("sl_render");  // the frame as it is now (the drawing buffer is preserved)
+  // The frame as it is now (the drawing buffer is preserved), an area light's sum refined to the end.
+  let passes = 1;
+  while (callJson("sl_render").progress && passes < 1024) passes++;
   const name = baseName() + ".png";
   canvas.toBlob((blob) => {
     if (!blob) return showError("screenshot: the browser gave no PNG of the canvas");

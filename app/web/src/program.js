@@ -138,7 +138,10 @@ export function drawFrame() {
     hook.ready = true;
     document.title = "shadelab \u2014 " + titleText();
   }
-  if (page.recorder) requestFrame();  // the recording wants frames coming
+  // A sampled area light refines over frames, as in the desktop viewer: the next pass is asked for
+  // until the sum is complete, also while nothing else happens (an idle page then draws nothing).
+  hook.progress = r.progress || null;
+  if (page.recorder || r.progress) requestFrame();  // the recording wants frames coming
 }
 export function titleText() {
   const { result, state, D } = page;

@@ -29,7 +29,8 @@ export const page = {
   dragDepth: 0,         // dragenter minus dragleave of files over the page
   uid: 0,               // the last generated element id ("c1", "c2" ...)
   // The test and embedding hook, window.shadelab (start.js adds its functions).
-  hook: { ready: false, frames: 0, lastError: "", probe: null, describe: null, module: null },
+  // progress: [passes done, passes] while a sampled area light's sum refines, else null.
+  hook: { ready: false, frames: 0, lastError: "", probe: null, describe: null, module: null, progress: null },
 };
 
 // Kept when the preset changes, like the options that set no scene field.
